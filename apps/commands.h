@@ -1,0 +1,12 @@
+// The subcommands of `ifsfx`. Each lives in its own file, apps/<name>_command.cpp, and registers
+// itself on the top-level CLI11 app; main() turns any error into one line and an exit code.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace ifsfx::app {
+
+void add_presets_command(CLI::App& app);  // list shipped presets
+void add_render_command(CLI::App& app);   // render an IFS to a still
+
+}  // namespace ifsfx::app

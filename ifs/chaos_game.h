@@ -1,0 +1,34 @@
+// The chaos game (random iteration, DESIGN.md §1): x_k = f_σk(x_{k-1}), σk drawn with the map
+// probabilities. Many independent walkers, each with its own burn-in and its own random stream
+// derived from (seed, chunk); chunks are fixed by the work size, never by the thread count, so the
+// same seed gives the same result for any number of threads.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ifs/ifs.h"
+
+namespace ifsfx {
+
+struct ChaosGameOptions {
+  std::uint64_t seed = 1;
+  int threads = 0;  // worker threads; 0 = all cores
+  // Points discarded per walker before plotting; 0 = enough for s^burn_in < 1e-9 (at least 64).
+  int burn_in = 0;
+};
+
+// Burn-in iterations that bring any start within 1e-9 (relative) of the attractor.
+int default_burn_in(const Ifs& ifs);
+
+// A point of the attractor with the map that put it there (σk).
+struct Sample {
+  Point p;
+  std::uint32_t map = 0;
+};
+
+// `count` chaos-game points (after burn-in), in a fixed order for a given seed.
+std::vector<Sample> chaos_game_samples(const Ifs& ifs, std::size_t count,
+                                       const ChaosGameOptions& options = {});
+
+}  // namespace ifsfx

@@ -1,0 +1,81 @@
+#include "ifs/ifs.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "ifs/error.h"
+
+namespace ifsfx {
+
+double Ifs::contraction() const {
+  double s = 0;
+  for (const auto& m : maps) s = std::max(s, m.contraction());
+  return s;
+}
+
+std::vector<double> default_probabilities(const std::vector<AffineMap>& maps, double floor) {
+  std::vector<double> p(maps.size());
+  double largest = 0;
+  for (const auto& m : maps) largest = std::max(largest, std::abs(m.det()));
+  if (largest == 0) largest = 1;  // all maps degenerate: uniform
+  double sum = 0;
+  for (std::size_t i = 0; i < maps.size(); ++i) {
+    p[i] = std::max(std::abs(maps[i].det()), floor * largest);
+    sum += p[i];
+  }
+  for (auto& x : p) x /= sum;
+  return p;
+}
+
+std::vector<double> effective_probabilities(const Ifs& ifs) {
+  if (ifs.probabilities.empty()) return default_probabilities(ifs.maps);
+  std::vector<double> p = ifs.probabilities;
+  double sum = 0;
+  for (double x : p) sum += x;
+  for (auto& x : p) x /= sum;
+  return p;
+}
+
+void validate(const Ifs& ifs, const std::string& where, const ValidateOptions& options) {
+  auto fail = [&](const std::string& what) {
+    throw Error(ErrorKind::invalid_ifs, fmt::format("{}: {}", where, what));
+  };
+  if (ifs.maps.empty()) fail("an IFS needs at least one map (got 0)");
+  for (std::size_t i = 0; i < ifs.maps.size(); ++i) {
+    if (!ifs.maps[i].finite())
+      fail(fmt::format("map {}: coefficients must be finite numbers (got NaN or inf)", i + 1));
+  }
+  if (!ifs.probabilities.empty()) {
+    if (ifs.probabilities.size() != ifs.maps.size())
+      fail(fmt::format("probabilities: one per map is needed (got {} for {} maps)",
+                       ifs.probabilities.size(), ifs.maps.size()));
+    double sum = 0;
+    for (std::size_t i = 0; i < ifs.probabilities.size(); ++i) {
+      const double p = ifs.probabilities[i];
+      if (!std::isfinite(p) || p < 0)
+        fail(fmt::format("map {}: probability must be a finite number ≥ 0 (got {})", i + 1, p));
+      sum += p;
+    }
+    if (!(sum > 0)) fail("probabilities: they must not all be zero (got sum 0)");
+  }
+  if (!ifs.colours.empty() && ifs.colours.size() != ifs.maps.size())
+    fail(fmt::format("colours: one per map is needed (got {} for {} maps)", ifs.colours.size(),
+                     ifs.maps.size()));
+  const auto p = effective_probabilities(ifs);
+  double mean_log = 0;
+  for (std::size_t i = 0; i < ifs.maps.size(); ++i) {
+    const double s = ifs.maps[i].contraction();
+    if (s >= 1 && !options.allow_expansive)
+      fail(fmt::format("map {}: contraction factor must be < 1 (got {:.4g}); "
+                       "--allow-expansive accepts it if the IFS contracts on average",
+                       i + 1, s));
+    mean_log += p[i] * std::log(std::max(s, 1e-300));
+  }
+  if (options.allow_expansive && !(mean_log < 0))
+    fail(fmt::format("the IFS must contract on average: Σ p·log(factor) must be < 0 (got {:.4g})",
+                     mean_log));
+}
+
+}  // namespace ifsfx

@@ -1,0 +1,50 @@
+// An iterated function system {X; f1..fN; p1..pN} (paper §2, eq. 1–2; DESIGN.md §1).
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ifs/affine_map.h"
+
+namespace ifsfx {
+
+// An RGB colour, components in [0, 1].
+struct Rgb {
+  double r = 0, g = 0, b = 0;
+  friend bool operator==(const Rgb&, const Rgb&) = default;
+};
+
+struct Ifs {
+  std::string name;
+  std::vector<AffineMap> maps;
+  // One per map, summing to 1 once normalised; empty means "default" (see default_probabilities).
+  std::vector<double> probabilities;
+  // Optional colour per map (measure and tops palettes); empty means "use the palette".
+  std::vector<Rgb> colours;
+
+  std::size_t size() const { return maps.size(); }
+
+  // Contraction factor of the IFS: the largest factor of its maps (paper §2).
+  double contraction() const;
+};
+
+// Probabilities ∝ |det f_n| with a floor, so that a degenerate map (det 0, e.g. the fern's stem)
+// is still visited: p_n = max(|det|, floor · max|det|) normalised (DESIGN.md §1).
+std::vector<double> default_probabilities(const std::vector<AffineMap>& maps, double floor = 0.01);
+
+// The probabilities to iterate with: the given ones normalised to sum 1, or the defaults.
+std::vector<double> effective_probabilities(const Ifs& ifs);
+
+struct ValidateOptions {
+  // Accept maps with factor ≥ 1 provided the IFS contracts on average (Σ p_n log s_n < 0).
+  bool allow_expansive = false;
+};
+
+// Checks an IFS before use and throws Error{invalid_ifs} naming the culprit: no maps, a NaN/inf
+// coefficient, a map with factor ≥ 1 (unless allowed), probabilities of the wrong count,
+// negative, non-finite or all zero, colours of the wrong count. `where` prefixes messages (a
+// file name, a preset name).
+void validate(const Ifs& ifs, const std::string& where, const ValidateOptions& options = {});
+
+}  // namespace ifsfx

@@ -1,0 +1,69 @@
+// The steal map of colour stealing (paper §4, Fig. 3; DESIGN.md §3): per output pixel, the
+// source coordinate T(x) = π_G(τ_F(x)) — the top address of x under the drawing IFS F, followed
+// to a point under the colouring IFS G — and whether the pixel lies on the attractor at all.
+// T depends on F, G and the output grid, never on the source pixels: computed once, it colours
+// any number of images (video frames) by one remap each.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+
+#include <opencv2/core.hpp>
+
+#include "ifs/ifs.h"
+#include "ifs/view.h"
+
+namespace ifsfx {
+
+// Coordinates in `source_uv` are normalised *image* coordinates of the source: u ∈ [0,1] left to
+// right, v ∈ [0,1] top to bottom, so the source pixel is (u·W − 0.5, v·H − 0.5) for a W×H source.
+// (The colouring IFS G itself lives on the unit square with y up: v = 1 − y.)
+struct StealMap {
+  cv::Mat source_uv;  // CV_32FC2, one (u, v) per output pixel
+  cv::Mat coverage;   // CV_8UC1, 255 where the pixel lies on the attractor, 0 elsewhere
+
+  cv::Size size() const { return coverage.size(); }
+  bool empty() const { return coverage.empty(); }
+};
+
+struct StealMapOptions {
+  std::optional<Box> view;  // plane rectangle of F shown; default: F's attractor, auto-framed
+  double margin = 0.05;     // auto-framing margin
+  bool exact = false;       // per-pixel descent (DESIGN.md §3) instead of the chaos game
+  double quality = 64;      // chaos game: points per output pixel before the coverage policy
+  std::uint64_t seed = 1;
+  int threads = 0;  // 0 = all cores
+};
+
+// The steal map of F coloured through G on `size` pixels. G must have as many maps as F and is
+// used as given on the unit square (see fit_to_unit_square). Throws Error{invalid_ifs} when the
+// map counts differ.
+//   auto T = compute_steal_map(fern, default_colouring(4), {1920, 1080}, {.exact = true});
+StealMap compute_steal_map(const Ifs& F, const Ifs& G, cv::Size size,
+                           const StealMapOptions& options = {});
+
+// The default colouring IFS for N maps: a shipped square tiling for N = 2, 3, 4, 9, otherwise a
+// strip or grid tiling of the unit square generated for N.
+Ifs default_colouring(std::size_t n);
+
+// G conjugated onto the unit square: its attractor's bounding box stretched onto [0,1]².
+Ifs fit_to_unit_square(const Ifs& g);
+
+enum class Interpolation { nearest, bilinear };
+
+struct ApplyOptions {
+  Interpolation interpolation = Interpolation::bilinear;
+  cv::Scalar background = cv::Scalar::all(0);  // colour of uncovered pixels
+};
+
+// Colours the map's pixels from `source` (any size, CV_8UC3/CV_8UC4/CV_16U/CV_32F): returns an
+// image of the map's size and the source's type.
+cv::Mat apply(const StealMap& map, const cv::Mat& source, const ApplyOptions& options = {});
+
+// save/load: a versioned binary file; load throws Error{io} or Error{unsupported} for a file that
+// is not a steal map, of another version, or truncated, naming the path.
+void save(const StealMap& map, const std::filesystem::path& path);
+StealMap load_steal_map(const std::filesystem::path& path);
+
+}  // namespace ifsfx

@@ -1,0 +1,43 @@
+// Frame sources and sinks: the small interfaces every video input (movie file, image sequence,
+// V4L2 camera) and output (movie file, image sequence, window, V4L2 output device) sits behind.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+namespace ifsfx::video {
+
+// One decoded frame: 8-bit BGR (CV_8UC3), as OpenCV decodes.
+struct Frame {
+  cv::Mat image;
+  std::int64_t index = 0;  // position in the source, from 0
+  double timestamp = 0;    // seconds since the start of the source (capture time for cameras)
+};
+
+class FrameSource {
+ public:
+  virtual ~FrameSource() = default;
+  // The next frame, or nothing at the end of the stream. Throws ifsfx::Error on a fault (a
+  // corrupt file, a camera that vanished), naming the source.
+  virtual std::optional<Frame> read() = 0;
+  virtual cv::Size size() const = 0;
+  virtual double fps() const = 0;  // frames per second; 0 when unknown
+  virtual std::int64_t frame_count() const { return -1; }  // -1 when unknown (cameras)
+  virtual std::string name() const = 0;                       // path or device, for messages
+};
+
+class FrameSink {
+ public:
+  virtual ~FrameSink() = default;
+  // Throws ifsfx::Error on a fault (disk full, device gone), naming the sink.
+  virtual void write(const Frame& frame) = 0;
+  // Finalises the output (trailer, rename into place). Idempotent; also called by the destructor
+  // of implementations, which must never throw.
+  virtual void close() = 0;
+  virtual std::string name() const = 0;
+};
+
+}  // namespace ifsfx::video
