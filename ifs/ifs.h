@@ -37,7 +37,7 @@ std::vector<double> default_probabilities(const std::vector<AffineMap>& maps, do
 std::vector<double> effective_probabilities(const Ifs& ifs);
 
 struct ValidateOptions {
-  // Accept maps with factor ≥ 1 provided the IFS contracts on average (Σ p_n log s_n < 0).
+  // Accept maps with factor ≥ 1 provided the IFS contracts on average (mean_log_contraction < 0).
   bool allow_expansive = false;
 };
 
@@ -46,5 +46,9 @@ struct ValidateOptions {
 // negative, non-finite or all zero, colours of the wrong count. `where` prefixes messages (a
 // file name, a preset name).
 void validate(const Ifs& ifs, const std::string& where, const ValidateOptions& options = {});
+
+// The mean log contraction of the IFS per step, min over word lengths k = 1..3 of
+// Σ_w p_w log ‖f_w‖ / k (the IFS contracts on average when it is < 0).
+double mean_log_contraction(const Ifs& ifs);
 
 }  // namespace ifsfx

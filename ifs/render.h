@@ -39,7 +39,7 @@ cv::Mat render_attractor(const Ifs& ifs, cv::Size size, const RenderOptions& opt
 
 // The invariant measure: per-pixel visit counts tone-mapped by v = log(1 + k·c) / log(1 + k·max)
 // then gamma, coloured by map (palette coordinate c_k = (c_{k-1} + c_σk) / 2 through the IFS's
-// colours or the default palette). CV_32FC4 BGRA in [0, 1]; alpha is the tone-mapped density.
+// colours or the default palette), on black. CV_32FC3 BGR in [0, 1].
 cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& options = {},
                        RenderStats* stats = nullptr);
 

@@ -8,6 +8,9 @@
 
 namespace ifsfx {
 
+// GCC's 128-bit integer, for the 64×64→128 multiplies below (__extension__ keeps -Wpedantic quiet).
+__extension__ using uint128 = unsigned __int128;
+
 // SplitMix64's finaliser: a bijective 64-bit mix, used to derive independent stream states.
 constexpr std::uint64_t mix64(std::uint64_t z) noexcept {
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
@@ -28,8 +31,7 @@ class Rng {
 
   std::uint64_t next() noexcept {
     state_ += 0xa0761d6478bd642fULL;
-    const unsigned __int128 t =
-        static_cast<unsigned __int128>(state_) * (state_ ^ 0xe7037ed1a0b428dbULL);
+    const uint128 t = static_cast<uint128>(state_) * (state_ ^ 0xe7037ed1a0b428dbULL);
     return static_cast<std::uint64_t>(t >> 64) ^ static_cast<std::uint64_t>(t);
   }
 
@@ -38,7 +40,7 @@ class Rng {
 
   // Uniform integer in [0, n), n > 0 (Lemire's multiply-shift; bias ≤ n / 2^64).
   std::uint32_t below(std::uint32_t n) noexcept {
-    return static_cast<std::uint32_t>((static_cast<unsigned __int128>(next()) * n) >> 64);
+    return static_cast<std::uint32_t>((static_cast<uint128>(next()) * n) >> 64);
   }
 
  private:

@@ -1,0 +1,296 @@
+#include "ifs/render.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+
+#include <fmt/format.h>
+#include <opencv2/imgproc.hpp>
+
+#include "ifs/detail/walkers.h"
+#include "ifs/error.h"
+#include "ifs/parallel.h"
+
+namespace ifsfx {
+namespace {
+
+// Plane → continuous pixel coordinates, as the inner loop wants it: px = sx·x + ox,
+// py = sy·y + oy.
+struct PixelMapping {
+  double sx, ox, sy, oy;
+  double width, height;
+  int stride;
+  explicit PixelMapping(const Viewport& v) {
+    const AffineMap m = v.plane_to_pixel();
+    sx = m.a, ox = m.e, sy = m.d, oy = m.f;
+    width = v.size.width, height = v.size.height;
+    stride = v.size.width;
+  }
+  // The pixel index of (x, y), or -1 outside the raster.
+  long index(double x, double y) const {
+    const double px = sx * x + ox, py = sy * y + oy;
+    if (!(px >= 0 && px < width && py >= 0 && py < height)) return -1;
+    return static_cast<long>(py) * stride + static_cast<long>(px);
+  }
+};
+
+// Runs `points` chaos-game points over fixed chunks; `make_worker(worker)` gives each worker its
+// per-thread state, and state.visit(lane, x, y, map) plots one point.
+template <class State, class MakeState>
+std::vector<State> scatter(const Ifs& ifs, std::uint64_t points, const ChaosGameOptions& options,
+                           MakeState&& make_state) {
+  const detail::MapTable maps(ifs);
+  const MapPicker pick(effective_probabilities(ifs));
+  const int burn_in = options.burn_in > 0 ? options.burn_in : default_burn_in(ifs);
+  const std::uint64_t chunks = detail::chunk_count(points);
+  const int workers = worker_count(chunks, options.threads);
+  std::vector<State> states;
+  states.reserve(static_cast<std::size_t>(workers));
+  for (int w = 0; w < workers; ++w) states.push_back(make_state());
+  parallel_for(chunks, workers, [&](std::size_t chunk, int worker) {
+    State& state = states[static_cast<std::size_t>(worker)];
+    const std::uint64_t n = detail::chunk_size(points, chunk);
+    state.begin_chunk(n);
+    detail::run_chunk(maps, pick, options.seed, chunk, n, burn_in,
+                      [&](int lane, double x, double y, std::uint32_t map) {
+                        state.visit(lane, x, y, map);
+                      });
+  });
+  return states;
+}
+
+void check_render_inputs(const Ifs& ifs, cv::Size size, const RenderOptions& options) {
+  check_size(size);
+  if (ifs.maps.empty()) throw Error(ErrorKind::invalid_ifs, "ifs: needs at least one map (got 0)");
+  if (options.supersample < 1 || options.supersample > 16)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--supersample: must be 1 to 16 (got {})", options.supersample));
+  check_size(size * options.supersample, "--size × --supersample");
+  if (!(options.quality > 0) || !std::isfinite(options.quality))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--quality: must be a positive number of points per pixel (got {})",
+                            options.quality));
+  if (!(options.gamma > 0) || !std::isfinite(options.gamma))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--gamma: must be positive (got {})", options.gamma));
+  if (!(options.brightness > 0) || !std::isfinite(options.brightness))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("brightness: must be positive (got {})", options.brightness));
+}
+
+Viewport viewport_for(const Ifs& ifs, cv::Size size, const RenderOptions& options) {
+  const Box view =
+      options.view ? *options.view : fit_view(attractor_bounds(ifs, options.seed), size, options.margin);
+  return {view, size};
+}
+
+std::uint64_t point_budget(cv::Size size, double quality) {
+  return static_cast<std::uint64_t>(std::ceil(quality * size.width * static_cast<double>(size.height)));
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Per-worker hit mask: the attractor as a set needs one byte store per point, no read.
+struct HitState {
+  PixelMapping mapping;
+  cv::Mat hits;
+  HitState(const Viewport& v) : mapping(v), hits(cv::Mat::zeros(v.size, CV_8UC1)) {}
+  void begin_chunk(std::uint64_t) {}
+  void visit(int, double x, double y, std::uint32_t) {
+    const long i = mapping.index(x, y);
+    if (i >= 0) hits.data[i] = 255;
+  }
+};
+
+// Per-worker visit counts.
+struct CountState {
+  PixelMapping mapping;
+  cv::Mat counts;
+  CountState(const Viewport& v) : mapping(v), counts(cv::Mat::zeros(v.size, CV_32SC1)) {}
+  void begin_chunk(std::uint64_t) {}
+  void visit(int, double x, double y, std::uint32_t) {
+    const long i = mapping.index(x, y);
+    if (i >= 0) ++reinterpret_cast<std::uint32_t*>(counts.data)[i];
+  }
+};
+
+// Visit count and palette-coordinate sum per pixel, packed in one 64-bit word so a point costs a
+// single memory update: count in the low 32 bits, Σc in the high 32 with c quantised to 6 bits.
+// Σc ≤ 63 · points, so folding into wide totals every 2^26 points keeps both halves exact.
+class MeasureState {
+ public:
+  static constexpr std::uint64_t kFoldPoints = std::uint64_t{1} << 26;
+  static constexpr int kPaletteBits = 6;
+
+  struct Totals {
+    std::vector<std::uint64_t> count, colour;
+    std::mutex mutex;
+  };
+
+  MeasureState(const Viewport& v, const std::vector<std::uint32_t>& map_colours, Totals& totals)
+      : mapping_(v),
+        cells_(static_cast<std::size_t>(v.size.area()), 0),
+        map_colour_(map_colours),
+        totals_(&totals) {
+    palette_.fill(0);
+  }
+  MeasureState(MeasureState&&) = default;
+
+  void begin_chunk(std::uint64_t points) {
+    if (pending_ + points > kFoldPoints) fold();
+    pending_ += points;
+  }
+  void visit(int lane, double x, double y, std::uint32_t map) {
+    // c_k = (c_{k-1} + c_σk) / 2 in 16-bit fixed point (DESIGN.md §4).
+    std::uint32_t& c = palette_[static_cast<std::size_t>(lane)];
+    c = (c + map_colour_[map]) >> 1;
+    const long i = mapping_.index(x, y);
+    if (i < 0) return;
+    const std::uint64_t c6 = (c + (1u << (15 - kPaletteBits))) >> (16 - kPaletteBits);
+    cells_[static_cast<std::size_t>(i)] += (std::min<std::uint64_t>(c6, 63) << 32) | 1;
+  }
+  void fold() {
+    std::lock_guard lock(totals_->mutex);
+    for (std::size_t i = 0; i < cells_.size(); ++i) {
+      if (cells_[i] == 0) continue;
+      totals_->count[i] += cells_[i] & 0xffffffffu;
+      totals_->colour[i] += cells_[i] >> 32;
+      cells_[i] = 0;
+    }
+    pending_ = 0;
+  }
+
+ private:
+  PixelMapping mapping_;
+  std::vector<std::uint64_t> cells_;
+  std::vector<std::uint32_t> map_colour_;  // c_n of each map, 16-bit fixed point
+  std::array<std::uint32_t, detail::kLanes> palette_;
+  Totals* totals_;
+  std::uint64_t pending_ = 0;
+};
+
+// Palette used when an IFS has no colours: a perceptually ordered ramp (dark violet, magenta,
+// orange, pale yellow), sampled linearly.
+Rgb ramp(double t) {
+  static constexpr std::array<Rgb, 5> kStops = {Rgb{0.23, 0.05, 0.45}, Rgb{0.55, 0.10, 0.55},
+                                                Rgb{0.90, 0.30, 0.35}, Rgb{0.98, 0.62, 0.20},
+                                                Rgb{0.99, 0.93, 0.60}};
+  t = std::clamp(t, 0.0, 1.0) * (kStops.size() - 1);
+  const auto i = std::min<std::size_t>(static_cast<std::size_t>(t), kStops.size() - 2);
+  const double w = t - static_cast<double>(i);
+  const Rgb& p = kStops[i];
+  const Rgb& q = kStops[i + 1];
+  return {p.r + w * (q.r - p.r), p.g + w * (q.g - p.g), p.b + w * (q.b - p.b)};
+}
+
+// The colour at palette coordinate t ∈ [0,1]: through the IFS's own colours (map n at n/(N−1))
+// when it has them, else the default ramp.
+Rgb palette_at(const Ifs& ifs, double t) {
+  if (ifs.colours.empty()) return ramp(t);
+  if (ifs.colours.size() == 1) return ifs.colours[0];
+  const double pos = std::clamp(t, 0.0, 1.0) * static_cast<double>(ifs.colours.size() - 1);
+  const auto i = std::min(static_cast<std::size_t>(pos), ifs.colours.size() - 2);
+  const double w = pos - static_cast<double>(i);
+  const Rgb& p = ifs.colours[i];
+  const Rgb& q = ifs.colours[i + 1];
+  return {p.r + w * (q.r - p.r), p.g + w * (q.g - p.g), p.b + w * (q.b - p.b)};
+}
+
+double coverage_of(const cv::Mat& mask) {
+  return static_cast<double>(cv::countNonZero(mask)) / static_cast<double>(mask.total());
+}
+
+}  // namespace
+
+Rgb palette_colour(std::size_t n, std::size_t count) {
+  return ramp(count <= 1 ? 0.0 : static_cast<double>(n) / static_cast<double>(count - 1));
+}
+
+cv::Mat visit_counts(const Ifs& ifs, const Viewport& viewport, std::uint64_t points,
+                     const ChaosGameOptions& options) {
+  check_size(viewport.size);
+  auto states = scatter<CountState>(ifs, points, options, [&] { return CountState(viewport); });
+  cv::Mat total = states[0].counts;
+  for (std::size_t w = 1; w < states.size(); ++w) total += states[w].counts;
+  return total;
+}
+
+cv::Mat render_attractor(const Ifs& ifs, cv::Size size, const RenderOptions& options,
+                         RenderStats* stats) {
+  check_render_inputs(ifs, size, options);
+  const Viewport viewport = viewport_for(ifs, size, options);
+  const std::uint64_t points = point_budget(size, options.quality);
+  const auto start = std::chrono::steady_clock::now();
+  auto states = scatter<HitState>(ifs, points, {.seed = options.seed, .threads = options.threads},
+                                  [&] { return HitState(viewport); });
+  cv::Mat mask = states[0].hits;
+  for (std::size_t w = 1; w < states.size(); ++w) cv::bitwise_or(mask, states[w].hits, mask);
+  if (stats) *stats = {points, seconds_since(start), coverage_of(mask), viewport.view};
+  return mask;
+}
+
+cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& options,
+                       RenderStats* stats) {
+  check_render_inputs(ifs, size, options);
+  const int k = options.supersample;
+  const Viewport viewport{viewport_for(ifs, size, options).view, size * k};
+  const std::uint64_t points = point_budget(size, options.quality);
+
+  std::vector<std::uint32_t> map_colour(ifs.size());
+  for (std::size_t n = 0; n < ifs.size(); ++n)
+    map_colour[n] = ifs.size() <= 1 ? 0
+                                    : static_cast<std::uint32_t>(std::lround(
+                                          65535.0 * static_cast<double>(n) /
+                                          static_cast<double>(ifs.size() - 1)));
+  MeasureState::Totals totals;
+  const auto area = static_cast<std::size_t>(viewport.size.area());
+  totals.count.assign(area, 0);
+  totals.colour.assign(area, 0);
+
+  const auto start = std::chrono::steady_clock::now();
+  auto states = scatter<MeasureState>(ifs, points, {.seed = options.seed, .threads = options.threads},
+                                      [&] { return MeasureState(viewport, map_colour, totals); });
+  for (auto& s : states) s.fold();
+  const double seconds = seconds_since(start);
+
+  // Log-density tone map v = log(1 + k·c) / log(1 + k·max), k = brightness / mean covered count
+  // (so the look does not depend on --quality), then the display gamma.
+  std::uint64_t max_count = 0, sum = 0, covered = 0;
+  for (auto c : totals.count) {
+    max_count = std::max(max_count, c);
+    sum += c;
+    covered += c > 0;
+  }
+  cv::Mat hires(viewport.size, CV_32FC3, cv::Scalar::all(0));
+  if (covered > 0) {
+    const double kk = options.brightness * static_cast<double>(covered) / static_cast<double>(sum);
+    const double norm = std::log1p(kk * static_cast<double>(max_count));
+    auto* out = hires.ptr<cv::Vec3f>();
+    for (std::size_t i = 0; i < area; ++i) {
+      const auto c = totals.count[i];
+      if (c == 0) continue;
+      const double v =
+          std::pow(std::log1p(kk * static_cast<double>(c)) / norm, 1.0 / options.gamma);
+      const double t = static_cast<double>(totals.colour[i]) / (63.0 * static_cast<double>(c));
+      const Rgb rgb = palette_at(ifs, t);
+      out[i] = cv::Vec3f(static_cast<float>(rgb.b * v), static_cast<float>(rgb.g * v),
+                         static_cast<float>(rgb.r * v));
+    }
+  }
+  cv::Mat image;
+  if (k == 1)
+    image = hires;
+  else
+    cv::resize(hires, image, size, 0, 0, cv::INTER_AREA);  // box filter: the mean of k×k cells
+  if (stats) {
+    cv::Mat grey;
+    cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
+    *stats = {points, seconds, coverage_of(grey > 0), viewport.view};
+  }
+  return image;
+}
+
+}  // namespace ifsfx

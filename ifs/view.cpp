@@ -1,0 +1,186 @@
+#include "ifs/view.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "ifs/chaos_game.h"
+#include "ifs/error.h"
+
+namespace ifsfx {
+
+AffineMap Viewport::plane_to_pixel() const {
+  const double sx = size.width / view.width();
+  const double sy = size.height / view.height();
+  return {sx, 0, 0, -sy, -sx * view.x0, sy * view.y1};
+}
+
+namespace {
+
+// Support function h(u) = max_{a ∈ A} u·a sampled at K directions θ_j = 2πj/K.
+class SupportFunction {
+ public:
+  explicit SupportFunction(std::size_t directions) : h_(directions) {}
+
+  std::size_t size() const { return h_.size(); }
+  double& at(std::size_t j) { return h_[j]; }
+  double at(std::size_t j) const { return h_[j]; }
+  Point direction(std::size_t j) const {
+    const double theta = 2 * std::numbers::pi * static_cast<double>(j) / static_cast<double>(size());
+    return {std::cos(theta), std::sin(theta)};
+  }
+  // h at any vector v: |v| · h(v/|v|) (h is positively homogeneous), linearly interpolated
+  // between the sampled directions.
+  double operator()(Point v) const {
+    const double r = std::hypot(v.x, v.y);
+    if (r == 0) return 0;
+    double t = std::atan2(v.y, v.x) / (2 * std::numbers::pi);
+    if (t < 0) t += 1;
+    const double pos = t * static_cast<double>(size());
+    const auto j0 = static_cast<std::size_t>(pos) % size();
+    const std::size_t j1 = (j0 + 1) % size();
+    const double w = pos - std::floor(pos);
+    return r * ((1 - w) * h_[j0] + w * h_[j1]);
+  }
+
+ private:
+  std::vector<double> h_;
+};
+
+Box bounds_by_sampling(const Ifs& ifs, std::uint64_t seed) {
+  const auto samples = chaos_game_samples(ifs, 1 << 20, {.seed = seed, .threads = 0});
+  Box b{samples[0].p.x, samples[0].p.y, samples[0].p.x, samples[0].p.y};
+  for (const auto& s : samples) {
+    b.x0 = std::min(b.x0, s.p.x), b.x1 = std::max(b.x1, s.p.x);
+    b.y0 = std::min(b.y0, s.p.y), b.y1 = std::max(b.y1, s.p.y);
+  }
+  return b;
+}
+
+}  // namespace
+
+Box attractor_bounds(const Ifs& ifs, std::uint64_t seed) {
+  const double s = ifs.contraction();
+  if (!(s < 1)) return bounds_by_sampling(ifs, seed);
+
+  // A lies in the disc around any point c of radius max_n |f_n(c) − c| / (1 − s); take c the
+  // fixed point of a map with an inverse of I − M (any point would do, a nearby one converges
+  // sooner).
+  Point c{0, 0};
+  {
+    const AffineMap& f = ifs.maps[0];
+    const AffineMap i_minus_m{1 - f.a, -f.b, -f.c, 1 - f.d, 0, 0};
+    if (auto inv = i_minus_m.inverse()) c = (*inv)(Point{f.e, f.f});
+  }
+  double radius = 0;
+  for (const auto& f : ifs.maps) {
+    const Point q = f(c);
+    radius = std::max(radius, std::hypot(q.x - c.x, q.y - c.y));
+  }
+  radius /= (1 - s);
+
+  // h_{k+1}(u) = max_n [u·t_n + h_k(M_nᵀ u)]: the support function of W(B) from that of B. It is
+  // monotone and contracts by s, so from the disc it decreases to the support function of A.
+  constexpr std::size_t kDirections = 4096;  // a multiple of 4: the axes are sampled exactly
+  SupportFunction h(kDirections), next(kDirections);
+  for (std::size_t j = 0; j < kDirections; ++j) {
+    const Point u = h.direction(j);
+    h.at(j) = u.x * c.x + u.y * c.y + radius;
+  }
+  const double tolerance = 1e-12 * std::max(radius, 1e-300);
+  for (int iteration = 0; iteration < 5000; ++iteration) {
+    double change = 0;
+    for (std::size_t j = 0; j < kDirections; ++j) {
+      const Point u = h.direction(j);
+      double best = -INFINITY;
+      for (const auto& f : ifs.maps) {
+        const Point mt_u{f.a * u.x + f.c * u.y, f.b * u.x + f.d * u.y};
+        best = std::max(best, u.x * f.e + u.y * f.f + h(mt_u));
+      }
+      next.at(j) = best;
+      change = std::max(change, std::abs(best - h.at(j)));
+    }
+    std::swap(h, next);
+    if (change < tolerance) break;
+  }
+  return {-h.at(kDirections / 2), -h.at(3 * kDirections / 4), h.at(0), h.at(kDirections / 4)};
+}
+
+Box fit_view(const Box& bounds, cv::Size size, double margin) {
+  double w = bounds.width(), h = bounds.height();
+  const double largest = std::max(w, h);
+  const double minimum = largest > 0 ? largest * 1e-3 : 1.0;  // a line or a point still shows
+  w = std::max(w, minimum);
+  h = std::max(h, minimum);
+  const double pad = margin * std::max(w, h);
+  w += 2 * pad;
+  h += 2 * pad;
+  const double aspect = static_cast<double>(size.width) / size.height;
+  if (w / h < aspect)
+    w = h * aspect;
+  else
+    h = w / aspect;
+  const double cx = 0.5 * (bounds.x0 + bounds.x1), cy = 0.5 * (bounds.y0 + bounds.y1);
+  return {cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2};
+}
+
+namespace {
+
+std::vector<double> parse_numbers(const std::string& text, char separator,
+                                  const std::string& what, const char* form) {
+  std::vector<double> out;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t end = text.find(separator, start);
+    std::string item = text.substr(start, end == std::string::npos ? end : end - start);
+    item.erase(0, item.find_first_not_of(" \t"));
+    item.erase(item.find_last_not_of(" \t") + 1);
+    double value = 0;
+    const auto [ptr, ec] = std::from_chars(item.data(), item.data() + item.size(), value);
+    if (item.empty() || ec != std::errc() || ptr != item.data() + item.size() ||
+        !std::isfinite(value))
+      throw Error(ErrorKind::parse, fmt::format("{}: expected {} (got '{}')", what, form, text));
+    out.push_back(value);
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+Box parse_box(const std::string& text, const std::string& what) {
+  const auto v = parse_numbers(text, ',', what, "x0,y0,x1,y1");
+  if (v.size() != 4)
+    throw Error(ErrorKind::parse, fmt::format("{}: expected x0,y0,x1,y1 (got '{}')", what, text));
+  if (!(v[2] > v[0]) || !(v[3] > v[1]))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: needs x1 > x0 and y1 > y0 (got '{}')", what, text));
+  return {v[0], v[1], v[2], v[3]};
+}
+
+void check_size(cv::Size size, const std::string& what) {
+  constexpr int kLargest = 32768;
+  if (size.width < 1 || size.height < 1 || size.width > kLargest || size.height > kLargest)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: each side must be 1 to {} pixels (got {}x{})", what, kLargest,
+                            size.width, size.height));
+}
+
+cv::Size parse_size(const std::string& text, const std::string& what) {
+  std::string lowered = text;
+  std::replace(lowered.begin(), lowered.end(), 'X', 'x');
+  const auto v = parse_numbers(lowered, 'x', what, "WxH");
+  if (v.size() != 2 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]) ||
+      std::abs(v[0]) > 1e9 || std::abs(v[1]) > 1e9)
+    throw Error(ErrorKind::parse, fmt::format("{}: expected WxH in whole pixels (got '{}')", what, text));
+  const cv::Size size{static_cast<int>(v[0]), static_cast<int>(v[1])};
+  check_size(size, what);
+  return size;
+}
+
+}  // namespace ifsfx

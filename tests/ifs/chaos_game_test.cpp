@@ -1,0 +1,77 @@
+#include "ifs/chaos_game.h"
+
+#include <gtest/gtest.h>
+
+#include "ifs/rng.h"
+#include "known_ifs.h"
+
+namespace ifsfx {
+namespace {
+
+TEST(chaos_game, fern_invariant_measure_has_the_known_mean) {
+  const auto samples = chaos_game_samples(testing::barnsley_fern(), 4'000'000, {.seed = 7});
+  double sx = 0, sy = 0;
+  for (const auto& s : samples) sx += s.p.x, sy += s.p.y;
+  EXPECT_NEAR(sx / samples.size(), 0.7968, 0.01);
+  EXPECT_NEAR(sy / samples.size(), 6.1676, 0.01);
+}
+
+TEST(chaos_game, points_fall_in_each_piece_with_its_probability) {
+  // Right Sierpinski: the pieces f_n(A) are the three quadrants it touches, so where a point lies
+  // tells which map put it there, independently of the sampler's own bookkeeping.
+  Ifs ifs = testing::right_sierpinski();
+  ifs.probabilities = {0.2, 0.3, 0.5};
+  const auto samples = chaos_game_samples(ifs, 1'000'000, {.seed = 3});
+  std::array<double, 3> share{};
+  for (const auto& s : samples) {
+    const int piece = s.p.x >= 0.5 ? 1 : s.p.y >= 0.5 ? 2 : 0;
+    share[piece] += 1.0 / samples.size();
+  }
+  EXPECT_NEAR(share[0], 0.2, 0.005);
+  EXPECT_NEAR(share[1], 0.3, 0.005);
+  EXPECT_NEAR(share[2], 0.5, 0.005);
+}
+
+TEST(chaos_game, thread_count_does_not_change_the_samples) {
+  const auto one = chaos_game_samples(testing::barnsley_fern(), 9'000'000, {.seed = 5, .threads = 1});
+  const auto four = chaos_game_samples(testing::barnsley_fern(), 9'000'000, {.seed = 5, .threads = 4});
+  ASSERT_EQ(one.size(), four.size());
+  for (std::size_t i = 0; i < one.size(); i += 997) {
+    ASSERT_EQ(one[i].p, four[i].p) << "sample " << i;
+    ASSERT_EQ(one[i].map, four[i].map);
+  }
+}
+
+TEST(chaos_game, burn_in_brings_points_onto_the_attractor) {
+  // Contraction 1/2: 1e-9 needs 30 steps, but never fewer than 64.
+  EXPECT_EQ(default_burn_in(testing::right_sierpinski()), 64);
+  Ifs slow = testing::right_sierpinski();
+  for (auto& m : slow.maps) m.a = m.d = 0.9;
+  EXPECT_EQ(default_burn_in(slow), 197);  // ceil(log 1e-9 / log 0.9)
+}
+
+TEST(map_picker, draws_maps_with_their_probabilities) {
+  const MapPicker pick({0.1, 0.2, 0.0, 0.7});
+  Rng rng(11);
+  std::array<int, 4> hits{};
+  constexpr int kDraws = 2'000'000;
+  for (int i = 0; i < kDraws; ++i) ++hits[pick(rng.next())];
+  EXPECT_NEAR(hits[0] / double(kDraws), 0.1, 0.002);
+  EXPECT_NEAR(hits[1] / double(kDraws), 0.2, 0.002);
+  EXPECT_EQ(hits[2], 0);
+  EXPECT_NEAR(hits[3] / double(kDraws), 0.7, 0.002);
+}
+
+TEST(rng, streams_of_one_seed_differ_and_repeat) {
+  Rng a(stream_seed(1, 0)), b(stream_seed(1, 1)), a2(stream_seed(1, 0));
+  int equal = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const auto x = a.next();
+    equal += x == b.next();
+    ASSERT_EQ(x, a2.next());
+  }
+  EXPECT_EQ(equal, 0);
+}
+
+}  // namespace
+}  // namespace ifsfx
