@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# Configures and builds ifsfx: tools/build.sh [release|asan]  (default release) → build/<kind>/
+set -euo pipefail
+cd "$(dirname "$0")/.."
+kind=${1:-release}
+case "$kind" in
+  release) flags=(-DCMAKE_BUILD_TYPE=Release) ;;
+  asan) flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DIFSFX_SANITIZE=ON -DIFSFX_BUILD_BENCH=OFF) ;;
+  *) echo "build.sh: unknown build kind '$kind' (release or asan)" >&2; exit 2 ;;
+esac
+launcher=()
+command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+cmake -S . -B "build/$kind" -G Ninja -DIFSFX_WERROR=ON "${flags[@]}" "${launcher[@]}" >/dev/null
+cmake --build "build/$kind" -j"$(nproc)"
