@@ -36,12 +36,27 @@ struct StealMapOptions {
   int threads = 0;  // 0 = all cores
 };
 
+// What compute_steal_map did. The chaos game's coverage policy: `quality` points per pixel,
+// then rounds of quality/4 more while a round adds more than 0.1 % to the pixels hit (at most 8),
+// then pixels no point reached but lying between hit neighbours (along a row, a column or a
+// diagonal) take the largest address among their hit neighbours (the tops rule, eq. 7).
+struct StealMapStats {
+  std::uint64_t points = 0;  // chaos-game points plotted (for the exact map: its attractor mask)
+  int rounds = 0;            // chaos-game rounds run (the first included)
+  double hit = 0;            // chaos game: fraction of output pixels some point reached
+  std::size_t filled = 0;    // chaos game: pixels filled from their neighbours
+  double coverage = 0;       // fraction of output pixels on the attractor, in the map
+  int levels = 0;            // symbols of the address followed per pixel
+  double seconds = 0;        // wall time
+  Box view;                  // the plane rectangle of F shown
+};
+
 // The steal map of F coloured through G on `size` pixels. G must have as many maps as F and is
 // used as given on the unit square (see fit_to_unit_square). Throws Error{invalid_ifs} when the
 // map counts differ.
 //   auto T = compute_steal_map(fern, default_colouring(4), {1920, 1080}, {.exact = true});
 StealMap compute_steal_map(const Ifs& F, const Ifs& G, cv::Size size,
-                           const StealMapOptions& options = {});
+                           const StealMapOptions& options = {}, StealMapStats* stats = nullptr);
 
 // The default colouring IFS for N maps: a shipped square tiling for N = 2, 3, 4, 9, otherwise a
 // strip or grid tiling of the unit square generated for N.
@@ -55,15 +70,34 @@ enum class Interpolation { nearest, bilinear };
 struct ApplyOptions {
   Interpolation interpolation = Interpolation::bilinear;
   cv::Scalar background = cv::Scalar::all(0);  // colour of uncovered pixels
+  int threads = 0;                             // 0 = all cores
 };
 
 // Colours the map's pixels from `source` (any size, CV_8UC3/CV_8UC4/CV_16U/CV_32F): returns an
 // image of the map's size and the source's type.
 cv::Mat apply(const StealMap& map, const cv::Mat& source, const ApplyOptions& options = {});
 
+// A steal map made ready for sources of one size: the fixed-point remap tables (cv::convertMaps)
+// with uncovered pixels sent off the image, computed once and reused for every frame.
+//   const auto prepared = prepare_apply(T, frame.size());
+//   for (...) apply(prepared, frame, out);
+struct PreparedStealMap {
+  cv::Size source_size;
+  ApplyOptions options;
+  cv::Mat xy;    // CV_16SC2: integer source pixel per output pixel
+  cv::Mat frac;  // CV_16UC1: bilinear sub-pixel index (empty for nearest)
+};
+PreparedStealMap prepare_apply(const StealMap& map, cv::Size source_size,
+                               const ApplyOptions& options = {});
+// Colours into `out` (reallocated only when its size or type differ). Throws
+// Error{invalid_argument} when the source's size is not the prepared one.
+void apply(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out);
+
 // save/load: a versioned binary file; load throws Error{io} or Error{unsupported} for a file that
 // is not a steal map, of another version, or truncated, naming the path.
+// With `expected_size`, a map of another size is refused (Error{invalid_argument}).
 void save(const StealMap& map, const std::filesystem::path& path);
-StealMap load_steal_map(const std::filesystem::path& path);
+StealMap load_steal_map(const std::filesystem::path& path,
+                        std::optional<cv::Size> expected_size = std::nullopt);
 
 }  // namespace ifsfx

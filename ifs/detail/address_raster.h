@@ -1,0 +1,105 @@
+// Private to ifs/: per-pixel top addresses on a raster, the common ground of the tops renderer
+// and of both ways of computing a steal map (DESIGN.md §2–3).
+//
+// An address σ1 σ2 σ3 … (most recent map first) is packed into a 64-bit key, σ1 in the top b
+// bits, b = ceil(log2 N): an unsigned compare of two keys is the lexicographic compare of their
+// first 64/b symbols, which is the order of eq. 7 (Top keeps the larger address). Bit 0 of a
+// stored key is forced to 1 so that 0 can mean "no point landed here"; it only touches the last
+// symbol's lowest bit, 64/b symbols deep.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "ifs/ifs.h"
+#include "ifs/view.h"
+
+namespace ifsfx::detail {
+
+// b = ceil(log2 N), at least 1.
+int symbol_bits(std::size_t n);
+
+struct AddressRaster {
+  Viewport viewport;
+  int bits = 1;                     // b
+  std::vector<std::uint64_t> keys;  // row-major, 0 = not on the attractor
+
+  int symbols() const { return 64 / bits; }
+  std::uint64_t at(int col, int row) const {
+    return keys[static_cast<std::size_t>(row) * viewport.size.width + col];
+  }
+  // Symbol k (0 = σ1, the first map of the address) of a key.
+  std::uint32_t symbol(std::uint64_t key, int k) const {
+    return static_cast<std::uint32_t>((key >> (64 - bits * (k + 1))) & ((1u << bits) - 1));
+  }
+  cv::Mat coverage() const;  // CV_8UC1, 255 where a key is stored
+};
+
+// The chaos-game coverage policy: `quality` points per pixel, then further rounds of quality/4
+// per pixel while a round still adds more than 0.1 % to the pixels hit (at most kMaxGrowthRounds),
+// then holes are filled from neighbours: a pixel no point reached but with hit neighbours on both
+// sides along a row, a column or a diagonal lies inside the attractor's raster, and takes the
+// largest key among its hit 8-neighbours (the tops rule applied to the neighbourhood).
+struct ChaosTopsOptions {
+  double quality = 64;
+  std::uint64_t seed = 1;
+  int threads = 0;
+  bool grow = true;  // the growth rounds
+  bool fill = true;  // the hole filling
+};
+
+inline constexpr int kMaxGrowthRounds = 8;
+
+struct ChaosTopsStats {
+  std::uint64_t points = 0;  // points plotted (burn-in excluded)
+  std::size_t hit = 0;       // pixels some point reached
+  std::size_t filled = 0;    // pixels filled from neighbours
+  int rounds = 0;            // rounds run, the first included
+};
+
+// Fractal tops by the chaos game (DESIGN.md §2): every pixel keeps the largest key of the points
+// that landed in it. Deterministic for a seed, whatever the thread count.
+AddressRaster chaos_tops(const Ifs& F, const Viewport& viewport, const ChaosTopsOptions& options,
+                         ChaosTopsStats* stats = nullptr);
+
+// The attractor as a set of pixels by the chaos game with the same coverage policy, without keys
+// (a smaller record, so a faster kernel): CV_8UC1, 255 on the attractor.
+cv::Mat chaos_attractor_mask(const Ifs& F, const Viewport& viewport,
+                             const ChaosTopsOptions& options, ChaosTopsStats* stats = nullptr);
+
+// The exact top-address descent (DESIGN.md §3) from every pixel centre of `viewport`.
+struct DescentOptions {
+  int levels = 2;       // L: symbols followed per pixel
+  double quality = 16;  // points per mask pixel for the attractor mask
+  std::uint64_t seed = 1;
+  int threads = 0;
+};
+
+struct Descent {
+  AddressRaster tops;  // the first min(L, 64/b) symbols of each covered pixel
+  cv::Mat uv;          // CV_32FC2 T(x) as normalised image coordinates, when G was given
+};
+
+// Follows the top address of each pixel centre through a conservative attractor mask. With a
+// colouring IFS G (same N), also evaluates T(x) = g_σ1 ∘ … ∘ g_σL(c) into `uv`.
+Descent exact_descent(const Ifs& F, const Ifs* G, const Viewport& viewport,
+                      const DescentOptions& options, ChaosTopsStats* mask_stats = nullptr);
+
+// Contraction of G over words: min over k = 1..3 of (max over words w of length k of ‖g_w‖)^(1/k),
+// which is < 1 for the swap tilings whose single maps have factor 1.
+double word_contraction(const Ifs& G);
+
+// Levels L such that s^L ≤ 2^-20: T is then within a millionth of the unit square.
+int levels_for(double contraction);
+
+// Evaluates T from keys for the chaos-game steal map: T ≈ g_σ1 ∘ … ∘ g_σm(c), m the symbols
+// after which F's piece holding the pixel's point has shrunk to a pixel, c the centre of G's
+// attractor. CV_32FC2 (u, v), v = 1 − y; uncovered pixels get (0, 0).
+cv::Mat uv_from_keys(const AddressRaster& tops, const Ifs& F, const Ifs& G, int threads);
+
+// Fixed point of an affine map, or the centre of the unit square when it has none.
+Point fixed_point(const AffineMap& g);
+
+}  // namespace ifsfx::detail

@@ -1,0 +1,112 @@
+// apply: colouring an image through a steal map, one cv::remap (DESIGN.md §3: T depends on F, G
+// and the grid only, so a video filter prepares the map once and remaps every frame).
+#include <algorithm>
+
+#include <fmt/format.h>
+#include <opencv2/imgproc.hpp>
+
+#include "ifs/error.h"
+#include "ifs/parallel.h"
+#include "ifs/steal_map.h"
+
+namespace ifsfx {
+
+namespace {
+
+void check_map(const StealMap& map) {
+  if (map.empty())
+    throw Error(ErrorKind::invalid_argument, "steal map: must not be empty (got 0×0)");
+  if (map.source_uv.type() != CV_32FC2 || map.coverage.type() != CV_8UC1 ||
+      map.source_uv.size() != map.coverage.size())
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("steal map: needs CV_32FC2 coordinates and a CV_8UC1 coverage of one "
+                            "size (got types {} and {}, {}x{} and {}x{})",
+                            map.source_uv.type(), map.coverage.type(), map.source_uv.cols,
+                            map.source_uv.rows, map.coverage.cols, map.coverage.rows));
+}
+
+void check_source(const cv::Mat& source) {
+  if (source.empty()) throw Error(ErrorKind::invalid_argument, "source image: must not be empty");
+  const int depth = source.depth();
+  if ((depth != CV_8U && depth != CV_16U && depth != CV_16S && depth != CV_32F &&
+       depth != CV_64F) ||
+      source.channels() > 4)
+    throw Error(ErrorKind::unsupported,
+                fmt::format("source image: 1 to 4 channels of 8/16-bit integers or floats are "
+                            "supported (got type {})",
+                            source.type()));
+  if (source.cols >= 32767 || source.rows >= 32767)
+    throw Error(ErrorKind::unsupported,
+                fmt::format("source image: sides below 32767 pixels are supported (got {}x{})",
+                            source.cols, source.rows));
+}
+
+}  // namespace
+
+PreparedStealMap prepare_apply(const StealMap& map, cv::Size source_size,
+                               const ApplyOptions& options) {
+  check_map(map);
+  if (source_size.width <= 0 || source_size.height <= 0 || source_size.width >= 32767 ||
+      source_size.height >= 32767)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("source size: 1 to 32766 pixels a side (got {}x{})", source_size.width,
+                            source_size.height));
+  // Normalised (u, v) to source pixels: (u·W − 0.5, v·H − 0.5). Covered pixels are clamped to the
+  // image (the edge pixel is repeated, never mixed with the background); uncovered ones are sent
+  // two pixels off it, where BORDER_CONSTANT gives the background.
+  const float w = static_cast<float>(source_size.width), h = static_cast<float>(source_size.height);
+  cv::Mat mx(map.size(), CV_32FC1), my(map.size(), CV_32FC1);
+  for (int r = 0; r < mx.rows; ++r) {
+    const auto* uv = map.source_uv.ptr<cv::Vec2f>(r);
+    const auto* cov = map.coverage.ptr<std::uint8_t>(r);
+    auto* px = mx.ptr<float>(r);
+    auto* py = my.ptr<float>(r);
+    for (int c = 0; c < mx.cols; ++c) {
+      if (cov[c] == 0) {
+        px[c] = py[c] = -2;
+        continue;
+      }
+      px[c] = std::clamp(uv[c][0] * w - 0.5f, 0.0f, w - 1);
+      py[c] = std::clamp(uv[c][1] * h - 0.5f, 0.0f, h - 1);
+    }
+  }
+  PreparedStealMap out;
+  out.source_size = source_size;
+  out.options = options;
+  cv::convertMaps(mx, my, out.xy, out.frac, CV_16SC2,
+                  options.interpolation == Interpolation::nearest);
+  return out;
+}
+
+void apply(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out) {
+  check_source(source);
+  if (source.size() != map.source_size)
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("source image: must be the size the steal map was prepared for "
+                    "({}x{}) (got {}x{})",
+                    map.source_size.width, map.source_size.height, source.cols, source.rows));
+  out.create(map.xy.size(), source.type());
+  const int interpolation =
+      map.options.interpolation == Interpolation::nearest ? cv::INTER_NEAREST : cv::INTER_LINEAR;
+  // Bands of rows on our own workers; each band is one remap.
+  constexpr int kBand = 64;
+  const auto bands = static_cast<std::size_t>((out.rows + kBand - 1) / kBand);
+  parallel_for(bands, map.options.threads, [&](std::size_t band, int) {
+    const cv::Range rows(static_cast<int>(band) * kBand,
+                         std::min(out.rows, static_cast<int>(band + 1) * kBand));
+    cv::Mat dst = out.rowRange(rows);
+    const cv::Mat frac = map.frac.empty() ? cv::Mat() : map.frac.rowRange(rows);
+    cv::remap(source, dst, map.xy.rowRange(rows), frac, interpolation, cv::BORDER_CONSTANT,
+              map.options.background);
+  });
+}
+
+cv::Mat apply(const StealMap& map, const cv::Mat& source, const ApplyOptions& options) {
+  check_source(source);
+  cv::Mat out;
+  apply(prepare_apply(map, source.size(), options), source, out);
+  return out;
+}
+
+}  // namespace ifsfx

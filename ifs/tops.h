@@ -1,0 +1,42 @@
+// Fractal tops (paper §3, eq. 4–9; DESIGN.md §2): the top address of each pixel of an IFS's
+// attractor — its largest address, so that where pieces overlap the higher-numbered map is on
+// top — and pictures of it, each pixel coloured by the first (and optionally second) symbol.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include <opencv2/core.hpp>
+
+#include "ifs/ifs.h"
+#include "ifs/view.h"
+
+namespace ifsfx {
+
+struct TopsOptions {
+  std::optional<Box> view;     // plane rectangle shown; default: the attractor, auto-framed
+  double margin = 0.05;        // auto-framing margin, fraction of the larger side
+  bool exact = false;          // per-pixel descent (DESIGN.md §3) instead of the chaos game
+  bool second_symbol = false;  // render_tops: mix in the colour of the second symbol
+  double quality = 64;         // chaos game: points per output pixel (see StealMapStats)
+  std::uint64_t seed = 1;
+  int threads = 0;  // 0 = all cores
+};
+
+// The first two symbols of each pixel's top address (0-based map indices) and where the
+// attractor is. `first`, `second`: CV_16UC1, 0 off the attractor; `coverage`: CV_8UC1, 255 on it.
+struct TopSymbols {
+  cv::Mat first, second, coverage;
+  Box view;  // the plane rectangle shown
+};
+
+// Top symbols by the chaos game (64-bit address keys, largest key wins per pixel) or exactly.
+//   auto tops = top_symbols(fern, {512, 512}, {.exact = true});
+TopSymbols top_symbols(const Ifs& F, cv::Size size, const TopsOptions& options = {});
+
+// Each pixel coloured by the first symbol of its top address through the IFS's colours or the
+// default palette (palette_colour); with `second_symbol`, the colour is (2·c(σ1) + c(σ2)) / 3,
+// so each piece shows its sub-pieces. CV_32FC4 BGRA in [0, 1]; alpha 1 on the attractor, 0 off.
+cv::Mat render_tops(const Ifs& F, cv::Size size, const TopsOptions& options = {});
+
+}  // namespace ifsfx
