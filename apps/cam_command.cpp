@@ -1,0 +1,463 @@
+// `ifsfx cam`: the live kaleidoscope of paper §6 (Fig. 6, bottom right) — a V4L2 camera coloured
+// through a steal map computed once, shown in a window, sent to a V4L2 output device (a virtual
+// webcam for any app), recorded to a movie file, or all three.
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+#include <opencv2/highgui.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "apps/cli_options.h"
+#include "apps/commands.h"
+#include "ifs/error.h"
+#include "ifs/image_io.h"
+#include "ifs/preset.h"
+#include "ifs/steal_map.h"
+#include "video/camera_pipeline.h"
+#include "video/file_sink.h"
+#include "video/fractal_filter.h"
+#include "video/v4l2_capture.h"
+#include "video/v4l2_device.h"
+#include "video/v4l2_output.h"
+
+namespace ifsfx::app {
+namespace {
+
+using video::CameraStats;
+using video::Frame;
+using video::FrameSink;
+
+struct CamArgs {
+  bool list = false;
+  std::string device;
+  std::string size = "640x480";
+  double fps = 30;
+  std::string format;
+  int buffers = 3;
+  std::int64_t max_frames = 0;
+  std::string output;
+  std::string output_format = "yuyv";
+  std::string record;
+  std::string codec;
+  bool window = false;
+  std::string preset = "sierpinski-triangle";
+  std::string colouring;
+  std::string view;
+  double margin = 0.05;
+  bool exact = false;
+  double quality = 64;
+  std::string background = "black";
+  double mix = 0;
+  std::uint64_t seed = 1;
+  int threads = 0;
+  bool quiet = false;
+};
+
+// Set by SIGINT/SIGTERM; the live loop checks it between frames.
+std::atomic<bool> g_stop{false};
+
+extern "C" void on_stop_signal(int) {
+  g_stop.store(true);
+}
+
+// Installs the stop handler for the life of the object, restoring the previous ones after.
+class StopSignals {
+ public:
+  StopSignals() {
+    g_stop.store(false);
+    old_int_ = std::signal(SIGINT, on_stop_signal);
+    old_term_ = std::signal(SIGTERM, on_stop_signal);
+  }
+  ~StopSignals() {
+    std::signal(SIGINT, old_int_);
+    std::signal(SIGTERM, old_term_);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+
+ private:
+  void (*old_int_)(int) = SIG_DFL;
+  void (*old_term_)(int) = SIG_DFL;
+};
+
+std::string rate_list(const std::vector<double>& fps, bool stepwise) {
+  if (fps.empty()) return "";
+  if (stepwise) return fmt::format(" ({:g}-{:g} fps)", fps.back(), fps.front());
+  std::string s;
+  for (double f : fps) s += (s.empty() ? "" : ", ") + fmt::format("{:g}", f);
+  return " (" + s + " fps)";
+}
+
+void print_formats(const char* direction, const std::vector<video::V4l2Format>& formats) {
+  for (const video::V4l2Format& f : formats) {
+    std::string sizes;
+    for (const video::V4l2FrameSize& s : f.sizes) {
+      sizes += fmt::format("{}{}x{}{}", sizes.empty() ? "" : (f.stepwise_sizes ? " to " : ", "),
+                           s.size.width, s.size.height, rate_list(s.fps, s.stepwise_rates));
+    }
+    std::printf("%s\n", fmt::format("  {} {:<4} {}{}{}", direction, video::fourcc_name(f.fourcc),
+                                    f.description, sizes.empty() ? "" : ": ", sizes)
+                            .c_str());
+  }
+}
+
+void list_devices() {
+  const auto devices = video::list_v4l2_devices();
+  if (devices.empty()) {
+    std::printf("no V4L2 video devices under /dev: no camera connected\n");
+    return;
+  }
+  for (const video::V4l2ListEntry& e : devices) {
+    if (!e.error.empty()) {
+      std::printf("%s\n", fmt::format("{}: cannot query: {}", e.info.path, e.error).c_str());
+      continue;
+    }
+    const video::V4l2DeviceInfo& d = e.info;
+    std::printf("%s\n", fmt::format("{}: {} ({}, {}){}{}", d.path, d.card, d.driver, d.bus,
+                                    d.capture ? ", capture" : "", d.output ? ", output" : "")
+                            .c_str());
+    print_formats("capture", d.capture_formats);
+    print_formats("output ", d.output_formats);
+  }
+}
+
+// The first capture device, or a one-line error saying there is no camera.
+std::string default_device() {
+  for (const video::V4l2ListEntry& e : video::list_v4l2_devices()) {
+    if (e.error.empty() && e.info.capture && !e.info.output) return e.info.path;
+  }
+  throw Error(ErrorKind::not_found,
+              "cam: no camera found (no V4L2 capture device under /dev); connect one or name "
+              "it with --device");
+}
+
+// A sink that forwards to a movie file while recording is on, so the window's record key can
+// start and stop files while the loop holds one fixed list of sinks.
+class RecordingSink final : public FrameSink {
+ public:
+  // `first` is taken as given when `exact` (the --record path, overwritten like any output);
+  // otherwise, and for every later file, the first free name FIRST-2, FIRST-3, ... is used.
+  RecordingSink(std::filesystem::path first, bool exact, std::string codec, cv::Size size,
+                double fps)
+      : first_(std::move(first)), exact_(exact), codec_(std::move(codec)), size_(size), fps_(fps) {}
+
+  bool recording() const { return file_ != nullptr; }
+  const std::filesystem::path& path() const { return path_; }
+  std::int64_t frames() const { return file_ ? file_->frames_written() : frames_; }
+
+  void start() {
+    std::filesystem::path p = first_;
+    if (started_ > 0 || !exact_) {
+      for (int n = 2; std::filesystem::exists(p); ++n) {
+        p = first_.parent_path() /
+            fmt::format("{}-{}{}", first_.stem().string(), n, first_.extension().string());
+      }
+    }
+    video::FileSinkOptions o;
+    o.codec = codec_;
+    o.size = size_;
+    o.frame_rate = std::abs(fps_ - std::round(fps_)) < 1e-6
+                       ? video::Rational{static_cast<int>(std::lround(fps_)), 1}
+                       : video::Rational{static_cast<int>(std::lround(fps_ * 1000)), 1000};
+    file_ = std::make_unique<video::FileSink>(p, o);
+    path_ = p;
+    frames_ = 0;
+    ++started_;
+  }
+  void stop() {
+    if (!file_) return;
+    frames_ = file_->frames_written();
+    auto file = std::move(file_);
+    file->close();
+  }
+
+  void write(const Frame& frame) override {
+    if (file_) file_->write(frame);
+  }
+  void close() override { stop(); }
+  std::string name() const override { return path_.string(); }
+
+ private:
+  std::filesystem::path first_, path_;
+  bool exact_ = false;
+  std::string codec_;
+  cv::Size size_;
+  double fps_;
+  int started_ = 0;
+  std::int64_t frames_ = 0;
+  std::unique_ptr<video::FileSink> file_;
+};
+
+// The fixed-map filter: F coloured through G on the camera's frame size (DESIGN.md §3).
+struct LiveFilter {
+  std::string preset_name;
+  video::RemapTable table;
+  video::FilterOptions options;
+};
+
+LiveFilter make_filter(const CamArgs& args, const std::string& preset, cv::Size size) {
+  const IfsPreset F = load_ifs(preset);
+  Ifs G;
+  if (!args.colouring.empty()) G = load_ifs(args.colouring).ifs;
+  if (G.size() != F.ifs.size()) G = default_colouring(F.ifs.size());
+  StealMapOptions o;
+  o.view = view_option(args.view);
+  o.margin = args.margin;
+  o.exact = args.exact;
+  o.quality = args.quality;
+  o.seed = args.seed;
+  o.threads = args.threads;
+  LiveFilter filter;
+  filter.preset_name = F.ifs.name.empty() ? preset : F.ifs.name;
+  filter.options.mix = args.mix;
+  filter.options.background = video::parse_background(args.background);
+  filter.options.threads = args.threads;
+  filter.table = video::make_remap_table(compute_steal_map(F.ifs, G, size, o), size,
+                                         Interpolation::bilinear, args.threads);
+  return filter;
+}
+
+// A snapshot file name not taken yet: cam-snapshot-001.png, -002, ...
+std::filesystem::path next_snapshot() {
+  for (int n = 1;; ++n) {
+    std::filesystem::path p = fmt::format("cam-snapshot-{:03}.png", n);
+    if (!std::filesystem::exists(p)) return p;
+  }
+}
+
+// The interactive window: keys n/p (preset), s (snapshot), r (record), q/Esc (quit).
+class CamWindow {
+ public:
+  static constexpr const char* kTitle = "ifsfx cam";
+  CamWindow() {
+    try {
+      cv::namedWindow(kTitle, cv::WINDOW_AUTOSIZE);
+    } catch (const cv::Exception& e) {
+      throw Error(ErrorKind::unsupported,
+                  fmt::format("--window: cannot open a window (no display?): {}; run headless "
+                              "with --output or --record",
+                              e.err));
+    }
+  }
+  ~CamWindow() {
+    try {
+      cv::destroyWindow(kTitle);
+    } catch (const cv::Exception&) {
+    }
+  }
+  CamWindow(const CamWindow&) = delete;
+  CamWindow& operator=(const CamWindow&) = delete;
+
+  // Shows the frame with the readout; returns the key pressed (-1 for none).
+  int show(const cv::Mat& image, const std::string& readout) {
+    image.copyTo(canvas_);
+    const cv::Point at(10, 24);
+    cv::putText(canvas_, readout, at, cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar::all(0), 3,
+                cv::LINE_AA);
+    cv::putText(canvas_, readout, at, cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar::all(255), 1,
+                cv::LINE_AA);
+    cv::imshow(kTitle, canvas_);
+    const int key = cv::waitKey(1);
+    return key < 0 ? -1 : key & 0xff;
+  }
+
+ private:
+  cv::Mat canvas_;
+};
+
+void run_cam(const CamArgs& args) {
+  if (args.list) {
+    list_devices();
+    return;
+  }
+  const cv::Size size = size_option(args.size);
+  if (args.fps <= 0 || args.fps > 1000) {
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--fps: must be in (0, 1000] (got {:g})", args.fps));
+  }
+  const bool window = args.window || (args.output.empty() && args.record.empty());
+  // Fail on a bad output path before the camera is opened and the map computed.
+  if (!args.record.empty()) video::resolve_encoder(args.record, args.codec);
+  const std::string device = args.device.empty() ? default_device() : args.device;
+
+  video::V4l2CaptureOptions copt;
+  copt.size = size;
+  copt.fps = args.fps;
+  copt.buffers = args.buffers;
+  if (!args.format.empty()) copt.formats = {video::parse_pixel_format(args.format)};
+  video::V4l2Capture camera(device, copt);
+  const cv::Size granted = camera.size();
+  const double fps = camera.fps() > 0 ? camera.fps() : args.fps;
+  if (!args.quiet) {
+    std::fprintf(
+        stderr, "%s\n",
+        fmt::format("cam: {} ({}): {}x{} {} at {:g} fps", device, camera.card(), granted.width,
+                    granted.height, video::fourcc_name(video::fourcc(camera.format())), fps)
+            .c_str());
+  }
+
+  const auto shipped = list_shipped_presets();
+  std::optional<std::size_t> preset_index;
+  for (std::size_t i = 0; i < shipped.size(); ++i) {
+    if (shipped[i].name == args.preset) preset_index = i;
+  }
+  LiveFilter filter = make_filter(args, args.preset, granted);
+
+  std::vector<FrameSink*> sinks;
+  std::unique_ptr<video::V4l2Output> webcam;
+  if (!args.output.empty()) {
+    webcam = std::make_unique<video::V4l2Output>(
+        args.output, granted,
+        video::V4l2OutputOptions{
+            .format = video::parse_pixel_format(args.output_format, "--output-format"),
+            .fps = fps});
+    sinks.push_back(webcam.get());
+  }
+  RecordingSink recording(args.record.empty() ? "cam-recording.mkv" : args.record,
+                          !args.record.empty(), args.codec, granted, fps);
+  if (!args.record.empty()) recording.start();
+  sinks.push_back(&recording);
+
+  std::unique_ptr<CamWindow> win;
+  if (window) win = std::make_unique<CamWindow>();
+  bool quit = false;
+  const auto observer = [&](const Frame& out, const CameraStats& stats) {
+    if (!win) return true;
+    const std::string readout = fmt::format("{:.1f} fps  {}{}", stats.fps(), filter.preset_name,
+                                            recording.recording() ? "  REC" : "");
+    const int key = win->show(out.image, readout);
+    switch (key) {
+      case 'q':
+      case 27:
+        quit = true;
+        return false;
+      case 'n':
+      case 'p': {
+        if (shipped.empty()) break;
+        const std::size_t n = shipped.size();
+        const bool forward = key == 'n';
+        std::size_t i = preset_index.value_or(forward ? n - 1 : 0);
+        i = forward ? (i + 1) % n : (i + n - 1) % n;
+        preset_index = i;
+        filter = make_filter(args, shipped[i].name, granted);
+        break;
+      }
+      case 's':
+        write_image(next_snapshot(), out.image);
+        break;
+      case 'r':
+        if (recording.recording()) {
+          recording.stop();
+        } else {
+          recording.start();
+        }
+        break;
+      default:
+        break;
+    }
+    return true;
+  };
+
+  StopSignals signals;
+  CameraStats stats;
+  try {
+    stats = video::run_camera(
+        camera,
+        [&](const Frame& frame) {
+          return video::filter_frame(frame.image, filter.table, filter.options);
+        },
+        sinks, {.max_frames = args.max_frames, .stop = &g_stop}, observer);
+  } catch (const Error& e) {
+    if (recording.frames() > 0) {
+      throw Error(e.kind(), fmt::format("{}; recording kept: {} ({} frames)", e.what(),
+                                        recording.path().string(), recording.frames()));
+    }
+    throw;
+  }
+  if (!args.quiet) {
+    std::fprintf(
+        stderr, "%s\n",
+        fmt::format("cam: {} frames in {:.2f} s ({:.1f} fps), {} dropped ({:.1f}%), "
+                    "latency mean {:.1f} ms, p95 {:.1f} ms{}",
+                    stats.frames, stats.seconds, stats.fps(), stats.dropped,
+                    100 * stats.drop_fraction(), 1e3 * stats.latency_mean, 1e3 * stats.latency_p95,
+                    recording.frames() > 0
+                        ? fmt::format("; recorded {} ({} frames)", recording.path().string(),
+                                      recording.frames())
+                        : "")
+            .c_str());
+  }
+  if (g_stop.load() && !quit) {
+    throw Error(ErrorKind::interrupted,
+                fmt::format("cam: interrupted after {} frames", stats.frames));
+  }
+}
+
+}  // namespace
+
+void add_cam_command(CLI::App& app) {
+  auto args = std::make_shared<CamArgs>();
+  auto* cmd = app.add_subcommand(
+      "cam", "Live fractal kaleidoscope from a V4L2 camera: window, virtual webcam, recording");
+  cmd->add_flag("--list", args->list, "List V4L2 devices with their formats, sizes and rates");
+  cmd->add_option("--device", args->device,
+                  "Camera device node (default: the first V4L2 capture device)");
+  cmd->add_option("--size", args->size, "Requested capture size WxH (the camera may grant another)")
+      ->capture_default_str();
+  cmd->add_option("--fps", args->fps, "Requested frame rate")->capture_default_str();
+  cmd->add_option("--format", args->format,
+                  "Capture pixel format: yuyv, mjpeg, nv12, yuv420, uyvy, rgb24, bgr24 "
+                  "(default: the best the camera offers at --size and --fps)");
+  cmd->add_option("--buffers", args->buffers, "Driver buffers (fewer = lower latency)")
+      ->capture_default_str()
+      ->check(CLI::Range(2, 32));
+  cmd->add_option("--max-frames", args->max_frames, "Stop after N frames (0 = until quit)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("-o,--output", args->output,
+                  "V4L2 output device, e.g. a v4l2loopback node /dev/video10 (virtual webcam)");
+  cmd->add_option("--output-format", args->output_format,
+                  "Pixel format of --output: yuyv or yuv420")
+      ->capture_default_str();
+  cmd->add_option("--record", args->record, "Record the filtered frames to a movie file");
+  cmd->add_option("--codec", args->codec, "Encoder of --record (default: the container's)");
+  cmd->add_flag("--window", args->window,
+                "Show a window (default when neither --output nor --record is given). Keys: n/p "
+                "next/previous preset, s snapshot, r start/stop recording, q/Esc quit");
+  cmd->add_option("--preset", args->preset,
+                  "Drawing IFS F: a shipped name, a .toml/.ifs path, or FILE.ifs:NAME")
+      ->capture_default_str();
+  cmd->add_option("--colouring", args->colouring,
+                  "Colouring IFS G on the frame's unit square (default: the tiling for F's map "
+                  "count)");
+  cmd->add_option("--view", args->view,
+                  "Plane rectangle x0,y0,x1,y1 shown (default: the attractor, auto-framed)");
+  cmd->add_option("--margin", args->margin, "Auto-framing margin, fraction of the larger side")
+      ->capture_default_str();
+  cmd->add_flag("--exact", args->exact, "Exact steal map by per-pixel descent (else chaos game)");
+  cmd->add_option("--quality", args->quality, "Chaos-game points per output pixel")
+      ->capture_default_str();
+  cmd->add_option("--background", args->background,
+                  "Uncovered areas: black, original, #rrggbb or R,G,B")
+      ->capture_default_str();
+  cmd->add_option("--mix", args->mix, "Blend of the original frame over the fractal, 0..1")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--seed", args->seed, "Random seed of the chaos-game steal map")
+      ->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", args->quiet, "Do not print the device and summary lines");
+  cmd->callback([args] { run_cam(*args); });
+}
+
+}  // namespace ifsfx::app
