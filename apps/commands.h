@@ -8,5 +8,6 @@ namespace ifsfx::app {
 
 void add_presets_command(CLI::App& app);  // list shipped presets
 void add_render_command(CLI::App& app);   // render an IFS to a still
+void add_cam_command(CLI::App& app);      // live camera kaleidoscope over V4L2
 
 }  // namespace ifsfx::app
