@@ -1,0 +1,84 @@
+#include "video/drift.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "ifs/error.h"
+#include "ifs/rng.h"
+#include "ifs/view.h"
+
+namespace ifsfx::video {
+
+namespace {
+
+// The gradient at lattice point i of a noise stream: uniform in [−1, 1], from a hash alone.
+double gradient(std::uint64_t stream, std::int64_t i) {
+  const std::uint64_t h = mix64(stream ^ mix64(static_cast<std::uint64_t>(i)));
+  return static_cast<double>(h >> 11) * 0x1.0p-52 - 1.0;
+}
+
+// Perlin's 1-D gradient noise with the quintic fade: smooth (C²), zero at lattice points, about
+// [−0.5, 0.5].
+double gradient_noise(double x, std::uint64_t stream) {
+  const double cell = std::floor(x);
+  const auto i = static_cast<std::int64_t>(cell);
+  const double f = x - cell;
+  const double fade = f * f * f * (f * (f * 6 - 15) + 10);
+  const double left = gradient(stream, i) * f;
+  const double right = gradient(stream, i + 1) * (f - 1);
+  return left + fade * (right - left);
+}
+
+}  // namespace
+
+double fbm(double x, std::uint64_t seed, std::uint64_t channel, int octaves) {
+  double sum = 0, amplitude = 1, norm = 0, frequency = 1;
+  for (int o = 0; o < octaves; ++o) {
+    sum += amplitude * gradient_noise(x * frequency, stream_seed(seed, channel * 64 + o));
+    norm += amplitude;
+    amplitude *= 0.5;
+    frequency *= 2;
+  }
+  return norm > 0 ? 2 * sum / norm : 0;  // gradient noise spans about ±0.5
+}
+
+Ifs drift(const Ifs& base, double t, const DriftOptions& options) {
+  if (!(options.amount >= 0) || !std::isfinite(options.amount))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--drift-amount: must be 0 or more (got {})", options.amount));
+  if (!(options.speed >= 0) || !std::isfinite(options.speed))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--drift-speed: must be 0 or more (got {})", options.speed));
+  if (options.octaves < 1 || options.octaves > 16)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("drift octaves: must be in 1..16 (got {})", options.octaves));
+  const Box bounds = attractor_bounds(base, options.seed);
+  const double extent = std::max({bounds.width(), bounds.height(), 1e-9});
+  const double x = t * options.speed;
+  Ifs out = base;
+  for (std::size_t n = 0; n < base.size(); ++n) {
+    const AffineMap& f = base.maps[n];
+    auto k = f.coefficients();
+    for (std::size_t j = 0; j < 6; ++j) {
+      const double scale = j < 4 ? options.amount : options.amount * extent;
+      k[j] += scale * fbm(x, options.seed, n * 6 + j, options.octaves);
+    }
+    AffineMap g = AffineMap::from_coefficients(k);
+    // Keep the map contractive: scale its linear part back to the cap (translation kept).
+    const double cap = std::max(options.max_contraction, f.contraction());
+    const double s = g.contraction();
+    if (s > cap) {
+      const double r = cap / s;
+      g.a *= r;
+      g.b *= r;
+      g.c *= r;
+      g.d *= r;
+    }
+    out.maps[n] = g;
+  }
+  return out;
+}
+
+}  // namespace ifsfx::video

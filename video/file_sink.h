@@ -1,0 +1,65 @@
+// A movie file as a frame sink, encoded and muxed with FFmpeg's libraries. The file is written
+// under a temporary name beside the target (OUTPUT.part) and renamed into place by close(), so an
+// unfinished file never takes the output's name; a file closed early (Ctrl-C, a damaged input) is
+// a complete, playable movie of the frames written.
+#pragma once
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "video/file_source.h"
+#include "video/frame_io.h"
+
+namespace ifsfx::video {
+
+struct FileSinkOptions {
+  // Encoder name as ffmpeg knows it ("libx264", "h264", "mpeg4", "ffv1", "mjpeg", ...); empty =
+  // the container's default, as ffmpeg chooses it: .mp4/.mkv → H.264 (libx264), .avi → MPEG-4
+  // part 2. Encoder settings are ffmpeg's defaults (libx264: preset medium, CRF 23), except
+  // MPEG-4 part 2, encoded at constant quality q 3 instead of ffmpeg's 200 kb/s.
+  std::string codec;
+  cv::Size size;  // frame size; every frame written must have it
+  Rational frame_rate{25, 1};
+  int threads = 0;  // encoder threads; 0 = all cores
+  // Copy the audio streams of this file unchanged into the output, in sync with the frames.
+  std::optional<std::filesystem::path> audio_from;
+  // The time on audio_from's clock that Frame::timestamp 0 stands for (FileSource::start_time).
+  double audio_origin = 0;
+};
+
+// Opens the output, checks everything that can be checked before work starts, and writes the
+// header. Throws Error{unsupported} for an unknown container extension, an unknown codec, a codec
+// the container cannot carry, and Error{io} for an output that cannot be written (folder missing,
+// no permission) — all before any frame is encoded.
+//   FileSink out("out.mp4", {.size = in.size(), .frame_rate = in.frame_rate()});
+//   out.write(frame); ...; out.close();
+class FileSink final : public FrameSink {
+ public:
+  FileSink(const std::filesystem::path& path, const FileSinkOptions& options);
+  ~FileSink() override;
+  FileSink(const FileSink&) = delete;
+  FileSink& operator=(const FileSink&) = delete;
+
+  // Frames are numbered in order of writing: the output is constant-rate at options.frame_rate.
+  void write(const Frame& frame) override;
+  // Flushes the encoder, writes the audio up to the end of the last frame, the trailer, and
+  // renames the file into place. Without any frame written, removes the temporary file and throws
+  // Error{io}: an empty movie is not a playable file.
+  void close() override;
+  std::string name() const override;
+
+  std::int64_t frames_written() const;
+  std::string codec_name() const;  // the encoder in use, e.g. "libx264"
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// The encoder `codec` names (or the default of the container `path` names), checked as close() of
+// a FileSink would check it; for --help and for errors before work. Throws as FileSink does.
+std::string resolve_encoder(const std::filesystem::path& path, const std::string& codec);
+
+}  // namespace ifsfx::video

@@ -1,0 +1,238 @@
+#include "video/file_source.h"
+
+#include <cmath>
+#include <cstdio>
+#include <system_error>
+
+#include <fmt/format.h>
+
+#include "video/av_util.h"
+
+namespace ifsfx::video {
+
+using detail::check_av;
+
+void silence_libav_log() {
+  av_log_set_level(AV_LOG_QUIET);
+}
+
+namespace {
+
+// Matroska keeps a stream's length only as a "DURATION" tag, "HH:MM:SS.nnnnnnnnn".
+double matroska_duration(const AVStream* stream) {
+  const AVDictionaryEntry* tag = av_dict_get(stream->metadata, "DURATION", nullptr, 0);
+  if (tag == nullptr) return -1;
+  int h = 0, m = 0;
+  double s = 0;
+  if (std::sscanf(tag->value, "%d:%d:%lf", &h, &m, &s) != 3) return -1;
+  return h * 3600.0 + m * 60.0 + s;
+}
+
+}  // namespace
+
+struct FileSource::Impl {
+  std::filesystem::path path;
+  std::unique_ptr<AVFormatContext, detail::InputContextDeleter> format;
+  std::unique_ptr<AVCodecContext, detail::CodecContextDeleter> codec;
+  std::unique_ptr<AVPacket, detail::PacketDeleter> packet{av_packet_alloc()};
+  std::unique_ptr<AVFrame, detail::FrameDeleter> frame{av_frame_alloc()};
+  std::unique_ptr<SwsContext, detail::SwsDeleter> sws;
+  AVStream* stream = nullptr;
+  Rational rate{25, 1};
+  std::int64_t announced_frames = -1;  // from the container, for the truncation check
+  double announced_seconds = -1;       // the video stream's own length, when stored
+  std::int64_t start_pts = AV_NOPTS_VALUE;
+  std::int64_t decoded = 0;
+  double last_timestamp = -1;
+  int corrupt_packets = 0;
+  bool draining = false;  // the demuxer is exhausted; the decoder is being flushed
+  bool finished = false;
+  bool audio = false;
+
+  std::string what() const { return path.string(); }
+
+  // The next decoded AVFrame, or false at the end of the stream.
+  bool decode_next() {
+    for (;;) {
+      const int got = avcodec_receive_frame(codec.get(), frame.get());
+      if (got == 0) return true;
+      if (got == AVERROR_EOF) return false;
+      if (got != AVERROR(EAGAIN)) {
+        // A frame the decoder could not rebuild: count it and keep going, as players do.
+        ++corrupt_packets;
+        continue;
+      }
+      if (draining) return false;
+      const int r = av_read_frame(format.get(), packet.get());
+      if (r == AVERROR_EOF || (r < 0 && avio_feof(format->pb))) {
+        draining = true;
+        avcodec_send_packet(codec.get(), nullptr);
+        continue;
+      }
+      check_av(r, ErrorKind::io, what(), "cannot read the file");
+      if (packet->stream_index == stream->index) {
+        if (packet->flags & AV_PKT_FLAG_CORRUPT) ++corrupt_packets;
+        const int sent = avcodec_send_packet(codec.get(), packet.get());
+        if (sent < 0 && sent != AVERROR(EAGAIN)) ++corrupt_packets;
+      }
+      av_packet_unref(packet.get());
+    }
+  }
+
+  // After the last frame: a short or damaged stream is an error, raised once everything that
+  // decoded has been handed out.
+  void check_complete() const {
+    const double period = 1.0 / rate.value();
+    const bool short_count = announced_frames > 0 && decoded < announced_frames - 1;
+    const bool short_time =
+        announced_seconds > 0 && last_timestamp + period < announced_seconds - 1.5 * period;
+    if (!short_count && !short_time && corrupt_packets == 0) return;
+    if (decoded == 0)
+      throw Error(ErrorKind::io,
+                  fmt::format("{}: no frame could be decoded (corrupt file)", what()));
+    if (short_count)
+      throw Error(ErrorKind::io, fmt::format("{}: truncated or corrupt: decoded {} of {} frames",
+                                             what(), decoded, announced_frames));
+    if (short_time)
+      throw Error(ErrorKind::io,
+                  fmt::format("{}: truncated or corrupt: decoded {:.2f} s of {:.2f} s", what(),
+                              last_timestamp + period, announced_seconds));
+    throw Error(ErrorKind::io, fmt::format("{}: corrupt: {} damaged packets ({} frames decoded)",
+                                           what(), corrupt_packets, decoded));
+  }
+};
+
+FileSource::FileSource(const std::filesystem::path& path, const FileSourceOptions& options)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& s = *impl_;
+  s.path = path;
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+    throw Error(ErrorKind::not_found, fmt::format("{}: no such file", path.string()));
+  if (std::filesystem::is_directory(path, ec))
+    throw Error(ErrorKind::unsupported, fmt::format("{}: is a folder, not a movie file", s.what()));
+  AVFormatContext* raw = nullptr;
+  check_av(avformat_open_input(&raw, path.c_str(), nullptr, nullptr), ErrorKind::unsupported,
+           s.what(), "not a movie file FFmpeg can read");
+  s.format.reset(raw);
+  check_av(avformat_find_stream_info(raw, nullptr), ErrorKind::unsupported, s.what(),
+           "cannot read the streams");
+  const AVCodec* decoder = nullptr;
+  const int index = av_find_best_stream(raw, AVMEDIA_TYPE_VIDEO, -1, -1, &decoder, 0);
+  if (index < 0 || decoder == nullptr)
+    throw Error(ErrorKind::unsupported,
+                fmt::format("{}: no video stream that FFmpeg can decode", s.what()));
+  s.stream = raw->streams[index];
+  for (unsigned i = 0; i < raw->nb_streams; ++i)
+    if (raw->streams[i]->codecpar->codec_type == AVMEDIA_TYPE_AUDIO) s.audio = true;
+  for (unsigned i = 0; i < raw->nb_streams; ++i)
+    if (static_cast<int>(i) != index) raw->streams[i]->discard = AVDISCARD_ALL;
+
+  s.codec.reset(avcodec_alloc_context3(decoder));
+  check_av(avcodec_parameters_to_context(s.codec.get(), s.stream->codecpar), ErrorKind::unsupported,
+           s.what(), "unusable video stream parameters");
+  s.codec->thread_count = options.threads;
+  s.codec->thread_type = FF_THREAD_FRAME | FF_THREAD_SLICE;
+  check_av(avcodec_open2(s.codec.get(), decoder, nullptr), ErrorKind::unsupported, s.what(),
+           fmt::format("cannot open the {} decoder", decoder->name));
+  if (s.codec->width <= 0 || s.codec->height <= 0)
+    throw Error(ErrorKind::unsupported,
+                fmt::format("{}: video stream has no frame size", s.what()));
+
+  AVRational r = s.stream->avg_frame_rate;
+  if (r.num <= 0 || r.den <= 0) r = s.stream->r_frame_rate;
+  if (r.num > 0 && r.den > 0) s.rate = {r.num, r.den};
+  if (s.stream->nb_frames > 0) s.announced_frames = s.stream->nb_frames;
+  if (s.stream->duration != AV_NOPTS_VALUE && s.stream->duration > 0)
+    s.announced_seconds = static_cast<double>(s.stream->duration) * av_q2d(s.stream->time_base);
+  else
+    s.announced_seconds = matroska_duration(s.stream);
+}
+
+FileSource::~FileSource() = default;
+
+std::optional<Frame> FileSource::read() {
+  Impl& s = *impl_;
+  if (s.finished) return std::nullopt;
+  if (!s.decode_next()) {
+    s.finished = true;
+    s.check_complete();
+    return std::nullopt;
+  }
+  AVFrame* f = s.frame.get();
+  if (f->width != s.codec->width || f->height != s.codec->height)
+    throw Error(ErrorKind::unsupported,
+                fmt::format("{}: frame size changes mid-stream ({}x{} to {}x{})", s.what(),
+                            s.codec->width, s.codec->height, f->width, f->height));
+  Frame out;
+  out.index = s.decoded;
+  const std::int64_t pts = f->best_effort_timestamp;
+  if (pts != AV_NOPTS_VALUE) {
+    if (s.start_pts == AV_NOPTS_VALUE) {
+      s.start_pts =
+          s.stream->start_time != AV_NOPTS_VALUE ? std::min(s.stream->start_time, pts) : pts;
+    }
+    out.timestamp = static_cast<double>(pts - s.start_pts) * av_q2d(s.stream->time_base);
+  } else {
+    out.timestamp = static_cast<double>(s.decoded) / s.rate.value();
+  }
+  out.image.create(f->height, f->width, CV_8UC3);
+  s.sws.reset(sws_getCachedContext(s.sws.release(), f->width, f->height,
+                                   static_cast<AVPixelFormat>(f->format), f->width, f->height,
+                                   AV_PIX_FMT_BGR24, SWS_BICUBIC, nullptr, nullptr, nullptr));
+  if (!s.sws)
+    throw Error(ErrorKind::unsupported,
+                fmt::format("{}: cannot convert pixel format {} to BGR", s.what(),
+                            av_get_pix_fmt_name(static_cast<AVPixelFormat>(f->format))));
+  std::uint8_t* dst[4] = {out.image.data, nullptr, nullptr, nullptr};
+  const int dst_stride[4] = {static_cast<int>(out.image.step), 0, 0, 0};
+  sws_scale(s.sws.get(), f->data, f->linesize, 0, f->height, dst, dst_stride);
+  av_frame_unref(f);
+  ++s.decoded;
+  s.last_timestamp = out.timestamp;
+  return out;
+}
+
+cv::Size FileSource::size() const {
+  return {impl_->codec->width, impl_->codec->height};
+}
+
+double FileSource::fps() const {
+  return impl_->rate.value();
+}
+
+std::int64_t FileSource::frame_count() const {
+  if (impl_->announced_frames > 0) return impl_->announced_frames;
+  if (impl_->announced_seconds > 0)
+    return std::llround(impl_->announced_seconds * impl_->rate.value());
+  if (impl_->format->duration > 0)
+    return std::llround(static_cast<double>(impl_->format->duration) / AV_TIME_BASE *
+                        impl_->rate.value());
+  return -1;
+}
+
+std::string FileSource::name() const {
+  return impl_->path.string();
+}
+
+Rational FileSource::frame_rate() const {
+  return impl_->rate;
+}
+
+bool FileSource::has_audio() const {
+  return impl_->audio;
+}
+
+double FileSource::start_time() const {
+  const AVStream* st = impl_->stream;
+  std::int64_t origin = impl_->start_pts;
+  if (origin == AV_NOPTS_VALUE) origin = st->start_time;
+  if (origin == AV_NOPTS_VALUE) return 0;
+  return static_cast<double>(origin) * av_q2d(st->time_base);
+}
+
+const std::filesystem::path& FileSource::path() const {
+  return impl_->path;
+}
+
+}  // namespace ifsfx::video

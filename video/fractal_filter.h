@@ -1,0 +1,63 @@
+// The fractal filter of paper §6 (Fig. 6): colour stealing (§4) with each video frame as the
+// colour source. The steal map T(x) = π_G(τ_F(x)) does not depend on the frame (DESIGN.md §3), so
+// it is computed once and turned here into a remap table in the frame's pixels; each frame is then
+// one remap, plus the optional blend with the original frame.
+#pragma once
+
+#include <opencv2/core.hpp>
+
+#include "ifs/steal_map.h"
+
+namespace ifsfx::video {
+
+// What shows where the attractor does not cover the output.
+enum class BackgroundKind { colour, original };
+
+struct Background {
+  BackgroundKind kind = BackgroundKind::colour;
+  cv::Scalar colour = cv::Scalar::all(0);  // BGR, 0..255 (kind == colour)
+};
+
+// Parses --background: "black", "original", "#rrggbb" or "R,G,B" (0..255 each); throws
+// Error{parse} naming `what`.
+Background parse_background(const std::string& text, const std::string& what = "--background");
+
+struct FilterOptions {
+  Interpolation interpolation = Interpolation::bilinear;
+  // Weight of the original frame (resized to the output) blended over the fractal: 0 = the
+  // fractal alone, 1 = the original alone.
+  double mix = 0;
+  Background background;
+  int threads = 0;  // 0 = all cores
+};
+
+// A steal map as a remap table for sources of one size: fixed-point pixel coordinates
+// (cv::convertMaps), with uncovered pixels pointing outside the source so that one remap with a
+// transparent border leaves the background in place.
+struct RemapTable {
+  cv::Mat xy;            // CV_16SC2: integer source pixel per output pixel
+  cv::Mat fraction;      // CV_16UC1: sub-pixel position (bilinear), empty for nearest
+  cv::Size source_size;  // the frame size the table was made for
+  Interpolation interpolation = Interpolation::bilinear;
+
+  cv::Size size() const { return xy.size(); }
+};
+
+// Source pixel (x, y) = (u·W − 0.5, v·H − 0.5) for a W×H source (steal_map.h's convention),
+// clamped inside the source so that edge pixels stay on it under bilinear lookup.
+RemapTable make_remap_table(const StealMap& map, cv::Size source_size,
+                            Interpolation interpolation = Interpolation::bilinear, int threads = 0);
+
+// The filtered frame: `frame` (CV_8UC3, of table.source_size) coloured through the table, of the
+// table's size.
+//   auto table = make_remap_table(T, frame.size());
+//   cv::Mat out = filter_frame(frame, table);
+cv::Mat filter_frame(const cv::Mat& frame, const RemapTable& table,
+                     const FilterOptions& options = {});
+
+// A cross-fade between two tables of the same size: (1 − t)·through `from` + t·through `to`, for
+// animations that change the map (a superIFS step, drift keyframes).
+cv::Mat filter_frame(const cv::Mat& frame, const RemapTable& from, const RemapTable& to, double t,
+                     const FilterOptions& options = {});
+
+}  // namespace ifsfx::video

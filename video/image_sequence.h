@@ -1,0 +1,61 @@
+// Numbered still images as a frame source and sink: "frame_%04d.png" and the like, read and
+// written through OpenImageIO (ifs/image_io.h), so any format it handles can hold the frames.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "video/frame_io.h"
+
+namespace ifsfx::video {
+
+// Whether `path` is a sequence pattern: it holds one printf number, %d or %0Nd.
+bool is_sequence_pattern(const std::string& path);
+
+// The file name of frame `index` of `pattern`. Throws Error{parse} unless the pattern holds
+// exactly one %d or %0Nd (N ≤ 9) and no other '%'.
+std::filesystem::path sequence_path(const std::string& pattern, std::int64_t index);
+
+struct ImageSequenceOptions {
+  double fps = 25;  // the sequence's frame rate (images carry none)
+};
+
+// Reads frames from the first number of 0..4 that exists (as ffmpeg does) up to the first gap.
+// Images are converted to 8-bit BGR (grey expanded, alpha dropped, 16-bit and float scaled).
+// Throws Error{not_found} when no frame of the pattern exists, Error{unsupported} for frames of
+// differing sizes.
+class ImageSequenceSource final : public FrameSource {
+ public:
+  explicit ImageSequenceSource(const std::string& pattern,
+                               const ImageSequenceOptions& options = {});
+  std::optional<Frame> read() override;
+  cv::Size size() const override { return size_; }
+  double fps() const override { return fps_; }
+  std::int64_t frame_count() const override { return count_; }
+  std::string name() const override { return pattern_; }
+
+ private:
+  std::string pattern_;
+  double fps_;
+  std::int64_t first_ = 0;
+  std::int64_t count_ = 0;
+  std::int64_t next_ = 0;  // frames read so far
+  cv::Size size_;
+};
+
+// Writes frame k (in order of writing, from 0) to sequence_path(pattern, k), each file atomically.
+// Throws at construction, before any work, when the first file could not be written.
+class ImageSequenceSink final : public FrameSink {
+ public:
+  explicit ImageSequenceSink(const std::string& pattern);
+  void write(const Frame& frame) override;
+  void close() override {}
+  std::string name() const override { return pattern_; }
+
+ private:
+  std::string pattern_;
+  std::int64_t written_ = 0;
+};
+
+}  // namespace ifsfx::video

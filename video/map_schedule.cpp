@@ -1,0 +1,56 @@
+#include "video/map_schedule.h"
+
+#include <chrono>
+
+#include <fmt/format.h>
+
+#include "ifs/error.h"
+
+namespace ifsfx::video {
+
+MapSchedule::MapSchedule(Builder builder, int interval, int lookahead)
+    : builder_(std::move(builder)), interval_(interval), lookahead_(std::max(1, lookahead)) {
+  if (interval < 1)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("keyframe interval: must be 1 or more frames (got {})", interval));
+}
+
+MapSchedule::~MapSchedule() {
+  // Futures of std::async block in their destructor until the builder returns: wait here, once.
+  for (auto& [k, f] : keyframes_)
+    if (f.valid()) f.wait();
+}
+
+std::shared_future<MapSchedule::Table>& MapSchedule::keyframe(std::int64_t k) {
+  auto it = keyframes_.find(k);
+  if (it == keyframes_.end()) {
+    auto future = std::async(std::launch::async,
+                             [this, k] { return std::make_shared<const RemapTable>(builder_(k)); });
+    it = keyframes_.emplace(k, future.share()).first;
+  }
+  return it->second;
+}
+
+MapSchedule::Blend MapSchedule::at(std::int64_t frame) {
+  const std::int64_t k = frame / interval_;
+  // Forget keyframes behind the one shown; start the ones ahead.
+  while (!keyframes_.empty() && keyframes_.begin()->first < k) {
+    keyframes_.begin()->second.wait();
+    keyframes_.erase(keyframes_.begin());
+  }
+  for (std::int64_t j = k; j <= k + lookahead_; ++j) keyframe(j);
+  auto& from = keyframe(k);
+  auto& to = keyframe(k + 1);
+  using namespace std::chrono_literals;
+  if (started_ && (from.wait_for(0s) != std::future_status::ready ||
+                   to.wait_for(0s) != std::future_status::ready))
+    ++stalls_;
+  started_ = true;
+  Blend blend;
+  blend.from = from.get();
+  blend.to = to.get();
+  blend.t = static_cast<double>(frame % interval_) / interval_;
+  return blend;
+}
+
+}  // namespace ifsfx::video

@@ -1,0 +1,53 @@
+// The video pipeline: decode, filter and encode on three threads joined by bounded queues, so a
+// slow stage sets the pace without the others stalling, and memory stays bounded.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "video/frame_io.h"
+#include "video/progress.h"
+
+namespace ifsfx::video {
+
+// Source frames first..last, both included and counted from 0; last = -1 means to the end.
+struct FrameRange {
+  std::int64_t first = 0;
+  std::int64_t last = -1;
+  bool contains(std::int64_t i) const { return i >= first && (last < 0 || i <= last); }
+};
+
+// Parses "START:END" (both included), "START:" or ":END" (the --frames option); throws
+// Error{parse} naming `what`.
+FrameRange parse_frame_range(const std::string& text, const std::string& what = "--frames");
+
+// The filter applied to each frame, on the filter thread, in frame order. It returns the output
+// image; the frame's index is its position in the source (not in the range), so an animation keyed
+// on it gives the same frames whatever the range.
+using FrameFilter = std::function<cv::Mat(const Frame&)>;
+
+struct PipelineOptions {
+  FrameRange range;
+  std::size_t queue_depth = 4;              // frames waiting between two stages, per queue
+  const std::atomic<bool>* stop = nullptr;  // set (e.g. by a signal handler) to stop cleanly
+  ProgressCallback progress;                // called on the encode thread; keep it quick
+  double progress_interval = 0.25;          // seconds between reports (the last one always comes)
+};
+
+struct PipelineResult {
+  std::int64_t frames_written = 0;
+  bool interrupted = false;  // stopped by options.stop before the end of the range
+  double seconds = 0;
+};
+
+// Runs source → filter → sink until the range ends, the source ends, or options.stop is set, then
+// closes the sink (so the file written holds exactly frames_written frames). An error in any stage
+// stops the others; the frames already written are kept (the sink is closed) and the error is
+// rethrown — a damaged input thus ends with its error after writing what could be decoded.
+//   auto result = run_pipeline(source, sink, [&](const Frame& f) { return filter(f.image); });
+PipelineResult run_pipeline(FrameSource& source, FrameSink& sink, const FrameFilter& filter,
+                            const PipelineOptions& options = {});
+
+}  // namespace ifsfx::video
