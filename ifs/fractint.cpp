@@ -1,0 +1,238 @@
+// Fractint's .ifs format: named entries `NAME { a b c d e f p ... }`, `;` comments to the end of
+// the line, numbers separated by spaces, tabs, commas or newlines. Fractint's a b c d e f are
+// ours: x' = a x + b y + e, y' = c x + d y + f (DESIGN.md §1).
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <string>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "ifs/error.h"
+#include "ifs/preset.h"
+
+namespace ifsfx {
+namespace {
+
+bool is_space(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f';
+}
+bool is_separator(char c) {
+  return is_space(c) || c == ',';
+}
+bool ends_token(char c) {
+  return is_separator(c) || c == ';' || c == '{' || c == '}';
+}
+
+// A number token; from_chars does not take a leading '+', Fractint files sometimes have one.
+bool parse_number(std::string_view token, double& x) {
+  if (token.size() > 1 && token[0] == '+' && token[1] != '-') token.remove_prefix(1);
+  const auto [end, ec] = std::from_chars(token.data(), token.data() + token.size(), x);
+  return ec == std::errc() && end == token.data() + token.size();
+}
+
+std::string lowercase(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+struct Number {
+  double value;
+  int line;
+};
+
+class FractintReader {
+ public:
+  FractintReader(std::string_view text, const std::string& filename)
+      : text_(text), filename_(filename) {}
+
+  std::vector<IfsPreset> entries() {
+    std::vector<IfsPreset> out;
+    while (true) {
+      skip(is_space);
+      if (at_end()) break;
+      out.push_back(entry());
+    }
+    return out;
+  }
+
+ private:
+  [[noreturn]] void fail(ErrorKind kind, int line, const std::string& what) const {
+    throw Error(kind, fmt::format("{}:{}: {}", filename_, line, what));
+  }
+
+  bool at_end() const { return pos_ >= text_.size(); }
+  char peek() const { return text_[pos_]; }
+
+  // Skips characters for which `skippable` holds, and `;` comments; returns the first comment's
+  // text met on the current line (an entry's description sits there, after its brace).
+  template <class Pred>
+  std::string skip(Pred skippable) {
+    std::string comment;
+    const int start_line = line_;
+    while (!at_end()) {
+      const char c = peek();
+      if (c == ';') {
+        const std::size_t begin = ++pos_;
+        while (!at_end() && peek() != '\n') ++pos_;
+        if (comment.empty() && line_ == start_line)
+          comment = trim(text_.substr(begin, pos_ - begin));
+      } else if (skippable(c)) {
+        if (c == '\n') ++line_;
+        ++pos_;
+      } else {
+        break;
+      }
+    }
+    return comment;
+  }
+
+  static std::string trim(std::string_view s) {
+    while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+    while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+    return std::string(s);
+  }
+
+  // A name ends at its tag's '(' too; a number token does not, so "(3D)" inside braces is
+  // reported as not a number.
+  std::string_view token(bool is_name) {
+    const std::size_t begin = pos_;
+    while (!at_end() && !ends_token(peek()) && !(is_name && peek() == '(')) ++pos_;
+    return text_.substr(begin, pos_ - begin);
+  }
+
+  IfsPreset entry() {
+    const std::size_t begin = pos_;
+    const int name_line = line_;
+    if (peek() == '{' || peek() == '}' || peek() == '(' || peek() == ',')
+      fail(ErrorKind::parse, line_,
+           fmt::format("an entry starts with its name, as in NAME {{ a b c d e f p ... }} "
+                       "(got '{}')",
+                       peek()));
+    const std::string name(token(true));
+    skip(is_space);
+    if (!at_end() && peek() == '(') {
+      const std::size_t tag_begin = pos_;
+      while (!at_end() && peek() != ')' && peek() != '\n') ++pos_;
+      if (at_end() || peek() != ')')
+        fail(ErrorKind::parse, line_, fmt::format("entry '{}': missing ')' after its tag", name));
+      const std::string tag = lowercase(trim(text_.substr(tag_begin + 1, pos_ - tag_begin - 1)));
+      ++pos_;
+      if (tag == "3d")
+        fail(ErrorKind::unsupported, name_line,
+             fmt::format("entry '{}': only 2-D IFSs are supported (got a (3D) entry)", name));
+      fail(ErrorKind::parse, name_line,
+           fmt::format("entry '{}': unknown tag, Fractint knows only (3D) (got '{}')", name,
+                       text_.substr(tag_begin, pos_ - tag_begin)));
+    }
+    skip(is_space);
+    if (at_end() || peek() != '{') {
+      std::string got = "the end of the file";
+      if (!at_end()) {
+        const std::string_view next = token(false);
+        got = fmt::format("'{}'", next.empty() ? std::string_view(&text_[pos_], 1) : next);
+      }
+      fail(ErrorKind::parse, line_,
+           fmt::format("entry '{}': expected '{{' after the name (got {})", name, got));
+    }
+    const int brace_line = line_;
+    ++pos_;
+
+    IfsPreset preset;
+    preset.description = skip(is_separator);
+    std::vector<Number> numbers;
+    while (true) {
+      skip(is_separator);
+      if (at_end())
+        fail(ErrorKind::parse, brace_line,
+             fmt::format("entry '{}': missing '}}' (got the end of the file)", name));
+      if (peek() == '}') break;
+      if (peek() == '{')
+        fail(ErrorKind::parse, line_,
+             fmt::format("entry '{}': missing '}}' before the next '{{'", name));
+      const int line = line_;
+      const std::string_view t = token(false);
+      double x = 0;
+      if (!parse_number(t, x))
+        fail(ErrorKind::parse, line, fmt::format("entry '{}': not a number (got '{}')", name, t));
+      numbers.push_back({x, line});
+    }
+    ++pos_;  // the closing brace
+
+    preset.ifs = to_ifs(name, name_line, numbers);
+    preset.ifs.name = name;
+    preset.origin = fmt::format("{}:{}", filename_, name);
+    preset.text = std::string(text_.substr(begin, pos_ - begin)) + "\n";
+    return preset;
+  }
+
+  // 7 numbers per map (a b c d e f p), or 6 (a b c d e f) with default probabilities. A count that
+  // is a multiple of both (42, 84, ...) is read with p unless those p are not probabilities.
+  Ifs to_ifs(const std::string& name, int name_line, const std::vector<Number>& numbers) const {
+    const std::size_t n = numbers.size();
+    if (n == 0)
+      fail(ErrorKind::invalid_ifs, name_line,
+           fmt::format("entry '{}': an IFS needs at least one map (got 0 numbers)", name));
+    auto probabilities_look_right = [&] {
+      double sum = 0;
+      for (std::size_t i = 6; i < n; i += 7) {
+        if (!(numbers[i].value >= 0 && numbers[i].value <= 1)) return false;
+        sum += numbers[i].value;
+      }
+      return std::abs(sum - 1) < 0.02;
+    };
+    std::size_t stride = 0;
+    if (n % 7 == 0 && (n % 6 != 0 || probabilities_look_right()))
+      stride = 7;
+    else if (n % 6 == 0)
+      stride = 6;
+    else
+      fail(ErrorKind::parse, name_line,
+           fmt::format("entry '{}': needs 7 numbers per map (a b c d e f p) or 6 (a b c d e f) "
+                       "(got {}, a multiple of neither)",
+                       name, n));
+
+    Ifs ifs;
+    for (std::size_t i = 0; i < n; i += stride) {
+      const std::size_t map = i / stride + 1;
+      std::array<double, 6> k{};
+      for (std::size_t j = 0; j < 6; ++j) {
+        k[j] = numbers[i + j].value;
+        if (!std::isfinite(k[j]))
+          fail(ErrorKind::invalid_ifs, numbers[i + j].line,
+               fmt::format("entry '{}': map {}: coefficients must be finite numbers (got {})", name,
+                           map, k[j]));
+      }
+      ifs.maps.push_back(AffineMap::from_coefficients(k));
+      if (stride == 7) {
+        const Number& p = numbers[i + 6];
+        if (!std::isfinite(p.value) || p.value < 0)
+          fail(ErrorKind::invalid_ifs, p.line,
+               fmt::format("entry '{}': map {}: probability must be a finite number ≥ 0 (got {})",
+                           name, map, p.value));
+        ifs.probabilities.push_back(p.value);
+      }
+    }
+    if (stride == 7 && std::all_of(ifs.probabilities.begin(), ifs.probabilities.end(),
+                                   [](double p) { return p == 0; }))
+      fail(ErrorKind::invalid_ifs, name_line,
+           fmt::format("entry '{}': probabilities: they must not all be zero (got sum 0)", name));
+    return ifs;
+  }
+
+  std::string_view text_;
+  const std::string& filename_;
+  std::size_t pos_ = 0;
+  int line_ = 1;
+};
+
+}  // namespace
+
+std::vector<IfsPreset> parse_fractint(std::string_view text, const std::string& filename) {
+  return FractintReader(text, filename).entries();
+}
+
+}  // namespace ifsfx

@@ -1,0 +1,218 @@
+// Finding a preset: a shipped name, a path to a .toml or .ifs file, or FILE.ifs:NAME.
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "ifs/error.h"
+#include "ifs/preset.h"
+
+namespace ifsfx {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool ends_with(std::string_view s, std::string_view suffix) {
+  if (s.size() < suffix.size()) return false;
+  return std::equal(suffix.begin(), suffix.end(), s.end() - static_cast<long>(suffix.size()),
+                    [](char a, char b) {
+                      return std::tolower(static_cast<unsigned char>(a)) ==
+                             std::tolower(static_cast<unsigned char>(b));
+                    });
+}
+
+bool same_ignoring_case(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && ends_with(a, b);
+}
+
+// superIFS presets (*.super.toml) share the folder but are not IFSs.
+bool is_super(std::string_view file) {
+  return ends_with(file, ".super.toml");
+}
+bool is_ifs_toml(std::string_view file) {
+  return ends_with(file, ".toml") && !is_super(file);
+}
+bool is_fractint(std::string_view file) {
+  return ends_with(file, ".ifs");
+}
+
+std::string stem(std::string_view file) {
+  return fs::path(file).stem().string();
+}
+
+// Levenshtein distance, to suggest the name the user probably meant.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t substitute = diagonal + (std::tolower(a[i - 1]) != std::tolower(b[j - 1]));
+      diagonal = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
+    }
+  }
+  return row[b.size()];
+}
+
+const ShippedFile* find_shipped_file(std::string_view name) {
+  for (const auto& file : shipped_files())
+    if (file.name == name) return &file;
+  return nullptr;
+}
+
+std::string shipped_origin(std::string_view file) {
+  return fmt::format("shipped:{}", file);
+}
+
+// Every shipped IFS preset in listing order: the .toml files, then the entries of the .ifs files.
+std::vector<IfsPreset> all_shipped() {
+  std::vector<IfsPreset> presets;
+  for (const auto& file : shipped_files()) {
+    if (!is_ifs_toml(file.name)) continue;
+    IfsPreset preset = parse_ifs_toml(file.text, std::string(file.name));
+    preset.origin = shipped_origin(file.name);
+    presets.push_back(std::move(preset));
+  }
+  for (const auto& file : shipped_files()) {
+    if (!is_fractint(file.name)) continue;
+    for (auto& entry : parse_fractint(file.text, std::string(file.name))) {
+      entry.origin = shipped_origin(entry.origin);
+      presets.push_back(std::move(entry));
+    }
+  }
+  return presets;
+}
+
+// The name a shipped preset is called by: a .toml file's stem, or a Fractint entry's name.
+std::string shipped_name(const IfsPreset& preset) {
+  constexpr std::string_view prefix = "shipped:";
+  const std::string_view origin = std::string_view(preset.origin).substr(prefix.size());
+  if (ends_with(origin, ".toml")) return stem(origin);
+  return preset.ifs.name;
+}
+
+IfsPreset find_shipped(const std::string& name) {
+  auto presets = all_shipped();
+  for (int pass = 0; pass < 2; ++pass)  // exact first, then ignoring case as Fractint does
+    for (auto& preset : presets) {
+      const std::string candidate = shipped_name(preset);
+      if (pass == 0 ? candidate == name : same_ignoring_case(candidate, name))
+        return std::move(preset);
+    }
+  std::optional<std::string> closest;
+  std::size_t best = std::max<std::size_t>(2, name.size() / 3) + 1;
+  for (const auto& preset : presets) {
+    const std::string candidate = shipped_name(preset);
+    const std::size_t d = edit_distance(name, candidate);
+    if (d < best) best = d, closest = candidate;
+  }
+  throw Error(ErrorKind::not_found,
+              closest ? fmt::format("unknown preset '{}': did you mean '{}'? (see `ifsfx presets`)",
+                                    name, *closest)
+                      : fmt::format("unknown preset '{}' (see `ifsfx presets`)", name));
+}
+
+struct SourceText {
+  std::string text;
+  std::string filename;  // how errors name it
+  std::string origin;    // what IfsPreset::origin says
+};
+
+// A file on disk, or else (for a bare file name) a shipped file of that name.
+SourceText read_source(const std::string& path) {
+  std::error_code ec;
+  if (fs::exists(path, ec)) {
+    if (fs::is_directory(path, ec))
+      throw Error(ErrorKind::io, fmt::format("{}: cannot read (got a folder)", path));
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream text;
+    if (in) text << in.rdbuf();
+    if (!in || in.bad())
+      throw Error(ErrorKind::io, fmt::format("{}: cannot read ({})", path, std::strerror(errno)));
+    return {text.str(), path, path};
+  }
+  if (fs::path(path).filename() == path)
+    if (const auto* shipped = find_shipped_file(path))
+      return {std::string(shipped->text), path, shipped_origin(path)};
+  throw Error(ErrorKind::not_found, fmt::format("{}: no such file", path));
+}
+
+IfsPreset pick_entry(std::vector<IfsPreset> entries, const std::string& name,
+                     const std::string& filename) {
+  if (entries.empty())
+    throw Error(ErrorKind::parse,
+                fmt::format("{}: no entries (got an empty Fractint file)", filename));
+  if (name.empty()) return std::move(entries.front());
+  for (int pass = 0; pass < 2; ++pass)
+    for (auto& entry : entries)
+      if (pass == 0 ? entry.ifs.name == name : same_ignoring_case(entry.ifs.name, name))
+        return std::move(entry);
+  std::string names;
+  for (const auto& entry : entries) names += (names.empty() ? "" : ", ") + entry.ifs.name;
+  throw Error(ErrorKind::not_found,
+              fmt::format("{}: no entry '{}' (entries: {})", filename, name, names));
+}
+
+IfsPreset resolve(const std::string& spec) {
+  if (spec.empty())
+    throw Error(ErrorKind::invalid_argument,
+                "preset: a preset name or a path is needed (got nothing)");
+  // FILE.ifs:NAME — one entry of a Fractint file.
+  if (const auto colon = spec.rfind(':'); colon != std::string::npos) {
+    const std::string file = spec.substr(0, colon);
+    if (is_fractint(file)) {
+      const SourceText source = read_source(file);
+      IfsPreset entry =
+          pick_entry(parse_fractint(source.text, source.filename), spec.substr(colon + 1), file);
+      entry.origin = fmt::format("{}:{}", source.origin, entry.ifs.name);
+      return entry;
+    }
+  }
+  if (is_fractint(spec)) {
+    const SourceText source = read_source(spec);
+    IfsPreset entry = pick_entry(parse_fractint(source.text, source.filename), "", spec);
+    entry.origin = fmt::format("{}:{}", source.origin, entry.ifs.name);
+    return entry;
+  }
+  if (is_super(spec))
+    throw Error(ErrorKind::unsupported,
+                fmt::format("{}: a superIFS preset, not an IFS (got a .super.toml file)", spec));
+  if (ends_with(spec, ".toml")) {
+    const SourceText source = read_source(spec);
+    IfsPreset preset = parse_ifs_toml(source.text, source.filename);
+    preset.origin = source.origin;
+    return preset;
+  }
+  if (spec.find('/') != std::string::npos)
+    throw Error(ErrorKind::unsupported,
+                fmt::format("{}: preset files end in .toml or .ifs (got neither)", spec));
+  return find_shipped(spec);
+}
+
+}  // namespace
+
+std::vector<PresetSummary> list_shipped_presets() {
+  std::vector<PresetSummary> list;
+  for (const auto& preset : all_shipped())
+    list.push_back(
+        {shipped_name(preset), preset.ifs.size(), preset.ifs.contraction(), preset.description});
+  return list;
+}
+
+IfsPreset load_ifs(const std::string& spec, const ValidateOptions& options) {
+  IfsPreset preset = resolve(spec);
+  validate(preset.ifs, preset.origin, options);
+  return preset;
+}
+
+}  // namespace ifsfx

@@ -1,0 +1,288 @@
+// The native preset format: one IFS per TOML file (the layout is documented in ifs/preset.h).
+#include <cmath>
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "ifs/error.h"
+#include "ifs/preset.h"
+
+namespace ifsfx {
+namespace {
+
+constexpr std::string_view known_keys = "name, description, maps, probabilities, colours";
+
+// Every message of this parser starts with "FILE:LINE: " so that one line is enough to find the
+// culprit in an editor.
+class TomlReader {
+ public:
+  explicit TomlReader(const std::string& filename) : filename_(filename) {}
+
+  [[noreturn]] void fail(ErrorKind kind, const toml::source_region& where,
+                         const std::string& what) const {
+    throw Error(kind, fmt::format("{}:{}: {}", filename_, where.begin.line, what));
+  }
+
+  toml::table parse(std::string_view text) const {
+    try {
+      return toml::parse(text, filename_);
+    } catch (const toml::parse_error& e) {
+      fail(ErrorKind::parse, e.source(), std::string(e.description()));
+    }
+  }
+
+  std::string string_value(const toml::node& node, std::string_view key) const {
+    const auto* s = node.as_string();
+    if (!s) fail(ErrorKind::parse, node.source(), fmt::format("{}: must be a string", key));
+    return s->get();
+  }
+
+  // A TOML integer or float as a double; `what` names the value in the error.
+  double number(const toml::node& node, const std::string& what) const {
+    if (const auto* x = node.as_floating_point()) return x->get();
+    if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
+    fail(ErrorKind::parse, node.source(),
+         fmt::format("{}: must be a number (got {})", what, type_name(node)));
+  }
+
+  const toml::array& array(const toml::node& node, const std::string& what) const {
+    const auto* a = node.as_array();
+    if (!a)
+      fail(ErrorKind::parse, node.source(),
+           fmt::format("{}: must be an array (got {})", what, type_name(node)));
+    return *a;
+  }
+
+  static std::string_view type_name(const toml::node& node) {
+    switch (node.type()) {
+      case toml::node_type::string:
+        return "a string";
+      case toml::node_type::integer:
+        return "an integer";
+      case toml::node_type::floating_point:
+        return "a number";
+      case toml::node_type::boolean:
+        return "a boolean";
+      case toml::node_type::array:
+        return "an array";
+      case toml::node_type::table:
+        return "a table";
+      case toml::node_type::date:
+      case toml::node_type::time:
+      case toml::node_type::date_time:
+        return "a date or time";
+      default:
+        return "nothing";
+    }
+  }
+
+ private:
+  const std::string& filename_;
+};
+
+std::vector<AffineMap> read_maps(const TomlReader& in, const toml::node& node) {
+  const auto& rows = in.array(node, "maps");
+  if (rows.empty())
+    in.fail(ErrorKind::invalid_ifs, node.source(), "maps: an IFS needs at least one map (got 0)");
+  std::vector<AffineMap> maps;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::string what = fmt::format("map {}", i + 1);
+    const auto& row = in.array(rows[i], what);
+    if (row.size() != 6)
+      in.fail(ErrorKind::parse, rows[i].source(),
+              fmt::format("{}: needs 6 numbers a b c d e f (got {})", what, row.size()));
+    std::array<double, 6> k{};
+    for (std::size_t j = 0; j < 6; ++j) {
+      k[j] = in.number(row[j], what);
+      if (!std::isfinite(k[j]))
+        in.fail(ErrorKind::invalid_ifs, row[j].source(),
+                fmt::format("{}: coefficients must be finite numbers (got {})", what, k[j]));
+    }
+    maps.push_back(AffineMap::from_coefficients(k));
+  }
+  return maps;
+}
+
+std::vector<double> read_probabilities(const TomlReader& in, const toml::node& node,
+                                       std::size_t map_count) {
+  const auto& values = in.array(node, "probabilities");
+  if (values.size() != map_count)
+    in.fail(ErrorKind::invalid_ifs, node.source(),
+            fmt::format("probabilities: one per map is needed (got {} for {} maps)", values.size(),
+                        map_count));
+  std::vector<double> p;
+  double sum = 0;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::string what = fmt::format("map {}", i + 1);
+    const double x = in.number(values[i], fmt::format("{}: probability", what));
+    if (!std::isfinite(x) || x < 0)
+      in.fail(ErrorKind::invalid_ifs, values[i].source(),
+              fmt::format("{}: probability must be a finite number ≥ 0 (got {})", what, x));
+    sum += x;
+    p.push_back(x);
+  }
+  if (!(sum > 0))
+    in.fail(ErrorKind::invalid_ifs, node.source(),
+            "probabilities: they must not all be zero (got sum 0)");
+  return p;
+}
+
+int hex_digit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+// "#rrggbb" or [r, g, b] with components in [0, 1].
+Rgb read_colour(const TomlReader& in, const toml::node& node, const std::string& what) {
+  if (const auto* s = node.as_string()) {
+    const std::string& hex = s->get();
+    std::array<int, 6> digits{};
+    bool ok = hex.size() == 7 && hex[0] == '#';
+    for (std::size_t i = 0; ok && i < 6; ++i) ok = (digits[i] = hex_digit(hex[i + 1])) >= 0;
+    if (!ok)
+      in.fail(
+          ErrorKind::parse, node.source(),
+          fmt::format("{}: must be \"#rrggbb\" or [r, g, b] in [0, 1] (got \"{}\")", what, hex));
+    auto channel = [&](int i) { return (digits[i] * 16 + digits[i + 1]) / 255.0; };
+    return {channel(0), channel(2), channel(4)};
+  }
+  const auto* rgb = node.as_array();
+  if (!rgb || rgb->size() != 3)
+    in.fail(ErrorKind::parse, node.source(),
+            fmt::format("{}: must be \"#rrggbb\" or [r, g, b] in [0, 1] (got {})", what,
+                        rgb ? fmt::format("{} numbers", rgb->size())
+                            : std::string(TomlReader::type_name(node))));
+  std::array<double, 3> c{};
+  for (std::size_t i = 0; i < 3; ++i) {
+    c[i] = in.number((*rgb)[i], what);
+    if (!(c[i] >= 0 && c[i] <= 1))
+      in.fail(ErrorKind::parse, (*rgb)[i].source(),
+              fmt::format("{}: components must lie in [0, 1] (got {})", what, c[i]));
+  }
+  return {c[0], c[1], c[2]};
+}
+
+std::vector<Rgb> read_colours(const TomlReader& in, const toml::node& node, std::size_t map_count) {
+  const auto& values = in.array(node, "colours");
+  if (values.size() != map_count)
+    in.fail(ErrorKind::invalid_ifs, node.source(),
+            fmt::format("colours: one per map is needed (got {} for {} maps)", values.size(),
+                        map_count));
+  std::vector<Rgb> colours;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    colours.push_back(read_colour(in, values[i], fmt::format("map {}: colour", i + 1)));
+  return colours;
+}
+
+// The shortest text that reads back as exactly `x` ({fmt} prints the shortest round-trip
+// form), kept a TOML float rather than an integer so that the file reads as coefficients.
+std::string toml_number(double x) {
+  std::string s = fmt::format("{}", x);
+  if (s.find_first_of(".ein") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string toml_string(std::string_view s) {
+  std::string out = "\"";
+  for (char c : s) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+          out += fmt::format("\\u{:04x}", static_cast<unsigned char>(c));
+        else
+          out += c;
+    }
+  }
+  return out + "\"";
+}
+
+// "#rrggbb" when the colour is exactly what such a string reads back as, else [r, g, b].
+std::string toml_colour(const Rgb& c) {
+  std::array<long, 3> k{};
+  const std::array<double, 3> v{c.r, c.g, c.b};
+  bool hex = true;
+  for (std::size_t i = 0; i < 3; ++i) {
+    k[i] = std::lround(v[i] * 255);
+    hex = hex && k[i] >= 0 && k[i] <= 255 && static_cast<double>(k[i]) / 255.0 == v[i];
+  }
+  if (hex) return fmt::format("\"#{:02x}{:02x}{:02x}\"", k[0], k[1], k[2]);
+  return fmt::format("[{}, {}, {}]", toml_number(c.r), toml_number(c.g), toml_number(c.b));
+}
+
+}  // namespace
+
+IfsPreset parse_ifs_toml(std::string_view text, const std::string& filename) {
+  const TomlReader in(filename);
+  const toml::table table = in.parse(text);
+
+  // Check every key first, so that a misspelt "probabilites" is reported rather than silently
+  // giving default probabilities.
+  for (const auto& [key, value] : table) {
+    const std::string_view k = key.str();
+    if (k != "name" && k != "description" && k != "maps" && k != "probabilities" && k != "colours")
+      in.fail(ErrorKind::parse, key.source(),
+              fmt::format("unknown key '{}' (known: {})", k, known_keys));
+  }
+
+  IfsPreset preset;
+  preset.origin = filename;
+  preset.text = std::string(text);
+  preset.ifs.name = std::filesystem::path(filename).stem().string();
+  if (const auto* node = table.get("name")) preset.ifs.name = in.string_value(*node, "name");
+  if (const auto* node = table.get("description"))
+    preset.description = in.string_value(*node, "description");
+
+  const auto* maps = table.get("maps");
+  if (!maps)
+    throw Error(
+        ErrorKind::parse,
+        fmt::format("{}: maps: an IFS needs a 'maps' array of [a, b, c, d, e, f] (got none)",
+                    filename));
+  preset.ifs.maps = read_maps(in, *maps);
+  if (const auto* node = table.get("probabilities"))
+    preset.ifs.probabilities = read_probabilities(in, *node, preset.ifs.maps.size());
+  if (const auto* node = table.get("colours"))
+    preset.ifs.colours = read_colours(in, *node, preset.ifs.maps.size());
+  return preset;
+}
+
+std::string to_toml(const Ifs& ifs, const std::string& description) {
+  std::string out = fmt::format("name = {}\n", toml_string(ifs.name));
+  if (!description.empty()) out += fmt::format("description = {}\n", toml_string(description));
+  out += "# x' = a x + b y + e, y' = c x + d y + f\nmaps = [\n  # a, b, c, d, e, f\n";
+  for (const auto& m : ifs.maps) {
+    out += "  [";
+    const auto k = m.coefficients();
+    for (std::size_t j = 0; j < k.size(); ++j) out += (j ? ", " : "") + toml_number(k[j]);
+    out += "],\n";
+  }
+  out += "]\n";
+  auto list = [&](std::string_view key, const auto& values, auto format) {
+    if (values.empty()) return;
+    out += fmt::format("{} = [", key);
+    for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + format(values[i]);
+    out += "]\n";
+  };
+  list("probabilities", ifs.probabilities, toml_number);
+  list("colours", ifs.colours, toml_colour);
+  return out;
+}
+
+}  // namespace ifsfx
