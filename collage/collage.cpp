@@ -134,56 +134,104 @@ double collage_distance(const cv::Mat& target, std::span<const AffineMap> maps) 
   return std::max(w_to_l, l_to_w) / n;
 }
 
-CollageObjective::CollageObjective(const cv::Mat& target, const ObjectiveWeights& weights)
-    : weights_(weights) {
+CollageObjective::CollageObjective(const cv::Mat& target, const ObjectiveOptions& options)
+    : options_(options) {
   check_target(target);
+  if (options.depth < 1 || options.depth > 32)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("collage: depth must be in 1..32 (got {})", options.depth));
   size_ = target.cols;
   target_ = target.clone();
   distance_ = distance_to(target_);
   points_ = centres_of(target_);
 }
 
-ObjectiveTerms CollageObjective::terms(std::span<const AffineMap> maps) const {
-  check_maps(maps);
-  ObjectiveTerms t;
-  const int n = size_;
-  std::vector<std::uint8_t> w(static_cast<std::size_t>(n) * n, 0);
-  double spill = 0;
-  double dets = 0;
-  for (const auto& f : maps) {
-    t.contraction = std::max(t.contraction, f.contraction());
-    dets += std::abs(f.det());
-    const AffineMap m = pixel_map(f, n);
-    for (const auto& p : points_) {
-      const double qx = m.a * p.x + m.b * p.y + m.e;
-      const double qy = m.c * p.x + m.d * p.y + m.f;
-      const double c = std::floor(qx), r = std::floor(qy);
-      if (c >= 0 && r >= 0 && c < n && r < n) {
-        const auto ci = static_cast<int>(c), ri = static_cast<int>(r);
-        w[static_cast<std::size_t>(ri) * n + ci] = 1;
-        spill += distance_.at<float>(ri, ci);
-      } else {
-        spill += distance_bound(distance_, qx, qy);
-      }
-    }
-  }
+namespace {
+
+// d(q, L) interpolated bilinearly between pixel centres (pixels): continuous in q, so the
+// optimiser feels sub-pixel moves; outside the raster, the exact bound of distance_bound.
+double interpolated_distance(const cv::Mat& distance, double qx, double qy) {
+  const int n = distance.cols;
+  const double x = qx - 0.5, y = qy - 0.5;  // centre-based coordinates
+  if (!(x >= 0 && y >= 0 && x <= n - 1 && y <= n - 1)) return distance_bound(distance, qx, qy);
+  const int c = std::min(static_cast<int>(x), n - 2), r = std::min(static_cast<int>(y), n - 2);
+  const double u = x - c, v = y - r;
+  const float* row0 = distance.ptr<float>(r);
+  const float* row1 = distance.ptr<float>(r + 1);
+  return (1 - v) * ((1 - u) * row0[c] + u * row0[c + 1]) +
+         v * ((1 - u) * row1[c] + u * row1[c + 1]);
+}
+
+// IoU of the target with the raster `w` (0/1 bytes).
+double raster_iou(const cv::Mat& target, const std::vector<std::uint8_t>& w) {
+  const int n = target.cols;
   long both = 0, either = 0;
   for (int r = 0; r < n; ++r) {
-    const auto* in = target_.ptr<std::uint8_t>(r);
+    const auto* in = target.ptr<std::uint8_t>(r);
     const std::uint8_t* out = w.data() + static_cast<std::size_t>(r) * n;
     for (int c = 0; c < n; ++c) {
       both += (in[c] != 0) & (out[c] != 0);
       either += (in[c] != 0) | (out[c] != 0);
     }
   }
-  t.collage_iou = either == 0 ? 1.0 : static_cast<double>(both) / static_cast<double>(either);
+  return either == 0 ? 1.0 : static_cast<double>(both) / static_cast<double>(either);
+}
+
+}  // namespace
+
+ObjectiveTerms CollageObjective::terms(std::span<const AffineMap> maps) const {
+  check_maps(maps);
+  ObjectiveTerms t;
+  const int n = size_;
+  std::vector<AffineMap> pixel_maps;
+  double dets = 0;
+  for (const auto& f : maps) {
+    t.contraction = std::max(t.contraction, f.contraction());
+    dets += std::abs(f.det());
+    pixel_maps.push_back(pixel_map(f, n));
+  }
+
+  // Level 1: W(L) from L's exact pixel centres, with the spill of every image point.
+  std::vector<std::uint8_t> w(static_cast<std::size_t>(n) * n, 0);
+  double spill = 0;
+  for (const auto& m : pixel_maps)
+    for (const auto& p : points_) {
+      const double qx = m.a * p.x + m.b * p.y + m.e;
+      const double qy = m.c * p.x + m.d * p.y + m.f;
+      spill += interpolated_distance(distance_, qx, qy);
+      const double c = std::floor(qx), r = std::floor(qy);
+      if (c >= 0 && r >= 0 && c < n && r < n)
+        w[static_cast<std::size_t>(r) * n + static_cast<std::size_t>(c)] = 1;
+    }
+  t.collage_iou = raster_iou(target_, w);
+  t.deep_iou = t.collage_iou;
   t.spill = spill / (static_cast<double>(points_.size()) * static_cast<double>(maps.size())) / n;
   t.overlap = std::max(0.0, dets - 1);
 
-  const ObjectiveWeights& k = weights_;
+  // Levels 2..k: W^j(L) = W(W^{j−1}(L)) on the raster, from the centres of the previous level.
+  std::vector<cv::Point2f> level;
+  for (int j = 2; j <= options_.depth; ++j) {
+    level.clear();
+    for (int r = 0; r < n; ++r)
+      for (int c = 0; c < n; ++c)
+        if (w[static_cast<std::size_t>(r) * n + static_cast<std::size_t>(c)])
+          level.emplace_back(static_cast<float>(c) + 0.5f, static_cast<float>(r) + 0.5f);
+    std::fill(w.begin(), w.end(), 0);
+    for (const auto& m : pixel_maps)
+      for (const auto& p : level) {
+        const double c = std::floor(m.a * p.x + m.b * p.y + m.e);
+        const double r = std::floor(m.c * p.x + m.d * p.y + m.f);
+        if (c >= 0 && r >= 0 && c < n && r < n)
+          w[static_cast<std::size_t>(r) * n + static_cast<std::size_t>(c)] = 1;
+      }
+    if (j == options_.depth) t.deep_iou = raster_iou(target_, w);
+  }
+
+  const ObjectiveOptions& k = options_;
   const double soft = std::max(0.0, t.contraction - k.soft_factor);
   t.value =
       (1 - t.collage_iou) + k.spill * t.spill + k.overlap * t.overlap + k.contraction * soft * soft;
+  if (k.depth > 1) t.value += 1 - t.deep_iou;
   if (t.contraction >= k.max_factor) t.value += 1 + 10 * (t.contraction - k.max_factor);
   return t;
 }

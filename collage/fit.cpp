@@ -10,6 +10,7 @@
 #include "collage/distance.h"
 #include "collage/initialise.h"
 #include "collage/optimise.h"
+#include "collage/refine.h"
 #include "ifs/error.h"
 #include "ifs/render.h"
 #include "ifs/rng.h"
@@ -110,7 +111,7 @@ FitResult fit(const cv::Mat& target, const FitOptions& options) {
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("--max-seconds: must be ≥ 0 (got {})", options.max_seconds));
   const auto start = Clock::now();
-  const CollageObjective objective(target, options.weights);
+  const CollageObjective objective(target, options.objective);
   const auto seconds_since_start = [&] {
     return std::chrono::duration<double>(Clock::now() - start).count();
   };
@@ -133,14 +134,18 @@ FitResult fit(const cv::Mat& target, const FitOptions& options) {
     }
     const auto start_maps = initial_maps(target, options.maps, init);
 
+    // This run's share of what is left of the evaluations and of the time.
+    const long run_evaluations = evaluations_left / (runs - run);
+    const auto run_deadline =
+        options.max_seconds > 0
+            ? Clock::now() +
+                  std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
+                      (options.max_seconds - seconds_since_start()) / (runs - run)))
+            : Clock::time_point::max();
     CmaesOptions cmaes;
     cmaes.sigma = run == 0 ? 0.03 : 0.05;
-    cmaes.max_evaluations = evaluations_left / (runs - run);
-    if (options.max_seconds > 0) {
-      const double share = (options.max_seconds - seconds_since_start()) / (runs - run);
-      cmaes.deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                          std::chrono::duration<double>(share));
-    }
+    cmaes.max_evaluations = run_evaluations;
+    cmaes.deadline = run_deadline;
     cmaes.seed = stream_seed(options.seed ^ 0x636f6c6c616765ULL, static_cast<std::uint64_t>(run));
     cmaes.threads = options.threads;
     const long evaluations_before = result.evaluations;
@@ -156,20 +161,28 @@ FitResult fit(const cv::Mat& target, const FitOptions& options) {
     result.runs = run + 1;
     if (found.deadline_reached) result.time_capped = true;
 
-    // Keep the run whose attractor matches L best: the collage objective is the search's guide,
-    // the attractor is what the user gets.
-    Ifs ifs;
-    ifs.name = options.name;
-    ifs.maps = to_maps(found.x);
-    ifs.probabilities = default_probabilities(ifs.maps);
-    if (!(ifs.contraction() < 1)) continue;  // cannot happen past the objective's wall; be safe
-    CollageReport report = assess(target, ifs, {options.quality, options.seed, options.threads});
     best_objective = std::min(best_objective, found.value);
-    if (report.iou > best_iou) {
-      best_iou = report.iou;
-      result.ifs = std::move(ifs);
-      result.report = std::move(report);
-      result.objective = found.value;
+
+    // Candidates: the searched maps and their ICP refinement. Keep the one whose attractor
+    // matches L best: the collage objective guides the search, the attractor is what the user
+    // gets.
+    std::vector<std::vector<AffineMap>> candidates{to_maps(found.x)};
+    if (options.refine_iterations > 0)
+      candidates.push_back(refine_icp(target, candidates.front(),
+                                      {options.refine_iterations, options.objective.max_factor}));
+    for (auto& maps : candidates) {
+      Ifs ifs;
+      ifs.name = options.name;
+      ifs.maps = std::move(maps);
+      ifs.probabilities = default_probabilities(ifs.maps);
+      if (!(ifs.contraction() < 1)) continue;  // past the objective's wall: never chosen
+      CollageReport report = assess(target, ifs, {options.quality, options.seed, options.threads});
+      if (report.iou > best_iou) {
+        best_iou = report.iou;
+        result.ifs = std::move(ifs);
+        result.report = std::move(report);
+        result.objective = objective(result.ifs.maps);
+      }
     }
   }
   if (result.ifs.maps.empty())

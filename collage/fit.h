@@ -64,7 +64,10 @@ struct FitOptions {
   int threads = 0;               // 0 = all cores
   double quality = 256;          // chaos-game points per pixel for the attractors
   std::string name = "fitted";   // the IFS's name
-  ObjectiveWeights weights;
+  ObjectiveOptions objective;
+  // ICP rounds (refine.h) after each run's search; the refined maps replace the searched ones
+  // when their attractor matches L better. 0 = no refinement.
+  int refine_iterations = 30;
   // Called after every CMA-ES generation on the calling thread (the library never prints).
   std::function<void(const FitProgress&)> progress;
 };
@@ -79,8 +82,9 @@ struct FitResult {
   bool time_capped = false;  // max_seconds cut the search short
 };
 
-// Fits N maps to `target` (a working raster): every run starts from an initial_maps() split and
-// minimises the CollageObjective by CMA-ES; the run whose attractor overlaps L best (IoU) wins.
+// Fits N maps to `target` (a working raster): every run starts from an initial_maps() split,
+// minimises the CollageObjective by CMA-ES, then refines the maps to sub-pixel precision by ICP;
+// of all these candidates, the one whose rendered attractor overlaps L best (IoU) wins.
 // Throws Error{invalid_argument} for N outside 1..32 or above the number of pixels of L.
 FitResult fit(const cv::Mat& target, const FitOptions& options = {});
 
