@@ -156,8 +156,13 @@ class FractintReader {
       const int line = line_;
       const std::string_view t = token(false);
       double x = 0;
-      if (!parse_number(t, x))
+      if (!parse_number(t, x)) {
+        skip(is_space);
+        if (!at_end() && (peek() == '{' || peek() == '('))  // the next entry's name
+          fail(ErrorKind::parse, line,
+               fmt::format("entry '{}': missing '}}' before the next entry '{}'", name, t));
         fail(ErrorKind::parse, line, fmt::format("entry '{}': not a number (got '{}')", name, t));
+      }
       numbers.push_back({x, line});
     }
     ++pos_;  // the closing brace
