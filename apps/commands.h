@@ -8,6 +8,9 @@ namespace ifsfx::app {
 
 void add_presets_command(CLI::App& app);  // list shipped presets
 void add_render_command(CLI::App& app);   // render an IFS to a still
+void add_fit_command(CLI::App& app);      // fit an IFS to a shape (collage theorem)
+void add_texture_command(CLI::App& app);  // render a superIFS texture or texture sequence
 void add_cam_command(CLI::App& app);      // live camera kaleidoscope over V4L2
+void add_filter_command(CLI::App& app);   // fractal video filter on movie files
 
 }  // namespace ifsfx::app

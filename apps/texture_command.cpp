@@ -1,0 +1,185 @@
+// `ifsfx texture SUPERPRESET -o OUT`: a V-variable superfractal texture (paper §5, Fig. 4–5), or
+// with --frames a sequence of them, one per further step, optionally crossfaded.
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "apps/cli_options.h"
+#include "apps/commands.h"
+#include "ifs/error.h"
+#include "ifs/image_io.h"
+#include "superifs/superifs_file.h"
+#include "superifs/texture.h"
+
+namespace ifsfx::app {
+namespace {
+
+struct TextureArgs {
+  std::string preset;
+  std::string output;
+  std::string size = "1024x1024";
+  int count = 3;
+  int steps = 0;
+  int buffer = 1;
+  TextureMode mode = TextureMode::attractor;
+  std::string source;
+  std::uint64_t seed = 1;
+  int threads = 0;
+  int frames = 1;
+  int crossfade = 1;
+  int bits = 8;
+  bool quiet = false;
+};
+
+// The path of frame `index` from a printf-style pattern with one %d or %0Nd (as ffmpeg's image
+// sequences); throws Error{invalid_argument} naming -o when there is none.
+std::string frame_path(const std::string& pattern, int index) {
+  const auto percent = pattern.find('%');
+  std::size_t end = percent == std::string::npos ? percent : percent + 1;
+  while (end != std::string::npos && end < pattern.size() && pattern[end] >= '0' &&
+         pattern[end] <= '9')
+    ++end;
+  if (end == std::string::npos || end >= pattern.size() || pattern[end] != 'd' ||
+      pattern.find('%', end) != std::string::npos)
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("-o: --frames needs a numbered pattern like tex_%04d.png (got {})", pattern));
+  const std::string digits = pattern.substr(percent + 1, end - percent - 1);
+  const int width = digits.empty() ? 0 : std::stoi(digits);
+  return pattern.substr(0, percent) + fmt::format("{:0{}d}", index, width) +
+         pattern.substr(end + 1);
+}
+
+void run_texture(const TextureArgs& args) {
+  const cv::Size size = size_option(args.size);
+  if (args.frames < 1)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--frames: must be ≥ 1 (got {})", args.frames));
+  if (args.crossfade < 1)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--crossfade: must be ≥ 1 frame per step (got {})", args.crossfade));
+  if (args.mode == TextureMode::steal && args.source.empty())
+    throw Error(ErrorKind::invalid_argument,
+                "--source: steal mode needs a source image to steal colours from");
+  const bool sequence = args.frames > 1;
+  const auto path_of = [&](int frame) {
+    return sequence ? frame_path(args.output, frame + 1) : args.output;
+  };
+  check_writable_image(path_of(0));
+  const SuperIfsPreset preset = load_superifs(args.preset);
+
+  TextureOptions options;
+  options.count = args.count;
+  options.steps = args.steps;
+  options.buffer = args.buffer - 1;
+  options.mode = args.mode;
+  options.seed = args.seed;
+  options.threads = args.threads;
+  if (!args.source.empty()) options.source = read_image(args.source).pixels;
+
+  const auto start = std::chrono::steady_clock::now();
+  TextureSequence textures(preset.super, size, options);
+  const std::string name = preset.super.name.empty() ? args.preset : preset.super.name;
+  const auto metadata = [&](int step) {
+    WriteOptions write;
+    write.bits = args.bits;
+    write.metadata = {
+        {"ifsfx:superpreset", preset.text},
+        {"ifsfx:superpreset_name", name},
+        {"ifsfx:mode", to_string(args.mode)},
+        {"ifsfx:V", std::to_string(args.count)},
+        {"ifsfx:buffer", std::to_string(args.buffer)},
+        {"ifsfx:seed", std::to_string(args.seed)},
+        {"ifsfx:steps", std::to_string(step)},
+        {"ImageDescription", fmt::format("ifsfx texture {} -V {} --mode {} --seed {} --steps {}",
+                                         name, args.count, to_string(args.mode), args.seed, step)},
+    };
+    return write;
+  };
+
+  // Frame j shows step s = j / K of the sequence crossfaded towards step s + 1 by (j mod K) / K.
+  cv::Mat current = textures.frame(), next;
+  const auto advance = [&] {
+    textures.step();
+    next = textures.frame();
+  };
+  for (int frame = 0; frame < args.frames; ++frame) {
+    const int step = frame / args.crossfade, phase = frame % args.crossfade;
+    if (phase == 0 && frame > 0) {
+      if (next.empty()) advance();
+      current = std::move(next);
+      next = cv::Mat();
+    }
+    cv::Mat image = current;
+    if (phase != 0) {
+      if (next.empty()) advance();
+      image = crossfade(current, next, static_cast<double>(phase) / args.crossfade);
+    }
+    write_image(path_of(frame), image, metadata(textures.burn_in() + step));
+  }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!args.quiet)
+    std::printf("%s\n",
+                fmt::format("{} ({}, V = {}, {}x{}): {} steps, {} frame{} in {:.3f} s -> {}", name,
+                            to_string(args.mode), args.count, size.width, size.height,
+                            textures.steps_done(), args.frames, args.frames == 1 ? "" : "s",
+                            seconds, args.output)
+                    .c_str());
+}
+
+}  // namespace
+
+void add_texture_command(CLI::App& app) {
+  auto args = std::make_shared<TextureArgs>();
+  auto* cmd = app.add_subcommand(
+      "texture", "Render a V-variable superfractal texture (or a sequence) from a superIFS");
+  cmd->add_option("superpreset", args->preset,
+                  "SuperIFS: a shipped name (paper-fig4, carpet-lace, ...) or a .super.toml path")
+      ->required();
+  cmd->add_option("-o,--output", args->output,
+                  "Output image (.png, .tif, .exr, .jpg); with --frames a pattern like "
+                  "tex_%04d.png, numbered from 1")
+      ->required();
+  cmd->add_option("--size", args->size, "Output size WxH in pixels")->capture_default_str();
+  cmd->add_option("-V,--buffers", args->count, "V, the number of buffers (V-variability)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--steps", args->steps,
+                  "Burn-in steps; 0 = enough that s^steps x size < 1 pixel for the largest "
+                  "contraction factor s")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--buffer", args->buffer, "The buffer shown, 1..V")->capture_default_str();
+  const std::map<std::string, TextureMode> modes{{"attractor", TextureMode::attractor},
+                                                 {"tops", TextureMode::tops},
+                                                 {"steal", TextureMode::steal},
+                                                 {"measure", TextureMode::measure}};
+  cmd->add_option("--mode", args->mode,
+                  "attractor: the set; tops: top addresses through a colour ramp; steal: colours "
+                  "stolen from --source; measure: log-density of the measure")
+      ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case))
+      ->default_str("attractor");
+  cmd->add_option("--source", args->source, "Image colours are stolen from (steal mode)");
+  cmd->add_option("--seed", args->seed, "Random seed: the same seed gives the same texture")
+      ->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")
+      ->capture_default_str();
+  cmd->add_option("--frames", args->frames,
+                  "Frames to write: a sequence of textures, one per further step")
+      ->capture_default_str();
+  cmd->add_option("--crossfade", args->crossfade,
+                  "Frames per step of the sequence, blended between consecutive textures")
+      ->capture_default_str();
+  cmd->add_option("--bits", args->bits, "Bits per channel of PNG/TIFF output: 8 or 16")
+      ->capture_default_str()
+      ->check(CLI::IsMember({8, 16}));
+  cmd->add_flag("-q,--quiet", args->quiet, "Do not print the summary line");
+  cmd->callback([args] { run_texture(*args); });
+}
+
+}  // namespace ifsfx::app

@@ -1,0 +1,296 @@
+#include "superifs/buffers.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "ifs/error.h"
+#include "ifs/parallel.h"
+#include "ifs/rng.h"
+
+namespace ifsfx {
+
+namespace {
+
+// Rows per chunk of work. Fixed, so that the split never depends on the thread count.
+constexpr int band_rows = 16;
+
+int band_count(cv::Size size) {
+  return (size.height + band_rows - 1) / band_rows;
+}
+
+// The plane → continuous pixel coordinates map of a viewport (y up in the plane, rows down).
+AffineMap plane_to_pixel(const Viewport& vp) {
+  const double sx = vp.size.width / vp.view.width();
+  const double sy = vp.size.height / vp.view.height();
+  return {sx, 0, 0, -sy, -vp.view.x0 * sx, vp.view.y1 * sy};
+}
+
+// Chebyshev half-width, in pixels, of the preimage of a pixel under `inverse` (pixel space).
+double footprint(const AffineMap& inverse) {
+  return 0.5 * std::max(std::abs(inverse.a) + std::abs(inverse.b),
+                        std::abs(inverse.c) + std::abs(inverse.d));
+}
+
+// Rows [row0, row1) of `out` = `mask` dilated by a (2r+1)² square, separably: an OR over rows,
+// then over columns. Reads rows of `mask` up to r outside the band.
+void dilate_rows(const cv::Mat& mask, int r, int row0, int row1, BitMask& out) {
+  const int w = mask.cols, h = mask.rows;
+  std::vector<std::uint8_t> column(static_cast<std::size_t>(w)), both(static_cast<std::size_t>(w));
+  cv::Mat packed(1, w, CV_8UC1);
+  for (int row = row0; row < row1; ++row) {
+    std::fill(column.begin(), column.end(), 0);
+    for (int k = std::max(0, row - r); k <= std::min(h - 1, row + r); ++k) {
+      const std::uint8_t* src = mask.ptr<std::uint8_t>(k);
+      for (int c = 0; c < w; ++c) column[static_cast<std::size_t>(c)] |= src[c];
+    }
+    std::copy(column.begin(), column.end(), both.begin());
+    for (int k = 1; k <= r; ++k) {
+      for (int c = 0; c + k < w; ++c)
+        both[static_cast<std::size_t>(c)] |= column[static_cast<std::size_t>(c + k)];
+      for (int c = k; c < w; ++c)
+        both[static_cast<std::size_t>(c)] |= column[static_cast<std::size_t>(c - k)];
+    }
+    std::copy(both.begin(), both.end(), packed.ptr<std::uint8_t>(0));
+    out.pack_rows(packed, row, row + 1);
+  }
+}
+
+// Rows [row0, row1) of `out` = the (2r+1)² box average of `density` (edges: the window is cut,
+// the average is over the pixels inside). Smooths μ over about a pixel's preimage before the
+// point lookup of the push-forward, so that fine structure is averaged, not aliased.
+void box_rows(const cv::Mat& density, int r, int row0, int row1, cv::Mat& out) {
+  const int w = density.cols, h = density.rows;
+  std::vector<double> column(static_cast<std::size_t>(w));
+  for (int row = row0; row < row1; ++row) {
+    std::fill(column.begin(), column.end(), 0.0);
+    const int k0 = std::max(0, row - r), k1 = std::min(h - 1, row + r);
+    for (int k = k0; k <= k1; ++k) {
+      const float* src = density.ptr<float>(k);
+      for (int c = 0; c < w; ++c) column[static_cast<std::size_t>(c)] += src[c];
+    }
+    float* dst = out.ptr<float>(row);
+    double sum = 0;
+    int lo = 0, hi = -1;  // the running window [lo, hi] of columns
+    for (int c = 0; c < w; ++c) {
+      while (hi < std::min(w - 1, c + r)) sum += column[static_cast<std::size_t>(++hi)];
+      while (lo < c - r) sum -= column[static_cast<std::size_t>(lo++)];
+      dst[c] = static_cast<float>(sum / ((hi - lo + 1) * (k1 - k0 + 1)));
+    }
+  }
+}
+
+}  // namespace
+
+BitMask::BitMask(const cv::Mat& mask) {
+  resize(mask.size());
+  pack_rows(mask, 0, mask.rows);
+}
+
+void BitMask::resize(cv::Size size) {
+  width_ = size.width;
+  height_ = size.height;
+  stride_ = (static_cast<std::size_t>(width_) + 7) / 8;
+  bits_.assign(stride_ * static_cast<std::size_t>(height_), 0);
+}
+
+void BitMask::pack_rows(const cv::Mat& mask, int row0, int row1) {
+  for (int row = row0; row < row1; ++row) {
+    const std::uint8_t* src = mask.ptr<std::uint8_t>(mask.rows == 1 ? 0 : row);
+    std::uint8_t* dst = bits_.data() + static_cast<std::size_t>(row) * stride_;
+    for (std::size_t byte = 0; byte < stride_; ++byte) {
+      std::uint8_t b = 0;
+      const std::size_t c0 = byte * 8;
+      for (std::size_t k = 0; k < 8 && c0 + k < static_cast<std::size_t>(width_); ++k)
+        b |= static_cast<std::uint8_t>((src[c0 + k] != 0) << k);
+      dst[byte] = b;
+    }
+  }
+}
+
+Buffers::Buffers(const SuperIfs& super, cv::Size size, const BufferOptions& options)
+    : super_(super), options_(options) {
+  validate(super_, super_.name.empty() ? std::string("superIFS") : super_.name);
+  check_size(size);
+  if (options.count < 1)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("-V: the number of buffers must be ≥ 1 (got {})", options.count));
+  if (options.history < 0)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("history: must be ≥ 0 steps (got {})", options.history));
+  resolve_threads(options.threads);  // rejects a negative count up front
+  viewport_ = {buffer_view(super_, size, options.margin), size};
+  const AffineMap to_pixel = plane_to_pixel(viewport_);
+  const AffineMap to_plane = *to_pixel.inverse();
+  const std::size_t n_count = super_.size(), m_count = super_.maps();
+  double widest = 0;
+  for (std::size_t n = 0; n < n_count; ++n) {
+    for (std::size_t m = 0; m < m_count; ++m) {
+      // A = P ∘ (f^n_m)⁻¹ ∘ P⁻¹: the inverse map acting on pixel coordinates.
+      const AffineMap a = to_pixel.compose(super_.ifs[n].maps[m].inverse()->compose(to_plane));
+      pixel_inverse_.push_back(a);
+      widest = std::max(widest, footprint(a));
+    }
+    map_probabilities_.push_back(effective_probabilities(super_.ifs[n]));
+  }
+  ifs_probabilities_ = effective_probabilities(super_);
+  // The lookup reaches the pixel under f⁻¹(x) and `dilation_` more on each side: enough to meet
+  // every pixel the preimage of x's pixel touches, to within half a pixel (DESIGN.md §3).
+  dilation_ = std::clamp(static_cast<int>(std::ceil(widest - 0.5)), 1, 32);
+  std::vector<cv::Mat> full(static_cast<std::size_t>(options.count),
+                            cv::Mat(size, CV_8UC1, cv::Scalar(255)));
+  set_masks(full);
+}
+
+void Buffers::set_masks(const std::vector<cv::Mat>& masks) {
+  if (steps_ != 0)
+    throw Error(ErrorKind::invalid_argument,
+                "set_masks: starting buffers can only be set before the first step");
+  if (masks.size() != static_cast<std::size_t>(options_.count))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("set_masks: one mask per buffer is needed (got {} for V = {})",
+                            masks.size(), options_.count));
+  masks_.clear();
+  densities_.clear();
+  for (const auto& m : masks) {
+    if (m.size() != viewport_.size || m.type() != CV_8UC1)
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("set_masks: masks must be CV_8UC1 of {}x{} (got {}x{})",
+                              viewport_.size.width, viewport_.size.height, m.cols, m.rows));
+    cv::Mat binary;
+    cv::compare(m, 0, binary, cv::CMP_NE);
+    masks_.push_back(binary);
+    if (options_.density) {
+      cv::Mat d;
+      binary.convertTo(d, CV_32F, 1.0 / 255.0);
+      const double total = cv::sum(d)[0];
+      if (total > 0) d /= total;
+      densities_.push_back(d);
+    }
+  }
+  dilate_current();
+}
+
+void Buffers::dilate_current() {
+  const std::size_t v_count = masks_.size();
+  const int bands = band_count(viewport_.size);
+  dilated_.assign(v_count, BitMask());
+  for (auto& d : dilated_) d.resize(viewport_.size);
+  parallel_for(v_count * static_cast<std::size_t>(bands), options_.threads,
+               [&](std::size_t chunk, int) {
+                 const std::size_t v = chunk / static_cast<std::size_t>(bands);
+                 const int band = static_cast<int>(chunk % static_cast<std::size_t>(bands));
+                 const int row0 = band * band_rows;
+                 const int row1 = std::min(viewport_.size.height, row0 + band_rows);
+                 dilate_rows(masks_[v], dilation_, row0, row1, dilated_[v]);
+               });
+}
+
+StepChoices Buffers::draw_choices() const {
+  const std::size_t v_count = masks_.size(), m_count = super_.maps();
+  // One stream per step: the choices never depend on threads or on the raster.
+  Rng rng(stream_seed(options_.seed, static_cast<std::uint64_t>(steps_)));
+  const MapPicker pick_ifs(ifs_probabilities_);
+  StepChoices c;
+  c.ifs.resize(v_count);
+  c.source.resize(v_count * m_count);
+  for (std::size_t v = 0; v < v_count; ++v) {
+    c.ifs[v] = pick_ifs(rng.next());
+    for (std::size_t m = 0; m < m_count; ++m)
+      c.source[v * m_count + m] = rng.below(static_cast<std::uint32_t>(v_count));
+  }
+  return c;
+}
+
+void Buffers::step() {
+  const StepChoices choices = draw_choices();
+  const std::size_t v_count = masks_.size(), m_count = super_.maps();
+  const cv::Size size = viewport_.size;
+  const int bands = band_count(size);
+  std::vector<cv::Mat> next(v_count);
+  for (auto& k : next) k.create(size, CV_8UC1);
+  std::vector<cv::Mat> smooth, next_density;
+  if (options_.density) {
+    smooth.resize(v_count);
+    next_density.resize(v_count);
+    for (std::size_t v = 0; v < v_count; ++v) {
+      smooth[v].create(size, CV_32FC1);
+      next_density[v].create(size, CV_32FC1);
+    }
+    parallel_for(
+        v_count * static_cast<std::size_t>(bands), options_.threads, [&](std::size_t chunk, int) {
+          const std::size_t v = chunk / static_cast<std::size_t>(bands);
+          const int row0 = static_cast<int>(chunk % static_cast<std::size_t>(bands)) * band_rows;
+          box_rows(densities_[v], dilation_, row0, std::min(size.height, row0 + band_rows),
+                   smooth[v]);
+        });
+  }
+  parallel_for(
+      v_count * static_cast<std::size_t>(bands), options_.threads, [&](std::size_t chunk, int) {
+        const std::size_t v = chunk / static_cast<std::size_t>(bands);
+        const int row0 = static_cast<int>(chunk % static_cast<std::size_t>(bands)) * band_rows;
+        const int row1 = std::min(size.height, row0 + band_rows);
+        const std::uint32_t n = choices.ifs[v];
+        const std::uint32_t* source = &choices.source[v * m_count];
+        for (int row = row0; row < row1; ++row) {
+          std::uint8_t* out = next[v].ptr<std::uint8_t>(row);
+          const double py = row + 0.5;
+          for (int col = 0; col < size.width; ++col) {
+            const double px = col + 0.5;
+            std::uint8_t hit = 0;
+            // Eq. 14 painted in increasing m: the highest m whose preimage meets its source
+            // buffer is on top, so search m = M..1 and stop at the first hit.
+            for (std::size_t m = m_count; m-- > 0;) {
+              const AffineMap& a = pixel_inverse_[n * m_count + m];
+              if (dilated_[source[m]].test(a.a * px + a.b * py + a.e, a.c * px + a.d * py + a.f)) {
+                hit = 255;
+                break;
+              }
+            }
+            out[col] = hit;
+          }
+          if (!options_.density) continue;
+          // μ'_v = Σ_m p^{n}_m f_m#(μ_{v_m}): the mass of pixel x is the mass of its preimage,
+          // |det f_m⁻¹| pixels of the smoothed density around f_m⁻¹(x).
+          float* mass = next_density[v].ptr<float>(row);
+          for (int col = 0; col < size.width; ++col) {
+            const double px = col + 0.5;
+            double sum = 0;
+            for (std::size_t m = 0; m < m_count; ++m) {
+              const AffineMap& a = pixel_inverse_[n * m_count + m];
+              const double x = a.a * px + a.b * py + a.e, y = a.c * px + a.d * py + a.f;
+              if (!(x >= 0 && y >= 0 && x < size.width && y < size.height)) continue;
+              const float rho =
+                  smooth[source[m]].at<float>(static_cast<int>(y), static_cast<int>(x));
+              sum += map_probabilities_[n][m] * std::abs(a.det()) * rho;
+            }
+            mass[col] = static_cast<float>(sum);
+          }
+        }
+      });
+  if (options_.density) {
+    for (std::size_t v = 0; v < v_count; ++v) {
+      // Mass that left the rectangle is put back by normalising: μ_v stays a probability.
+      const double total = cv::sum(next_density[v])[0];
+      if (total > 0) next_density[v] /= total;
+    }
+    densities_ = std::move(next_density);
+  }
+  masks_ = std::move(next);
+  if (options_.history > 0) {
+    history_.push_back({choices, std::move(dilated_)});
+    while (history_.size() > static_cast<std::size_t>(options_.history)) history_.pop_front();
+  }
+  last_choices_ = choices;
+  ++steps_;
+  dilate_current();
+}
+
+void Buffers::run(int steps) {
+  if (steps < 0)
+    throw Error(ErrorKind::invalid_argument, fmt::format("--steps: must be ≥ 0 (got {})", steps));
+  for (int k = 0; k < steps; ++k) step();
+}
+
+}  // namespace ifsfx

@@ -1,0 +1,247 @@
+#include "superifs/superifs_file.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include "ifs/error.h"
+#include "ifs/preset.h"
+
+namespace ifsfx {
+
+namespace {
+
+// Reads one file's TOML tree into a SuperIfs, every error prefixed "FILE:LINE:".
+class Reader {
+ public:
+  explicit Reader(const std::string& filename) : filename_(filename) {}
+
+  std::string at(const toml::source_region& where) const {
+    return fmt::format("{}:{}", filename_, where.begin.line);
+  }
+  [[noreturn]] void fail(ErrorKind kind, const toml::source_region& where,
+                         const std::string& what) const {
+    throw Error(kind, fmt::format("{}: {}", at(where), what));
+  }
+
+  // Keys other than `allowed` are typos that would silently change the texture: reject them.
+  void check_keys(const toml::table& table, std::initializer_list<std::string_view> allowed,
+                  const std::string& context) const {
+    for (auto&& [key, node] : table) {
+      if (std::find(allowed.begin(), allowed.end(), key.str()) == allowed.end()) {
+        std::string names;
+        for (auto a : allowed) names += fmt::format("{}{}", names.empty() ? "" : ", ", a);
+        fail(ErrorKind::parse, key.source(),
+             fmt::format("{}unknown key '{}' (known: {})", context, key.str(), names));
+      }
+      (void)node;
+    }
+  }
+
+  double number(const toml::node& node, const std::string& what) const {
+    if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
+    if (const auto* f = node.as_floating_point()) return f->get();
+    fail(ErrorKind::parse, node.source(),
+         fmt::format("{}: must be a number (got {})", what, type_name(node)));
+  }
+
+  std::vector<double> numbers(const toml::node& node, const std::string& what) const {
+    const auto* array = node.as_array();
+    if (!array)
+      fail(ErrorKind::parse, node.source(),
+           fmt::format("{}: must be an array of numbers (got {})", what, type_name(node)));
+    std::vector<double> out;
+    for (const auto& item : *array) out.push_back(number(item, what));
+    return out;
+  }
+
+  std::string string(const toml::node& node, const std::string& what) const {
+    if (const auto* s = node.as_string()) return s->get();
+    fail(ErrorKind::parse, node.source(),
+         fmt::format("{}: must be a string (got {})", what, type_name(node)));
+  }
+
+  // An [[ifs]] or [[colouring]] table: maps (a b c d e f each) and optional probabilities.
+  Ifs ifs(const toml::table& table, const std::string& what) const {
+    check_keys(table, {"name", "maps", "probabilities"}, what + ": ");
+    Ifs f;
+    if (const auto* n = table.get("name")) f.name = string(*n, what + " name");
+    const auto* maps = table.get("maps");
+    if (!maps)
+      fail(ErrorKind::parse, table.source(), what + ": needs maps = [[a, b, c, d, e, f], ...]");
+    const auto* rows = maps->as_array();
+    if (!rows || rows->empty())
+      fail(ErrorKind::invalid_ifs, maps->source(),
+           fmt::format("{} maps: must be a non-empty array of maps (got {})", what,
+                       rows ? "an empty array" : type_name(*maps)));
+    for (std::size_t i = 0; i < rows->size(); ++i) {
+      const auto& row = *rows->get(i);
+      const auto k = numbers(row, fmt::format("{} map {}", what, i + 1));
+      if (k.size() != 6)
+        fail(ErrorKind::parse, row.source(),
+             fmt::format("{} map {}: needs 6 coefficients a b c d e f (got {})", what, i + 1,
+                         k.size()));
+      f.maps.push_back(AffineMap::from_coefficients({k[0], k[1], k[2], k[3], k[4], k[5]}));
+    }
+    if (const auto* p = table.get("probabilities"))
+      f.probabilities = numbers(*p, what + " probabilities");
+    ValidateOptions strict;
+    validate(f, at(table.source()) + ": " + what, strict);
+    return f;
+  }
+
+  std::vector<const toml::table*> tables(const toml::table& root, std::string_view key) const {
+    std::vector<const toml::table*> out;
+    const auto* node = root.get(key);
+    if (!node) return out;
+    const auto* array = node->as_array();
+    if (!array)
+      fail(ErrorKind::parse, node->source(),
+           fmt::format("{}: must be a list of tables [[{}]] (got {})", key, key, type_name(*node)));
+    for (const auto& item : *array) {
+      const auto* table = item.as_table();
+      if (!table)
+        fail(ErrorKind::parse, item.source(),
+             fmt::format("{}: every entry must be a table [[{}]] (got {})", key, key,
+                         type_name(item)));
+      out.push_back(table);
+    }
+    return out;
+  }
+
+  static std::string type_name(const toml::node& node) {
+    switch (node.type()) {
+      case toml::node_type::table:
+        return "a table";
+      case toml::node_type::array:
+        return "an array";
+      case toml::node_type::string:
+        return "a string";
+      case toml::node_type::integer:
+        return "an integer";
+      case toml::node_type::floating_point:
+        return "a number";
+      case toml::node_type::boolean:
+        return "a boolean";
+      default:
+        return "a date or time";
+    }
+  }
+
+ private:
+  std::string filename_;
+};
+
+}  // namespace
+
+SuperIfsPreset parse_superifs_toml(std::string_view text, const std::string& filename) {
+  toml::table root;
+  try {
+    root = toml::parse(text, filename);
+  } catch (const toml::parse_error& e) {
+    throw Error(ErrorKind::parse,
+                fmt::format("{}:{}: {}", filename, e.source().begin.line, e.description()));
+  }
+  const Reader read(filename);
+  read.check_keys(root, {"name", "description", "probabilities", "view", "ifs", "colouring"}, "");
+  SuperIfsPreset preset;
+  preset.text = std::string(text);
+  SuperIfs& super = preset.super;
+  if (const auto* n = root.get("name")) super.name = read.string(*n, "name");
+  if (const auto* d = root.get("description")) preset.description = read.string(*d, "description");
+
+  const auto ifs_tables = read.tables(root, "ifs");
+  if (ifs_tables.empty())
+    throw Error(ErrorKind::invalid_ifs,
+                fmt::format("{}:1: a superIFS needs at least one [[ifs]] table (got 0)", filename));
+  for (std::size_t n = 0; n < ifs_tables.size(); ++n) {
+    const std::string what = fmt::format("IFS {}", n + 1);
+    super.ifs.push_back(read.ifs(*ifs_tables[n], what));
+    if (super.ifs[n].size() != super.ifs[0].size())
+      read.fail(ErrorKind::invalid_ifs, ifs_tables[n]->source(),
+                fmt::format("{}: every IFS needs the same number of maps as IFS 1 (got {} for {})",
+                            what, super.ifs[n].size(), super.ifs[0].size()));
+  }
+  if (const auto* p = root.get("probabilities")) {
+    super.probabilities = read.numbers(*p, "probabilities");
+    if (super.probabilities.size() != super.size())
+      read.fail(ErrorKind::invalid_ifs, p->source(),
+                fmt::format("probabilities: one per [[ifs]] is needed (got {} for {} IFSs)",
+                            super.probabilities.size(), super.size()));
+  }
+  if (const auto* v = root.get("view")) {
+    const auto box = read.numbers(*v, "view");
+    if (box.size() != 4)
+      read.fail(ErrorKind::parse, v->source(),
+                fmt::format("view: needs 4 numbers x0, y0, x1, y1 (got {})", box.size()));
+    super.view = Box{box[0], box[1], box[2], box[3]};
+  }
+  const auto colouring_tables = read.tables(root, "colouring");
+  for (std::size_t n = 0; n < colouring_tables.size(); ++n) {
+    const std::string what = fmt::format("colouring {}", n + 1);
+    super.colouring.push_back(read.ifs(*colouring_tables[n], what));
+    if (super.colouring[n].size() != super.maps())
+      read.fail(ErrorKind::invalid_ifs, colouring_tables[n]->source(),
+                fmt::format("{}: needs as many maps as the IFSs (got {} for {})", what,
+                            super.colouring[n].size(), super.maps()));
+  }
+  // The remaining rules (singular maps, view, colouring count) have no better line than the file.
+  validate(super, filename);
+  return preset;
+}
+
+namespace {
+
+std::string stem_of(std::string_view file_name) {
+  return std::string(file_name.substr(0, file_name.size() - superifs_extension.size()));
+}
+
+bool is_superifs_file(std::string_view file_name) {
+  return file_name.size() > superifs_extension.size() && file_name.ends_with(superifs_extension);
+}
+
+}  // namespace
+
+SuperIfsPreset load_superifs(const std::string& spec) {
+  for (const auto& file : shipped_files()) {
+    if (is_superifs_file(file.name) && stem_of(file.name) == spec) {
+      auto preset = parse_superifs_toml(file.text, std::string(file.name));
+      preset.origin = fmt::format("shipped:{}", file.name);
+      return preset;
+    }
+  }
+  const std::filesystem::path path(spec);
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    std::string names;
+    for (const auto& s : list_shipped_superifs())
+      names += fmt::format("{}{}", names.empty() ? "" : ", ", s.name);
+    throw Error(ErrorKind::not_found,
+                fmt::format("{}: no such superIFS preset or file (shipped: {})", spec, names));
+  }
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (!in && !in.eof()) throw Error(ErrorKind::io, fmt::format("{}: cannot read the file", spec));
+  auto preset = parse_superifs_toml(text.str(), spec);
+  preset.origin = spec;
+  return preset;
+}
+
+std::vector<SuperIfsSummary> list_shipped_superifs() {
+  std::vector<SuperIfsSummary> out;
+  for (const auto& file : shipped_files()) {
+    if (!is_superifs_file(file.name)) continue;
+    const auto preset = parse_superifs_toml(file.text, std::string(file.name));
+    out.push_back(
+        {stem_of(file.name), preset.super.size(), preset.super.maps(), preset.description});
+  }
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  return out;
+}
+
+}  // namespace ifsfx

@@ -1,0 +1,307 @@
+#include "superifs/texture.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <opencv2/imgproc.hpp>
+
+#include "ifs/error.h"
+#include "ifs/parallel.h"
+
+namespace ifsfx {
+
+namespace {
+
+constexpr int band_rows = 16;  // rows per chunk of work, fixed (never from the thread count)
+
+// Symbols of the top address that set a pixel's tops colour: M^-6 is below 8-bit resolution.
+constexpr int top_symbols = 6;
+
+// One level of the descent: which IFS and which map took the point one step back.
+struct Symbol {
+  std::uint32_t n = 0, m = 0;
+};
+
+// Whether some set pixel of `mask` lies within `r` pixels (Chebyshev) of the point (x, y).
+bool near(const BitMask& mask, double x, double y, int r) {
+  if (!(x > -r - 1 && y > -r - 1 && x < mask.width() + r + 1 && y < mask.height() + r + 1))
+    return false;
+  const int c = static_cast<int>(std::floor(x)), row = static_cast<int>(std::floor(y));
+  for (int j = std::max(0, row - r); j <= std::min(mask.height() - 1, row + r); ++j)
+    for (int i = std::max(0, c - r); i <= std::min(mask.width() - 1, c + r); ++i)
+      if (mask.test(i, j)) return true;
+  return false;
+}
+
+// The exact descent (DESIGN.md §3, §5) from the centre of pixel (col, row) of buffer v through
+// every level of history, newest first. Writes the symbols, returns how many, and leaves in `z`
+// the point reached (continuous pixel coordinates of the oldest level's buffers).
+std::size_t descend(const Buffers& buffers, std::size_t v, int col, int row,
+                    std::vector<Symbol>& word, Point& z) {
+  const auto& history = buffers.history();
+  const std::size_t m_count = buffers.super().maps();
+  // A preimage that lands just off every conservative mask (x is exact, the masks are not) is
+  // looked for a little further before the descent gives up at this level.
+  const int reach = buffers.dilation() + 1;
+  z = {col + 0.5, row + 0.5};
+  std::size_t depth = 0, buf = v;
+  for (std::size_t level = history.size(); level-- > 0;) {
+    const HistoryLevel& h = history[level];
+    const std::uint32_t n = h.choices.ifs[buf];
+    const std::uint32_t* source = &h.choices.source[buf * m_count];
+    // Top(…) of eq. 14: the highest m whose preimage lies in its source buffer one step back.
+    std::size_t found = m_count;
+    Point y;
+    for (int pass = 0; pass < 2 && found == m_count; ++pass) {
+      for (std::size_t m = m_count; m-- > 0;) {
+        y = buffers.pixel_inverse(n, m)(z);
+        const BitMask& previous = h.previous[source[m]];
+        if (pass == 0 ? previous.test(y.x, y.y) : near(previous, y.x, y.y, reach)) {
+          found = m;
+          break;
+        }
+      }
+    }
+    if (found == m_count) break;
+    word[depth++] = {n, static_cast<std::uint32_t>(found)};
+    z = y;
+    buf = source[found];
+  }
+  return depth;
+}
+
+void check_buffer(const Buffers& buffers, std::size_t v) {
+  if (v >= buffers.count())
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--buffer: must be 1..{} for V = {} (got {})", buffers.count(),
+                            buffers.count(), v + 1));
+}
+
+void check_history(const Buffers& buffers, const char* what) {
+  if (buffers.steps_done() > 0 && buffers.history().empty())
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: the buffers keep no history to descend through "
+                            "(BufferOptions::history is 0)",
+                            what));
+}
+
+// Tops colour: the top address read as a number in [0, 1), first symbol most significant, through
+// a perceptual ramp, so that the pieces of the first level get distinct hues and their sub-pieces
+// shades of them.
+cv::Mat render_tops(const Buffers& buffers, std::size_t v) {
+  check_history(buffers, "tops mode");
+  const cv::Size size = buffers.size();
+  const double m_count = static_cast<double>(buffers.super().maps());
+  cv::Mat index(size, CV_8UC1, cv::Scalar(0));
+  const auto bands = static_cast<std::size_t>((size.height + band_rows - 1) / band_rows);
+  const cv::Mat& mask = buffers.mask(v);
+  parallel_for(bands, buffers.threads(), [&](std::size_t band, int) {
+    std::vector<Symbol> word(buffers.history().size());
+    const int row0 = static_cast<int>(band) * band_rows;
+    for (int row = row0; row < std::min(size.height, row0 + band_rows); ++row) {
+      for (int col = 0; col < size.width; ++col) {
+        if (!mask.at<std::uint8_t>(row, col)) continue;
+        Point z;
+        const std::size_t depth = descend(buffers, v, col, row, word, z);
+        double t = 0, scale = 1;
+        for (std::size_t i = 0; i < std::min<std::size_t>(depth, top_symbols); ++i) {
+          scale /= m_count;
+          t += word[i].m * scale;
+        }
+        // 1..255 so that the ramp's darkest end still differs from the background.
+        index.at<std::uint8_t>(row, col) = static_cast<std::uint8_t>(1 + std::floor(t * 254.999));
+      }
+    }
+  });
+  cv::Mat colour;
+  cv::applyColorMap(index, colour, cv::COLORMAP_TURBO);
+  colour.setTo(cv::Scalar::all(0), mask == 0);
+  return colour;
+}
+
+// Measure: v = log(1 + k·ρ/mean) / log(1 + k·max/mean), then gamma (DESIGN.md §4), mean over the
+// pixels that carry mass.
+cv::Mat render_measure(const Buffers& buffers, std::size_t v) {
+  if (buffers.density(v).empty())
+    throw Error(ErrorKind::invalid_argument,
+                "measure mode: the buffers carry no density (BufferOptions::density is false)");
+  const cv::Mat& rho = buffers.density(v);
+  constexpr double k = 4, gamma = 2.2;
+  double max = 0;
+  cv::minMaxLoc(rho, nullptr, &max);
+  const int carrying = cv::countNonZero(rho > 0);
+  cv::Mat out(rho.size(), CV_8UC1, cv::Scalar(0));
+  if (max <= 0 || carrying == 0) return out;
+  const double mean = 1.0 / carrying;  // ρ sums to 1
+  const double norm = std::log1p(k * max / mean);
+  for (int row = 0; row < rho.rows; ++row) {
+    const float* src = rho.ptr<float>(row);
+    std::uint8_t* dst = out.ptr<std::uint8_t>(row);
+    for (int col = 0; col < rho.cols; ++col) {
+      if (!(src[col] > 0)) continue;
+      const double t = std::pow(std::log1p(k * src[col] / mean) / norm, 1.0 / gamma);
+      dst[col] = cv::saturate_cast<std::uint8_t>(t * 255.0);
+    }
+  }
+  return out;
+}
+
+BufferOptions buffer_options(const SuperIfs& super, cv::Size size, const TextureOptions& options) {
+  BufferOptions b;
+  b.count = options.count;
+  b.seed = options.seed;
+  b.threads = options.threads;
+  b.margin = options.margin;
+  b.density = options.mode == TextureMode::measure;
+  if (options.mode == TextureMode::steal || options.mode == TextureMode::tops) {
+    int pixels = std::max(size.width, size.height);
+    if (!options.source.empty())
+      pixels = std::max({pixels, options.source.cols, options.source.rows});
+    b.history = options.mode == TextureMode::tops ? top_symbols : descent_depth(super, pixels);
+  }
+  return b;
+}
+
+void check_options(const TextureOptions& options) {
+  if (options.count < 1)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("-V: the number of buffers must be ≥ 1 (got {})", options.count));
+  if (options.buffer < 0 || options.buffer >= options.count)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--buffer: must be 1..{} for V = {} (got {})", options.count,
+                            options.count, options.buffer + 1));
+  if (options.steps < 0)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--steps: must be ≥ 0, 0 for the default (got {})", options.steps));
+}
+
+}  // namespace
+
+const char* to_string(TextureMode mode) noexcept {
+  switch (mode) {
+    case TextureMode::attractor:
+      return "attractor";
+    case TextureMode::tops:
+      return "tops";
+    case TextureMode::steal:
+      return "steal";
+    case TextureMode::measure:
+      return "measure";
+  }
+  return "attractor";
+}
+
+TextureMode parse_texture_mode(const std::string& text, const std::string& what) {
+  for (auto mode :
+       {TextureMode::attractor, TextureMode::tops, TextureMode::steal, TextureMode::measure})
+    if (text == to_string(mode)) return mode;
+  throw Error(ErrorKind::parse,
+              fmt::format("{}: must be attractor, tops, steal or measure (got '{}')", what, text));
+}
+
+int descent_depth(const SuperIfs& super, int pixels) {
+  const double s = colouring_contraction(super);
+  if (!(s > 0) || pixels <= 1) return 1;
+  const double l = std::floor(std::log(static_cast<double>(pixels)) / -std::log(s)) + 1;
+  return static_cast<int>(std::clamp(l, 1.0, 64.0));
+}
+
+StealMap steal_map(const Buffers& buffers, std::size_t v) {
+  check_buffer(buffers, v);
+  check_history(buffers, "steal map");
+  const cv::Size size = buffers.size();
+  const SuperIfs& super = buffers.super();
+  std::vector<Ifs> colouring;
+  for (std::size_t n = 0; n < super.size(); ++n) colouring.push_back(colouring_ifs(super, n));
+  StealMap map;
+  map.coverage = buffers.mask(v).clone();
+  map.source_uv.create(size, CV_32FC2);
+  const auto bands = static_cast<std::size_t>((size.height + band_rows - 1) / band_rows);
+  parallel_for(bands, buffers.threads(), [&](std::size_t band, int) {
+    std::vector<Symbol> word(buffers.history().size());
+    const int row0 = static_cast<int>(band) * band_rows;
+    for (int row = row0; row < std::min(size.height, row0 + band_rows); ++row) {
+      auto* uv = map.source_uv.ptr<cv::Vec2f>(row);
+      const std::uint8_t* covered = map.coverage.ptr<std::uint8_t>(row);
+      for (int col = 0; col < size.width; ++col) {
+        if (!covered[col]) {
+          uv[col] = {0, 0};
+          continue;
+        }
+        Point z;
+        const std::size_t depth = descend(buffers, v, col, row, word, z);
+        // ρ: the buffers' rectangle onto the colouring's unit square (y up) — the steal
+        // coordinates of the starting buffer — then T = g_{σ1} ∘ … ∘ g_{σL}(ρ(z)).
+        Point t{z.x / size.width, 1.0 - z.y / size.height};
+        for (std::size_t i = depth; i-- > 0;) t = colouring[word[i].n].maps[word[i].m](t);
+        uv[col] = {static_cast<float>(t.x), static_cast<float>(1.0 - t.y)};
+      }
+    }
+  });
+  return map;
+}
+
+cv::Mat render_buffer(const Buffers& buffers, std::size_t v, TextureMode mode,
+                      const cv::Mat& source) {
+  check_buffer(buffers, v);
+  switch (mode) {
+    case TextureMode::attractor:
+      return buffers.mask(v).clone();
+    case TextureMode::tops:
+      return render_tops(buffers, v);
+    case TextureMode::measure:
+      return render_measure(buffers, v);
+    case TextureMode::steal: {
+      if (source.empty())
+        throw Error(ErrorKind::invalid_argument,
+                    "--source: steal mode needs a source image to steal colours from");
+      ApplyOptions apply_options;
+      apply_options.threads = buffers.threads();
+      return apply(steal_map(buffers, v), source, apply_options);
+    }
+  }
+  return {};
+}
+
+cv::Mat render_texture(const SuperIfs& super, cv::Size size, const TextureOptions& options) {
+  return TextureSequence(super, size, options).frame();
+}
+
+TextureSequence::TextureSequence(const SuperIfs& super, cv::Size size,
+                                 const TextureOptions& options)
+    : options_((check_options(options), options)),
+      buffers_(super, size, buffer_options(super, size, options)) {
+  burn_in_ = options.steps > 0 ? options.steps : default_steps(super, size);
+  buffers_.run(burn_in_);
+}
+
+cv::Mat TextureSequence::frame() const {
+  return render_buffer(buffers_, static_cast<std::size_t>(options_.buffer), options_.mode,
+                       options_.source);
+}
+
+StealMap TextureSequence::steal_map() const {
+  return ifsfx::steal_map(buffers_, static_cast<std::size_t>(options_.buffer));
+}
+
+StealMap TextureSequence::next_map() {
+  step();
+  return steal_map();
+}
+
+cv::Mat crossfade(const cv::Mat& a, const cv::Mat& b, double t) {
+  if (a.size() != b.size() || a.type() != b.type())
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("crossfade: images must share size and type (got {}x{} and {}x{})",
+                            a.cols, a.rows, b.cols, b.rows));
+  if (!(t >= 0 && t <= 1))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("crossfade: t must be in [0, 1] (got {})", t));
+  cv::Mat out;
+  cv::addWeighted(a, 1.0 - t, b, t, 0.0, out);
+  return out;
+}
+
+}  // namespace ifsfx

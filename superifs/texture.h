@@ -1,0 +1,103 @@
+// Textures from a superIFS (paper §5, Fig. 4–5): a buffer of the V-variable step rendered as a
+// set, as fractal tops, coloured by colour stealing, or as its measure; and texture sequences —
+// every further step a new texture of the same family, optionally crossfaded for animation.
+//
+// Steal coordinates and tops come from an exact descent through the buffers' history (DESIGN.md
+// §3 and §5): from pixel x of buffer v at step k, pick the highest m whose preimage
+// f^{n_v}_m⁻¹(x) lies in buffer v_m one step back, continue there with x ← f⁻¹(x), L times; then
+// T(x) = g^{n_1}_{m_1} ∘ … ∘ g^{n_L}_{m_L}(ρ(x_L)), where ρ maps the buffers' plane rectangle onto
+// the colouring's unit square (the steal coordinates of the starting buffer, the whole
+// rectangle). x is never snapped to the grid, so a superIFS whose IFSs all equal its colouring
+// tiling returns the source image exactly.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "ifs/steal_map.h"
+#include "superifs/buffers.h"
+#include "superifs/superifs.h"
+
+namespace ifsfx {
+
+enum class TextureMode {
+  attractor,  // the set K_v, white on black (CV_8UC1)
+  tops,       // the top address of each pixel through a colour ramp (CV_8UC3)
+  steal,      // colours stolen from a source image (the source's type)
+  measure,    // the measure μ_v, log-density tone-mapped (CV_8UC1)
+};
+
+const char* to_string(TextureMode mode) noexcept;
+// "attractor", "tops", "steal" or "measure"; throws Error{parse} naming `what` otherwise.
+TextureMode parse_texture_mode(const std::string& text, const std::string& what = "--mode");
+
+// Descent depth that brings the colouring's pieces below a pixel of a raster of `pixels` on its
+// longer side: the least L with s_G^L · pixels < 1, capped at 64.
+int descent_depth(const SuperIfs& super, int pixels);
+
+// The steal map of buffer v (from 0): source_uv = T(x) in normalised image coordinates of the
+// source (u right, v down), coverage = K_v. Uses every level of buffers.history(); throws
+// Error{invalid_argument} when the buffers keep no history after steps were taken.
+//   Buffers K(super, {512, 512}, {.history = descent_depth(super, 512)});
+//   K.run(12); auto T = steal_map(K, 0);  auto img = apply(T, photo);
+StealMap steal_map(const Buffers& buffers, std::size_t v);
+
+// The buffer rendered in `mode` (see TextureMode). `source` is the image colours are stolen from
+// in steal mode and is ignored otherwise. Tops and steal need history; measure needs density.
+cv::Mat render_buffer(const Buffers& buffers, std::size_t v, TextureMode mode,
+                      const cv::Mat& source = {});
+
+struct TextureOptions {
+  int count = 3;   // V, the number of buffers
+  int steps = 0;   // burn-in steps; 0 = default_steps(super, size)
+  int buffer = 0;  // the buffer shown, from 0
+  TextureMode mode = TextureMode::attractor;
+  cv::Mat source;          // steal mode: the image frame() steals colours from (its size also
+                           // sets the descent depth); may be empty when only maps are wanted
+  std::uint64_t seed = 1;  // seeds every choice (stream_seed(seed, step))
+  int threads = 0;         // 0 = all cores
+  double margin = 0.02;    // auto-framing margin when the superIFS gives no view
+};
+
+// One texture: V buffers burnt in for options.steps, buffer options.buffer rendered in
+// options.mode. Throws Error{invalid_argument} for a bad buffer index, steps or missing source.
+//   cv::Mat t = render_texture(load_superifs("paper-fig4").super, {2048, 2048},
+//                              {.mode = TextureMode::steal, .source = photo});
+cv::Mat render_texture(const SuperIfs& super, cv::Size size, const TextureOptions& options = {});
+
+// An endless, non-repeating sequence of textures of one family: the burnt-in buffers, then one
+// V-variable step per texture. The video filter calls next_map() every K frames and colours its
+// frames with apply(map, frame).
+//   TextureSequence seq(super, {1920, 1080}, {.count = 3});
+//   for (;;) { StealMap T = seq.next_map(); ... apply(T, frame) ... }
+class TextureSequence {
+ public:
+  // Validates the options and runs the burn-in (options.steps, or the default).
+  TextureSequence(const SuperIfs& super, cv::Size size, const TextureOptions& options = {});
+
+  // The current texture rendered in options.mode.
+  cv::Mat frame() const;
+  // The steal map of the shown buffer now (mode steal or tops: the others keep no history).
+  StealMap steal_map() const;
+  // One further V-variable step: the next texture of the family.
+  void step() { buffers_.step(); }
+  // step(), then the steal map of the new texture.
+  StealMap next_map();
+
+  int steps_done() const { return buffers_.steps_done(); }
+  int burn_in() const { return burn_in_; }
+  const Buffers& buffers() const { return buffers_; }
+
+ private:
+  TextureOptions options_;
+  Buffers buffers_;
+  int burn_in_ = 0;
+};
+
+// Linear crossfade (1 − t)·a + t·b of two images of one size and type, t in [0, 1]: the frames
+// between two textures of a sequence.
+cv::Mat crossfade(const cv::Mat& a, const cv::Mat& b, double t);
+
+}  // namespace ifsfx
