@@ -72,9 +72,11 @@ Descent exact_descent(const Ifs& F, const Ifs* G, const Viewport& viewport,
   //    points whose preimage lies up to a pixel outside A and shift every piece boundary by that
   //    much: the identity oracle sees it at once.
   const Viewport mvp = mask_viewport(attractor_bounds(F, options.seed), viewport);
-  const cv::Mat attractor = chaos_attractor_mask(
-      F, mvp, {.quality = options.quality, .seed = options.seed, .threads = options.threads},
-      mask_stats);
+  const cv::Mat attractor =
+      chaos_tops(F, mvp,
+                 {.quality = options.quality, .seed = options.seed, .threads = options.threads},
+                 mask_stats)
+          .coverage();
   const cv::Mat& lookup = attractor;
 
   // 2. The maps in mask pixel coordinates: h_n = P ∘ f_n⁻¹ ∘ P⁻¹.

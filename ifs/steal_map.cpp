@@ -52,11 +52,12 @@ cv::Mat uv_from_keys(const AddressRaster& tops, const Ifs& F, const Ifs& G, int 
   // an extreme of the pixel (towards the higher maps' side): evaluating T at x itself would
   // shift the whole picture by up to a pixel. Instead the address is cut after the first m
   // symbols w = σ1 … σm, where the piece f_w(A) holding x has shrunk to about the pixel, and T at
-  // the pixel centre x_c is taken from the local conjugacy T = g_w ∘ T ∘ f_w⁻¹ on that piece,
-  // with T ∘ f_w⁻¹ ≈ f_w⁻¹ near it: T(x_c) ≈ g_w(f_w⁻¹(x_c)). This is exact wherever G is an
-  // affine conjugate of F (the identity oracle included, whatever the pixel grid), and otherwise
-  // off by a fraction of the piece g_w(R). Where w holds a singular map (no f_w⁻¹), the centre of
-  // the piece g_w(R) is used instead.
+  // the pixel centre x_c is taken from T(x) = g_w(T(f_w⁻¹(x))) on that piece, with T inside
+  // approximated by Φ, the affine map of F's attractor box onto G's:
+  // T(x_c) ≈ g_w(Φ(f_w⁻¹(x_c))). The error is a fraction of the piece g_w(R), about a pixel, but
+  // without the bias of the winning point; it vanishes when Φ = T (F = G: the identity oracle,
+  // whatever the pixel grid). Where w holds a singular map (no f_w⁻¹), the centre of g_w(R) is
+  // used instead.
   const int k_symbols = tops.symbols();
   const std::uint32_t n = static_cast<std::uint32_t>(G.size());
   const Box fb = attractor_bounds(F);
@@ -74,6 +75,15 @@ cv::Mat uv_from_keys(const AddressRaster& tops, const Ifs& F, const Ifs& G, int 
   }
   const Box gb = attractor_bounds(G);
   const Point centre{0.5 * (gb.x0 + gb.x1), 0.5 * (gb.y0 + gb.y1)};
+  // Φ: F's box onto G's, a degenerate side (a line attractor) onto the middle of G's.
+  const auto scale = [](double from, double to) { return from > 0 ? to / from : 0.0; };
+  const double phi_x = scale(fb.width(), gb.width()), phi_y = scale(fb.height(), gb.height());
+  const AffineMap phi{phi_x,
+                      0,
+                      0,
+                      phi_y,
+                      centre.x - phi_x * 0.5 * (fb.x0 + fb.x1),
+                      centre.y - phi_y * 0.5 * (fb.y0 + fb.y1)};
   cv::Mat uv(tops.viewport.size, CV_32FC2, cv::Scalar::all(0));
   const std::size_t rows = static_cast<std::size_t>(uv.rows);
   parallel_for(rows, threads, [&](std::size_t r, int) {
@@ -93,8 +103,9 @@ cv::Mat uv_from_keys(const AddressRaster& tops, const Ifs& F, const Ifs& G, int 
       }
       std::optional<AffineMap> f_inv;
       if (invertible) f_inv = f_w.inverse(0);
-      const Point y =
-          f_inv ? g_w((*f_inv)(tops.viewport.pixel_centre(col, static_cast<int>(r)))) : g_w(centre);
+      const Point y = f_inv
+                          ? g_w(phi((*f_inv)(tops.viewport.pixel_centre(col, static_cast<int>(r)))))
+                          : g_w(centre);
       out[col] = cv::Vec2f(static_cast<float>(y.x), static_cast<float>(1 - y.y));
     }
   });
@@ -146,6 +157,7 @@ StealMap compute_steal_map(const Ifs& F, const Ifs& G, cv::Size size,
   s.points = chaos.points;
   s.rounds = chaos.rounds;
   s.filled = options.exact ? 0 : chaos.filled;
+  s.propagated = options.exact ? 0 : chaos.propagated;
   s.hit = options.exact ? 0 : static_cast<double>(chaos.hit) / static_cast<double>(size.area());
   s.coverage = cv::countNonZero(map.coverage) / static_cast<double>(size.area());
   s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -37,18 +37,22 @@ struct StealMapOptions {
 };
 
 // What compute_steal_map did. The chaos game's coverage policy: `quality` points per pixel,
-// then rounds of quality/4 more while a round adds more than 0.1 % to the pixels hit (at most 8),
-// then pixels no point reached but lying between hit neighbours (along a row, a column or a
-// diagonal) take the largest address among their hit neighbours (the tops rule, eq. 7).
+// then rounds of quality/4 more while a round adds more than 0.1 % to the pixels hit (at most 8);
+// then up to 4 Hutchinson passes, one more chaos-game step from the point of every pixel by every
+// map into the pixels still empty (it reaches what the invariant measure barely visits, and
+// never leaves the attractor); then pixels still empty but lying between covered neighbours
+// (along a row, a column or a diagonal) take the largest address among them (the tops rule,
+// eq. 7). The exact map rasters its attractor mask the same way.
 struct StealMapStats {
-  std::uint64_t points = 0;  // chaos-game points plotted (for the exact map: its attractor mask)
-  int rounds = 0;            // chaos-game rounds run (the first included)
-  double hit = 0;            // chaos game: fraction of output pixels some point reached
-  std::size_t filled = 0;    // chaos game: pixels filled from their neighbours
-  double coverage = 0;       // fraction of output pixels on the attractor, in the map
-  int levels = 0;            // symbols of the address followed per pixel
-  double seconds = 0;        // wall time
-  Box view;                  // the plane rectangle of F shown
+  std::uint64_t points = 0;    // chaos-game points plotted (for the exact map: its attractor mask)
+  int rounds = 0;              // chaos-game rounds run (the first included)
+  double hit = 0;              // chaos game: fraction of output pixels some point reached
+  std::size_t propagated = 0;  // chaos game: pixels reached by the Hutchinson passes
+  std::size_t filled = 0;      // chaos game: pixels filled from their neighbours
+  double coverage = 0;         // fraction of output pixels on the attractor, in the map
+  int levels = 0;              // symbols of the address followed per pixel
+  double seconds = 0;          // wall time
+  Box view;                    // the plane rectangle of F shown
 };
 
 // The steal map of F coloured through G on `size` pixels. G must have as many maps as F and is

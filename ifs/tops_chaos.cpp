@@ -28,6 +28,7 @@ namespace {
 
 // Points per chunk: the split of the work depends only on the point count.
 constexpr std::uint64_t kChunkPoints = std::uint64_t{1} << 21;
+constexpr int kHutchinsonPasses = 4;
 // Walkers iterated in lockstep per chunk: independent chains whose cache misses on the pixel
 // buffer overlap (one walker alone waits on every store).
 constexpr int kLanes = 8;
@@ -125,6 +126,70 @@ std::size_t fill_holes(const std::vector<Cell>& in, std::vector<Cell>& out, int 
   return filled;
 }
 
+// The point a key stands for: x = f_σ1 ∘ … ∘ f_σK(c), c the fixed point of f_σK, within s^K of
+// the point that carried the key; in continuous pixel coordinates.
+Point point_of_key(const Ifs& F, const Kernel& k, std::uint64_t key) {
+  const int symbols = 64 / k.bits;
+  const auto n = static_cast<std::uint32_t>(F.size());
+  auto symbol = [&](int i) {
+    return std::min(
+        n - 1, static_cast<std::uint32_t>((key >> (64 - k.bits * (i + 1))) & ((1u << k.bits) - 1)));
+  };
+  Point x = fixed_point(F.maps[symbol(symbols - 1)]);
+  for (int i = symbols - 1; i >= 0; --i) x = F.maps[symbol(i)](x);
+  return {x.x * k.sx + k.ox, x.y * k.sy + k.oy};
+}
+
+// Hutchinson passes: one more chaos-game step from the point of every pixel, for all maps at
+// once (W(A) = A, so f_n of a point of A is a point of A with address n·σ). A pixel that no
+// point reached takes the largest key among those arriving; the pixels so reached are the
+// sources of the next pass. This reaches the parts of A the invariant measure barely visits
+// (corners of overlapping IFSs, thin tips of the fern) without leaving A. Returns the pixels
+// reached.
+std::size_t hutchinson_passes(const Ifs& F, const Kernel& k, std::vector<std::uint64_t>& keys,
+                              int passes) {
+  const auto width = static_cast<std::size_t>(k.width);
+  std::vector<std::pair<std::size_t, Point>> sources;
+  for (std::size_t i = 0; i < keys.size(); ++i)
+    if (keys[i] != 0) sources.emplace_back(i, point_of_key(F, k, keys[i]));
+  std::size_t reached = 0;
+  const int shift = 64 - k.bits;
+  // The plane maps seen in pixel coordinates: P ∘ f_n ∘ P⁻¹.
+  const AffineMap to_pixel{k.sx, 0, 0, k.sy, k.ox, k.oy};
+  const AffineMap from_pixel = *to_pixel.inverse(0);
+  std::vector<AffineMap> maps;
+  for (const auto& f : F.maps) maps.push_back(to_pixel.compose(f).compose(from_pixel));
+  for (int pass = 0; pass < passes && !sources.empty(); ++pass) {
+    std::vector<std::pair<std::size_t, Point>> arrivals;  // (pixel, point), with its key below
+    std::vector<std::uint64_t> arrival_keys;
+    for (const auto& [index, x] : sources)
+      for (std::size_t n = 0; n < maps.size(); ++n) {
+        const Point y = maps[n](x);
+        if (!(y.x >= 0 && y.x < k.width && y.y >= 0 && y.y < k.height)) continue;
+        const std::size_t q = static_cast<std::size_t>(y.y) * width + static_cast<std::size_t>(y.x);
+        if (keys[q] != 0) continue;
+        arrivals.emplace_back(q, y);
+        arrival_keys.push_back((keys[index] >> k.bits) | (std::uint64_t{n} << shift) | 1);
+      }
+    // Largest key per pixel (ties: equal keys, any of them).
+    std::vector<std::size_t> order(arrivals.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return arrivals[a].first != arrivals[b].first ? arrivals[a].first < arrivals[b].first
+                                                    : arrival_keys[a] > arrival_keys[b];
+    });
+    sources.clear();
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      const std::size_t q = arrivals[order[i]].first;
+      if (i > 0 && arrivals[order[i - 1]].first == q) continue;
+      keys[q] = arrival_keys[order[i]];
+      sources.push_back(arrivals[order[i]]);
+    }
+    reached += sources.size();
+  }
+  return reached;
+}
+
 // The coverage policy of ChaosTopsOptions over one record type; returns the merged buffer.
 template <bool kKeys, class Cell>
 std::vector<Cell> run_policy(const Ifs& F, const Viewport& viewport,
@@ -175,6 +240,8 @@ std::vector<Cell> run_policy(const Ifs& F, const Viewport& viewport,
     if (round == 0 && gained == 0) break;  // nothing in view at all
   }
   s.hit = hit;
+  if constexpr (kKeys)
+    if (options.fill) s.propagated = hutchinson_passes(F, kernel, merged, kHutchinsonPasses);
   std::vector<Cell> result = merged;
   if (options.fill)
     s.filled = fill_holes(merged, result, viewport.size.width, viewport.size.height);
@@ -190,14 +257,6 @@ AddressRaster chaos_tops(const Ifs& F, const Viewport& viewport, const ChaosTops
   out.viewport = viewport;
   out.bits = symbol_bits(F.size());
   out.keys = run_policy<true, std::uint64_t>(F, viewport, options, stats);
-  return out;
-}
-
-cv::Mat chaos_attractor_mask(const Ifs& F, const Viewport& viewport,
-                             const ChaosTopsOptions& options, ChaosTopsStats* stats) {
-  const auto cells = run_policy<false, std::uint8_t>(F, viewport, options, stats);
-  cv::Mat out(viewport.size, CV_8UC1);
-  for (std::size_t i = 0; i < cells.size(); ++i) out.data[i] = cells[i] ? 255 : 0;
   return out;
 }
 

@@ -39,9 +39,11 @@ struct AddressRaster {
 
 // The chaos-game coverage policy: `quality` points per pixel, then further rounds of quality/4
 // per pixel while a round still adds more than 0.1 % to the pixels hit (at most kMaxGrowthRounds),
-// then holes are filled from neighbours: a pixel no point reached but with hit neighbours on both
-// sides along a row, a column or a diagonal lies inside the attractor's raster, and takes the
-// largest key among its hit 8-neighbours (the tops rule applied to the neighbourhood).
+// then Hutchinson passes (one more step from every pixel's point, by every map, into pixels
+// no point reached; up to 4 passes), then holes are filled from neighbours: a pixel no point
+// reached but with hit neighbours on both sides along a row, a column or a diagonal lies inside the
+// attractor's raster, and takes the largest key among its hit 8-neighbours (the tops rule applied
+// to the neighbourhood).
 struct ChaosTopsOptions {
   double quality = 64;
   std::uint64_t seed = 1;
@@ -53,21 +55,17 @@ struct ChaosTopsOptions {
 inline constexpr int kMaxGrowthRounds = 8;
 
 struct ChaosTopsStats {
-  std::uint64_t points = 0;  // points plotted (burn-in excluded)
-  std::size_t hit = 0;       // pixels some point reached
-  std::size_t filled = 0;    // pixels filled from neighbours
-  int rounds = 0;            // rounds run, the first included
+  std::uint64_t points = 0;    // points plotted (burn-in excluded)
+  std::size_t hit = 0;         // pixels some point reached
+  std::size_t propagated = 0;  // pixels reached by the Hutchinson passes
+  std::size_t filled = 0;      // pixels filled from neighbours
+  int rounds = 0;              // rounds run, the first included
 };
 
 // Fractal tops by the chaos game (DESIGN.md §2): every pixel keeps the largest key of the points
 // that landed in it. Deterministic for a seed, whatever the thread count.
 AddressRaster chaos_tops(const Ifs& F, const Viewport& viewport, const ChaosTopsOptions& options,
                          ChaosTopsStats* stats = nullptr);
-
-// The attractor as a set of pixels by the chaos game with the same coverage policy, without keys
-// (a smaller record, so a faster kernel): CV_8UC1, 255 on the attractor.
-cv::Mat chaos_attractor_mask(const Ifs& F, const Viewport& viewport,
-                             const ChaosTopsOptions& options, ChaosTopsStats* stats = nullptr);
 
 // The exact top-address descent (DESIGN.md §3) from every pixel centre of `viewport`.
 struct DescentOptions {
