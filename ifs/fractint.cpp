@@ -10,8 +10,9 @@
 
 #include <fmt/format.h>
 
+#include "ifs/fractint.h"
+
 #include "ifs/error.h"
-#include "ifs/preset.h"
 
 namespace ifsfx {
 namespace {
@@ -49,8 +50,8 @@ class FractintReader {
   FractintReader(std::string_view text, const std::string& filename)
       : text_(text), filename_(filename) {}
 
-  std::vector<IfsPreset> entries() {
-    std::vector<IfsPreset> out;
+  std::vector<detail::FractintEntry> entries() {
+    std::vector<detail::FractintEntry> out;
     while (true) {
       skip(is_space);
       if (at_end()) break;
@@ -60,8 +61,11 @@ class FractintReader {
   }
 
  private:
+  Error error_at(ErrorKind kind, int line, const std::string& what) const {
+    return Error(kind, fmt::format("{}:{}: {}", filename_, line, what));
+  }
   [[noreturn]] void fail(ErrorKind kind, int line, const std::string& what) const {
-    throw Error(kind, fmt::format("{}:{}: {}", filename_, line, what));
+    throw error_at(kind, line, what);
   }
 
   bool at_end() const { return pos_ >= text_.size(); }
@@ -104,7 +108,10 @@ class FractintReader {
     return text_.substr(begin, pos_ - begin);
   }
 
-  IfsPreset entry() {
+  // Errors of the file's structure (a missing brace) throw at once; errors inside a well-formed
+  // entry (a (3D) tag, a bad number, a count that does not fit) stay with that entry, so that
+  // the other entries of the file can still be used.
+  detail::FractintEntry entry() {
     const std::size_t begin = pos_;
     const int name_line = line_;
     if (peek() == '{' || peek() == '}' || peek() == '(' || peek() == ',')
@@ -112,7 +119,13 @@ class FractintReader {
            fmt::format("an entry starts with its name, as in NAME {{ a b c d e f p ... }} "
                        "(got '{}')",
                        peek()));
-    const std::string name(token(true));
+    detail::FractintEntry out;
+    out.name = std::string(token(true));
+    out.line = name_line;
+    const std::string& name = out.name;
+    auto defer = [&](ErrorKind kind, int line, const std::string& what) {
+      if (!out.error) out.error = error_at(kind, line, what);
+    };
     skip(is_space);
     if (!at_end() && peek() == '(') {
       const std::size_t tag_begin = pos_;
@@ -122,11 +135,12 @@ class FractintReader {
       const std::string tag = lowercase(trim(text_.substr(tag_begin + 1, pos_ - tag_begin - 1)));
       ++pos_;
       if (tag == "3d")
-        fail(ErrorKind::unsupported, name_line,
-             fmt::format("entry '{}': only 2-D IFSs are supported (got a (3D) entry)", name));
-      fail(ErrorKind::parse, name_line,
-           fmt::format("entry '{}': unknown tag, Fractint knows only (3D) (got '{}')", name,
-                       text_.substr(tag_begin, pos_ - tag_begin)));
+        defer(ErrorKind::unsupported, name_line,
+              fmt::format("entry '{}': only 2-D IFSs are supported (got a (3D) entry)", name));
+      else
+        defer(ErrorKind::parse, name_line,
+              fmt::format("entry '{}': unknown tag, Fractint knows only (3D) (got '{}')", name,
+                          text_.substr(tag_begin, pos_ - tag_begin)));
     }
     skip(is_space);
     if (at_end() || peek() != '{') {
@@ -161,17 +175,24 @@ class FractintReader {
         if (!at_end() && (peek() == '{' || peek() == '('))  // the next entry's name
           fail(ErrorKind::parse, line,
                fmt::format("entry '{}': missing '}}' before the next entry '{}'", name, t));
-        fail(ErrorKind::parse, line, fmt::format("entry '{}': not a number (got '{}')", name, t));
+        defer(ErrorKind::parse, line, fmt::format("entry '{}': not a number (got '{}')", name, t));
       }
       numbers.push_back({x, line});
     }
     ++pos_;  // the closing brace
 
-    preset.ifs = to_ifs(name, name_line, numbers);
+    if (out.error) return out;
+    try {
+      preset.ifs = to_ifs(name, name_line, numbers);
+    } catch (const Error& e) {
+      out.error = e;
+      return out;
+    }
     preset.ifs.name = name;
     preset.origin = fmt::format("{}:{}", filename_, name);
     preset.text = std::string(text_.substr(begin, pos_ - begin)) + "\n";
-    return preset;
+    out.preset = std::move(preset);
+    return out;
   }
 
   // 7 numbers per map (a b c d e f p), or 6 (a b c d e f) with default probabilities. A count that
@@ -236,8 +257,22 @@ class FractintReader {
 
 }  // namespace
 
-std::vector<IfsPreset> parse_fractint(std::string_view text, const std::string& filename) {
+namespace detail {
+
+std::vector<FractintEntry> read_fractint_entries(std::string_view text,
+                                                 const std::string& filename) {
   return FractintReader(text, filename).entries();
+}
+
+}  // namespace detail
+
+std::vector<IfsPreset> parse_fractint(std::string_view text, const std::string& filename) {
+  std::vector<IfsPreset> presets;
+  for (auto& entry : detail::read_fractint_entries(text, filename)) {
+    if (entry.error) throw *entry.error;
+    presets.push_back(std::move(*entry.preset));
+  }
+  return presets;
 }
 
 }  // namespace ifsfx

@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "ifs/error.h"
+#include "ifs/fractint.h"
 #include "ifs/preset.h"
 
 namespace ifsfx {
@@ -147,20 +148,30 @@ SourceText read_source(const std::string& path) {
   throw Error(ErrorKind::not_found, fmt::format("{}: no such file", path));
 }
 
-IfsPreset pick_entry(std::vector<IfsPreset> entries, const std::string& name,
-                     const std::string& filename) {
+// One entry of a Fractint file: the named one, or the first. Only the entry picked has to be
+// usable, so a 2-D entry loads from a file that also holds (3D) ones.
+IfsPreset pick_entry(const SourceText& source, const std::string& name) {
+  auto entries = detail::read_fractint_entries(source.text, source.filename);
   if (entries.empty())
     throw Error(ErrorKind::parse,
-                fmt::format("{}: no entries (got an empty Fractint file)", filename));
-  if (name.empty()) return std::move(entries.front());
-  for (int pass = 0; pass < 2; ++pass)
+                fmt::format("{}: no entries (got a Fractint file without any)", source.filename));
+  detail::FractintEntry* picked = name.empty() ? &entries.front() : nullptr;
+  for (int pass = 0; pass < 2 && !picked; ++pass)
     for (auto& entry : entries)
-      if (pass == 0 ? entry.ifs.name == name : same_ignoring_case(entry.ifs.name, name))
-        return std::move(entry);
-  std::string names;
-  for (const auto& entry : entries) names += (names.empty() ? "" : ", ") + entry.ifs.name;
-  throw Error(ErrorKind::not_found,
-              fmt::format("{}: no entry '{}' (entries: {})", filename, name, names));
+      if (pass == 0 ? entry.name == name : same_ignoring_case(entry.name, name)) {
+        picked = &entry;
+        break;
+      }
+  if (!picked) {
+    std::string names;
+    for (const auto& entry : entries) names += (names.empty() ? "" : ", ") + entry.name;
+    throw Error(ErrorKind::not_found,
+                fmt::format("{}: no entry '{}' (entries: {})", source.filename, name, names));
+  }
+  if (picked->error) throw *picked->error;
+  IfsPreset preset = std::move(*picked->preset);
+  preset.origin = fmt::format("{}:{}", source.origin, preset.ifs.name);
+  return preset;
 }
 
 IfsPreset resolve(const std::string& spec) {
@@ -170,20 +181,9 @@ IfsPreset resolve(const std::string& spec) {
   // FILE.ifs:NAME — one entry of a Fractint file.
   if (const auto colon = spec.rfind(':'); colon != std::string::npos) {
     const std::string file = spec.substr(0, colon);
-    if (is_fractint(file)) {
-      const SourceText source = read_source(file);
-      IfsPreset entry =
-          pick_entry(parse_fractint(source.text, source.filename), spec.substr(colon + 1), file);
-      entry.origin = fmt::format("{}:{}", source.origin, entry.ifs.name);
-      return entry;
-    }
+    if (is_fractint(file)) return pick_entry(read_source(file), spec.substr(colon + 1));
   }
-  if (is_fractint(spec)) {
-    const SourceText source = read_source(spec);
-    IfsPreset entry = pick_entry(parse_fractint(source.text, source.filename), "", spec);
-    entry.origin = fmt::format("{}:{}", source.origin, entry.ifs.name);
-    return entry;
-  }
+  if (is_fractint(spec)) return pick_entry(read_source(spec), "");
   if (is_super(spec))
     throw Error(ErrorKind::unsupported,
                 fmt::format("{}: a superIFS preset, not an IFS (got a .super.toml file)", spec));

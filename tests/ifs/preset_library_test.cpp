@@ -261,6 +261,25 @@ TEST(load_ifs, a_fractint_entry_is_named_as_file_colon_name) {
                path + ": no entry 'third' (entries: first, second)");
 }
 
+TEST(load_ifs, a_2d_entry_loads_from_a_file_with_3d_and_broken_entries) {
+  const TempDir dir;
+  const std::string path = dir.write("mixed.ifs",
+                                     "solid (3D) { 0 0 0 0 0 0 0 0 0 0 0 0 1 }\n"
+                                     "half { .5 0 0 .5 0 0 }\n"
+                                     "odd { .5 0 0 .5 0 0 1 1 }\n");
+  EXPECT_EQ(load_ifs(path + ":half").ifs.maps, (std::vector<AffineMap>{{0.5, 0, 0, 0.5, 0, 0}}));
+  expect_error(path + ":solid", ErrorKind::unsupported,
+               path + ":1: entry 'solid': only 2-D IFSs are supported (got a (3D) entry)");
+  expect_error(path, ErrorKind::unsupported,
+               path + ":1: entry 'solid': only 2-D IFSs are supported (got a (3D) entry)");
+  expect_error(path + ":odd", ErrorKind::parse,
+               path +
+                   ":3: entry 'odd': needs 7 numbers per map (a b c d e f p) or 6 "
+                   "(a b c d e f) (got 8, a multiple of neither)");
+  // parse_fractint reads the whole file, so it reports the first bad entry.
+  EXPECT_THROW(parse_fractint("half { .5 0 0 .5 0 0 }\nsolid (3D) { 1 }\n", "x.ifs"), Error);
+}
+
 TEST(load_ifs, a_toml_file_is_read_and_validated_under_its_path) {
   const TempDir dir;
   const std::string text = "name = \"half\"\nmaps = [[0.5, 0, 0, 0.5, 0, 0]]\n";
