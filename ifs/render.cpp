@@ -15,31 +15,18 @@
 namespace ifsfx {
 namespace {
 
-// Plane → continuous pixel coordinates, as the inner loop wants it: px = sx·x + ox,
-// py = sy·y + oy.
-struct PixelMapping {
-  double sx, ox, sy, oy;
-  double width, height;
-  int stride;
-  explicit PixelMapping(const Viewport& v) {
-    const AffineMap m = v.plane_to_pixel();
-    sx = m.a, ox = m.e, sy = m.d, oy = m.f;
-    width = v.size.width, height = v.size.height;
-    stride = v.size.width;
-  }
-  // The pixel index of (x, y), or -1 outside the raster.
-  long index(double x, double y) const {
-    const double px = sx * x + ox, py = sy * y + oy;
-    if (!(px >= 0 && px < width && py >= 0 && py < height)) return -1;
-    return static_cast<long>(py) * stride + static_cast<long>(px);
-  }
-};
+detail::PixelMapping pixel_mapping(const Viewport& v) {
+  const AffineMap m = v.plane_to_pixel();
+  return {m.a, m.e, m.d, m.f, static_cast<double>(v.size.width),
+          static_cast<double>(v.size.height), v.size.width};
+}
 
 // Runs `points` chaos-game points over fixed chunks; `make_worker(worker)` gives each worker its
-// per-thread state, and state.visit(lane, x, y, map) plots one point.
+// per-thread state, and state.plot(lane, pixel, map) plots one point that lands on `viewport`.
 template <class State, class MakeState>
-std::vector<State> scatter(const Ifs& ifs, std::uint64_t points, const ChaosGameOptions& options,
-                           MakeState&& make_state) {
+std::vector<State> scatter(const Ifs& ifs, const Viewport& viewport, std::uint64_t points,
+                           const ChaosGameOptions& options, MakeState&& make_state) {
+  const detail::PixelMapping mapping = pixel_mapping(viewport);
   const detail::MapTable maps(ifs);
   const MapPicker pick(effective_probabilities(ifs));
   const int burn_in = options.burn_in > 0 ? options.burn_in : default_burn_in(ifs);
@@ -52,10 +39,10 @@ std::vector<State> scatter(const Ifs& ifs, std::uint64_t points, const ChaosGame
     State& state = states[static_cast<std::size_t>(worker)];
     const std::uint64_t n = detail::chunk_size(points, chunk);
     state.begin_chunk(n);
-    detail::run_chunk(maps, pick, options.seed, chunk, n, burn_in,
-                      [&](int lane, double x, double y, std::uint32_t map) {
-                        state.visit(lane, x, y, map);
-                      });
+    detail::plot_chunk(maps, pick, mapping, options.seed, chunk, n, burn_in,
+                       [&](int lane, long pixel, std::uint32_t map) {
+                         state.plot(lane, pixel, map);
+                       });
   });
   return states;
 }
@@ -95,26 +82,18 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 
 // Per-worker hit mask: the attractor as a set needs one byte store per point, no read.
 struct HitState {
-  PixelMapping mapping;
   cv::Mat hits;
-  HitState(const Viewport& v) : mapping(v), hits(cv::Mat::zeros(v.size, CV_8UC1)) {}
+  explicit HitState(const Viewport& v) : hits(cv::Mat::zeros(v.size, CV_8UC1)) {}
   void begin_chunk(std::uint64_t) {}
-  void visit(int, double x, double y, std::uint32_t) {
-    const long i = mapping.index(x, y);
-    if (i >= 0) hits.data[i] = 255;
-  }
+  void plot(int, long pixel, std::uint32_t) { hits.data[pixel] = 255; }
 };
 
 // Per-worker visit counts.
 struct CountState {
-  PixelMapping mapping;
   cv::Mat counts;
-  CountState(const Viewport& v) : mapping(v), counts(cv::Mat::zeros(v.size, CV_32SC1)) {}
+  explicit CountState(const Viewport& v) : counts(cv::Mat::zeros(v.size, CV_32SC1)) {}
   void begin_chunk(std::uint64_t) {}
-  void visit(int, double x, double y, std::uint32_t) {
-    const long i = mapping.index(x, y);
-    if (i >= 0) ++reinterpret_cast<std::uint32_t*>(counts.data)[i];
-  }
+  void plot(int, long pixel, std::uint32_t) { ++reinterpret_cast<std::uint32_t*>(counts.data)[pixel]; }
 };
 
 // Visit count and palette-coordinate sum per pixel, packed in one 64-bit word so a point costs a
@@ -131,8 +110,7 @@ class MeasureState {
   };
 
   MeasureState(const Viewport& v, const std::vector<std::uint32_t>& map_colours, Totals& totals)
-      : mapping_(v),
-        cells_(static_cast<std::size_t>(v.size.area()), 0),
+      : cells_(static_cast<std::size_t>(v.size.area()), 0),
         map_colour_(map_colours),
         totals_(&totals) {
     palette_.fill(0);
@@ -143,14 +121,13 @@ class MeasureState {
     if (pending_ + points > kFoldPoints) fold();
     pending_ += points;
   }
-  void visit(int lane, double x, double y, std::uint32_t map) {
-    // c_k = (c_{k-1} + c_σk) / 2 in 16-bit fixed point (DESIGN.md §4).
+  void plot(int lane, long pixel, std::uint32_t map) {
+    // c_k = (c_{k-1} + c_σk) / 2 in 16-bit fixed point (DESIGN.md §4). Off-raster points do not
+    // reach here, so the palette coordinate skips them: it is a local colour, not an address.
     std::uint32_t& c = palette_[static_cast<std::size_t>(lane)];
     c = (c + map_colour_[map]) >> 1;
-    const long i = mapping_.index(x, y);
-    if (i < 0) return;
     const std::uint64_t c6 = (c + (1u << (15 - kPaletteBits))) >> (16 - kPaletteBits);
-    cells_[static_cast<std::size_t>(i)] += (std::min<std::uint64_t>(c6, 63) << 32) | 1;
+    cells_[static_cast<std::size_t>(pixel)] += (std::min<std::uint64_t>(c6, 63) << 32) | 1;
   }
   void fold() {
     std::lock_guard lock(totals_->mutex);
@@ -164,7 +141,6 @@ class MeasureState {
   }
 
  private:
-  PixelMapping mapping_;
   std::vector<std::uint64_t> cells_;
   std::vector<std::uint32_t> map_colour_;  // c_n of each map, 16-bit fixed point
   std::array<std::uint32_t, detail::kLanes> palette_;
@@ -212,7 +188,7 @@ Rgb palette_colour(std::size_t n, std::size_t count) {
 cv::Mat visit_counts(const Ifs& ifs, const Viewport& viewport, std::uint64_t points,
                      const ChaosGameOptions& options) {
   check_size(viewport.size);
-  auto states = scatter<CountState>(ifs, points, options, [&] { return CountState(viewport); });
+  auto states = scatter<CountState>(ifs, viewport, points, options, [&] { return CountState(viewport); });
   cv::Mat total = states[0].counts;
   for (std::size_t w = 1; w < states.size(); ++w) total += states[w].counts;
   return total;
@@ -224,7 +200,7 @@ cv::Mat render_attractor(const Ifs& ifs, cv::Size size, const RenderOptions& opt
   const Viewport viewport = viewport_for(ifs, size, options);
   const std::uint64_t points = point_budget(size, options.quality);
   const auto start = std::chrono::steady_clock::now();
-  auto states = scatter<HitState>(ifs, points, {.seed = options.seed, .threads = options.threads},
+  auto states = scatter<HitState>(ifs, viewport, points, {.seed = options.seed, .threads = options.threads},
                                   [&] { return HitState(viewport); });
   cv::Mat mask = states[0].hits;
   for (std::size_t w = 1; w < states.size(); ++w) cv::bitwise_or(mask, states[w].hits, mask);
@@ -251,7 +227,7 @@ cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& optio
   totals.colour.assign(area, 0);
 
   const auto start = std::chrono::steady_clock::now();
-  auto states = scatter<MeasureState>(ifs, points, {.seed = options.seed, .threads = options.threads},
+  auto states = scatter<MeasureState>(ifs, viewport, points, {.seed = options.seed, .threads = options.threads},
                                       [&] { return MeasureState(viewport, map_colour, totals); });
   for (auto& s : states) s.fold();
   const double seconds = seconds_since(start);

@@ -56,11 +56,20 @@ class MapPicker {
   // `probabilities` must be ≥ 0 with a positive sum; they are normalised here.
   explicit MapPicker(const std::vector<double>& probabilities);
 
-  std::uint32_t operator()(std::uint64_t r) const noexcept {
-    const auto column = static_cast<std::uint32_t>(((r >> 32) * n_) >> 32);
-    return static_cast<std::uint32_t>(r) < threshold_[column] ? column : alias_[column];
-  }
+  std::uint32_t operator()(std::uint64_t r) const noexcept { return view()(r); }
   std::uint32_t size() const noexcept { return static_cast<std::uint32_t>(n_); }
+
+  // The tables by pointer, for hot loops that keep them in registers.
+  struct View {
+    std::uint64_t n;
+    const std::uint32_t* threshold;
+    const std::uint32_t* alias;
+    std::uint32_t operator()(std::uint64_t r) const noexcept {
+      const auto column = static_cast<std::uint32_t>(((r >> 32) * n) >> 32);
+      return static_cast<std::uint32_t>(r) < threshold[column] ? column : alias[column];
+    }
+  };
+  View view() const noexcept { return {n_, threshold_.data(), alias_.data()}; }
 
  private:
   std::uint64_t n_ = 0;

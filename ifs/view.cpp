@@ -21,36 +21,6 @@ AffineMap Viewport::plane_to_pixel() const {
 
 namespace {
 
-// Support function h(u) = max_{a ∈ A} u·a sampled at K directions θ_j = 2πj/K.
-class SupportFunction {
- public:
-  explicit SupportFunction(std::size_t directions) : h_(directions) {}
-
-  std::size_t size() const { return h_.size(); }
-  double& at(std::size_t j) { return h_[j]; }
-  double at(std::size_t j) const { return h_[j]; }
-  Point direction(std::size_t j) const {
-    const double theta = 2 * std::numbers::pi * static_cast<double>(j) / static_cast<double>(size());
-    return {std::cos(theta), std::sin(theta)};
-  }
-  // h at any vector v: |v| · h(v/|v|) (h is positively homogeneous), linearly interpolated
-  // between the sampled directions.
-  double operator()(Point v) const {
-    const double r = std::hypot(v.x, v.y);
-    if (r == 0) return 0;
-    double t = std::atan2(v.y, v.x) / (2 * std::numbers::pi);
-    if (t < 0) t += 1;
-    const double pos = t * static_cast<double>(size());
-    const auto j0 = static_cast<std::size_t>(pos) % size();
-    const std::size_t j1 = (j0 + 1) % size();
-    const double w = pos - std::floor(pos);
-    return r * ((1 - w) * h_[j0] + w * h_[j1]);
-  }
-
- private:
-  std::vector<double> h_;
-};
-
 Box bounds_by_sampling(const Ifs& ifs, std::uint64_t seed) {
   const auto samples = chaos_game_samples(ifs, 1 << 20, {.seed = seed, .threads = 0});
   Box b{samples[0].p.x, samples[0].p.y, samples[0].p.x, samples[0].p.y};
@@ -85,29 +55,51 @@ Box attractor_bounds(const Ifs& ifs, std::uint64_t seed) {
 
   // h_{k+1}(u) = max_n [u·t_n + h_k(M_nᵀ u)]: the support function of W(B) from that of B. It is
   // monotone and contracts by s, so from the disc it decreases to the support function of A.
-  constexpr std::size_t kDirections = 4096;  // a multiple of 4: the axes are sampled exactly
-  SupportFunction h(kDirections), next(kDirections);
+  // h is sampled at K directions u_j; h at M_nᵀu_j is |M_nᵀu_j| times h linearly interpolated at
+  // its direction. Those directions never change, so each (n, j) pair's interpolation cell,
+  // weight, length and offset u_j·t_n are computed once.
+  constexpr std::size_t kDirections = 2048;  // a multiple of 4: the axes are sampled exactly
+  struct Term {
+    std::uint32_t j0, j1;
+    double w0, w1;  // interpolation weights, already scaled by |M_nᵀ u_j|
+    double offset;  // u_j · t_n
+  };
+  const std::size_t maps = ifs.maps.size();
+  std::vector<Term> terms(kDirections * maps);
+  std::vector<double> h(kDirections), next(kDirections);
   for (std::size_t j = 0; j < kDirections; ++j) {
-    const Point u = h.direction(j);
-    h.at(j) = u.x * c.x + u.y * c.y + radius;
+    const double theta = 2 * std::numbers::pi * static_cast<double>(j) / kDirections;
+    const Point u{std::cos(theta), std::sin(theta)};
+    h[j] = u.x * c.x + u.y * c.y + radius;
+    for (std::size_t n = 0; n < maps; ++n) {
+      const AffineMap& f = ifs.maps[n];
+      const Point v{f.a * u.x + f.c * u.y, f.b * u.x + f.d * u.y};
+      const double r = std::hypot(v.x, v.y);
+      double t = std::atan2(v.y, v.x) / (2 * std::numbers::pi);
+      if (t < 0) t += 1;
+      const double pos = t * kDirections;
+      const auto j0 = static_cast<std::uint32_t>(static_cast<std::size_t>(pos) % kDirections);
+      const double w = pos - std::floor(pos);
+      terms[j * maps + n] = {j0, static_cast<std::uint32_t>((j0 + 1) % kDirections), r * (1 - w),
+                             r * w, u.x * f.e + u.y * f.f};
+    }
   }
-  const double tolerance = 1e-12 * std::max(radius, 1e-300);
+  const double tolerance = 1e-11 * std::max(radius, 1e-300);
   for (int iteration = 0; iteration < 5000; ++iteration) {
     double change = 0;
     for (std::size_t j = 0; j < kDirections; ++j) {
-      const Point u = h.direction(j);
       double best = -INFINITY;
-      for (const auto& f : ifs.maps) {
-        const Point mt_u{f.a * u.x + f.c * u.y, f.b * u.x + f.d * u.y};
-        best = std::max(best, u.x * f.e + u.y * f.f + h(mt_u));
+      for (std::size_t n = 0; n < maps; ++n) {
+        const Term& t = terms[j * maps + n];
+        best = std::max(best, t.offset + t.w0 * h[t.j0] + t.w1 * h[t.j1]);
       }
-      next.at(j) = best;
-      change = std::max(change, std::abs(best - h.at(j)));
+      next[j] = best;
+      change = std::max(change, std::abs(best - h[j]));
     }
     std::swap(h, next);
     if (change < tolerance) break;
   }
-  return {-h.at(kDirections / 2), -h.at(3 * kDirections / 4), h.at(0), h.at(kDirections / 4)};
+  return {-h[kDirections / 2], -h[3 * kDirections / 4], h[0], h[kDirections / 4]};
 }
 
 Box fit_view(const Box& bounds, cv::Size size, double margin) {
