@@ -1,5 +1,7 @@
 #include "video/file_sink.h"
 
+#include <algorithm>
+#include <cmath>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -106,6 +108,8 @@ struct FileSink::Impl {
   AVStream* stream = nullptr;
   double audio_origin = 0;
   std::int64_t written = 0;
+  double first_timestamp = 0;
+  std::int64_t last_pts = -1;
   bool closed = false;
 
   std::string what() const { return path.string(); }
@@ -228,16 +232,24 @@ void FileSink::write(const Frame& frame) {
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("{}: frames must be {}x{} 8-bit BGR (got {}x{}, type {})", s.what(),
                             s.codec->width, s.codec->height, image.cols, image.rows, image.type()));
-  if (s.written == 0 && s.audio) s.audio->set_origin(s.audio_origin + frame.timestamp);
+  if (s.written == 0) {
+    s.first_timestamp = frame.timestamp;
+    if (s.audio) s.audio->set_origin(s.audio_origin + frame.timestamp);
+  }
   check_av(av_frame_make_writable(s.frame.get()), ErrorKind::io, s.what(), "out of memory");
   const std::uint8_t* src[4] = {image.data, nullptr, nullptr, nullptr};
   const int src_stride[4] = {static_cast<int>(image.step), 0, 0, 0};
   sws_scale(s.sws.get(), src, src_stride, 0, image.rows, s.frame->data, s.frame->linesize);
-  s.frame->pts = s.written;
+  // Timestamps are kept (on the grid of the frame rate), so a source with gaps in time keeps its
+  // timing and its sync with the audio; they only ever move forward.
+  const std::int64_t pts =
+      std::llround((frame.timestamp - s.first_timestamp) / av_q2d(s.codec->time_base));
+  s.last_pts = std::max(pts, s.last_pts + 1);
+  s.frame->pts = s.last_pts;
   s.encode(s.frame.get());
   ++s.written;
   // Audio runs a frame ahead of the video so that the muxer always has both to interleave.
-  if (s.audio) s.audio->copy_until(s.seconds(s.written + 1));
+  if (s.audio) s.audio->copy_until(s.seconds(s.last_pts + 2));
 }
 
 void FileSink::close() {
@@ -248,7 +260,7 @@ void FileSink::close() {
     if (s.written == 0)
       throw Error(ErrorKind::io, fmt::format("{}: no frame to write; nothing was saved", s.what()));
     s.encode(nullptr);
-    if (s.audio) s.audio->copy_until(s.seconds(s.written));
+    if (s.audio) s.audio->copy_until(s.seconds(s.last_pts + 1));
     check_av(av_write_trailer(s.format.get()), ErrorKind::io, s.what(), "cannot finish the file");
     check_av(avio_closep(&s.format->pb), ErrorKind::io, s.what(), "cannot finish the file");
     s.format.reset();

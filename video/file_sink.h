@@ -42,7 +42,9 @@ class FileSink final : public FrameSink {
   FileSink(const FileSink&) = delete;
   FileSink& operator=(const FileSink&) = delete;
 
-  // Frames are numbered in order of writing: the output is constant-rate at options.frame_rate.
+  // Each frame is stamped with its Frame::timestamp relative to the first frame written, on the
+  // grid of options.frame_rate (moved one step on where two would collide): a constant-rate
+  // source gives a constant-rate file, a source with gaps keeps its gaps.
   void write(const Frame& frame) override;
   // Flushes the encoder, writes the audio up to the end of the last frame, the trailer, and
   // renames the file into place. Without any frame written, removes the temporary file and throws

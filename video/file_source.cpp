@@ -71,7 +71,11 @@ struct FileSource::Impl {
       }
       check_av(r, ErrorKind::io, what(), "cannot read the file");
       if (packet->stream_index == stream->index) {
-        if (packet->flags & AV_PKT_FLAG_CORRUPT) ++corrupt_packets;
+        if (packet->flags & AV_PKT_FLAG_CORRUPT) {  // cut short: decoding it would show garbage
+          ++corrupt_packets;
+          av_packet_unref(packet.get());
+          continue;
+        }
         const int sent = avcodec_send_packet(codec.get(), packet.get());
         if (sent < 0 && sent != AVERROR(EAGAIN)) ++corrupt_packets;
       }
@@ -83,7 +87,10 @@ struct FileSource::Impl {
   // decoded has been handed out.
   void check_complete() const {
     const double period = 1.0 / rate.value();
-    const bool short_count = announced_frames > 0 && decoded < announced_frames - 1;
+    // A stream with gaps in its timestamps (an AVI index that skips frames) holds fewer frames
+    // than its length at its rate: judge by time where the length is known.
+    const bool short_count =
+        announced_seconds <= 0 && announced_frames > 0 && decoded < announced_frames - 1;
     const bool short_time =
         announced_seconds > 0 && last_timestamp + period < announced_seconds - 1.5 * period;
     if (!short_count && !short_time && corrupt_packets == 0) return;

@@ -24,9 +24,9 @@ class FrameSource {
   // corrupt file, a camera that vanished), naming the source.
   virtual std::optional<Frame> read() = 0;
   virtual cv::Size size() const = 0;
-  virtual double fps() const = 0;  // frames per second; 0 when unknown
+  virtual double fps() const = 0;                          // frames per second; 0 when unknown
   virtual std::int64_t frame_count() const { return -1; }  // -1 when unknown (cameras)
-  virtual std::string name() const = 0;                       // path or device, for messages
+  virtual std::string name() const = 0;                    // path or device, for messages
 };
 
 class FrameSink {

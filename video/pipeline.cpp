@@ -90,7 +90,8 @@ PipelineResult run_pipeline(FrameSource& source, FrameSink& sink, const FrameFil
         if (!frame) break;
         if (frame->index < options.range.first) continue;
         if (!options.range.contains(frame->index)) break;
-        if (!decoded.push(std::move(*frame))) break;
+        const bool last = options.range.last >= 0 && frame->index >= options.range.last;
+        if (!decoded.push(std::move(*frame)) || last) break;
       }
     } catch (...) {
       error.set(std::current_exception());

@@ -1,0 +1,73 @@
+#include "video/drift.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "ifs/error.h"
+
+namespace ifsfx::video {
+namespace {
+
+// Barnsley's fern (its stem map is singular).
+Ifs fern() {
+  Ifs f;
+  f.name = "fern";
+  f.maps = {{0, 0, 0, 0.16, 0, 0},
+            {0.85, 0.04, -0.04, 0.85, 0, 1.6},
+            {0.2, -0.26, 0.23, 0.22, 0, 1.6},
+            {-0.15, 0.28, 0.26, 0.24, 0, 0.44}};
+  return f;
+}
+
+TEST(drift, zero_amount_keeps_the_ifs) {
+  const Ifs base = fern();
+  const Ifs same = drift(base, 3.7, {.amount = 0});
+  for (std::size_t n = 0; n < base.size(); ++n) EXPECT_EQ(same.maps[n], base.maps[n]);
+}
+
+TEST(drift, same_seed_and_time_give_the_same_maps_and_time_moves_them) {
+  const Ifs base = fern();
+  const DriftOptions o{.amount = 0.1, .seed = 42};
+  const Ifs a = drift(base, 1.25, o), b = drift(base, 1.25, o), later = drift(base, 4.0, o);
+  const Ifs other_seed = drift(base, 1.25, {.amount = 0.1, .seed = 43});
+  for (std::size_t n = 0; n < base.size(); ++n) EXPECT_EQ(a.maps[n], b.maps[n]);
+  EXPECT_NE(a.maps[1], later.maps[1]);
+  EXPECT_NE(a.maps[1], other_seed.maps[1]);
+}
+
+TEST(drift, maps_stay_contractive_under_large_drift) {
+  const Ifs base = fern();
+  for (double t = 0; t < 20; t += 0.37) {
+    const Ifs d = drift(base, t, {.amount = 2.0, .speed = 1.0});
+    for (std::size_t n = 0; n < d.size(); ++n) {
+      EXPECT_LE(d.maps[n].contraction(), std::max(0.95, base.maps[n].contraction()) + 1e-12);
+      EXPECT_TRUE(d.maps[n].finite());
+    }
+  }
+}
+
+TEST(drift, motion_is_smooth_and_bounded) {
+  // fBm of gradient noise is continuous: a 1 ms step moves a coefficient by far less than the
+  // amount, while over seconds it explores about ±amount.
+  double largest = 0, biggest_step = 0;
+  double previous = fbm(0, 7, 3, 4);
+  for (int i = 1; i <= 20000; ++i) {
+    const double v = fbm(i * 0.001, 7, 3, 4);
+    largest = std::max(largest, std::abs(v));
+    biggest_step = std::max(biggest_step, std::abs(v - previous));
+    previous = v;
+  }
+  EXPECT_LE(largest, 1.0);
+  EXPECT_GT(largest, 0.1);
+  EXPECT_LT(biggest_step, 0.05);
+  EXPECT_EQ(fbm(3.0, 1, 0, 1), 0.0);  // gradient noise vanishes on its lattice
+}
+
+TEST(drift, bad_options_are_refused) {
+  EXPECT_THROW(drift(fern(), 0, {.amount = -1}), Error);
+  EXPECT_THROW(drift(fern(), 0, {.speed = std::nan("")}), Error);
+}
+
+}  // namespace
+}  // namespace ifsfx::video

@@ -1,0 +1,154 @@
+#include "video/fractal_filter.h"
+
+#include <gtest/gtest.h>
+
+#include "ifs/error.h"
+#include "tests/video/test_frames.h"
+
+namespace ifsfx::video {
+namespace {
+
+using testing::identity_map;
+using testing::test_frame;
+
+TEST(fractal_filter, identity_map_returns_the_frame) {
+  const cv::Size size{97, 61};
+  const cv::Mat frame = test_frame(size, 3);
+  for (Interpolation mode : {Interpolation::bilinear, Interpolation::nearest}) {
+    const RemapTable table = make_remap_table(identity_map(size), size, mode);
+    const cv::Mat out = filter_frame(frame, table);
+    // Inside, exactly the frame; the last column and row sit 1/32 px inside the source edge.
+    const cv::Rect inner(0, 0, size.width - 1, size.height - 1);
+    EXPECT_EQ(cv::norm(out(inner), frame(inner), cv::NORM_INF), 0.0);
+    EXPECT_LE(cv::norm(out, frame, cv::NORM_INF), 8.0);
+    EXPECT_GT(cv::PSNR(out, frame), 50.0);
+  }
+}
+
+TEST(fractal_filter, mirror_map_flips_the_frame) {
+  const cv::Size size{40, 30};
+  StealMap map = identity_map(size);
+  for (int r = 0; r < size.height; ++r)
+    for (int c = 0; c < size.width; ++c)
+      map.source_uv.at<cv::Vec2f>(r, c)[0] = (size.width - c - 0.5f) / size.width;
+  const cv::Mat frame = test_frame(size, 0);
+  cv::Mat flipped;
+  cv::flip(frame, flipped, 1);
+  const cv::Mat out = filter_frame(frame, make_remap_table(map, size, Interpolation::nearest));
+  EXPECT_EQ(cv::norm(out, flipped, cv::NORM_INF), 0.0);
+}
+
+TEST(fractal_filter, map_of_another_size_resamples_the_frame) {
+  // A 20x10 output from a 40x20 frame through the identity of the unit square: each output pixel
+  // takes the frame at its own centre, i.e. between four frame pixels (their mean, bilinear).
+  const cv::Size frame_size{40, 20}, out_size{20, 10};
+  const cv::Mat frame = test_frame(frame_size, 1);
+  const cv::Mat out = filter_frame(frame, make_remap_table(identity_map(out_size), frame_size));
+  ASSERT_EQ(out.size(), out_size);
+  cv::Mat expected;
+  cv::resize(frame, expected, out_size, 0, 0, cv::INTER_AREA);
+  EXPECT_LE(cv::norm(out(cv::Rect(0, 0, 19, 9)), expected(cv::Rect(0, 0, 19, 9)), cv::NORM_INF),
+            1.0);
+}
+
+TEST(fractal_filter, uncovered_pixels_take_the_background) {
+  const cv::Size size{32, 24};
+  StealMap map = identity_map(size);
+  map.coverage(cv::Rect(0, 0, 16, 24)).setTo(0);  // left half off the attractor
+  const cv::Mat frame = test_frame(size, 2);
+  const RemapTable table = make_remap_table(map, size);
+  const cv::Rect left(0, 0, 16, 24), right(16, 0, 15, 23);
+
+  FilterOptions colour;
+  colour.background = parse_background("#102030");
+  cv::Mat out = filter_frame(frame, table, colour);
+  EXPECT_EQ(cv::norm(out(left), cv::Mat(left.size(), CV_8UC3, cv::Scalar(0x30, 0x20, 0x10)),
+                     cv::NORM_INF),
+            0.0);
+  EXPECT_EQ(cv::norm(out(right), frame(right), cv::NORM_INF), 0.0);
+
+  FilterOptions original;
+  original.background = parse_background("original");
+  out = filter_frame(frame, table, original);
+  EXPECT_EQ(cv::norm(out(left), frame(left), cv::NORM_INF), 0.0);
+}
+
+TEST(fractal_filter, mix_blends_the_original_frame) {
+  const cv::Size size{32, 24};
+  StealMap map = identity_map(size);
+  map.coverage.setTo(0);  // all black fractal, so the mix is A · frame
+  const cv::Mat frame = test_frame(size, 4);
+  const RemapTable table = make_remap_table(map, size);
+  FilterOptions o;
+  o.mix = 1;
+  EXPECT_EQ(cv::norm(filter_frame(frame, table, o), frame, cv::NORM_INF), 0.0);
+  o.mix = 0.5;
+  cv::Mat half;
+  frame.convertTo(half, CV_8UC3, 0.5);
+  EXPECT_LE(cv::norm(filter_frame(frame, table, o), half, cv::NORM_INF), 1.0);
+  o.mix = 1.5;
+  EXPECT_THROW(filter_frame(frame, table, o), Error);
+}
+
+TEST(fractal_filter, cross_fade_weights_the_two_maps) {
+  const cv::Size size{32, 24};
+  const cv::Mat frame = test_frame(size, 5);
+  StealMap dark = identity_map(size);
+  dark.coverage.setTo(0);
+  const RemapTable a = make_remap_table(identity_map(size), size);
+  const RemapTable b = make_remap_table(dark, size);
+  EXPECT_EQ(cv::norm(filter_frame(frame, a, b, 0.0), filter_frame(frame, a), cv::NORM_INF), 0.0);
+  EXPECT_EQ(cv::norm(filter_frame(frame, a, b, 1.0), filter_frame(frame, b), cv::NORM_INF), 0.0);
+  cv::Mat quarter;
+  filter_frame(frame, a).convertTo(quarter, CV_8UC3, 0.75);
+  EXPECT_LE(cv::norm(filter_frame(frame, a, b, 0.25), quarter, cv::NORM_INF), 1.0);
+}
+
+TEST(fractal_filter, thread_count_does_not_change_pixels) {
+  const cv::Size size{200, 150};
+  StealMap map = identity_map(size);
+  for (int r = 0; r < size.height; ++r)
+    for (int c = 0; c < size.width; ++c)
+      map.source_uv.at<cv::Vec2f>(r, c) = {0.3f + 0.4f * c / size.width,
+                                           0.1f + 0.8f * r * r / (size.height * size.height)};
+  const cv::Mat frame = test_frame(size, 6);
+  FilterOptions one, many;
+  one.threads = 1;
+  many.threads = 7;
+  EXPECT_EQ(
+      cv::norm(filter_frame(frame, make_remap_table(map, size, Interpolation::bilinear, 1), one),
+               filter_frame(frame, make_remap_table(map, size, Interpolation::bilinear, 7), many),
+               cv::NORM_INF),
+      0.0);
+}
+
+TEST(fractal_filter, frame_of_the_wrong_size_is_refused) {
+  const RemapTable table = make_remap_table(identity_map({16, 16}), {16, 16});
+  try {
+    filter_frame(test_frame({17, 16}, 0), table);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
+    EXPECT_STREQ(e.what(), "fractal filter: frame must be 16x16 8-bit BGR (got 17x16, type 16)");
+  }
+}
+
+TEST(fractal_filter, parse_background_reads_names_and_colours) {
+  EXPECT_EQ(parse_background("black").kind, BackgroundKind::colour);
+  EXPECT_EQ(parse_background("black").colour, cv::Scalar::all(0));
+  EXPECT_EQ(parse_background("original").kind, BackgroundKind::original);
+  EXPECT_EQ(parse_background("#ff8000").colour, cv::Scalar(0, 128, 255));
+  EXPECT_EQ(parse_background("1,2,3").colour, cv::Scalar(3, 2, 1));
+  try {
+    parse_background("purple");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::parse);
+    EXPECT_STREQ(e.what(),
+                 "--background: expected black, original, #rrggbb or R,G,B (got 'purple')");
+  }
+  EXPECT_THROW(parse_background("1,2,300"), Error);
+}
+
+}  // namespace
+}  // namespace ifsfx::video
