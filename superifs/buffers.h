@@ -19,6 +19,7 @@
 // any thread count.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <vector>
@@ -38,10 +39,16 @@ class BitMask {
   // Packs a CV_8UC1 mask (nonzero = set).
   explicit BitMask(const cv::Mat& mask);
 
-  // Whether the pixel holding the continuous pixel coordinates (x, y) is set; false outside.
+  // Whether the pixel holding the continuous pixel coordinates (x, y) is set; false outside. A
+  // point within `edge` of the raster's border counts as on it: preimages of points on a piece's
+  // edge land on the border up to rounding, and pieces are closed sets (tops keep the higher m).
   bool test(double x, double y) const noexcept {
-    if (!(x >= 0 && y >= 0 && x < width_ && y < height_)) return false;
-    const auto c = static_cast<std::size_t>(x), r = static_cast<std::size_t>(y);
+    constexpr double edge = 1e-7;
+    if (!(x >= -edge && y >= -edge && x < width_ + edge && y < height_ + edge)) return false;
+    const auto c =
+        std::min(static_cast<std::size_t>(std::max(x, 0.0)), static_cast<std::size_t>(width_ - 1));
+    const auto r =
+        std::min(static_cast<std::size_t>(std::max(y, 0.0)), static_cast<std::size_t>(height_ - 1));
     return (bits_[r * stride_ + (c >> 3)] >> (c & 7)) & 1u;
   }
   bool test(int col, int row) const noexcept {

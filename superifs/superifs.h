@@ -46,7 +46,8 @@ std::vector<double> effective_probabilities(const SuperIfs& super);
 // The colouring IFS G^n (n from 0) with M maps, after the defaults above.
 Ifs colouring_ifs(const SuperIfs& super, std::size_t n);
 
-// The largest contraction factor of the colouring IFSs G^1..G^N.
+// The contraction per step of the colouring IFSs G^1..G^N: the largest √factor of their words of
+// length 2 (a strip tiling's maps have factor 1 alone, 1/M in pairs).
 double colouring_contraction(const SuperIfs& super);
 
 // Every map of every F^n as one IFS: its attractor holds every V-variable fractal of the superIFS,
@@ -57,8 +58,9 @@ Ifs union_ifs(const SuperIfs& super);
 // bounds of union_ifs(super) fitted to the raster's aspect with `margin` on every side.
 Box buffer_view(const SuperIfs& super, cv::Size size, double margin = 0.02);
 
-// Steps after which any starting buffer is within a pixel of the V-variable family on a raster of
-// `size`: the least k with s^k · max(W, H) < 1 for the largest factor s, capped at 500.
+// Steps after which any starting buffer has converged to the V-variable family on a raster of
+// `size`: the least k with s^k · max(W, H) < 1/8 pixel for the largest factor s (below a pixel,
+// with room for the conservative raster's margin to decay too), capped at 500.
 int default_steps(const SuperIfs& super, cv::Size size);
 
 }  // namespace ifsfx

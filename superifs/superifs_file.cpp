@@ -66,7 +66,7 @@ class Reader {
   }
 
   // An [[ifs]] or [[colouring]] table: maps (a b c d e f each) and optional probabilities.
-  Ifs ifs(const toml::table& table, const std::string& what) const {
+  Ifs ifs(const toml::table& table, const std::string& what, const ValidateOptions& rules) const {
     check_keys(table, {"name", "maps", "probabilities"}, what + ": ");
     Ifs f;
     if (const auto* n = table.get("name")) f.name = string(*n, what + " name");
@@ -89,8 +89,7 @@ class Reader {
     }
     if (const auto* p = table.get("probabilities"))
       f.probabilities = numbers(*p, what + " probabilities");
-    ValidateOptions strict;
-    validate(f, at(table.source()) + ": " + what, strict);
+    validate(f, at(table.source()) + ": " + what, rules);
     return f;
   }
 
@@ -160,7 +159,7 @@ SuperIfsPreset parse_superifs_toml(std::string_view text, const std::string& fil
                 fmt::format("{}:1: a superIFS needs at least one [[ifs]] table (got 0)", filename));
   for (std::size_t n = 0; n < ifs_tables.size(); ++n) {
     const std::string what = fmt::format("IFS {}", n + 1);
-    super.ifs.push_back(read.ifs(*ifs_tables[n], what));
+    super.ifs.push_back(read.ifs(*ifs_tables[n], what, {}));
     if (super.ifs[n].size() != super.ifs[0].size())
       read.fail(ErrorKind::invalid_ifs, ifs_tables[n]->source(),
                 fmt::format("{}: every IFS needs the same number of maps as IFS 1 (got {} for {})",
@@ -183,7 +182,8 @@ SuperIfsPreset parse_superifs_toml(std::string_view text, const std::string& fil
   const auto colouring_tables = read.tables(root, "colouring");
   for (std::size_t n = 0; n < colouring_tables.size(); ++n) {
     const std::string what = fmt::format("colouring {}", n + 1);
-    super.colouring.push_back(read.ifs(*colouring_tables[n], what));
+    // Colourings may use the strip tilings, factor 1 per map but contracting in pairs.
+    super.colouring.push_back(read.ifs(*colouring_tables[n], what, {.allow_expansive = true}));
     if (super.colouring[n].size() != super.maps())
       read.fail(ErrorKind::invalid_ifs, colouring_tables[n]->source(),
                 fmt::format("{}: needs as many maps as the IFSs (got {} for {})", what,

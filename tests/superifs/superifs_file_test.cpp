@@ -1,0 +1,149 @@
+// SuperIFS files: the shipped presets, and bad files rejected with file, line and rule.
+#include "superifs/superifs_file.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "ifs/error.h"
+
+namespace ifsfx {
+namespace {
+
+const char* const good = R"(name = "two"
+probabilities = [1, 3]
+[[ifs]]
+maps = [[0.5, 0, 0, 0.5, 0, 0], [0.5, 0, 0, 0.5, 0.5, 0]]
+[[ifs]]
+maps = [[0.4, 0, 0, 0.4, 0, 0], [0.4, 0, 0, 0.4, 0.6, 0]]
+probabilities = [1, 2]
+)";
+
+TEST(superifs_file, parses_ifss_probabilities_and_colouring_defaults) {
+  const auto p = parse_superifs_toml(good, "two.super.toml");
+  EXPECT_EQ(p.super.name, "two");
+  ASSERT_EQ(p.super.size(), 2u);
+  EXPECT_EQ(p.super.maps(), 2u);
+  EXPECT_EQ(p.super.ifs[1].maps[1], (AffineMap{0.4, 0, 0, 0.4, 0.6, 0}));
+  EXPECT_EQ(p.super.ifs[1].probabilities, (std::vector<double>{1, 2}));
+  const auto big_p = effective_probabilities(p.super);
+  EXPECT_DOUBLE_EQ(big_p[0], 0.25);
+  EXPECT_DOUBLE_EQ(big_p[1], 0.75);
+  EXPECT_TRUE(p.super.colouring.empty());
+  EXPECT_EQ(colouring_ifs(p.super, 1).size(), 2u);
+  EXPECT_EQ(p.text, good);
+}
+
+TEST(superifs_file, ships_paper_fig4_as_in_the_paper) {
+  const auto p = load_superifs("paper-fig4");
+  EXPECT_EQ(p.origin, "shipped:paper-fig4.super.toml");
+  ASSERT_EQ(p.super.size(), 2u);  // N = 2
+  EXPECT_EQ(p.super.maps(), 3u);  // M = 3
+  for (const auto& m : p.super.ifs[0].maps) EXPECT_NEAR(m.contraction(), 0.5, 1e-12);
+  for (const auto& m : p.super.ifs[1].maps) EXPECT_NEAR(m.contraction(), 1.0 / 3, 1e-12);
+  // Each F^n is a Sierpinski triangle: map m fixes corner m of one and the same triangle.
+  for (std::size_t m = 0; m < 3; ++m) {
+    const AffineMap& a = p.super.ifs[0].maps[m];
+    const AffineMap& b = p.super.ifs[1].maps[m];
+    const Point corner{a.e / (1 - a.a), a.f / (1 - a.d)};
+    EXPECT_NEAR(b(corner).x, corner.x, 1e-12);
+    EXPECT_NEAR(b(corner).y, corner.y, 1e-12);
+  }
+}
+
+TEST(superifs_file, every_shipped_superifs_loads) {
+  const auto list = list_shipped_superifs();
+  ASSERT_GE(list.size(), 4u);  // paper-fig4 and at least three textures
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const auto p = load_superifs(list[i].name);
+    EXPECT_EQ(p.super.size(), list[i].ifs);
+    EXPECT_FALSE(list[i].description.empty()) << list[i].name;
+    if (i > 0) {
+      EXPECT_LT(list[i - 1].name, list[i].name);
+    }
+  }
+}
+
+TEST(superifs_file, loads_a_path) {
+  const auto path = std::filesystem::temp_directory_path() / "superifs_file_test.super.toml";
+  std::ofstream(path) << good;
+  EXPECT_EQ(load_superifs(path.string()).super.size(), 2u);
+  std::filesystem::remove(path);
+}
+
+void expect_error(const std::string& text, ErrorKind kind, const std::string& message) {
+  try {
+    parse_superifs_toml(text, "bad.super.toml");
+    ADD_FAILURE() << "accepted: " << text;
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), kind) << e.what();
+    EXPECT_EQ(std::string(e.what()), message);
+  }
+}
+
+void expect_prefix(const std::string& text, ErrorKind kind, const std::string& prefix) {
+  try {
+    parse_superifs_toml(text, "bad.super.toml");
+    ADD_FAILURE() << "accepted: " << text;
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), kind) << e.what();
+    EXPECT_EQ(std::string(e.what()).substr(0, prefix.size()), prefix) << e.what();
+  }
+}
+
+TEST(superifs_file, rejects_syntax_errors_with_the_line) {
+  expect_prefix("name = \"x\"\n[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0]\n", ErrorKind::parse,
+                "bad.super.toml:3");
+}
+
+TEST(superifs_file, rejects_bad_contents_with_the_line) {
+  expect_error("name = \"x\"\n", ErrorKind::invalid_ifs,
+               "bad.super.toml:1: a superIFS needs at least one [[ifs]] table (got 0)");
+  expect_error(
+      "[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0], [0.5, 0, 0, 0.5, 0.5, 0]]\n"
+      "[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0]]\n",
+      ErrorKind::invalid_ifs,
+      "bad.super.toml:3: IFS 2: every IFS needs the same number of maps as IFS 1 "
+      "(got 1 for 2)");
+  expect_error("[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0],\n  [1.5, 0, 0, 0.5, 0.5, 0]]\n",
+               ErrorKind::invalid_ifs,
+               "bad.super.toml:1: IFS 1: map 2: contraction factor must be < 1 (got 1.5); "
+               "--allow-expansive accepts it if the IFS contracts on average");
+  expect_error("[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0],\n  [0.5, 0, 0, 0.5, 0.5]]\n",
+               ErrorKind::parse,
+               "bad.super.toml:3: IFS 1 map 2: needs 6 coefficients a b c d e f (got 5)");
+  expect_error("[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, \"x\"]]\n", ErrorKind::parse,
+               "bad.super.toml:2: IFS 1 map 1: must be a number (got a string)");
+  expect_error("probabilities = [1, 2]\n[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0]]\n",
+               ErrorKind::invalid_ifs,
+               "bad.super.toml:1: probabilities: one per [[ifs]] is needed (got 2 for 1 IFSs)");
+  expect_error("[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0]]\nprobabilty = [1]\n", ErrorKind::parse,
+               "bad.super.toml:3: IFS 1: unknown key 'probabilty' (known: name, maps, "
+               "probabilities)");
+  expect_error(
+      "[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0]]\n[[colouring]]\n"
+      "maps = [[0.5, 0, 0, 0.5, 0, 0], [0.5, 0, 0, 0.5, 0.5, 0]]\n",
+      ErrorKind::invalid_ifs,
+      "bad.super.toml:3: colouring 1: needs as many maps as the IFSs (got 2 for 1)");
+  expect_error("[[ifs]]\nmaps = [[0.5, 0, 0, 0, 0, 0]]\n", ErrorKind::invalid_ifs,
+               "bad.super.toml: IFS 1 map 1: must be invertible, the V-variable raster inverts "
+               "every map (got det 0)");
+  expect_error("view = [0, 0, 1]\n[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0]]\n", ErrorKind::parse,
+               "bad.super.toml:1: view: needs 4 numbers x0, y0, x1, y1 (got 3)");
+}
+
+TEST(superifs_file, unknown_name_lists_the_shipped_presets) {
+  try {
+    load_superifs("no-such-superifs");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::not_found);
+    const std::string what = e.what();
+    EXPECT_EQ(what.rfind("no-such-superifs: no such superIFS preset or file (shipped: ", 0), 0u);
+    EXPECT_NE(what.find("paper-fig4"), std::string::npos) << what;
+  }
+}
+
+}  // namespace
+}  // namespace ifsfx
