@@ -137,9 +137,6 @@ double collage_distance(const cv::Mat& target, std::span<const AffineMap> maps) 
 CollageObjective::CollageObjective(const cv::Mat& target, const ObjectiveOptions& options)
     : options_(options) {
   check_target(target);
-  if (options.depth < 1 || options.depth > 32)
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("collage: depth must be in 1..32 (got {})", options.depth));
   size_ = target.cols;
   target_ = target.clone();
   distance_ = distance_to(target_);
@@ -204,34 +201,13 @@ ObjectiveTerms CollageObjective::terms(std::span<const AffineMap> maps) const {
         w[static_cast<std::size_t>(r) * n + static_cast<std::size_t>(c)] = 1;
     }
   t.collage_iou = raster_iou(target_, w);
-  t.deep_iou = t.collage_iou;
   t.spill = spill / (static_cast<double>(points_.size()) * static_cast<double>(maps.size())) / n;
   t.overlap = std::max(0.0, dets - 1);
-
-  // Levels 2..k: W^j(L) = W(W^{j−1}(L)) on the raster, from the centres of the previous level.
-  std::vector<cv::Point2f> level;
-  for (int j = 2; j <= options_.depth; ++j) {
-    level.clear();
-    for (int r = 0; r < n; ++r)
-      for (int c = 0; c < n; ++c)
-        if (w[static_cast<std::size_t>(r) * n + static_cast<std::size_t>(c)])
-          level.emplace_back(static_cast<float>(c) + 0.5f, static_cast<float>(r) + 0.5f);
-    std::fill(w.begin(), w.end(), 0);
-    for (const auto& m : pixel_maps)
-      for (const auto& p : level) {
-        const double c = std::floor(m.a * p.x + m.b * p.y + m.e);
-        const double r = std::floor(m.c * p.x + m.d * p.y + m.f);
-        if (c >= 0 && r >= 0 && c < n && r < n)
-          w[static_cast<std::size_t>(r) * n + static_cast<std::size_t>(c)] = 1;
-      }
-    if (j == options_.depth) t.deep_iou = raster_iou(target_, w);
-  }
 
   const ObjectiveOptions& k = options_;
   const double soft = std::max(0.0, t.contraction - k.soft_factor);
   t.value =
       (1 - t.collage_iou) + k.spill * t.spill + k.overlap * t.overlap + k.contraction * soft * soft;
-  if (k.depth > 1) t.value += 1 - t.deep_iou;
   if (t.contraction >= k.max_factor) t.value += 1 + 10 * (t.contraction - k.max_factor);
   return t;
 }

@@ -33,7 +33,6 @@ double collage_distance(const cv::Mat& target, std::span<const AffineMap> maps);
 // What the fitter minimises, and its parts (all dimensionless).
 struct ObjectiveTerms {
   double collage_iou = 0;  // |L ∩ W(L)| / |L ∪ W(L)|
-  double deep_iou = 0;     // |L ∩ W^k(L)| / |L ∪ W^k(L)| with k = depth (1 when depth = 1)
   double spill = 0;        // mean distance of W(L)'s points from L, plane units (interpolated)
   double overlap = 0;      // Σ|det f_n| − 1 when positive: measure spent twice, a loose tiling
   double contraction = 0;  // s = max_n s_n
@@ -41,10 +40,6 @@ struct ObjectiveTerms {
 };
 
 struct ObjectiveOptions {
-  // k: the objective also compares L with W^k(L), the collage iterated k times on the raster.
-  // W^k(L) tends to the attractor A (h(W^k(L), A) ≤ s^k h(L, A)), so a deep objective sees the
-  // sub-pixel drifts of the maps that the plain collage (k = 1) cannot, at k times the cost.
-  int depth = 1;
   double spill = 4;          // per plane unit of mean spill
   double overlap = 0.1;      // per unit of Σ|det| above 1
   double soft_factor = 0.8;  // contraction above which a quadratic penalty starts
@@ -52,8 +47,8 @@ struct ObjectiveOptions {
   double max_factor = 0.97;  // hard wall: beyond it the value jumps by 1 + 10 (s − max_factor)
 };
 
-// The collage objective for one target: (1 − IoU(L, W(L))) [+ (1 − IoU(L, W^k(L)))] + spill +
-// overlap + contraction penalties. Build once per target; evaluation is const and thread-safe (no
+// The collage objective for one target: (1 − IoU(L, W(L))) + spill + overlap + contraction
+// penalties. Build once per target; evaluation is const and thread-safe (no
 // shared scratch).
 class CollageObjective {
  public:

@@ -73,17 +73,19 @@ cv::Mat shape_mask(const cv::Mat& image, const TargetOptions& options, const std
   } else {
     const cv::Mat grey = grey_of(image);
     double t = 0;
+    const cv::CmpTypes side = options.invert ? cv::CMP_GT : cv::CMP_LE;
     if (options.threshold) {
       t = *options.threshold;
+      cv::compare(grey, t, mask, side);
     } else {
-      // Otsu's threshold on an 8-bit copy: 256 levels are plenty to split two populations.
-      cv::Mat grey8;
+      // Otsu's threshold on an 8-bit copy (256 levels are plenty to split two populations),
+      // compared on that copy: Otsu returns the last level of the dark class.
+      cv::Mat grey8, unused;
       grey.convertTo(grey8, CV_8U, 255);
-      cv::Mat unused;
-      t = cv::threshold(grey8, unused, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU) / 255;
-      // Otsu returns the last level of the dark class: shape = grey ≤ t.
+      const double t8 = cv::threshold(grey8, unused, 0, 255, cv::THRESH_BINARY | cv::THRESH_OTSU);
+      cv::compare(grey8, t8, mask, side);
+      t = t8 / 255;
     }
-    cv::compare(grey, t, mask, options.invert ? cv::CMP_GT : cv::CMP_LE);
     rule = fmt::format("grey {} {:.3g}{}", options.invert ? ">" : "≤", t,
                        options.threshold ? "" : " (Otsu)");
   }

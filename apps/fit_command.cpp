@@ -1,0 +1,281 @@
+// `ifsfx fit TARGET -n N -o OUT.toml`: collage-theorem fitting (paper §2, eq. 3; DESIGN.md §6).
+// Finds N affine maps whose attractor looks like the target's shape, writes them as a preset any
+// other subcommand reads, and reports the collage theorem's numbers.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "apps/commands.h"
+#include "collage/fit.h"
+#include "collage/target.h"
+#include "ifs/error.h"
+#include "ifs/image_io.h"
+#include "ifs/preset.h"
+#include "ifs/view.h"
+
+namespace ifsfx::app {
+namespace {
+
+struct FitArgs {
+  std::string target;
+  std::string output;
+  int maps = 4;
+  std::uint64_t seed = 1;
+  std::optional<double> threshold;
+  bool invert = false;
+  bool json = false;
+  bool progress = false;
+  double max_seconds = 30;
+  long max_evaluations = 60000;
+  std::string preview;
+  std::string size = "128";
+  int threads = 0;
+};
+
+// The working raster's side from "S" or "SxS".
+int working_size(const std::string& text) {
+  if (text.find('x') == std::string::npos) {
+    int side = 0;
+    try {
+      std::size_t used = 0;
+      side = std::stoi(text, &used);
+      if (used != text.size()) side = 0;
+    } catch (const std::exception&) {
+      side = 0;
+    }
+    if (side <= 0)
+      throw Error(ErrorKind::parse, fmt::format("--size: expected S or SxS (got '{}')", text));
+    return side;
+  }
+  const cv::Size size = parse_size(text, "--size");
+  if (size.width != size.height)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--size: the working raster is square (got {})", text));
+  return size.width;
+}
+
+enum class PresetFormat { toml, fractint };
+
+PresetFormat preset_format(const std::filesystem::path& path) {
+  const std::string ext = path.extension().string();
+  if (ext == ".toml") return PresetFormat::toml;
+  if (ext == ".ifs") return PresetFormat::fractint;
+  throw Error(ErrorKind::unsupported,
+              fmt::format("{}: -o must end in .toml (native preset) or .ifs (Fractint) (got '{}')",
+                          path.string(), ext));
+}
+
+// One Fractint entry: NAME { a b c d e f p } with a name of letters, digits, '-' and '_'.
+std::string to_fractint(const Ifs& ifs, const std::string& comment) {
+  std::string name;
+  for (char c : ifs.name)
+    name += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
+  if (name.empty()) name = "fitted";
+  std::string out = fmt::format("{} {{ ; {}\n", name, comment);
+  const auto p = effective_probabilities(ifs);
+  for (std::size_t i = 0; i < ifs.maps.size(); ++i) {
+    const auto& m = ifs.maps[i];
+    out += fmt::format("  {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g} {:.9g}\n", m.a, m.b, m.c, m.d,
+                       m.e, m.f, p[i]);
+  }
+  return out + "}\n";
+}
+
+// Writes `text` to `path` through a temporary file in the same folder and a rename, so that an
+// interrupted run never leaves half a preset.
+void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
+  std::filesystem::path tmp = path;
+  tmp += ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    if (!out) throw Error(ErrorKind::io, fmt::format("{}: cannot open for writing", tmp.string()));
+    out << text;
+    out.close();
+    if (!out) throw Error(ErrorKind::io, fmt::format("{}: write failed", tmp.string()));
+  }
+  std::error_code ec;
+  std::filesystem::rename(tmp, path, ec);
+  if (ec) {
+    std::filesystem::remove(tmp, ec);
+    throw Error(ErrorKind::io, fmt::format("{}: cannot write: {}", path.string(), ec.message()));
+  }
+}
+
+// Checks up front that the preset can be written (before a fit of many seconds).
+void check_writable_text(const std::filesystem::path& path) {
+  const auto folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec))
+    throw Error(ErrorKind::io,
+                fmt::format("{}: the folder {} does not exist", path.string(), folder.string()));
+}
+
+// Target, collage W(L) and attractor A side by side. In the last two, grey is L alone, white
+// is the set shown where it covers L, and mid-grey where it spills outside L.
+cv::Mat preview_image(const cv::Mat& target, const collage::CollageReport& r) {
+  const int n = target.cols, gap = std::max(2, n / 32);
+  cv::Mat out(n, 3 * n + 2 * gap, CV_8UC1, cv::Scalar(32));
+  target.copyTo(out(cv::Rect(0, 0, n, n)));
+  const cv::Mat* sets[] = {&r.collage, &r.attractor};
+  for (int k = 0; k < 2; ++k) {
+    cv::Mat panel(n, n, CV_8UC1, cv::Scalar(0));
+    panel.setTo(70, target);
+    panel.setTo(150, *sets[k]);
+    cv::Mat both;
+    cv::bitwise_and(*sets[k], target, both);
+    panel.setTo(255, both);
+    panel.copyTo(out(cv::Rect((k + 1) * (n + gap), 0, n, n)));
+  }
+  return out;
+}
+
+double finite_or_nan(double x) {
+  return std::isfinite(x) ? x : std::numeric_limits<double>::quiet_NaN();
+}
+
+void run_fit(const FitArgs& args) {
+  const std::filesystem::path output = args.output;
+  const PresetFormat format = preset_format(output);
+  check_writable_text(output);
+  if (!args.preview.empty()) check_writable_image(args.preview);
+  if (args.maps < 1 || args.maps > 32)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("-n: the number of maps must be in 1..32 (got {})", args.maps));
+
+  collage::TargetOptions target_options;
+  target_options.threshold = args.threshold;
+  target_options.invert = args.invert;
+  const cv::Mat mask = collage::load_target(args.target, target_options);
+  const cv::Mat raster = collage::working_raster(mask, {.size = working_size(args.size)});
+
+  collage::FitOptions options;
+  options.maps = args.maps;
+  options.seed = args.seed;
+  options.max_seconds = args.max_seconds;
+  options.max_evaluations = args.max_evaluations;
+  options.threads = args.threads;
+  options.name = std::filesystem::path(args.target).stem().string();
+  auto last_print = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+  if (args.progress)
+    options.progress = [&](const collage::FitProgress& p) {
+      const auto now = std::chrono::steady_clock::now();
+      if (now - last_print < std::chrono::milliseconds(200)) return;
+      last_print = now;
+      std::fputs(fmt::format("\rrun {}/{}  evaluations {:>7}  objective {:.5f}  best {:.5f}  "
+                             "{:.1f} s ",
+                             p.run + 1, p.runs, p.evaluations, p.objective, p.best, p.seconds)
+                     .c_str(),
+                 stderr);
+    };
+  const collage::FitResult result = collage::fit(raster, options);
+  if (args.progress) std::fputs("\n", stderr);
+  const collage::CollageReport& r = result.report;
+
+  const std::string summary = fmt::format("fitted by ifsfx fit to {}: IoU {:.3f}, s {:.3f}",
+                                          args.target, r.iou, r.contraction);
+  write_text_atomically(output, format == PresetFormat::toml ? to_toml(result.ifs, summary)
+                                                             : to_fractint(result.ifs, summary));
+  if (!args.preview.empty()) write_image(args.preview, preview_image(raster, r));
+
+  const bool holds = r.hausdorff <= r.upper_bound;
+  if (args.json) {
+    nlohmann::json maps = nlohmann::json::array();
+    for (const auto& m : result.ifs.maps) maps.push_back(m.coefficients());
+    const nlohmann::json report = {
+        {"target", args.target},
+        {"output", args.output},
+        {"maps", args.maps},
+        {"size", raster.cols},
+        {"seed", args.seed},
+        {"runs", result.runs},
+        {"evaluations", result.evaluations},
+        {"seconds", result.seconds},
+        {"time_capped", result.time_capped},
+        {"collage_distance", r.collage_distance},
+        {"contraction", r.contraction},
+        {"lower_bound", r.lower_bound},
+        {"upper_bound", finite_or_nan(r.upper_bound)},
+        {"hausdorff", finite_or_nan(r.hausdorff)},
+        {"bound_holds", holds},
+        {"iou", r.iou},
+        {"collage_iou", r.collage_iou},
+        {"pixel", r.pixel},
+        {"clipped", r.clipped},
+        {"ifs",
+         {{"name", result.ifs.name}, {"maps", maps}, {"probabilities", result.ifs.probabilities}}},
+    };
+    std::printf("%s\n", report.dump(2).c_str());
+    return;
+  }
+  const double px = 1 / r.pixel;
+  std::printf(
+      "%s", fmt::format(
+                "{} -> {}: {} maps on a {}x{} working raster; {} runs, {} evaluations, {:.1f} s{}\n"
+                "  distances in units of the working square's side (1 pixel = {:.4f})\n"
+                "  collage distance h(L, W(L))   {:.4f}  ({:.1f} px)\n"
+                "  contraction s                 {:.4f}\n"
+                "  collage theorem               {:.4f} <= h(L, A) <= {:.4f}\n"
+                "  measured h(L, A)              {:.4f}  ({:.1f} px){}\n"
+                "  IoU(L, A)                     {:.3f}  (collage IoU(L, W(L)) {:.3f})\n",
+                args.target, args.output, args.maps, raster.cols, raster.rows, result.runs,
+                result.evaluations, result.seconds,
+                result.time_capped ? " (stopped by --max-seconds)" : "", r.pixel,
+                r.collage_distance, r.collage_distance * px, r.contraction, r.lower_bound,
+                r.upper_bound, r.hausdorff, r.hausdorff * px,
+                holds ? "" : "  ABOVE THE BOUND: please report this as a bug", r.iou, r.collage_iou)
+                .c_str());
+  if (r.clipped)
+    std::printf(
+        "  note: the attractor reaches beyond the measuring canvas; h(L, A) is a lower "
+        "estimate\n");
+}
+
+}  // namespace
+
+void add_fit_command(CLI::App& app) {
+  auto args = std::make_shared<FitArgs>();
+  auto* cmd = app.add_subcommand(
+      "fit", "Fit an IFS to a shape by the collage theorem: its attractor looks like the target");
+  cmd->add_option("target", args->target,
+                  "Target image; the shape is its alpha channel, else its dark pixels (Otsu)")
+      ->required();
+  cmd->add_option("-o,--output", args->output, "Preset to write: .toml (native) or .ifs (Fractint)")
+      ->required();
+  cmd->add_option("-n,--maps", args->maps, "Number of affine maps N (1..32)")
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Random seed: the same seed gives the same maps")
+      ->capture_default_str();
+  cmd->add_option("--threshold", args->threshold,
+                  "Grey (or alpha) level in [0, 1] between shape and background; default: Otsu "
+                  "(alpha: 0.5)");
+  cmd->add_flag("--invert", args->invert, "Swap shape and background (light shape, clear alpha)");
+  cmd->add_option("--size", args->size, "Working raster S or SxS (pixels, square)")
+      ->capture_default_str();
+  cmd->add_option("--max-seconds", args->max_seconds,
+                  "Stop the search after this many seconds (0: no cap; then the same seed gives "
+                  "the same maps on any machine)")
+      ->capture_default_str();
+  cmd->add_option("--max-evaluations", args->max_evaluations, "Objective evaluations over all runs")
+      ->capture_default_str()
+      ->check(CLI::Range(2L, 100000000L));
+  cmd->add_option("--preview", args->preview,
+                  "Write target, collage and attractor side by side to this image");
+  cmd->add_flag("--json", args->json, "Print the report as a JSON object on stdout");
+  cmd->add_flag("--progress", args->progress, "Show the objective as it falls (stderr)");
+  cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")
+      ->capture_default_str()
+      ->check(CLI::Range(0, 1024));
+  cmd->callback([args] { run_fit(*args); });
+}
+
+}  // namespace ifsfx::app
