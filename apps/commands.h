@@ -8,6 +8,7 @@ namespace ifsfx::app {
 
 void add_presets_command(CLI::App& app);  // list shipped presets
 void add_render_command(CLI::App& app);   // render an IFS to a still
+void add_apply_command(CLI::App& app);    // colour an image through a saved steal map
 void add_fit_command(CLI::App& app);      // fit an IFS to a shape (collage theorem)
 void add_texture_command(CLI::App& app);  // render a superIFS texture or texture sequence
 void add_cam_command(CLI::App& app);      // live camera kaleidoscope over V4L2

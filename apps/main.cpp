@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   app.set_help_all_flag("--help-all", "Show the help of every command");
   ifsfx::app::add_presets_command(app);
   ifsfx::app::add_render_command(app);
+  ifsfx::app::add_apply_command(app);
   ifsfx::app::add_fit_command(app);
   ifsfx::app::add_texture_command(app);
   ifsfx::app::add_cam_command(app);

@@ -7,6 +7,8 @@
 
 #include "apps/cli_options.h"
 #include "apps/commands.h"
+#include "apps/steal_modes.h"
+#include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/preset.h"
 #include "ifs/render.h"
@@ -14,7 +16,7 @@
 namespace ifsfx::app {
 namespace {
 
-enum class Mode { attractor, measure };
+enum class Mode { attractor, measure, tops, steal };
 
 struct RenderArgs {
   std::string preset;
@@ -32,12 +34,48 @@ struct RenderArgs {
   int bits = 8;
   bool allow_expansive = false;
   bool quiet = false;
+  // tops and steal modes (apps/steal_modes.h)
+  std::string source;
+  std::string colouring;
+  bool exact = false;
+  bool second_symbol = false;
+  std::string save_map;
+  std::string background;
 };
 
-const char* mode_name(Mode mode) { return mode == Mode::attractor ? "attractor" : "measure"; }
+const char* mode_name(Mode mode) {
+  switch (mode) {
+    case Mode::attractor: return "attractor";
+    case Mode::measure: return "measure";
+    case Mode::tops: return "tops";
+    case Mode::steal: return "steal";
+  }
+  return "measure";
+}
+
+// The tops/steal options are refused in the modes that would ignore them.
+void check_mode_options(const RenderArgs& args) {
+  const auto refuse = [&](bool given, const char* option, const char* modes) {
+    if (given)
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("{}: only with --mode {} (got --mode {})", option, modes,
+                              mode_name(args.mode)));
+  };
+  const bool tops = args.mode == Mode::tops, steal = args.mode == Mode::steal;
+  refuse(!steal && !args.source.empty(), "--source", "steal");
+  refuse(!steal && !args.colouring.empty(), "--colouring", "steal");
+  refuse(!steal && !args.save_map.empty(), "--save-map", "steal");
+  refuse(!tops && args.second_symbol, "--second-symbol", "tops");
+  refuse(!tops && !steal && args.exact, "--exact", "tops or steal");
+  refuse(!tops && !steal && !args.background.empty(), "--background", "tops or steal");
+  if (steal && args.source.empty())
+    throw Error(ErrorKind::invalid_argument, "--source: --mode steal needs a source image");
+}
 
 void run_render(const RenderArgs& args) {
   const cv::Size size = size_option(args.size);
+  check_mode_options(args);
+  const Rgb background = colour_option(args.background.empty() ? "black" : args.background);
   check_writable_image(args.output);
   const IfsPreset preset = load_ifs(args.preset, {.allow_expansive = args.allow_expansive});
 
@@ -56,6 +94,20 @@ void run_render(const RenderArgs& args) {
   switch (args.mode) {
     case Mode::attractor: image = render_attractor(preset.ifs, size, options, &stats); break;
     case Mode::measure: image = render_measure(preset.ifs, size, options, &stats); break;
+    case Mode::tops:
+      image = tops_image(preset.ifs, size, options, args.exact, args.second_symbol, background,
+                         args.output, &stats);
+      break;
+    case Mode::steal:
+      image = steal_image(preset.ifs, size, options,
+                          {.source = args.source,
+                           .colouring = args.colouring,
+                           .exact = args.exact,
+                           .save_map = args.save_map,
+                           .background = background,
+                           .quiet = args.quiet},
+                          args.output, &stats);
+      break;
   }
 
   WriteOptions write;
@@ -94,10 +146,13 @@ void add_render_command(CLI::App& app) {
       ->required();
   cmd->add_option("--size", args->size, "Output size WxH in pixels")->capture_default_str();
   const std::map<std::string, Mode> modes{{"attractor", Mode::attractor},
-                                          {"measure", Mode::measure}};
+                                          {"measure", Mode::measure},
+                                          {"tops", Mode::tops},
+                                          {"steal", Mode::steal}};
   cmd->add_option("--mode", args->mode,
                   "attractor: the set; measure: log-density of the invariant measure, "
-                  "coloured by map")
+                  "coloured by map; tops: each pixel coloured by the first symbol of its top "
+                  "address; steal: colours stolen from --source (fractal tops, colour stealing)")
       ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case))
       ->default_str("measure");
   cmd->add_option("--view", args->view,
@@ -125,6 +180,22 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--allow-expansive", args->allow_expansive,
                 "Accept maps with factor >= 1 when the IFS contracts on average");
   cmd->add_flag("-q,--quiet", args->quiet, "Do not print the summary line");
+  cmd->add_option("--source", args->source,
+                  "steal mode: image to steal colours from (any format OpenImageIO reads)");
+  cmd->add_option("--colouring", args->colouring,
+                  "steal mode: colouring IFS preset with as many maps, fitted to the source "
+                  "(default: a tiling of the source for the number of maps)");
+  cmd->add_flag("--exact", args->exact,
+                "tops/steal modes: exact top addresses by per-pixel descent, no noise or holes "
+                "(default: chaos game)");
+  cmd->add_flag("--second-symbol", args->second_symbol,
+                "tops mode: mix in the colour of the second symbol of the top address");
+  cmd->add_option("--save-map", args->save_map,
+                  "steal mode: also save the steal map, for `ifsfx apply MAP IMAGE`");
+  cmd->add_option("--background", args->background,
+                  "tops/steal modes: colour off the attractor in formats without alpha "
+                  "(black, white, #rrggbb, R,G,B); PNG/TIFF/EXR get a transparent background")
+      ->default_str("black");
   cmd->callback([args] { run_render(*args); });
 }
 

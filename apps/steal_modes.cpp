@@ -1,0 +1,163 @@
+#include "apps/steal_modes.h"
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include <fmt/format.h>
+#include <opencv2/imgproc.hpp>
+
+#include "ifs/error.h"
+#include "ifs/image_io.h"
+#include "ifs/preset.h"
+#include "ifs/steal_map.h"
+#include "ifs/tops.h"
+
+namespace ifsfx::app {
+
+Rgb colour_option(const std::string& text, const std::string& what) {
+  std::string t = text;
+  for (auto& ch : t) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (t == "black") return {0, 0, 0};
+  if (t == "white") return {1, 1, 1};
+  const auto fail = [&] {
+    return Error(
+        ErrorKind::parse,
+        fmt::format("{}: a colour is black, white, #rrggbb or R,G,B with 0..255 (got '{}')", what,
+                    text));
+  };
+  if (t.size() == 7 && t[0] == '#') {
+    int v[3];
+    for (int i = 0; i < 3; ++i) {
+      std::size_t used = 0;
+      try {
+        v[i] = std::stoi(t.substr(1 + 2 * static_cast<std::size_t>(i), 2), &used, 16);
+      } catch (const std::exception&) {
+        throw fail();
+      }
+      if (used != 2) throw fail();
+    }
+    return {v[0] / 255.0, v[1] / 255.0, v[2] / 255.0};
+  }
+  int r = 0, g = 0, b = 0;
+  char tail = 0;
+  if (std::sscanf(t.c_str(), "%d,%d,%d%c", &r, &g, &b, &tail) == 3 && r >= 0 && r <= 255 &&
+      g >= 0 && g <= 255 && b >= 0 && b <= 255)
+    return {r / 255.0, g / 255.0, b / 255.0};
+  throw fail();
+}
+
+bool format_has_alpha(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr";
+}
+
+cv::Scalar background_scalar(const Rgb& colour, int depth) {
+  const double full = depth == CV_8U ? 255.0 : depth == CV_16U ? 65535.0 : 1.0;
+  return {colour.b * full, colour.g * full, colour.r * full, 0};
+}
+
+cv::Mat with_coverage_alpha(const cv::Mat& coloured, const cv::Mat& coverage,
+                            const std::string& output) {
+  const bool alpha = format_has_alpha(output);
+  if (!alpha) {
+    if (coloured.channels() != 4) return coloured;
+    cv::Mat bgr;
+    cv::cvtColor(coloured, bgr, cv::COLOR_BGRA2BGR);
+    return bgr;
+  }
+  if (coloured.channels() == 4) return coloured;  // the source's alpha, 0 off the attractor
+  cv::Mat bgr = coloured;
+  if (coloured.channels() == 1) cv::cvtColor(coloured, bgr, cv::COLOR_GRAY2BGR);
+  cv::Mat a;
+  const double full = bgr.depth() == CV_8U ? 1.0 : bgr.depth() == CV_16U ? 257.0 : 1.0 / 255;
+  coverage.convertTo(a, bgr.depth(), full);
+  std::vector<cv::Mat> planes;
+  cv::split(bgr, planes);
+  planes.push_back(a);
+  cv::Mat out;
+  cv::merge(planes, out);
+  return out;
+}
+
+cv::Mat tops_image(const Ifs& F, cv::Size size, const RenderOptions& options, bool exact,
+                   bool second_symbol, const Rgb& background, const std::string& output,
+                   RenderStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  TopsOptions tops;
+  tops.view = options.view;
+  tops.margin = options.margin;
+  tops.exact = exact;
+  tops.second_symbol = second_symbol;
+  tops.quality = options.quality;
+  tops.seed = options.seed;
+  tops.threads = options.threads;
+  if (!tops.view) tops.view = fit_view(attractor_bounds(F, options.seed), size, options.margin);
+  cv::Mat image = render_tops(F, size, tops);  // BGRA float, alpha = coverage
+  cv::Mat coverage;
+  cv::extractChannel(image, coverage, 3);
+  if (stats) {
+    stats->points = 0;
+    stats->coverage = cv::countNonZero(coverage) / static_cast<double>(size.area());
+    stats->view = *tops.view;
+  }
+  // Off the attractor: the background colour (and alpha 0 where the format keeps it).
+  const cv::Scalar bg = background_scalar(background, CV_32F);
+  image.setTo(bg, coverage == 0);
+  if (!format_has_alpha(output)) cv::cvtColor(image, image, cv::COLOR_BGRA2BGR);
+  if (stats)
+    stats->seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return image;
+}
+
+cv::Mat steal_image(const Ifs& F, cv::Size size, const RenderOptions& options,
+                    const StealModeArgs& args, const std::string& output, RenderStats* stats) {
+  if (args.source.empty())
+    throw Error(ErrorKind::invalid_argument, "--source: --mode steal needs a source image");
+  // Read first: a missing or unreadable source fails before any long work.
+  const cv::Mat source = read_image(args.source).pixels;
+  const Ifs G = args.colouring.empty()
+                    ? default_colouring(F.size())
+                    : fit_to_unit_square(load_ifs(args.colouring, {.allow_expansive = true}).ifs);
+  if (G.size() != F.size())
+    throw Error(ErrorKind::invalid_ifs,
+                fmt::format("--colouring {}: must have as many maps as {} (got {} for {})",
+                            args.colouring, F.name, G.size(), F.size()));
+  StealMapOptions so;
+  so.view = options.view;
+  so.margin = options.margin;
+  so.exact = args.exact;
+  so.quality = options.quality;
+  so.seed = options.seed;
+  so.threads = options.threads;
+  StealMapStats ss;
+  const StealMap map = compute_steal_map(F, G, size, so, &ss);
+  if (!args.save_map.empty()) save(map, args.save_map);
+  const cv::Mat coloured = apply(map, source,
+                                 {.background = background_scalar(args.background, source.depth()),
+                                  .threads = options.threads});
+  if (!args.quiet)
+    std::printf(
+        "%s\n",
+        fmt::format("steal map{}: {} levels; {:.2f}% of pixels on the attractor{}",
+                    args.exact ? " (exact)" : " (chaos game)", ss.levels, 100 * ss.coverage,
+                    args.exact ? std::string()
+                               : fmt::format(" ({:.2f}% hit by points, {} reached by "
+                                             "Hutchinson passes, {} filled from "
+                                             "neighbours, {} rounds)",
+                                             100 * ss.hit, ss.propagated, ss.filled, ss.rounds))
+            .c_str());
+  if (stats) {
+    stats->points = ss.points;
+    stats->seconds = ss.seconds;
+    stats->coverage = ss.coverage;
+    stats->view = ss.view;
+  }
+  return with_coverage_alpha(coloured, map.coverage, output);
+}
+
+}  // namespace ifsfx::app

@@ -1,0 +1,48 @@
+// The tops and steal modes of `ifsfx render`, and what they share with `ifsfx apply`: the
+// --background colour, and making an image fit its output format (transparent background where
+// the format has alpha, the background colour elsewhere).
+#pragma once
+
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "ifs/ifs.h"
+#include "ifs/render.h"
+
+namespace ifsfx::app {
+
+// "black", "white", "#rrggbb" or "R,G,B" (0..255); throws Error{parse} naming `what`.
+Rgb colour_option(const std::string& text, const std::string& what = "--background");
+
+// True for outputs whose format keeps an alpha channel: .png, .tif, .tiff, .exr.
+bool format_has_alpha(const std::string& path);
+
+// The steal mode's own settings.
+struct StealModeArgs {
+  std::string source;     // image to steal colours from (any format OpenImageIO reads)
+  std::string colouring;  // colouring IFS preset; empty: default_colouring(N)
+  bool exact = false;
+  std::string save_map;  // also write the steal map here
+  Rgb background;
+  bool quiet = false;  // else print the coverage policy's figures on stdout
+};
+
+// `--mode tops`: render_tops, the background made transparent or `background` for `output`.
+cv::Mat tops_image(const Ifs& F, cv::Size size, const RenderOptions& options, bool exact,
+                   bool second_symbol, const Rgb& background, const std::string& output,
+                   RenderStats* stats);
+
+// `--mode steal`: the steal map of F through G, applied to the source (and saved if asked).
+cv::Mat steal_image(const Ifs& F, cv::Size size, const RenderOptions& options,
+                    const StealModeArgs& args, const std::string& output, RenderStats* stats);
+
+// An image of the map's pixels from `coloured` (the source's depth) and `coverage` ready for
+// `output`: with an alpha channel of the coverage where the format has one.
+cv::Mat with_coverage_alpha(const cv::Mat& coloured, const cv::Mat& coverage,
+                            const std::string& output);
+
+// The background colour as a cv::Scalar in BGR(A) order for images of `depth`, alpha 0.
+cv::Scalar background_scalar(const Rgb& colour, int depth);
+
+}  // namespace ifsfx::app
