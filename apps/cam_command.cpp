@@ -65,7 +65,7 @@ struct CamArgs {
 // Set by SIGINT/SIGTERM; the live loop checks it between frames.
 std::atomic<bool> g_stop{false};
 
-extern "C" void on_stop_signal(int) {
+void on_cam_stop_signal(int) {
   g_stop.store(true);
 }
 
@@ -74,8 +74,8 @@ class StopSignals {
  public:
   StopSignals() {
     g_stop.store(false);
-    old_int_ = std::signal(SIGINT, on_stop_signal);
-    old_term_ = std::signal(SIGTERM, on_stop_signal);
+    old_int_ = std::signal(SIGINT, on_cam_stop_signal);
+    old_term_ = std::signal(SIGTERM, on_cam_stop_signal);
   }
   ~StopSignals() {
     std::signal(SIGINT, old_int_);

@@ -221,9 +221,6 @@ V4l2Capture::V4l2Capture(const std::string& device, const V4l2CaptureOptions& op
     m.buffers.push_back(mb);
   }
   for (std::uint32_t i = 0; i < req.count; ++i) m.queue(i);
-  int type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-  if (xioctl(fd, VIDIOC_STREAMON, &type) != 0) throw_errno(device, "VIDIOC_STREAMON", errno);
-  m.streaming = true;
   m.origin = Clock::now();
 }
 
@@ -232,6 +229,14 @@ V4l2Capture::~V4l2Capture() = default;
 std::optional<Frame> V4l2Capture::read() {
   Impl& m = *impl_;
   const int fd = m.fd.get();
+  if (!m.streaming) {
+    // Streaming starts with the first read, not at construction: the work between the two
+    // (computing the steal map) must not count as frames dropped or as latency.
+    int type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+    if (xioctl(fd, VIDIOC_STREAMON, &type) != 0) throw_errno(m.path, "VIDIOC_STREAMON", errno);
+    m.streaming = true;
+    m.origin = Clock::now();
+  }
   int bad = 0;
   for (;;) {
     pollfd p{fd, POLLIN, 0};
@@ -292,7 +297,18 @@ std::optional<Frame> V4l2Capture::read() {
     }
     m.queue(b.index);
     frame.index = static_cast<std::int64_t>(b.sequence - *m.first_sequence);
-    frame.timestamp = std::chrono::duration<double>(dequeued - m.origin).count();
+    // Capture time: the driver's timestamp where it is on CLOCK_MONOTONIC (the steady clock's
+    // clock on Linux), so latency includes the time the frame waited in the driver; else the
+    // moment of dequeue.
+    Clock::time_point captured = dequeued;
+    if ((b.flags & V4L2_BUF_FLAG_TIMESTAMP_MASK) == V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC &&
+        (b.timestamp.tv_sec != 0 || b.timestamp.tv_usec != 0)) {
+      const Clock::time_point stamped{std::chrono::duration_cast<Clock::duration>(
+          std::chrono::seconds(b.timestamp.tv_sec) +
+          std::chrono::microseconds(b.timestamp.tv_usec))};
+      if (stamped <= dequeued && dequeued - stamped < std::chrono::seconds(10)) captured = stamped;
+    }
+    frame.timestamp = std::chrono::duration<double>(captured - m.origin).count();
     ++m.returned;
     return frame;
   }

@@ -27,9 +27,10 @@ struct V4l2CaptureOptions {
 
 class V4l2Capture final : public LiveSource {
  public:
-  // Opens, negotiates and starts streaming. Throws Error{not_found} for a missing node,
-  // Error{unsupported} for a node that is not a streaming capture device or offers none of the
-  // requested formats, Error{device} for a busy one, all naming the device.
+  // Opens, negotiates and maps the buffers; streaming starts with the first read(). Throws
+  // Error{not_found} for a missing node, Error{unsupported} for a node that is not a streaming
+  // capture device or offers none of the requested formats, Error{device} for a busy one, all
+  // naming the device.
   //   V4l2Capture camera("/dev/video0", {.size = {1280, 720}, .fps = 30});
   explicit V4l2Capture(const std::string& device, const V4l2CaptureOptions& options = {});
   ~V4l2Capture() override;
@@ -38,7 +39,8 @@ class V4l2Capture final : public LiveSource {
 
   // The newest frame (BGR). Waits for one with poll(); throws Error{device} when the camera
   // vanishes (ENODEV) or stalls past the timeout. Frame::index is the driver's sequence number
-  // counted from the first frame, so gaps are drops.
+  // counted from the first frame, so gaps are drops; Frame::timestamp is the capture time (the
+  // driver's monotonic timestamp, else the moment of dequeue) after clock_origin().
   std::optional<Frame> read() override;
 
   cv::Size size() const override;  // granted size

@@ -1,0 +1,456 @@
+// Checks against real kernel V4L2 drivers, run inside the VM of tests/v4l2-vm/run-vm-tests.sh:
+// vivid (a virtual webcam showing 75% colour bars) and v4l2loopback (the virtual webcam that
+// `ifsfx cam --output` feeds). Not part of the host suite: the host kernel has no V4L2.
+//
+// Environment: V4L2_CAPTURE_DEV (vivid capture), V4L2_LOOPBACK_DEV, IFSFX_BIN (the ifsfx
+// binary), VM_SHARE (a folder shared with the host, for artefacts).
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+#include <opencv2/videoio.hpp>
+
+#include "ifs/error.h"
+#include "ifs/preset.h"
+#include "ifs/steal_map.h"
+#include "video/fractal_filter.h"
+#include "video/v4l2_capture.h"
+#include "video/v4l2_convert.h"
+#include "video/v4l2_device.h"
+#include "video/v4l2_output.h"
+
+extern char** environ;
+
+namespace ifsfx::video {
+namespace {
+
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
+
+std::string env(const char* name) {
+  const char* v = std::getenv(name);
+  return v ? v : "";
+}
+
+std::string read_text(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// A child process with stdout and stderr in files, never waited on forever.
+class Child {
+ public:
+  Child(const std::vector<std::string>& argv, const std::string& tag) {
+    out_ = std::filesystem::temp_directory_path() / (tag + ".out");
+    err_ = std::filesystem::temp_directory_path() / (tag + ".err");
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    posix_spawn_file_actions_addopen(&fa, 1, out_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_addopen(&fa, 2, err_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    if (posix_spawnp(&pid_, args[0], &fa, nullptr, args.data(), environ) != 0) pid_ = -1;
+    posix_spawn_file_actions_destroy(&fa);
+  }
+  ~Child() {
+    if (pid_ > 0 && !done_) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+    }
+  }
+  Child(const Child&) = delete;
+  Child& operator=(const Child&) = delete;
+
+  bool started() const { return pid_ > 0; }
+  // Waits up to `timeout`; returns false (and kills the child) if it is still running: a hang.
+  bool wait(std::chrono::milliseconds timeout) {
+    const auto deadline = Clock::now() + timeout;
+    while (!done_) {
+      int status = 0;
+      const pid_t r = waitpid(pid_, &status, WNOHANG);
+      if (r == pid_) {
+        done_ = true;
+        rc_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+        break;
+      }
+      if (Clock::now() > deadline) {
+        kill(pid_, SIGKILL);
+        waitpid(pid_, nullptr, 0);
+        done_ = true;
+        rc_ = -1;
+        return false;
+      }
+      std::this_thread::sleep_for(20ms);
+    }
+    return true;
+  }
+  bool running() {
+    if (done_) return false;
+    int status = 0;
+    if (waitpid(pid_, &status, WNOHANG) == pid_) {
+      done_ = true;
+      rc_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    }
+    return !done_;
+  }
+  int rc() const { return rc_; }
+  std::string out() const { return read_text(out_); }
+  std::string err() const { return read_text(err_); }
+
+ private:
+  pid_t pid_ = -1;
+  bool done_ = false;
+  int rc_ = -1;
+  std::filesystem::path out_, err_;
+};
+
+int run(const std::vector<std::string>& argv, const std::string& tag, std::string* err = nullptr,
+        std::string* out = nullptr) {
+  Child c(argv, tag);
+  EXPECT_TRUE(c.started()) << argv[0];
+  EXPECT_TRUE(c.wait(120s)) << tag << ": still running after 120 s (a hang)";
+  if (err) *err = c.err();
+  if (out) *out = c.out();
+  return c.rc();
+}
+
+// N of "recording kept: PATH (N frames)" in an error message; -1 when absent.
+int frames_reported(const std::string& err) {
+  const auto at = err.find("recording kept: ");
+  if (at == std::string::npos) return -1;
+  const auto open = err.find(" (", at);
+  return open == std::string::npos ? -1 : std::atoi(err.c_str() + open + 2);
+}
+
+int count_lines(const std::string& s) {
+  int n = 0;
+  for (char c : s) n += c == '\n';
+  return n;
+}
+
+class VividTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    cap_ = env("V4L2_CAPTURE_DEV");
+    loop_ = env("V4L2_LOOPBACK_DEV");
+    ifsfx_ = env("IFSFX_BIN");
+    share_ = env("VM_SHARE");
+    if (cap_.empty() || loop_.empty() || ifsfx_.empty()) {
+      GTEST_FAIL() << "run inside tests/v4l2-vm/run-vm-tests.sh with IFSFX_BIN set";
+    }
+    // Webcam input, no text overlay: vivid's frames are then the same still colour bars every
+    // time, so a frame captured here is the frame `ifsfx cam` captures later.
+    ASSERT_EQ(run({"v4l2-ctl", "-d", cap_, "-i", "0", "-c", "osd_text_mode=2"}, "v4l2-ctl"), 0);
+  }
+
+  // The newest of a few frames, through our own capture.
+  cv::Mat grab(const std::string& dev, cv::Size size, PixelFormat format) {
+    V4l2Capture camera(dev, {.size = size, .fps = 0, .formats = {format}});
+    EXPECT_EQ(camera.size(), size);
+    EXPECT_EQ(camera.format(), format);
+    cv::Mat last;
+    for (int i = 0; i < 3; ++i) last = camera.read()->image;
+    return last;
+  }
+
+  // The filter `ifsfx cam` applies for these options, on the host's library.
+  static cv::Mat expected_filter(const cv::Mat& frame, const std::string& preset,
+                                 const StealMapOptions& o) {
+    const Ifs F = load_ifs(preset).ifs;
+    const Ifs G = default_colouring(F.size());
+    const RemapTable table =
+        make_remap_table(compute_steal_map(F, G, frame.size(), o), frame.size());
+    return filter_frame(frame, table);
+  }
+
+  // What a frame looks like after the YUYV trip to the loopback device and back.
+  static cv::Mat through_yuyv(const cv::Mat& bgr) {
+    std::vector<std::uint8_t> yuyv;
+    from_bgr(bgr, PixelFormat::yuyv, yuyv);
+    return to_bgr(yuyv, {PixelFormat::yuyv, bgr.size()}, "yuyv");
+  }
+
+  // Frames read back from the loopback device while `producer` feeds it. Waits for the producer
+  // to set the device up (it computes its steal map first).
+  std::vector<cv::Mat> read_loopback(Child& producer, cv::Size size, int n) {
+    std::vector<cv::Mat> frames;
+    const auto deadline = Clock::now() + 90s;
+    while (Clock::now() < deadline && producer.running()) {
+      try {
+        V4l2Capture reader(
+            loop_, {.size = size, .fps = 0, .formats = {PixelFormat::yuyv}, .timeout_ms = 5000});
+        if (reader.size() != size) {
+          std::this_thread::sleep_for(200ms);
+          continue;
+        }
+        while (static_cast<int>(frames.size()) < n) frames.push_back(reader.read()->image);
+        return frames;
+      } catch (const Error&) {
+        frames.clear();
+        std::this_thread::sleep_for(200ms);
+      }
+    }
+    ADD_FAILURE() << "no frames from " << loop_ << "; producer stderr: " << producer.err();
+    return frames;
+  }
+
+  void save(const std::string& name, const cv::Mat& image) {
+    if (!share_.empty()) cv::imwrite(share_ + "/" + name, image);
+  }
+
+  std::string cap_, loop_, ifsfx_, share_;
+};
+
+// vivid's 75% colour bars, left to right, in BGR: white, yellow, cyan, green, magenta, red,
+// blue, black at 75% amplitude (191 of 255).
+void expect_colour_bars(const cv::Mat& frame, const std::string& what) {
+  ASSERT_FALSE(frame.empty()) << what;
+  const cv::Vec3d bars[8] = {{191, 191, 191}, {0, 191, 191}, {191, 191, 0}, {0, 191, 0},
+                             {191, 0, 191},   {0, 0, 191},   {191, 0, 0},   {0, 0, 0}};
+  cv::Scalar mean, stddev;
+  cv::meanStdDev(frame, mean, stddev);
+  EXPECT_GT(mean[0] + mean[1] + mean[2], 3 * 60.0) << what << ": frame is (nearly) black";
+  EXPECT_GT(stddev[0] + stddev[1] + stddev[2], 3 * 40.0) << what << ": frame is flat";
+  const int w = frame.cols / 8;
+  for (int k = 0; k < 8; ++k) {
+    // The middle half of bar k, middle half of the height (clear of any overlay).
+    const cv::Rect r(k * w + w / 4, frame.rows / 4, w / 2, frame.rows / 2);
+    const cv::Scalar m = cv::mean(frame(r));
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_NEAR(m[c], bars[k][c], 12) << what << ": bar " << k << " channel " << c;
+    }
+  }
+}
+
+double psnr(const cv::Mat& a, const cv::Mat& b) {
+  return cv::PSNR(a, b);
+}
+
+TEST_F(VividTest, list_shows_vivid_and_the_loopback_with_formats_sizes_and_rates) {
+  const auto devices = list_v4l2_devices();
+  bool vivid = false;
+  for (const V4l2ListEntry& e : devices) {
+    if (e.info.path != cap_) continue;
+    vivid = true;
+    EXPECT_TRUE(e.error.empty()) << e.error;
+    EXPECT_TRUE(e.info.capture);
+    bool yuyv_640 = false;
+    for (const V4l2Format& f : e.info.capture_formats) {
+      if (pixel_format_from_fourcc(f.fourcc) != PixelFormat::yuyv) continue;
+      for (const V4l2FrameSize& s : f.sizes) {
+        if (s.size == cv::Size(640, 480)) yuyv_640 = !s.fps.empty() && s.fps.front() >= 25;
+      }
+    }
+    EXPECT_TRUE(yuyv_640) << "vivid lists YUYV 640x480 at 25 fps";
+  }
+  EXPECT_TRUE(vivid) << cap_ << " not listed";
+
+  std::string out, err;
+  ASSERT_EQ(run({ifsfx_, "cam", "--list"}, "list", &err, &out), 0) << err;
+  EXPECT_NE(out.find(cap_ + ": vivid"), std::string::npos) << out;
+  EXPECT_NE(out.find("capture YUYV"), std::string::npos) << out;
+  EXPECT_NE(out.find("640x480 (25, 15"), std::string::npos) << out;
+  EXPECT_NE(out.find(loop_ + ": ifsfx-loopback"), std::string::npos) << out;
+}
+
+TEST_F(VividTest, yuyv_capture_at_two_sizes_shows_the_colour_bars) {
+  for (const cv::Size size : {cv::Size(640, 480), cv::Size(1280, 720)}) {
+    V4l2Capture camera(cap_, {.size = size, .fps = 0, .formats = {PixelFormat::yuyv}});
+    ASSERT_EQ(camera.size(), size);
+    ASSERT_EQ(camera.format(), PixelFormat::yuyv);
+    EXPECT_GT(camera.fps(), 0);
+    std::int64_t last_index = -1;
+    for (int i = 0; i < 5; ++i) {
+      const Frame f = *camera.read();
+      ASSERT_EQ(f.image.size(), size);
+      EXPECT_GT(f.index, last_index) << "frames come in order";
+      last_index = f.index;
+      expect_colour_bars(f.image, fmt::format("{}x{} frame {}", size.width, size.height, i));
+    }
+    save(fmt::format("vivid-{}x{}.png", size.width, size.height), camera.read()->image);
+  }
+}
+
+TEST_F(VividTest, nv12_and_yuv420_capture_show_the_same_colour_bars) {
+  for (const PixelFormat format : {PixelFormat::nv12, PixelFormat::yuv420}) {
+    const cv::Mat frame = grab(cap_, {640, 360}, format);
+    expect_colour_bars(frame, fourcc_name(fourcc(format)));
+  }
+}
+
+TEST_F(VividTest, cam_output_sends_the_filtered_frames_to_the_loopback) {
+  const cv::Size size(320, 180);
+  const cv::Mat camera_frame = grab(cap_, size, PixelFormat::yuyv);
+  Child cam({ifsfx_, "cam", "--device", cap_, "--size", "320x180", "--fps", "30", "--output", loop_,
+             "--max-frames", "100", "--preset", "sierpinski-triangle", "--exact"},
+            "cam-output");
+  const std::vector<cv::Mat> got = read_loopback(cam, size, 5);
+  ASSERT_TRUE(cam.wait(120s)) << "ifsfx cam did not stop after --max-frames";
+  EXPECT_EQ(cam.rc(), 0) << cam.err();
+  ASSERT_EQ(got.size(), 5u);
+
+  StealMapOptions o;
+  o.exact = true;
+  const cv::Mat expected = through_yuyv(expected_filter(camera_frame, "sierpinski-triangle", o));
+  save("loopback-filtered.png", got.back());
+  save("expected-filtered.png", expected);
+  for (const cv::Mat& frame : got) {
+    ASSERT_EQ(frame.size(), size);
+    EXPECT_LE(cv::norm(frame, expected, cv::NORM_INF), 2) << "PSNR " << psnr(frame, expected);
+  }
+  // Not a trivially equal pair: the filter changed the camera's frame.
+  EXPECT_LT(psnr(expected, through_yuyv(camera_frame)), 20);
+}
+
+TEST_F(VividTest, identity_preset_through_the_live_path_returns_the_camera_frames) {
+  // F = G = the four quadrant maps of the unit square, shown on the whole frame: T(x) = x
+  // (DESIGN.md §3, identity oracle).
+  const cv::Size size(320, 180);
+  const cv::Mat camera_frame = grab(cap_, size, PixelFormat::yuyv);
+  Child cam({ifsfx_, "cam", "--device", cap_, "--size", "320x180", "--output", loop_,
+             "--max-frames", "100", "--preset", "square-tiling-4", "--colouring", "square-tiling-4",
+             "--view", "0,0,1,1", "--exact"},
+            "cam-identity");
+  const std::vector<cv::Mat> got = read_loopback(cam, size, 5);
+  ASSERT_TRUE(cam.wait(120s));
+  EXPECT_EQ(cam.rc(), 0) << cam.err();
+  ASSERT_EQ(got.size(), 5u);
+  save("loopback-identity.png", got.back());
+  for (const cv::Mat& frame : got) {
+    EXPECT_GE(psnr(frame, camera_frame), 40);
+    expect_colour_bars(frame, "identity through the loopback");
+  }
+}
+
+TEST_F(VividTest, missing_device_fails_with_one_line) {
+  std::string err;
+  EXPECT_EQ(run({ifsfx_, "cam", "--device", "/dev/video99", "--output", loop_, "--max-frames", "5"},
+                "missing", &err),
+            1);
+  EXPECT_EQ(err, "ifsfx: /dev/video99: no such device: No such file or directory (ENOENT)\n");
+}
+
+TEST_F(VividTest, unsupported_format_fails_with_one_line) {
+  std::string err;
+  EXPECT_EQ(run({ifsfx_, "cam", "--device", cap_, "--format", "mjpeg", "--output", loop_,
+                 "--max-frames", "5"},
+                "format", &err),
+            1);
+  EXPECT_EQ(count_lines(err), 1) << err;
+  EXPECT_NE(err.find("ifsfx: " + cap_ + ": pixel format not supported: asked for MJPG"),
+            std::string::npos)
+      << err;
+}
+
+TEST_F(VividTest, busy_device_fails_with_one_line) {
+  V4l2Capture holder(cap_, {.size = {320, 180}, .fps = 0, .formats = {PixelFormat::yuyv}});
+  ASSERT_TRUE(holder.read().has_value());  // streaming: the device is now taken
+  std::string err;
+  EXPECT_EQ(run({ifsfx_, "cam", "--device", cap_, "--size", "320x180", "--output", loop_,
+                 "--max-frames", "5"},
+                "busy", &err),
+            1);
+  EXPECT_EQ(count_lines(err), 2) << err;  // the device line, then the error
+  EXPECT_NE(err.find("ifsfx: " + cap_ + ": device busy"), std::string::npos) << err;
+}
+
+// Frames in a movie file, decoded to the end (-1 if it does not open).
+int decodable_frames(const std::filesystem::path& path) {
+  cv::VideoCapture in(path.string(), cv::CAP_FFMPEG);
+  if (!in.isOpened()) return -1;
+  int n = 0;
+  cv::Mat f;
+  while (in.read(f)) ++n;
+  return n;
+}
+
+// Waits until `path` holds some frames (a file recorded with a codec that writes each frame).
+bool wait_for_recording(Child& cam, const std::filesystem::path& dir, const std::string& stem) {
+  const auto deadline = Clock::now() + 90s;
+  while (Clock::now() < deadline && cam.running()) {
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+      if (e.path().filename().string().rfind(stem, 0) == 0 && e.file_size() > 20'000) {
+        return true;
+      }
+    }
+    std::this_thread::sleep_for(100ms);
+  }
+  return false;
+}
+
+TEST_F(VividTest, loopback_producer_gone_ends_cleanly_with_the_recording_playable) {
+  const cv::Size size(320, 180);
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "lbrec";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path rec = dir / "loop.mkv";
+  std::unique_ptr<V4l2Output> producer = std::make_unique<V4l2Output>(loop_, size);
+  cv::Mat pattern = grab(cap_, size, PixelFormat::yuyv);
+  Frame f;
+  f.image = pattern;
+  producer->write(f);
+  Child cam({ifsfx_, "cam", "--device", loop_, "--size", "320x180", "--record", rec.string(),
+             "--codec", "ffv1", "--preset", "square-tiling-4", "--colouring", "square-tiling-4",
+             "--view", "0,0,1,1", "--exact"},
+            "cam-stall");
+  // Feed frames until the recording grows, then stop feeding and close the producer.
+  const auto deadline = Clock::now() + 90s;
+  bool recording = false;
+  while (Clock::now() < deadline && cam.running() && !recording) {
+    producer->write(f);
+    std::this_thread::sleep_for(33ms);
+    for (const auto& e : std::filesystem::directory_iterator(dir)) {
+      recording = recording || e.file_size() > 20'000;
+    }
+  }
+  ASSERT_TRUE(recording) << cam.err();
+  producer.reset();
+  ASSERT_TRUE(cam.wait(60s)) << "ifsfx cam hung after its source stopped";
+  EXPECT_EQ(cam.rc(), 1) << cam.err();
+  const std::string err = cam.err();
+  EXPECT_NE(err.find("ifsfx: " + loop_ + ": no frame for"), std::string::npos) << err;
+  EXPECT_NE(err.find("recording kept: " + rec.string()), std::string::npos) << err;
+  EXPECT_GT(frames_reported(err), 0) << err;
+  EXPECT_EQ(decodable_frames(rec), frames_reported(err)) << "recording not playable to the end";
+}
+
+// Last: vivid stays disconnected until every handle on it is closed.
+TEST_F(VividTest, camera_vanishing_mid_stream_ends_cleanly_with_the_recording_playable) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "vanish";
+  std::filesystem::create_directories(dir);
+  const std::filesystem::path rec = dir / "vanish.mkv";
+  Child cam({ifsfx_, "cam", "--device", cap_, "--size", "320x180", "--record", rec.string(),
+             "--codec", "ffv1", "--preset", "square-tiling-4", "--colouring", "square-tiling-4",
+             "--view", "0,0,1,1", "--exact"},
+            "cam-vanish");
+  ASSERT_TRUE(wait_for_recording(cam, dir, "vanish.mkv")) << cam.err();
+  // vivid's "disconnect" button acts as a USB camera unplugged mid-stream.
+  ASSERT_EQ(run({"v4l2-ctl", "-d", cap_, "-c", "disconnect=1"}, "disconnect"), 0);
+  ASSERT_TRUE(cam.wait(60s)) << "ifsfx cam hung after the camera vanished";
+  EXPECT_EQ(cam.rc(), 1) << cam.err();
+  const std::string err = cam.err();
+  EXPECT_NE(err.find("ifsfx: " + cap_ + ": device vanished"), std::string::npos) << err;
+  EXPECT_NE(err.find("recording kept: " + rec.string()), std::string::npos) << err;
+  EXPECT_GT(frames_reported(err), 0) << err;
+  EXPECT_EQ(decodable_frames(rec), frames_reported(err)) << "recording not playable to the end";
+}
+
+}  // namespace
+}  // namespace ifsfx::video
