@@ -69,7 +69,11 @@ void AudioCopy::copy_until(double until) {
     const double t = static_cast<double>(stamp) * av_q2d(in->time_base) - origin_;
     if (t >= until) return;  // not due yet: keep it for a later call
     pending_ = false;
-    if (t < 0) {
+    // A packet that ends before time 0 is not heard; one that reaches it is kept with its negative
+    // time (the muxer trims it: an edit list in MP4): an AAC priming packet, or the one before a
+    // --frames cut, which the decoder needs for its overlap.
+    const double length = static_cast<double>(packet_->duration) * av_q2d(in->time_base);
+    if (t + length < -1e-6) {
       av_packet_unref(packet_.get());
       continue;
     }
@@ -77,7 +81,6 @@ void AudioCopy::copy_until(double until) {
     const std::int64_t shift = std::llround(origin_ / av_q2d(in->time_base));
     if (packet_->pts != AV_NOPTS_VALUE) packet_->pts -= shift;
     if (packet_->dts != AV_NOPTS_VALUE) packet_->dts -= shift;
-    if (packet_->dts != AV_NOPTS_VALUE && packet_->dts < 0) packet_->dts = 0;
     const int out_index = map_[static_cast<std::size_t>(packet_->stream_index)];
     av_packet_rescale_ts(packet_.get(), in->time_base, output_->streams[out_index]->time_base);
     packet_->stream_index = out_index;

@@ -30,8 +30,8 @@ class AudioCopy {
   // Output time 0 is input time `origin` (seconds on the input's clock); set before copy_until.
   void set_origin(double origin) { origin_ = origin; }
 
-  // Writes (interleaved) every audio packet whose output time lies in [0, until) and that has not
-  // been written yet; packets before time 0 are dropped.
+  // Writes (interleaved) every audio packet that starts before output time `until` and has not
+  // been written yet; packets that end before time 0 are dropped.
   void copy_until(double until);
 
  private:

@@ -248,8 +248,9 @@ void FileSink::write(const Frame& frame) {
   s.frame->pts = s.last_pts;
   s.encode(s.frame.get());
   ++s.written;
-  // Audio runs a frame ahead of the video so that the muxer always has both to interleave.
-  if (s.audio) s.audio->copy_until(s.seconds(s.last_pts + 2));
+  // Audio up to the end of this frame: the muxer interleaves it, and a file closed after this frame
+  // has its sound up to there.
+  if (s.audio) s.audio->copy_until(s.seconds(s.last_pts + 1));
 }
 
 void FileSink::close() {

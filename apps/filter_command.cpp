@@ -1,0 +1,361 @@
+// `ifsfx filter INPUT -o OUTPUT`: the fractal video filter (paper §6, Fig. 6). Every frame of a
+// movie (or image sequence) is colour-stolen through the steal map of an IFS, computed once (or
+// rebuilt as time goes on with --animate), on three threads: decode, filter, encode.
+#include <unistd.h>
+
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "apps/cli_options.h"
+#include "apps/commands.h"
+#include "ifs/error.h"
+#include "ifs/preset.h"
+#include "ifs/steal_map.h"
+#include "video/drift.h"
+#include "video/file_sink.h"
+#include "video/file_source.h"
+#include "video/fractal_filter.h"
+#include "video/image_sequence.h"
+#include "video/map_schedule.h"
+#include "video/pipeline.h"
+#include "video/window_sink.h"
+
+namespace ifsfx::app {
+namespace {
+
+enum class Animate { none, drift };
+
+struct FilterArgs {
+  std::string input;
+  std::string output;
+  bool preview = false;
+  std::string preset = "barnsley-fern";
+  std::string colouring;
+  bool exact = false;
+  std::string view;
+  double margin = 0.05;
+  double quality = 64;
+  double mix = 0;
+  std::string background = "black";
+  Interpolation interpolation = Interpolation::bilinear;
+  std::string size;
+  std::string codec;
+  std::string frames;
+  double fps = 25;
+  Animate animate = Animate::none;
+  double drift_amount = 0.05;
+  double drift_speed = 0.2;
+  int keyframe_interval = 12;
+  std::uint64_t seed = 1;
+  int threads = 0;
+  bool quiet = false;
+};
+
+// The stop flag of the running job: a signal handler may only touch a lock-free atomic.
+std::atomic<bool> stop_requested{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+
+extern "C" void on_stop_signal(int signal) {
+  // A second Ctrl-C while the first is being honoured ends the process the default way.
+  if (stop_requested.exchange(true)) {
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+  }
+}
+
+// SIGINT/SIGTERM set the stop flag for the lifetime of the guard; the pipeline then finishes the
+// file with the frames done.
+class StopSignals {
+ public:
+  StopSignals() {
+    stop_requested = false;
+    struct sigaction action {};
+    action.sa_handler = on_stop_signal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &old_int_);
+    sigaction(SIGTERM, &action, &old_term_);
+  }
+  ~StopSignals() {
+    sigaction(SIGINT, &old_int_, nullptr);
+    sigaction(SIGTERM, &old_term_, nullptr);
+  }
+  StopSignals(const StopSignals&) = delete;
+  StopSignals& operator=(const StopSignals&) = delete;
+
+ private:
+  struct sigaction old_int_ {};
+  struct sigaction old_term_ {};
+};
+
+std::string clock_text(double seconds) {
+  if (seconds < 0) return "--:--";
+  const auto s = static_cast<long>(seconds + 0.5);
+  return s >= 3600 ? fmt::format("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60)
+                   : fmt::format("{}:{:02}", s / 60, s % 60);
+}
+
+// The progress bar on a terminal (redrawn in place), or a plain line per report otherwise.
+class ProgressPrinter {
+ public:
+  explicit ProgressPrinter(bool tty) : tty_(tty) {}
+
+  void operator()(const video::Progress& p) {
+    const std::string counts = p.total >= 0 ? fmt::format("{}/{} frames", p.done, p.total)
+                                            : fmt::format("{} frames", p.done);
+    const std::string rate = fmt::format("{:.1f} fps", p.fps());
+    if (tty_) {
+      std::string bar;
+      if (p.total > 0) {
+        constexpr int width = 30;
+        const auto filled =
+            static_cast<int>(width * std::min<double>(1.0, static_cast<double>(p.done) / p.total));
+        bar = "[" + std::string(static_cast<std::size_t>(filled), '#') +
+              std::string(static_cast<std::size_t>(width - filled), '.') + "] ";
+      }
+      std::fputs(
+          fmt::format("\r{}{}  {}  ETA {}  ", bar, counts, rate, clock_text(p.eta())).c_str(),
+          stderr);
+      if (p.finished) std::fputs("\n", stderr);
+    } else {
+      std::fputs(fmt::format("{}  {}  elapsed {}  ETA {}\n", counts, rate, clock_text(p.seconds),
+                             clock_text(p.eta()))
+                     .c_str(),
+                 stderr);
+    }
+    std::fflush(stderr);
+  }
+
+ private:
+  bool tty_;
+};
+
+std::unique_ptr<video::FrameSource> open_source(const FilterArgs& args) {
+  if (video::is_sequence_pattern(args.input))
+    return std::make_unique<video::ImageSequenceSource>(args.input,
+                                                        video::ImageSequenceOptions{args.fps});
+  return std::make_unique<video::FileSource>(args.input,
+                                             video::FileSourceOptions{.threads = args.threads});
+}
+
+video::Rational rate_of(const video::FrameSource& source) {
+  if (const auto* file = dynamic_cast<const video::FileSource*>(&source)) return file->frame_rate();
+  const double fps = source.fps();
+  if (std::abs(fps - std::round(fps)) < 1e-9) return {static_cast<int>(std::lround(fps)), 1};
+  return {static_cast<int>(std::lround(fps * 1001)), 1001};
+}
+
+void check_distinct(const std::string& input, const std::string& output) {
+  std::error_code ec;
+  if (std::filesystem::exists(output, ec) && std::filesystem::equivalent(input, output, ec))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: the output would overwrite the input", output));
+}
+
+void run_filter(const FilterArgs& args) {
+  if (args.preview == !args.output.empty())
+    throw Error(ErrorKind::invalid_argument,
+                "filter: give either -o OUTPUT or --preview (got both or neither)");
+  if (args.preview && std::getenv("DISPLAY") == nullptr &&
+      std::getenv("WAYLAND_DISPLAY") == nullptr)
+    throw Error(ErrorKind::unsupported,
+                "--preview: no display (neither DISPLAY nor WAYLAND_DISPLAY is set); write a file "
+                "with -o instead");
+  if (!(args.mix >= 0 && args.mix <= 1))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--mix: must be in [0, 1] (got {})", args.mix));
+  const video::FrameRange range =
+      args.frames.empty() ? video::FrameRange{} : video::parse_frame_range(args.frames);
+  video::FilterOptions filter_options;
+  filter_options.interpolation = args.interpolation;
+  filter_options.mix = args.mix;
+  filter_options.background = video::parse_background(args.background);
+  filter_options.threads = args.threads;
+  // Cheap checks of the output first: an unusable output fails before any decoding.
+  if (!args.output.empty() && !video::is_sequence_pattern(args.output))
+    video::resolve_encoder(args.output, args.codec);
+
+  const IfsPreset F = load_ifs(args.preset);
+  Ifs G = args.colouring.empty() ? default_colouring(F.ifs.size())
+                                 : fit_to_unit_square(load_ifs(args.colouring).ifs);
+  if (G.size() != F.ifs.size())
+    throw Error(ErrorKind::invalid_ifs,
+                fmt::format("--colouring: needs as many maps as the preset ({}) (got {})",
+                            F.ifs.size(), G.size()));
+
+  video::silence_libav_log();
+  std::unique_ptr<video::FrameSource> source = open_source(args);
+  const cv::Size frame_size = source->size();
+  const cv::Size size = args.size.empty() ? frame_size : size_option(args.size);
+  const video::Rational rate = rate_of(*source);
+
+  StopSignals signals;
+  std::unique_ptr<video::FrameSink> sink;
+  if (args.preview) {
+    sink = std::make_unique<video::WindowSink>(
+        fmt::format("ifsfx filter: {}", args.input),
+        video::WindowSinkOptions{.fps = rate.value(), .stop = &stop_requested});
+  } else {
+    check_distinct(args.input, args.output);
+    if (video::is_sequence_pattern(args.output)) {
+      sink = std::make_unique<video::ImageSequenceSink>(args.output);
+    } else {
+      video::FileSinkOptions o;
+      o.codec = args.codec;
+      o.size = size;
+      o.frame_rate = rate;
+      o.threads = args.threads;
+      if (const auto* file = dynamic_cast<const video::FileSource*>(source.get());
+          file != nullptr && file->has_audio()) {
+        o.audio_from = file->path();
+        o.audio_origin = file->start_time();
+      }
+      sink = std::make_unique<video::FileSink>(args.output, o);
+    }
+  }
+
+  StealMapOptions map_options;
+  map_options.view = view_option(args.view);
+  map_options.margin = args.margin;
+  map_options.exact = args.exact;
+  map_options.quality = args.quality;
+  map_options.seed = args.seed;
+  map_options.threads = args.threads;
+
+  video::FrameFilter filter;
+  std::unique_ptr<video::MapSchedule> schedule;
+  if (args.animate == Animate::none) {
+    auto table = std::make_shared<const video::RemapTable>(
+        video::make_remap_table(compute_steal_map(F.ifs, G, size, map_options), frame_size,
+                                args.interpolation, args.threads));
+    filter = [table, filter_options](const video::Frame& frame) {
+      return video::filter_frame(frame.image, *table, filter_options);
+    };
+  } else {
+    // Drift: keyframe k shows the IFS drifted to time k·K/fps, in a view fixed from the base IFS
+    // so that the frame does not jump as the attractor moves.
+    if (!map_options.view)
+      map_options.view = fit_view(attractor_bounds(F.ifs, args.seed), size, args.margin);
+    const video::DriftOptions drift{
+        .amount = args.drift_amount, .speed = args.drift_speed, .seed = args.seed};
+    video::drift(F.ifs, 0, drift);  // checks the drift options before any work
+    const double fps = rate.value();
+    const int interval = args.keyframe_interval;
+    schedule = std::make_unique<video::MapSchedule>(
+        [=, base = F.ifs](std::int64_t k) {
+          const Ifs now = video::drift(base, static_cast<double>(k) * interval / fps, drift);
+          return video::make_remap_table(compute_steal_map(now, G, size, map_options), frame_size,
+                                         args.interpolation, args.threads);
+        },
+        interval);
+    filter = [s = schedule.get(), filter_options](const video::Frame& frame) {
+      const video::MapSchedule::Blend b = s->at(frame.index);
+      return video::filter_frame(frame.image, *b.from, *b.to, b.t, filter_options);
+    };
+  }
+
+  video::PipelineOptions options;
+  options.range = range;
+  options.stop = &stop_requested;
+  const bool tty = isatty(fileno(stderr)) != 0;
+  if (!args.quiet && !args.preview) {
+    options.progress = ProgressPrinter(tty);
+    options.progress_interval = tty ? 0.25 : 2.0;
+  }
+  const video::PipelineResult result = video::run_pipeline(*source, *sink, filter, options);
+  const std::string where = args.preview ? std::string("the preview") : args.output;
+  if (result.interrupted && !args.preview)
+    throw Error(ErrorKind::interrupted,
+                fmt::format("interrupted: {} frames written to {}", result.frames_written, where));
+  if (!args.quiet)
+    std::printf(
+        "%s\n",
+        fmt::format("{}: {} frames {}x{} in {:.2f} s ({:.1f} fps){} -> {}", F.ifs.name,
+                    result.frames_written, size.width, size.height, result.seconds,
+                    result.frames_written / std::max(result.seconds, 1e-9),
+                    schedule ? fmt::format(", {} map stalls", schedule->stalls()) : "", where)
+            .c_str());
+}
+
+}  // namespace
+
+void add_filter_command(CLI::App& app) {
+  auto args = std::make_shared<FilterArgs>();
+  auto* cmd = app.add_subcommand(
+      "filter", "Filter a movie (or image sequence) through a fractal: colour stealing per frame");
+  cmd->add_option("input", args->input,
+                  "Input movie (any file FFmpeg reads) or image sequence pattern (frame_%04d.png)")
+      ->required();
+  cmd->add_option("-o,--output", args->output,
+                  "Output movie (.mp4, .mkv, .avi, ...) or image sequence pattern; written as "
+                  "OUTPUT.part and renamed at the end");
+  cmd->add_flag("--preview", args->preview,
+                "Show the result in a window instead of writing a file");
+  cmd->add_option("--preset", args->preset,
+                  "The drawing IFS F: a shipped name (see `ifsfx presets`), a .toml/.ifs path, or "
+                  "FILE.ifs:NAME")
+      ->capture_default_str();
+  cmd->add_option("--colouring", args->colouring,
+                  "The colouring IFS G on the frame (same map count as F; default: a tiling of the "
+                  "frame)");
+  cmd->add_flag("--exact", args->exact,
+                "Exact per-pixel tops (deterministic descent) instead of the chaos game");
+  cmd->add_option("--view", args->view,
+                  "Plane rectangle x0,y0,x1,y1 shown on the frame (default: the attractor, "
+                  "auto-framed); 0,0,1,1 puts the unit square on the whole frame");
+  cmd->add_option("--margin", args->margin, "Auto-framing margin, fraction of the larger side")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 10.0));
+  cmd->add_option("--quality", args->quality, "Chaos-game points per output pixel")
+      ->capture_default_str();
+  cmd->add_option("--mix", args->mix, "Weight of the original frame blended over the fractal, 0..1")
+      ->capture_default_str();
+  cmd->add_option("--background", args->background,
+                  "Where the attractor does not cover: black, original, #rrggbb or R,G,B")
+      ->capture_default_str();
+  const std::map<std::string, Interpolation> interpolations{{"bilinear", Interpolation::bilinear},
+                                                            {"nearest", Interpolation::nearest}};
+  cmd->add_option("--interpolation", args->interpolation,
+                  "Lookup in the frame: bilinear or nearest")
+      ->transform(CLI::CheckedTransformer(interpolations, CLI::ignore_case))
+      ->default_str("bilinear");
+  cmd->add_option("--size", args->size, "Output size WxH (default: the input's)");
+  cmd->add_option("--codec", args->codec,
+                  "Video encoder (libx264, h264, mpeg4, ffv1, ...; default by container: "
+                  ".mp4/.mkv H.264 CRF 23, .avi MPEG-4 part 2)");
+  cmd->add_option("--frames", args->frames,
+                  "Source frames START:END to filter, both included, from 0 (START: or :END too)");
+  cmd->add_option("--fps", args->fps, "Frame rate of an image sequence input")
+      ->capture_default_str();
+  const std::map<std::string, Animate> animations{{"none", Animate::none},
+                                                  {"drift", Animate::drift}};
+  cmd->add_option("--animate", args->animate,
+                  "none: one fixed map; drift: map coefficients wander by fBm noise")
+      ->transform(CLI::CheckedTransformer(animations, CLI::ignore_case))
+      ->default_str("none");
+  cmd->add_option("--drift-amount", args->drift_amount,
+                  "Largest excursion of a map coefficient (translations: fraction of the "
+                  "attractor's size)")
+      ->capture_default_str();
+  cmd->add_option("--drift-speed", args->drift_speed, "Cycles per second of the slowest drift")
+      ->capture_default_str();
+  cmd->add_option("--keyframe-interval", args->keyframe_interval,
+                  "Animation: frames between rebuilt maps, cross-faded in between")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--seed", args->seed, "Random seed: the same seed gives the same frames")
+      ->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")
+      ->capture_default_str();
+  cmd->add_flag("-q,--quiet", args->quiet, "No progress bar or summary");
+  cmd->callback([args] { run_filter(*args); });
+}
+
+}  // namespace ifsfx::app
