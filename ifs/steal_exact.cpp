@@ -74,7 +74,10 @@ Descent exact_descent(const Ifs& F, const Ifs* G, const Viewport& viewport,
   const Viewport mvp = mask_viewport(attractor_bounds(F, options.seed), viewport);
   const cv::Mat attractor =
       chaos_tops(F, mvp,
-                 {.quality = options.quality, .seed = options.seed, .threads = options.threads},
+                 {.quality = options.quality,
+                  .seed = options.seed,
+                  .threads = options.threads,
+                  .key_bits = 64},  // full keys: the Hutchinson passes need precise points
                  mask_stats)
           .coverage();
   const cv::Mat& lookup = attractor;

@@ -147,9 +147,16 @@ StealMap compute_steal_map(const Ifs& F, const Ifs& G, cv::Size size,
     map.coverage = descent.tops.coverage();
     s.levels = levels;
   } else {
-    const auto tops = detail::chaos_tops(
-        F, viewport, {.quality = options.quality, .seed = options.seed, .threads = options.threads},
-        &chaos);
+    // 32-bit pixel records (half the memory traffic of the kernel) when their 32/b symbols pin
+    // T down to 1/8192 of the source through G; else the full 64 bits.
+    const int bits = detail::symbol_bits(G.size());
+    const bool short_keys = std::pow(detail::word_contraction(G), 32 / bits) * 8192 <= 1;
+    const auto tops = detail::chaos_tops(F, viewport,
+                                         {.quality = options.quality,
+                                          .seed = options.seed,
+                                          .threads = options.threads,
+                                          .key_bits = short_keys ? 32 : 64},
+                                         &chaos);
     map.source_uv = detail::uv_from_keys(tops, F, G, options.threads);
     map.coverage = tops.coverage();
     s.levels = tops.symbols();

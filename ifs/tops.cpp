@@ -26,9 +26,11 @@ TopSymbols top_symbols(const Ifs& F, cv::Size size, const TopsOptions& options) 
           ? detail::exact_descent(F, nullptr, viewport,
                                   {.levels = 2, .seed = options.seed, .threads = options.threads})
                 .tops
-          : detail::chaos_tops(
-                F, viewport,
-                {.quality = options.quality, .seed = options.seed, .threads = options.threads});
+          : detail::chaos_tops(F, viewport,
+                               {.quality = options.quality,
+                                .seed = options.seed,
+                                .threads = options.threads,
+                                .key_bits = 32});  // 32/b ≥ 2 symbols for any N ≤ 65536
   TopSymbols out;
   out.view = viewport.view;
   out.first = cv::Mat(size, CV_16UC1, cv::Scalar::all(0));

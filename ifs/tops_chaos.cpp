@@ -33,65 +33,70 @@ constexpr int kHutchinsonPasses = 4;
 // buffer overlap (one walker alone waits on every store).
 constexpr int kLanes = 8;
 
+// One map of F seen in continuous pixel coordinates, P ∘ f ∘ P⁻¹: the walkers live on the pixel
+// grid, so that plotting a point costs no transform.
+struct PixelMap {
+  double a, b, c, d, e, f;
+};
+
 struct Kernel {
-  std::vector<double> a, b, c, d, e, f;
+  std::vector<PixelMap> maps;
   MapPicker pick;
   int bits = 1;
   int burn_in = 64;
-  double sx = 1, ox = 0, sy = 1, oy = 0;  // plane → continuous pixel coordinates
   int width = 0, height = 0;
+  AffineMap to_pixel;
 
   Kernel(const Ifs& F, const Viewport& vp)
       : pick(effective_probabilities(F)), bits(symbol_bits(F.size())) {
+    to_pixel = vp.plane_to_pixel();
+    const AffineMap from_pixel = *to_pixel.inverse(0);
     for (const auto& m : F.maps) {
-      a.push_back(m.a), b.push_back(m.b), c.push_back(m.c);
-      d.push_back(m.d), e.push_back(m.e), f.push_back(m.f);
+      const AffineMap h = to_pixel.compose(m).compose(from_pixel);
+      maps.push_back({h.a, h.b, h.c, h.d, h.e, h.f});
     }
     // Keys are compared only once full: 64/b symbols in, on top of the usual burn-in.
     burn_in = std::max(default_burn_in(F), 64 / bits + 1);
-    const AffineMap p = vp.plane_to_pixel();
-    sx = p.a, ox = p.e, sy = p.d, oy = p.f;
     width = vp.size.width;
     height = vp.size.height;
   }
 };
 
-// Runs `points` chaos-game points of one chunk into `buffer`. With keys, each pixel keeps the
-// largest key (Top keeps the larger address, eq. 7); without, it is marked hit.
-template <bool kKeys, class Cell>
+// Runs `points` chaos-game points of one chunk into `buffer`: each pixel keeps the largest key
+// (Top keeps the larger address, eq. 7), cut to the top bits of a Cell (32 bits halve the
+// buffer's memory traffic; they hold 32/b symbols).
+template <class Cell>
 void run_chunk(const Kernel& k, std::uint64_t seed, std::uint64_t points, Cell* buffer) {
+  constexpr int kCellShift = 64 - 8 * static_cast<int>(sizeof(Cell));
   Rng rng(seed);
   std::array<double, kLanes> x{}, y{};
   std::array<std::uint64_t, kLanes> key{};
-  for (int lane = 0; lane < kLanes; ++lane) x[lane] = rng.uniform(), y[lane] = rng.uniform();
-  const double *a = k.a.data(), *b = k.b.data(), *c = k.c.data();
-  const double *d = k.d.data(), *e = k.e.data(), *f = k.f.data();
+  for (int lane = 0; lane < kLanes; ++lane)
+    x[lane] = rng.uniform() * k.width, y[lane] = rng.uniform() * k.height;
+  const PixelMap* maps = k.maps.data();
   const int shift = 64 - k.bits, bits = k.bits;
   for (int step = 0; step < k.burn_in; ++step)
     for (int lane = 0; lane < kLanes; ++lane) {
       const std::uint32_t n = k.pick(rng.next());
-      const double nx = a[n] * x[lane] + b[n] * y[lane] + e[n];
-      y[lane] = c[n] * x[lane] + d[n] * y[lane] + f[n];
+      const PixelMap& m = maps[n];
+      const double nx = m.a * x[lane] + m.b * y[lane] + m.e;
+      y[lane] = m.c * x[lane] + m.d * y[lane] + m.f;
       x[lane] = nx;
       key[lane] = (key[lane] >> bits) | (std::uint64_t{n} << shift);
     }
-  const double sx = k.sx, ox = k.ox, sy = k.sy, oy = k.oy;
   const double w = k.width, h = k.height;
   const std::size_t stride = static_cast<std::size_t>(k.width);
   auto step_lane = [&](int lane) {
     const std::uint32_t n = k.pick(rng.next());
-    const double nx = a[n] * x[lane] + b[n] * y[lane] + e[n];
-    const double ny = c[n] * x[lane] + d[n] * y[lane] + f[n];
+    const PixelMap& m = maps[n];
+    const double nx = m.a * x[lane] + m.b * y[lane] + m.e;
+    const double ny = m.c * x[lane] + m.d * y[lane] + m.f;
     x[lane] = nx;
     y[lane] = ny;
-    const double px = nx * sx + ox, py = ny * sy + oy;
-    if constexpr (kKeys) key[lane] = (key[lane] >> bits) | (std::uint64_t{n} << shift);
-    if (px >= 0 && px < w && py >= 0 && py < h) {
-      Cell& cell = buffer[static_cast<std::size_t>(py) * stride + static_cast<std::size_t>(px)];
-      if constexpr (kKeys)
-        cell = std::max<Cell>(cell, key[lane] | 1);
-      else
-        cell = 1;
+    key[lane] = (key[lane] >> bits) | (std::uint64_t{n} << shift);
+    if (nx >= 0 && nx < w && ny >= 0 && ny < h) {
+      Cell& cell = buffer[static_cast<std::size_t>(ny) * stride + static_cast<std::size_t>(nx)];
+      cell = std::max<Cell>(cell, static_cast<Cell>(key[lane] >> kCellShift) | 1);
     }
   };
   const std::uint64_t steps = points / kLanes;
@@ -126,74 +131,97 @@ std::size_t fill_holes(const std::vector<Cell>& in, std::vector<Cell>& out, int 
   return filled;
 }
 
-// The point a key stands for: x = f_σ1 ∘ … ∘ f_σK(c), c the fixed point of f_σK, within s^K of
-// the point that carried the key; in continuous pixel coordinates.
-Point point_of_key(const Ifs& F, const Kernel& k, std::uint64_t key) {
-  const int symbols = 64 / k.bits;
-  const auto n = static_cast<std::uint32_t>(F.size());
-  auto symbol = [&](int i) {
-    return std::min(
-        n - 1, static_cast<std::uint32_t>((key >> (64 - k.bits * (i + 1))) & ((1u << k.bits) - 1)));
-  };
-  Point x = fixed_point(F.maps[symbol(symbols - 1)]);
-  for (int i = symbols - 1; i >= 0; --i) x = F.maps[symbol(i)](x);
-  return {x.x * k.sx + k.ox, x.y * k.sy + k.oy};
-}
+// A point on the pixel grid with a bound on its distance from the attractor point it stands for.
+struct Located {
+  std::size_t pixel;
+  Point p;
+  double error;  // pixels
+};
 
 // Hutchinson passes: one more chaos-game step from the point of every pixel, for all maps at
-// once (W(A) = A, so f_n of a point of A is a point of A with address n·σ). A pixel that no
-// point reached takes the largest key among those arriving; the pixels so reached are the
-// sources of the next pass. This reaches the parts of A the invariant measure barely visits
-// (corners of overlapping IFSs, thin tips of the fern) without leaving A. Returns the pixels
-// reached.
+// once (W(A) = A, so f_n of a point of A is a point of A with address n·σ). A pixel's point is
+// recovered from its key, x = f_σ1 ∘ … ∘ f_σK(c) with c in A, so it is known to within
+// diam(A)·‖f_σ1‖⋯‖f_σK‖; only points known to kMaxError pixels take part, so that the passes
+// never leave A by rounding. A pixel that no point reached takes the largest key among those
+// arriving; the pixels so reached are the sources of the next pass. This reaches the parts of A
+// the invariant measure barely visits (corners of overlapping IFSs) without leaving A. Returns
+// the pixels reached.
 std::size_t hutchinson_passes(const Ifs& F, const Kernel& k, std::vector<std::uint64_t>& keys,
-                              int passes) {
+                              int key_bits, int passes) {
+  constexpr double kMaxError = 0.05;
+  const int symbols = key_bits / k.bits;
+  const auto n_maps = static_cast<std::uint32_t>(F.size());
+  // Keys keep their top key_bits bits (and the presence bit 0).
+  const std::uint64_t kept = key_bits == 64 ? ~std::uint64_t{0} : ~(~std::uint64_t{0} >> key_bits);
   const auto width = static_cast<std::size_t>(k.width);
-  std::vector<std::pair<std::size_t, Point>> sources;
-  for (std::size_t i = 0; i < keys.size(); ++i)
-    if (keys[i] != 0) sources.emplace_back(i, point_of_key(F, k, keys[i]));
-  std::size_t reached = 0;
   const int shift = 64 - k.bits;
-  // The plane maps seen in pixel coordinates: P ∘ f_n ∘ P⁻¹.
-  const AffineMap to_pixel{k.sx, 0, 0, k.sy, k.ox, k.oy};
-  const AffineMap from_pixel = *to_pixel.inverse(0);
   std::vector<AffineMap> maps;
-  for (const auto& f : F.maps) maps.push_back(to_pixel.compose(f).compose(from_pixel));
+  std::vector<double> factor;
+  for (std::size_t n = 0; n < F.size(); ++n) {
+    const auto& m = k.maps[n];
+    maps.push_back({m.a, m.b, m.c, m.d, m.e, m.f});
+    factor.push_back(std::min(1.0, maps.back().contraction()));
+  }
+  const Box box = attractor_bounds(F);
+  const Point c0 = k.to_pixel({box.x0, box.y0}), c1 = k.to_pixel({box.x1, box.y1});
+  const double diameter = std::hypot(c1.x - c0.x, c1.y - c0.y);
+
+  std::vector<Located> sources;
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (keys[i] == 0) continue;
+    auto symbol = [&](int j) {
+      return std::min(n_maps - 1, static_cast<std::uint32_t>((keys[i] >> (64 - k.bits * (j + 1))) &
+                                                             ((1u << k.bits) - 1)));
+    };
+    double error = diameter;
+    for (int j = 0; j < symbols && error > kMaxError; ++j) error *= factor[symbol(j)];
+    if (error > kMaxError) continue;
+    Point x = k.to_pixel(fixed_point(F.maps[symbol(symbols - 1)]));
+    for (int j = symbols - 1; j >= 0; --j) x = maps[symbol(j)](x);
+    sources.push_back({i, x, error});
+  }
+  std::size_t reached = 0;
   for (int pass = 0; pass < passes && !sources.empty(); ++pass) {
-    std::vector<std::pair<std::size_t, Point>> arrivals;  // (pixel, point), with its key below
+    std::vector<Located> arrivals;
     std::vector<std::uint64_t> arrival_keys;
-    for (const auto& [index, x] : sources)
-      for (std::size_t n = 0; n < maps.size(); ++n) {
-        const Point y = maps[n](x);
+    for (const Located& s : sources)
+      for (std::uint32_t n = 0; n < n_maps; ++n) {
+        const Point y = maps[n](s.p);
         if (!(y.x >= 0 && y.x < k.width && y.y >= 0 && y.y < k.height)) continue;
         const std::size_t q = static_cast<std::size_t>(y.y) * width + static_cast<std::size_t>(y.x);
         if (keys[q] != 0) continue;
-        arrivals.emplace_back(q, y);
-        arrival_keys.push_back((keys[index] >> k.bits) | (std::uint64_t{n} << shift) | 1);
+        arrivals.push_back({q, y, s.error * factor[n]});
+        arrival_keys.push_back((((keys[s.pixel] >> k.bits) | (std::uint64_t{n} << shift)) & kept) |
+                               1);
       }
-    // Largest key per pixel (ties: equal keys, any of them).
+    // The largest key per pixel; equal keys ordered by their points, so that the result does
+    // not depend on anything but the input.
     std::vector<std::size_t> order(arrivals.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return arrivals[a].first != arrivals[b].first ? arrivals[a].first < arrivals[b].first
-                                                    : arrival_keys[a] > arrival_keys[b];
+      const Located &la = arrivals[a], &lb = arrivals[b];
+      if (la.pixel != lb.pixel) return la.pixel < lb.pixel;
+      if (arrival_keys[a] != arrival_keys[b]) return arrival_keys[a] > arrival_keys[b];
+      return la.p.x != lb.p.x ? la.p.x < lb.p.x : la.p.y < lb.p.y;
     });
     sources.clear();
     for (std::size_t i = 0; i < order.size(); ++i) {
-      const std::size_t q = arrivals[order[i]].first;
-      if (i > 0 && arrivals[order[i - 1]].first == q) continue;
-      keys[q] = arrival_keys[order[i]];
-      sources.push_back(arrivals[order[i]]);
+      const Located& l = arrivals[order[i]];
+      if (i > 0 && arrivals[order[i - 1]].pixel == l.pixel) continue;
+      keys[l.pixel] = arrival_keys[order[i]];
+      sources.push_back(l);
     }
     reached += sources.size();
   }
   return reached;
 }
 
-// The coverage policy of ChaosTopsOptions over one record type; returns the merged buffer.
-template <bool kKeys, class Cell>
-std::vector<Cell> run_policy(const Ifs& F, const Viewport& viewport,
-                             const ChaosTopsOptions& options, ChaosTopsStats* stats) {
+// The coverage policy of ChaosTopsOptions with Cell-sized records; returns 64-bit keys (the
+// Cell's bits on top).
+template <class Cell>
+std::vector<std::uint64_t> run_policy(const Ifs& F, const Viewport& viewport,
+                                      const ChaosTopsOptions& options, ChaosTopsStats* stats) {
+  constexpr int kCellBits = 8 * static_cast<int>(sizeof(Cell));
   const Kernel kernel(F, viewport);
   const std::size_t pixels = static_cast<std::size_t>(viewport.size.area());
   const int threads = resolve_threads(options.threads);
@@ -214,8 +242,8 @@ std::vector<Cell> run_policy(const Ifs& F, const Viewport& viewport,
       auto& buffer = buffers[static_cast<std::size_t>(worker)];
       if (buffer.empty()) buffer.assign(pixels, 0);
       const std::uint64_t begin = chunk * kChunkPoints;
-      run_chunk<kKeys>(kernel, stream_seed(options.seed, first + chunk),
-                       std::min(kChunkPoints, points - begin), buffer.data());
+      run_chunk<Cell>(kernel, stream_seed(options.seed, first + chunk),
+                      std::min(kChunkPoints, points - begin), buffer.data());
     });
     s.points += points;
     s.rounds = round + 1;
@@ -240,11 +268,13 @@ std::vector<Cell> run_policy(const Ifs& F, const Viewport& viewport,
     if (round == 0 && gained == 0) break;  // nothing in view at all
   }
   s.hit = hit;
-  if constexpr (kKeys)
-    if (options.fill) s.propagated = hutchinson_passes(F, kernel, merged, kHutchinsonPasses);
-  std::vector<Cell> result = merged;
-  if (options.fill)
-    s.filled = fill_holes(merged, result, viewport.size.width, viewport.size.height);
+  std::vector<std::uint64_t> keys(pixels);
+  for (std::size_t i = 0; i < pixels; ++i)
+    keys[i] = merged[i] == 0 ? 0 : (std::uint64_t{merged[i]} << (64 - kCellBits)) | 1;
+  buffers.clear();
+  if (options.fill) s.propagated = hutchinson_passes(F, kernel, keys, kCellBits, kHutchinsonPasses);
+  std::vector<std::uint64_t> result = keys;
+  if (options.fill) s.filled = fill_holes(keys, result, viewport.size.width, viewport.size.height);
   if (stats) *stats = s;
   return result;
 }
@@ -256,7 +286,9 @@ AddressRaster chaos_tops(const Ifs& F, const Viewport& viewport, const ChaosTops
   AddressRaster out;
   out.viewport = viewport;
   out.bits = symbol_bits(F.size());
-  out.keys = run_policy<true, std::uint64_t>(F, viewport, options, stats);
+  out.key_bits = options.key_bits == 32 ? 32 : 64;
+  out.keys = out.key_bits == 32 ? run_policy<std::uint32_t>(F, viewport, options, stats)
+                                : run_policy<std::uint64_t>(F, viewport, options, stats);
   return out;
 }
 

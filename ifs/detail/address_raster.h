@@ -24,9 +24,10 @@ int symbol_bits(std::size_t n);
 struct AddressRaster {
   Viewport viewport;
   int bits = 1;                     // b
+  int key_bits = 64;                // bits of each key that hold symbols (from the top)
   std::vector<std::uint64_t> keys;  // row-major, 0 = not on the attractor
 
-  int symbols() const { return 64 / bits; }
+  int symbols() const { return key_bits / bits; }
   std::uint64_t at(int col, int row) const {
     return keys[static_cast<std::size_t>(row) * viewport.size.width + col];
   }
@@ -49,7 +50,10 @@ struct ChaosTopsOptions {
   std::uint64_t seed = 1;
   int threads = 0;
   bool grow = true;  // the growth rounds
-  bool fill = true;  // the hole filling
+  bool fill = true;  // the Hutchinson passes and the hole filling
+  // Bits kept per pixel record: 32 halves the buffer (faster), and holds 32/b symbols, enough
+  // for tops and masks and for colouring IFSs that contract fast enough (see steal_map.cpp).
+  int key_bits = 64;
 };
 
 inline constexpr int kMaxGrowthRounds = 8;
