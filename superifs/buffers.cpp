@@ -81,6 +81,19 @@ void box_rows(const cv::Mat& density, int r, int row0, int row1, cv::Mat& out) {
   }
 }
 
+// The pixel centres px of a row for which slope·px + offset may lie in [0, limit): narrows
+// [lo, hi] (continuous column coordinates), with a pixel to spare on each side.
+void narrow(double slope, double offset, double limit, double& lo, double& hi) {
+  if (slope == 0) {
+    if (!(offset >= -1 && offset <= limit + 1)) hi = lo - 1;
+    return;
+  }
+  double p0 = (-1 - offset) / slope, p1 = (limit + 1 - offset) / slope;
+  if (p0 > p1) std::swap(p0, p1);
+  lo = std::max(lo, p0);
+  hi = std::min(hi, p1);
+}
+
 }  // namespace
 
 BitMask::BitMask(const cv::Mat& mask) {
@@ -96,14 +109,23 @@ void BitMask::resize(cv::Size size) {
 }
 
 void BitMask::pack_rows(const cv::Mat& mask, int row0, int row1) {
+  const auto w = static_cast<std::size_t>(width_);
   for (int row = row0; row < row1; ++row) {
     const std::uint8_t* src = mask.ptr<std::uint8_t>(mask.rows == 1 ? 0 : row);
     std::uint8_t* dst = bits_.data() + static_cast<std::size_t>(row) * stride_;
-    for (std::size_t byte = 0; byte < stride_; ++byte) {
+    std::size_t byte = 0;
+    for (; (byte + 1) * 8 <= w; ++byte) {
+      // Eight mask bytes to eight bits at once: each byte becomes 0 or 1, and the multiply moves
+      // byte k's bit to bit 56 + k without carries (all partial products are distinct powers).
+      std::uint64_t eight = 0;
+      for (std::size_t k = 0; k < 8; ++k)
+        eight |= static_cast<std::uint64_t>(src[byte * 8 + k] != 0) << (8 * k);
+      dst[byte] = static_cast<std::uint8_t>((eight * 0x0102040810204080ULL) >> 56);
+    }
+    for (; byte < stride_; ++byte) {
       std::uint8_t b = 0;
-      const std::size_t c0 = byte * 8;
-      for (std::size_t k = 0; k < 8 && c0 + k < static_cast<std::size_t>(width_); ++k)
-        b |= static_cast<std::uint8_t>((src[c0 + k] != 0) << k);
+      for (std::size_t k = 0; byte * 8 + k < w; ++k)
+        b |= static_cast<std::uint8_t>((src[byte * 8 + k] != 0) << k);
       dst[byte] = b;
     }
   }
@@ -138,6 +160,17 @@ Buffers::Buffers(const SuperIfs& super, cv::Size size, const BufferOptions& opti
   // The lookup reaches the pixel under f⁻¹(x) and `dilation_` more on each side: enough to meet
   // every pixel the preimage of x's pixel touches, to within half a pixel (DESIGN.md §3).
   dilation_ = std::clamp(static_cast<int>(std::ceil(widest - 0.5)), 1, 32);
+  for (const AffineMap& a : pixel_inverse_) {
+    const AffineMap f = *a.inverse(0);
+    const double w = size.width, h = size.height;
+    Box b{1e300, 1e300, -1e300, -1e300};
+    for (const Point corner : {Point{0, 0}, Point{w, 0}, Point{0, h}, Point{w, h}}) {
+      const Point p = f(corner);
+      b = {std::min(b.x0, p.x), std::min(b.y0, p.y), std::max(b.x1, p.x), std::max(b.y1, p.y)};
+    }
+    const double reach = dilation_ + 2;
+    piece_bounds_.push_back({b.x0 - reach, b.y0 - reach, b.x1 + reach, b.y1 + reach});
+  }
   std::vector<cv::Mat> full(static_cast<std::size_t>(options.count),
                             cv::Mat(size, CV_8UC1, cv::Scalar(255)));
   set_masks(full);
@@ -235,20 +268,25 @@ void Buffers::step() {
         const std::uint32_t* source = &choices.source[v * m_count];
         for (int row = row0; row < row1; ++row) {
           std::uint8_t* out = next[v].ptr<std::uint8_t>(row);
+          std::fill(out, out + size.width, std::uint8_t{0});
           const double py = row + 0.5;
-          for (int col = 0; col < size.width; ++col) {
-            const double px = col + 0.5;
-            std::uint8_t hit = 0;
-            // Eq. 14 painted in increasing m: the highest m whose preimage meets its source
-            // buffer is on top, so search m = M..1 and stop at the first hit.
-            for (std::size_t m = m_count; m-- > 0;) {
-              const AffineMap& a = pixel_inverse_[n * m_count + m];
-              if (dilated_[source[m]].test(a.a * px + a.b * py + a.e, a.c * px + a.d * py + a.f)) {
-                hit = 255;
-                break;
-              }
+          // K'_v = ∪_m f_m(K_{v_m}) (eq. 14). For the set the painting order does not matter
+          // (the descent applies the tops rule); each map is tried only on the columns whose
+          // preimage can fall inside the raster.
+          for (std::size_t m = 0; m < m_count; ++m) {
+            const AffineMap& a = pixel_inverse_[n * m_count + m];
+            const BitMask& from = dilated_[source[m]];
+            double lo = 0.5, hi = size.width - 0.5;
+            narrow(a.a, a.b * py + a.e, size.width, lo, hi);
+            narrow(a.c, a.d * py + a.f, size.height, lo, hi);
+            if (hi < lo) continue;
+            const int c0 = std::max(0, static_cast<int>(std::floor(lo - 0.5)));
+            const int c1 = std::min(size.width - 1, static_cast<int>(std::ceil(hi - 0.5)));
+            for (int col = c0; col <= c1; ++col) {
+              const double px = col + 0.5;
+              if (!out[col] && from.test(a.a * px + a.b * py + a.e, a.c * px + a.d * py + a.f))
+                out[col] = 255;
             }
-            out[col] = hit;
           }
           if (!options_.density) continue;
           // μ'_v = Σ_m p^{n}_m f_m#(μ_{v_m}): the mass of pixel x is the mass of its preimage,

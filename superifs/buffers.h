@@ -128,6 +128,11 @@ class Buffers {
   const AffineMap& pixel_inverse(std::size_t n, std::size_t m) const {
     return pixel_inverse_[n * super_.maps() + m];
   }
+  // A box (continuous pixel coordinates) holding f^n_m of the whole raster with the lookup's reach
+  // to spare: no point outside it has its preimage under f^n_m in a buffer.
+  const Box& piece_bounds(std::size_t n, std::size_t m) const {
+    return piece_bounds_[n * super_.maps() + m];
+  }
   // Half-width in pixels of the dilation that makes the lookup conservative.
   int dilation() const { return dilation_; }
 
@@ -139,6 +144,7 @@ class Buffers {
   BufferOptions options_;
   Viewport viewport_;
   std::vector<AffineMap> pixel_inverse_;                // [n · M + m]
+  std::vector<Box> piece_bounds_;                       // [n · M + m]
   std::vector<std::vector<double>> map_probabilities_;  // p^n_m
   std::vector<double> ifs_probabilities_;               // P_n
   int dilation_ = 1;

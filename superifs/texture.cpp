@@ -56,6 +56,10 @@ std::size_t descend(const Buffers& buffers, std::size_t v, int col, int row,
     Point y;
     for (int pass = 0; pass < 2 && found == m_count; ++pass) {
       for (std::size_t m = m_count; m-- > 0;) {
+        const Box& piece = buffers.piece_bounds(n, m);
+        if (pass == 0 &&
+            !(z.x >= piece.x0 && z.x <= piece.x1 && z.y >= piece.y0 && z.y <= piece.y1))
+          continue;
         y = buffers.pixel_inverse(n, m)(z);
         const BitMask& previous = h.previous[source[m]];
         if (pass == 0 ? previous.test(y.x, y.y) : near(previous, y.x, y.y, reach)) {
@@ -289,6 +293,24 @@ StealMap TextureSequence::steal_map() const {
 StealMap TextureSequence::next_map() {
   step();
   return steal_map();
+}
+
+StealMap TextureSequence::map_at(std::int64_t k) {
+  constexpr std::size_t keep = 4;
+  std::lock_guard lock(mutex_);
+  if (const auto it = kept_.find(k); it != kept_.end()) return it->second;
+  const std::int64_t now = buffers_.steps_done() - burn_in_;
+  if (k < now)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("texture sequence: step {} has been passed (now at {}, last {} kept)",
+                            k, now, keep));
+  // Every map on the way is kept too: a schedule that asks for k + 2 before k + 1 finds it.
+  for (std::int64_t at = now;; ++at) {
+    if (!kept_.contains(at)) kept_.emplace(at, steal_map());
+    while (kept_.size() > keep) kept_.erase(kept_.begin());
+    if (at == k) return kept_.at(k);
+    buffers_.step();
+  }
 }
 
 cv::Mat crossfade(const cv::Mat& a, const cv::Mat& b, double t) {

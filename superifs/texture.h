@@ -12,6 +12,8 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
+#include <mutex>
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -68,8 +70,9 @@ struct TextureOptions {
 cv::Mat render_texture(const SuperIfs& super, cv::Size size, const TextureOptions& options = {});
 
 // An endless, non-repeating sequence of textures of one family: the burnt-in buffers, then one
-// V-variable step per texture. The video filter calls next_map() every K frames and colours its
-// frames with apply(map, frame).
+// V-variable step per texture. The video filter calls next_map() (or map_at(k) for keyframe k)
+// every K frames and colours its frames with apply(map, frame). For steal maps, construct it
+// with mode steal or tops: the other modes keep no history to descend through.
 //   TextureSequence seq(super, {1920, 1080}, {.count = 3});
 //   for (;;) { StealMap T = seq.next_map(); ... apply(T, frame) ... }
 class TextureSequence {
@@ -86,6 +89,13 @@ class TextureSequence {
   // step(), then the steal map of the new texture.
   StealMap next_map();
 
+  // The steal map of texture k of the sequence (k = 0: the burnt-in one), a pure function of k
+  // for a given superIFS, size and options. Safe to call from several threads (calls are
+  // serialised): the sequence steps forward to k keeping the maps of the last 4 steps, so keyframes
+  // asked for in about increasing order (a lookahead) are cheap. Throws Error{invalid_argument} for
+  // a k that has been stepped past and is no longer kept.
+  StealMap map_at(std::int64_t k);
+
   int steps_done() const { return buffers_.steps_done(); }
   int burn_in() const { return burn_in_; }
   const Buffers& buffers() const { return buffers_; }
@@ -94,6 +104,8 @@ class TextureSequence {
   TextureOptions options_;
   Buffers buffers_;
   int burn_in_ = 0;
+  std::mutex mutex_;                       // serialises map_at
+  std::map<std::int64_t, StealMap> kept_;  // the last maps map_at made, by k
 };
 
 // Linear crossfade (1 − t)·a + t·b of two images of one size and type, t in [0, 1]: the frames

@@ -170,6 +170,23 @@ TEST(texture, every_step_of_a_sequence_is_a_new_texture) {
     EXPECT_GT(cv::countNonZero(masks[i] != masks[i - 1]), 0) << i;
 }
 
+TEST(texture, map_at_is_a_function_of_the_step) {
+  const SuperIfs s = paper_fig4();
+  const TextureOptions o{.count = 3, .mode = TextureMode::steal, .seed = 6};
+  TextureSequence a(s, {64, 64}, o), b(s, {64, 64}, o);
+  const StealMap a1 = a.map_at(1), a3 = a.map_at(3);
+  const StealMap a2 = a.map_at(2);  // stepped past, but kept
+  b.step();
+  const StealMap b1 = b.steal_map();
+  b.step();
+  const StealMap b2 = b.steal_map();
+  EXPECT_EQ(cv::norm(a1.source_uv, b1.source_uv, cv::NORM_INF), 0);
+  EXPECT_EQ(cv::norm(a2.source_uv, b2.source_uv, cv::NORM_INF), 0);
+  EXPECT_GT(cv::countNonZero(a2.coverage != a3.coverage), 0);
+  for (int k = 4; k < 12; ++k) a.map_at(k);
+  EXPECT_THROW(a.map_at(1), Error);
+}
+
 TEST(texture, crossfade_blends_linearly) {
   const cv::Mat a(4, 4, CV_8UC3, cv::Scalar(0, 100, 200)), b(4, 4, CV_8UC3, cv::Scalar(200, 0, 0));
   EXPECT_EQ(cv::norm(crossfade(a, b, 0), a, cv::NORM_INF), 0);

@@ -1,0 +1,89 @@
+// SuperIFS textures (issue targets on 2 cores): a converged 2048×2048 steal-mode texture of the
+// paper's Fig. 4 superIFS with V = 3 (≤ 1 s), and each further step of a 1920×1080 texture
+// sequence (≥ 10 steps/s). Every run also checks its result.
+#include <benchmark/benchmark.h>
+
+#include <opencv2/core.hpp>
+
+#include "superifs/superifs_file.h"
+#include "superifs/texture.h"
+
+namespace {
+
+using namespace ifsfx;
+
+// A smooth colourful source, so that the stolen texture is a real image.
+cv::Mat gradient_source(cv::Size size) {
+  cv::Mat m(size, CV_8UC3);
+  for (int r = 0; r < size.height; ++r)
+    for (int c = 0; c < size.width; ++c)
+      m.at<cv::Vec3b>(r, c) = {static_cast<uchar>(255 * c / size.width),
+                               static_cast<uchar>(255 * r / size.height),
+                               static_cast<uchar>((c + r) % 256)};
+  return m;
+}
+
+void check(benchmark::State& state, bool ok, const char* what) {
+  if (!ok) state.SkipWithError(what);
+}
+
+void texture_steal_2048_fig4_v3(benchmark::State& state) {
+  const SuperIfs super = load_superifs("paper-fig4").super;
+  const cv::Size size{2048, 2048};
+  TextureOptions options{
+      .count = 3, .mode = TextureMode::steal, .source = gradient_source({1024, 1024}), .seed = 1};
+  for (auto _ : state) {
+    const cv::Mat t = render_texture(super, size, options);
+    benchmark::DoNotOptimize(t.data);
+    check(state, t.size() == size && cv::countNonZero(t.reshape(1)) > 0, "empty texture");
+  }
+  state.counters["steps"] = default_steps(super, size);
+}
+BENCHMARK(texture_steal_2048_fig4_v3)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+void texture_attractor_2048_fig4_v3(benchmark::State& state) {
+  const SuperIfs super = load_superifs("paper-fig4").super;
+  for (auto _ : state) {
+    const cv::Mat t = render_texture(super, {2048, 2048}, {.count = 3});
+    benchmark::DoNotOptimize(t.data);
+  }
+}
+BENCHMARK(texture_attractor_2048_fig4_v3)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// One further step of a sequence and its new steal map (what the video filter asks for each
+// step), and the same with the source coloured in (what `ifsfx texture --frames` writes).
+void sequence_step_1920x1080(benchmark::State& state, const char* preset, bool colour) {
+  const SuperIfs super = load_superifs(preset).super;
+  const cv::Mat source = gradient_source({1920, 1080});
+  TextureSequence seq(super, {1920, 1080},
+                      {.count = 3, .mode = TextureMode::steal, .source = source});
+  int previous = seq.steps_done();
+  for (auto _ : state) {
+    if (colour) {
+      seq.step();
+      const cv::Mat frame = seq.frame();
+      benchmark::DoNotOptimize(frame.data);
+    } else {
+      const StealMap map = seq.next_map();
+      benchmark::DoNotOptimize(map.source_uv.data);
+    }
+  }
+  check(state, seq.steps_done() == previous + static_cast<int>(state.iterations()), "no steps");
+  state.SetItemsProcessed(state.iterations());  // items/s = steps/s
+}
+BENCHMARK_CAPTURE(sequence_step_1920x1080, fig4_map, "paper-fig4", false)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(sequence_step_1920x1080, fig4_frame, "paper-fig4", true)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(sequence_step_1920x1080, quadrant_shuffle_map, "quadrant-shuffle", false)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+BENCHMARK_CAPTURE(sequence_step_1920x1080, carpet_lace_frame, "carpet-lace", true)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace
+
+BENCHMARK_MAIN();
