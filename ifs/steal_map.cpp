@@ -141,8 +141,7 @@ StealMap compute_steal_map(const Ifs& F, const Ifs& G, cv::Size size,
     const int levels = detail::levels_for(detail::word_contraction(G));
     auto descent = detail::exact_descent(
         F, &G, viewport,
-        {.levels = levels, .quality = 16, .seed = options.seed, .threads = options.threads},
-        &chaos);
+        {.levels = levels, .quality = 4, .seed = options.seed, .threads = options.threads}, &chaos);
     map.source_uv = std::move(descent.uv);
     map.coverage = descent.tops.coverage();
     s.levels = levels;

@@ -73,8 +73,10 @@ AddressRaster chaos_tops(const Ifs& F, const Viewport& viewport, const ChaosTops
 
 // The exact top-address descent (DESIGN.md §3) from every pixel centre of `viewport`.
 struct DescentOptions {
-  int levels = 2;       // L: symbols followed per pixel
-  double quality = 16;  // points per mask pixel for the attractor mask
+  int levels = 2;  // L: symbols followed per pixel
+  // Points per mask pixel for the attractor mask before the growth rounds (which add what a low
+  // density misses: 4 gives the fern 99.9 % of the pixels 16 gives, at a third of the cost).
+  double quality = 4;
   std::uint64_t seed = 1;
   int threads = 0;
 };
