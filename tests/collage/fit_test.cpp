@@ -60,5 +60,53 @@ TEST(fit, filled_square_with_four_maps_is_tiled) {
   expect_bound_holds(result.report);
 }
 
+TEST(fit, same_seed_gives_the_same_maps_for_any_thread_count) {
+  cv::Mat blob(48, 48, CV_8UC1, cv::Scalar(0));
+  blob(cv::Rect(6, 10, 36, 20)).setTo(255);
+  FitOptions o = quick(2);
+  o.max_evaluations = 1500;
+  o.restarts = 1;
+  o.threads = 1;
+  const auto one = fit(blob, o);
+  o.threads = 2;
+  const auto two = fit(blob, o);
+  EXPECT_EQ(one.ifs.maps, two.ifs.maps);
+  EXPECT_EQ(one.evaluations, two.evaluations);
+  expect_bound_holds(one.report);
+}
+
+TEST(fit, max_seconds_stops_the_search_and_says_so) {
+  FitOptions o = quick(4);
+  o.max_evaluations = 100000000;
+  o.max_seconds = 0.3;
+  const auto result = fit(filled_square(), o);
+  EXPECT_TRUE(result.time_capped);
+  EXPECT_LT(result.evaluations, 100000000);
+  EXPECT_EQ(result.ifs.maps.size(), 4u);
+  expect_bound_holds(result.report);
+}
+
+TEST(fit, probabilities_follow_the_determinants) {
+  FitOptions o = quick(4);
+  o.max_evaluations = 1500;
+  const auto result = fit(filled_square(), o);
+  EXPECT_EQ(result.ifs.probabilities, default_probabilities(result.ifs.maps));
+  EXPECT_NO_THROW(validate(result.ifs, "fitted"));
+}
+
+TEST(fit, map_count_outside_one_to_thirty_two_is_rejected) {
+  for (int n : {0, -1, 33, 1000000}) {
+    try {
+      fit(filled_square(), quick(n));
+      FAIL() << "N = " << n << " accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
+      EXPECT_NE(std::string(e.what()).find("-n: the number of maps must be in 1..32"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ifsfx::collage
