@@ -23,8 +23,10 @@
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"
 #include "video/camera_pipeline.h"
+#include "video/drift.h"
 #include "video/file_sink.h"
 #include "video/fractal_filter.h"
+#include "video/map_schedule.h"
 #include "video/v4l2_capture.h"
 #include "video/v4l2_device.h"
 #include "video/v4l2_output.h"
@@ -35,6 +37,8 @@ namespace {
 using video::CameraStats;
 using video::Frame;
 using video::FrameSink;
+
+enum class Animate { none, drift };
 
 struct CamArgs {
   bool list = false;
@@ -56,6 +60,10 @@ struct CamArgs {
   bool exact = false;
   double quality = 64;
   std::string background = "black";
+  Animate animate = Animate::none;
+  double drift_amount = 0.05;
+  double drift_speed = 0.2;
+  int keyframe_interval = 12;
   double mix = 0;
   std::uint64_t seed = 1;
   int threads = 0;
@@ -197,34 +205,84 @@ class RecordingSink final : public FrameSink {
   std::unique_ptr<video::FileSink> file_;
 };
 
-// The fixed-map filter: F coloured through G on the camera's frame size (DESIGN.md §3).
-struct LiveFilter {
-  std::string preset_name;
-  video::RemapTable table;
-  video::FilterOptions options;
-};
+// The live filter: F coloured through G on the camera's frame size (DESIGN.md §3) — one steal
+// map computed once and reapplied per frame, or, animated, maps of F drifting in time built ahead
+// on a worker (video/map_schedule.h) and cross-faded.
+class LiveFilter {
+ public:
+  LiveFilter(const CamArgs& args, const std::string& preset, cv::Size size, double fps,
+             bool animate)
+      : args_(args), size_(size), fps_(fps) {
+    const IfsPreset F = load_ifs(preset);
+    F_ = F.ifs;
+    name_ = F.ifs.name.empty() ? preset : F.ifs.name;
+    if (!args.colouring.empty()) G_ = load_ifs(args.colouring).ifs;
+    if (G_.size() != F_.size()) G_ = default_colouring(F_.size());
+    map_options_.view = view_option(args.view);
+    map_options_.margin = args.margin;
+    map_options_.exact = args.exact;
+    map_options_.quality = args.quality;
+    map_options_.seed = args.seed;
+    map_options_.threads = args.threads;
+    options_.mix = args.mix;
+    options_.background = video::parse_background(args.background);
+    options_.threads = args.threads;
+    fixed_ = video::make_remap_table(compute_steal_map(F_, G_, size, map_options_), size,
+                                     Interpolation::bilinear, args.threads);
+    set_animate(animate);
+  }
 
-LiveFilter make_filter(const CamArgs& args, const std::string& preset, cv::Size size) {
-  const IfsPreset F = load_ifs(preset);
-  Ifs G;
-  if (!args.colouring.empty()) G = load_ifs(args.colouring).ifs;
-  if (G.size() != F.ifs.size()) G = default_colouring(F.ifs.size());
-  StealMapOptions o;
-  o.view = view_option(args.view);
-  o.margin = args.margin;
-  o.exact = args.exact;
-  o.quality = args.quality;
-  o.seed = args.seed;
-  o.threads = args.threads;
-  LiveFilter filter;
-  filter.preset_name = F.ifs.name.empty() ? preset : F.ifs.name;
-  filter.options.mix = args.mix;
-  filter.options.background = video::parse_background(args.background);
-  filter.options.threads = args.threads;
-  filter.table = video::make_remap_table(compute_steal_map(F.ifs, G, size, o), size,
-                                         Interpolation::bilinear, args.threads);
-  return filter;
-}
+  const std::string& name() const { return name_; }
+  bool animated() const { return schedule_ != nullptr; }
+
+  void set_animate(bool on) {
+    if (!on) {
+      schedule_.reset();
+      return;
+    }
+    if (schedule_) return;
+    // Keyframe k shows F drifted to time k·K/fps, in a view fixed from F itself so that the
+    // frame does not jump as the attractor moves.
+    StealMapOptions o = map_options_;
+    if (!o.view) o.view = fit_view(attractor_bounds(F_, args_.seed), size_, args_.margin);
+    const video::DriftOptions drift{
+        .amount = args_.drift_amount, .speed = args_.drift_speed, .seed = args_.seed};
+    video::drift(F_, 0, drift);  // checks the drift options before any work
+    const double fps = fps_;
+    const int interval = args_.keyframe_interval;
+    schedule_ = std::make_unique<video::MapSchedule>(
+        [=, F = F_, G = G_, size = size_, threads = args_.threads](std::int64_t k) {
+          const Ifs now = video::drift(F, static_cast<double>(k) * interval / fps, drift);
+          return video::make_remap_table(compute_steal_map(now, G, size, o), size,
+                                         Interpolation::bilinear, threads);
+        },
+        interval);
+    schedule_->at(0);  // wait for the first maps now, not with a camera frame in hand
+    clock_ = 0;
+  }
+
+  cv::Mat operator()(const Frame& frame) {
+    if (!schedule_) return video::filter_frame(frame.image, fixed_, options_);
+    // The animation advances one step per frame shown, not per camera frame: dropped frames
+    // neither make it jump nor send it waiting for maps far ahead.
+    const video::MapSchedule::Blend b = schedule_->at(clock_++);
+    return video::filter_frame(frame.image, *b.from, *b.to, b.t, options_);
+  }
+
+  std::int64_t stalls() const { return schedule_ ? schedule_->stalls() : 0; }
+
+ private:
+  const CamArgs& args_;
+  cv::Size size_;
+  double fps_;
+  Ifs F_, G_;
+  std::string name_;
+  StealMapOptions map_options_;
+  video::FilterOptions options_;
+  video::RemapTable fixed_;
+  std::unique_ptr<video::MapSchedule> schedule_;
+  std::int64_t clock_ = 0;
+};
 
 // A snapshot file name not taken yet: cam-snapshot-001.png, -002, ...
 std::filesystem::path next_snapshot() {
@@ -234,7 +292,8 @@ std::filesystem::path next_snapshot() {
   }
 }
 
-// The interactive window: keys n/p (preset), s (snapshot), r (record), q/Esc (quit).
+// The interactive window: keys n/p (preset), a (animation), s (snapshot), r (record), q/Esc
+// (quit).
 class CamWindow {
  public:
   static constexpr const char* kTitle = "ifsfx cam";
@@ -310,7 +369,8 @@ void run_cam(const CamArgs& args) {
   for (std::size_t i = 0; i < shipped.size(); ++i) {
     if (shipped[i].name == args.preset) preset_index = i;
   }
-  LiveFilter filter = make_filter(args, args.preset, granted);
+  auto filter =
+      std::make_unique<LiveFilter>(args, args.preset, granted, fps, args.animate == Animate::drift);
 
   std::vector<FrameSink*> sinks;
   std::unique_ptr<video::V4l2Output> webcam;
@@ -332,7 +392,7 @@ void run_cam(const CamArgs& args) {
   bool quit = false;
   const auto observer = [&](const Frame& out, const CameraStats& stats) {
     if (!win) return true;
-    const std::string readout = fmt::format("{:.1f} fps  {}{}", stats.fps(), filter.preset_name,
+    const std::string readout = fmt::format("{:.1f} fps  {}{}", stats.fps(), filter->name(),
                                             recording.recording() ? "  REC" : "");
     const int key = win->show(out.image, readout);
     switch (key) {
@@ -348,7 +408,8 @@ void run_cam(const CamArgs& args) {
         std::size_t i = preset_index.value_or(forward ? n - 1 : 0);
         i = forward ? (i + 1) % n : (i + n - 1) % n;
         preset_index = i;
-        filter = make_filter(args, shipped[i].name, granted);
+        filter =
+            std::make_unique<LiveFilter>(args, shipped[i].name, granted, fps, filter->animated());
         break;
       }
       case 's':
@@ -371,11 +432,8 @@ void run_cam(const CamArgs& args) {
   CameraStats stats;
   try {
     stats = video::run_camera(
-        camera,
-        [&](const Frame& frame) {
-          return video::filter_frame(frame.image, filter.table, filter.options);
-        },
-        sinks, {.max_frames = args.max_frames, .stop = &g_stop}, observer);
+        camera, [&](const Frame& frame) { return (*filter)(frame); }, sinks,
+        {.max_frames = args.max_frames, .stop = &g_stop}, observer);
   } catch (const Error& e) {
     if (recording.frames() > 0) {
       throw Error(e.kind(), fmt::format("{}; recording kept: {} ({} frames)", e.what(),
@@ -383,22 +441,24 @@ void run_cam(const CamArgs& args) {
     }
     throw;
   }
+  const std::string kept =
+      recording.frames() > 0
+          ? fmt::format("; recorded {} ({} frames)", recording.path().string(), recording.frames())
+          : "";
   if (!args.quiet) {
     std::fprintf(
         stderr, "%s\n",
         fmt::format("cam: {} frames in {:.2f} s ({:.1f} fps), {} dropped ({:.1f}%), "
-                    "latency mean {:.1f} ms, p95 {:.1f} ms{}",
+                    "latency mean {:.1f} ms, p95 {:.1f} ms{}{}",
                     stats.frames, stats.seconds, stats.fps(), stats.dropped,
                     100 * stats.drop_fraction(), 1e3 * stats.latency_mean, 1e3 * stats.latency_p95,
-                    recording.frames() > 0
-                        ? fmt::format("; recorded {} ({} frames)", recording.path().string(),
-                                      recording.frames())
-                        : "")
+                    filter->animated() ? fmt::format(", {} map stalls", filter->stalls()) : "",
+                    kept)
             .c_str());
   }
   if (g_stop.load() && !quit) {
     throw Error(ErrorKind::interrupted,
-                fmt::format("cam: interrupted after {} frames", stats.frames));
+                fmt::format("cam: interrupted after {} frames{}", stats.frames, kept));
   }
 }
 
@@ -432,7 +492,8 @@ void add_cam_command(CLI::App& app) {
   cmd->add_option("--codec", args->codec, "Encoder of --record (default: the container's)");
   cmd->add_flag("--window", args->window,
                 "Show a window (default when neither --output nor --record is given). Keys: n/p "
-                "next/previous preset, s snapshot, r start/stop recording, q/Esc quit");
+                "next/previous preset, a animation on/off, s snapshot, r start/stop recording, "
+                "q/Esc quit");
   cmd->add_option("--preset", args->preset,
                   "Drawing IFS F: a shipped name, a .toml/.ifs path, or FILE.ifs:NAME")
       ->capture_default_str();
@@ -452,7 +513,24 @@ void add_cam_command(CLI::App& app) {
   cmd->add_option("--mix", args->mix, "Blend of the original frame over the fractal, 0..1")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 1.0));
-  cmd->add_option("--seed", args->seed, "Random seed of the chaos-game steal map")
+  const std::map<std::string, Animate> animations{{"none", Animate::none},
+                                                  {"drift", Animate::drift}};
+  cmd->add_option("--animate", args->animate,
+                  "none: one fixed map; drift: map coefficients wander by fBm noise (the window's "
+                  "a key toggles it)")
+      ->transform(CLI::CheckedTransformer(animations, CLI::ignore_case))
+      ->default_str("none");
+  cmd->add_option("--drift-amount", args->drift_amount,
+                  "Largest excursion of a map coefficient (translations: fraction of the "
+                  "attractor's size)")
+      ->capture_default_str();
+  cmd->add_option("--drift-speed", args->drift_speed, "Cycles per second of the slowest drift")
+      ->capture_default_str();
+  cmd->add_option("--keyframe-interval", args->keyframe_interval,
+                  "Animation: frames between rebuilt maps, cross-faded in between")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 100000));
+  cmd->add_option("--seed", args->seed, "Random seed of the chaos-game steal map and the drift")
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")
       ->capture_default_str();

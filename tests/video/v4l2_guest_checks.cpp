@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -138,12 +139,6 @@ int frames_reported(const std::string& err) {
   if (at == std::string::npos) return -1;
   const auto open = err.find(" (", at);
   return open == std::string::npos ? -1 : std::atoi(err.c_str() + open + 2);
-}
-
-int count_lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += c == '\n';
-  return n;
 }
 
 class VividTest : public ::testing::Test {
@@ -348,28 +343,76 @@ TEST_F(VividTest, missing_device_fails_with_one_line) {
   EXPECT_EQ(err, "ifsfx: /dev/video99: no such device: No such file or directory (ENOENT)\n");
 }
 
-TEST_F(VividTest, unsupported_format_fails_with_one_line) {
-  std::string err;
-  EXPECT_EQ(run({ifsfx_, "cam", "--device", cap_, "--format", "mjpeg", "--output", loop_,
-                 "--max-frames", "5"},
-                "format", &err),
-            1);
-  EXPECT_EQ(count_lines(err), 1) << err;
-  EXPECT_NE(err.find("ifsfx: " + cap_ + ": pixel format not supported: asked for MJPG"),
-            std::string::npos)
-      << err;
+TEST_F(VividTest, unsupported_format_is_an_unsupported_error_naming_the_device) {
+  try {
+    V4l2Capture camera(cap_, {.size = {320, 180}, .formats = {PixelFormat::mjpeg}});
+    FAIL() << "vivid does not offer MJPEG";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::unsupported);
+    EXPECT_EQ(std::string(e.what()).rfind(cap_ + ": pixel format not supported: asked for MJPG "
+                                                 "(device offers YUYV, UYVY",
+                                          0),
+              0u)
+        << e.what();
+  }
 }
 
-TEST_F(VividTest, busy_device_fails_with_one_line) {
+TEST_F(VividTest, busy_device_is_a_device_error_naming_the_device) {
   V4l2Capture holder(cap_, {.size = {320, 180}, .fps = 0, .formats = {PixelFormat::yuyv}});
   ASSERT_TRUE(holder.read().has_value());  // streaming: the device is now taken
-  std::string err;
-  EXPECT_EQ(run({ifsfx_, "cam", "--device", cap_, "--size", "320x180", "--output", loop_,
-                 "--max-frames", "5"},
-                "busy", &err),
-            1);
-  EXPECT_EQ(count_lines(err), 2) << err;  // the device line, then the error
-  EXPECT_NE(err.find("ifsfx: " + cap_ + ": device busy"), std::string::npos) << err;
+  try {
+    V4l2Capture second(cap_, {.size = {320, 180}, .fps = 0, .formats = {PixelFormat::yuyv}});
+    second.read();
+    FAIL() << "a second streamer was let in";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::device);
+    EXPECT_EQ(std::string(e.what()).rfind(cap_ + ": device busy", 0), 0u) << e.what();
+  }
+}
+
+TEST_F(VividTest, a_capture_node_is_not_an_output) {
+  try {
+    V4l2Output out(cap_, {320, 180});
+    FAIL() << "vivid's capture node taken as an output";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::unsupported);
+    EXPECT_EQ(std::string(e.what()).rfind(cap_ + ": not a video output device", 0), 0u) << e.what();
+  }
+}
+
+TEST_F(VividTest, loopback_round_trip_and_producer_gone_ends_the_read_without_a_hang) {
+  const cv::Size size(320, 180);
+  const cv::Mat pattern = grab(cap_, size, PixelFormat::yuyv);
+  auto producer = std::make_unique<V4l2Output>(loop_, size);
+  Frame f;
+  f.image = pattern;
+  producer->write(f);
+  V4l2Capture reader(loop_,
+                     {.size = size, .fps = 0, .formats = {PixelFormat::yuyv}, .timeout_ms = 2000});
+  std::atomic<bool> stop{false};
+  std::thread feed([&] {
+    while (!stop) {
+      producer->write(f);
+      std::this_thread::sleep_for(20ms);
+    }
+  });
+  cv::Mat got;
+  for (int i = 0; i < 3; ++i) got = reader.read()->image;
+  stop = true;
+  feed.join();
+  // What went out as YUYV comes back as the same YUYV.
+  EXPECT_EQ(cv::norm(got, through_yuyv(pattern), cv::NORM_INF), 0);
+  producer.reset();
+  const auto t0 = Clock::now();
+  try {
+    // A frame or two may still be queued; then the reader must give up, not wait forever.
+    for (int i = 0; i < 10; ++i) reader.read();
+    FAIL() << "frames kept coming after the producer closed";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::device);
+    EXPECT_EQ(std::string(e.what()).rfind(loop_ + ": no frame for 2000 ms", 0), 0u) << e.what();
+  }
+  EXPECT_LT(Clock::now() - t0, 60s);
 }
 
 // Frames in a movie file, decoded to the end (-1 if it does not open).
@@ -387,7 +430,7 @@ bool wait_for_recording(Child& cam, const std::filesystem::path& dir, const std:
   const auto deadline = Clock::now() + 90s;
   while (Clock::now() < deadline && cam.running()) {
     for (const auto& e : std::filesystem::directory_iterator(dir)) {
-      if (e.path().filename().string().rfind(stem, 0) == 0 && e.file_size() > 20'000) {
+      if (e.path().filename().string().rfind(stem, 0) == 0 && e.file_size() > 40'000) {
         return true;
       }
     }
@@ -396,51 +439,18 @@ bool wait_for_recording(Child& cam, const std::filesystem::path& dir, const std:
   return false;
 }
 
-TEST_F(VividTest, loopback_producer_gone_ends_cleanly_with_the_recording_playable) {
-  const cv::Size size(320, 180);
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "lbrec";
-  std::filesystem::create_directories(dir);
-  const std::filesystem::path rec = dir / "loop.mkv";
-  std::unique_ptr<V4l2Output> producer = std::make_unique<V4l2Output>(loop_, size);
-  cv::Mat pattern = grab(cap_, size, PixelFormat::yuyv);
-  Frame f;
-  f.image = pattern;
-  producer->write(f);
-  Child cam({ifsfx_, "cam", "--device", loop_, "--size", "320x180", "--record", rec.string(),
-             "--codec", "ffv1", "--preset", "square-tiling-4", "--colouring", "square-tiling-4",
-             "--view", "0,0,1,1", "--exact"},
-            "cam-stall");
-  // Feed frames until the recording grows, then stop feeding and close the producer.
-  const auto deadline = Clock::now() + 90s;
-  bool recording = false;
-  while (Clock::now() < deadline && cam.running() && !recording) {
-    producer->write(f);
-    std::this_thread::sleep_for(33ms);
-    for (const auto& e : std::filesystem::directory_iterator(dir)) {
-      recording = recording || e.file_size() > 20'000;
-    }
-  }
-  ASSERT_TRUE(recording) << cam.err();
-  producer.reset();
-  ASSERT_TRUE(cam.wait(60s)) << "ifsfx cam hung after its source stopped";
-  EXPECT_EQ(cam.rc(), 1) << cam.err();
-  const std::string err = cam.err();
-  EXPECT_NE(err.find("ifsfx: " + loop_ + ": no frame for"), std::string::npos) << err;
-  EXPECT_NE(err.find("recording kept: " + rec.string()), std::string::npos) << err;
-  EXPECT_GT(frames_reported(err), 0) << err;
-  EXPECT_EQ(decodable_frames(rec), frames_reported(err)) << "recording not playable to the end";
-}
-
 // Last: vivid stays disconnected until every handle on it is closed.
 TEST_F(VividTest, camera_vanishing_mid_stream_ends_cleanly_with_the_recording_playable) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "vanish";
   std::filesystem::create_directories(dir);
-  const std::filesystem::path rec = dir / "vanish.mkv";
-  Child cam({ifsfx_, "cam", "--device", cap_, "--size", "320x180", "--record", rec.string(),
-             "--codec", "ffv1", "--preset", "square-tiling-4", "--colouring", "square-tiling-4",
-             "--view", "0,0,1,1", "--exact"},
-            "cam-vanish");
-  ASSERT_TRUE(wait_for_recording(cam, dir, "vanish.mkv")) << cam.err();
+  // AVI with MPEG-4 part 2 (its default codec): packets reach the file as they are made, so
+  // its growth shows that frames are being recorded.
+  const std::filesystem::path rec = dir / "vanish.avi";
+  Child cam(
+      {ifsfx_, "cam", "--device", cap_, "--size", "320x180", "--record", rec.string(), "--preset",
+       "square-tiling-4", "--colouring", "square-tiling-4", "--view", "0,0,1,1", "--exact"},
+      "cam-vanish");
+  ASSERT_TRUE(wait_for_recording(cam, dir, "vanish.avi")) << cam.err();
   // vivid's "disconnect" button acts as a USB camera unplugged mid-stream.
   ASSERT_EQ(run({"v4l2-ctl", "-d", cap_, "-c", "disconnect=1"}, "disconnect"), 0);
   ASSERT_TRUE(cam.wait(60s)) << "ifsfx cam hung after the camera vanished";
