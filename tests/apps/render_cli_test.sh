@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# End-to-end checks of `ifsfx render` (attractor and measure modes): one CHECK per run.
+#   render_cli_test.sh IFSFX WORKDIR CHECK
+set -euo pipefail
+ifsfx=$1 work=$2 check=$3
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+# expect_error "message fragment" args...: exit code non-zero, exactly one line on stderr that
+# starts with "ifsfx:" and contains the fragment, and no image left behind.
+expect_error() {
+  local fragment=$1
+  shift
+  local rc=0
+  "$ifsfx" "$@" >out.txt 2>err.txt || rc=$?
+  [ "$rc" -ne 0 ] || fail "'$*' succeeded"
+  [ "$(wc -l <err.txt)" -eq 1 ] || fail "'$*' printed $(wc -l <err.txt) lines on stderr: $(cat err.txt)"
+  grep -q '^ifsfx: ' err.txt || fail "'$*': error does not start with 'ifsfx:': $(cat err.txt)"
+  grep -qF -- "$fragment" err.txt || fail "'$*': error '$(cat err.txt)' lacks '$fragment'"
+  [ -z "$(ls -A | grep -v -e '^out.txt$' -e '^err.txt$' -e '^bad' -e '^ro$' || true)" ] ||
+    fail "'$*' left files: $(ls -A)"
+}
+
+case "$check" in
+  formats)
+    # PNG 8 and 16 bit, TIFF, OpenEXR float: each written, of the right size and depth, with the
+    # preset and seed in its metadata.
+    "$ifsfx" render barnsley-fern --size 96x64 --quality 8 --seed 5 -o a.png >summary.txt
+    grep -Eq '^barnsley-fern \(measure, 96x64\): [0-9.]+ M points in [0-9.]+ s \([0-9]+ Mpts/s\), coverage [0-9.]+% -> a.png$' summary.txt ||
+      fail "summary line: $(cat summary.txt)"
+    "$ifsfx" render barnsley-fern --size 96x64 --quality 8 --bits 16 -q -o b.png
+    "$ifsfx" render barnsley-fern --size 96x64 --quality 8 --mode attractor -q -o c.tif
+    "$ifsfx" render barnsley-fern --size 96x64 --quality 8 -q -o d.exr
+    iinfo -v a.png | grep -q '96 x   64, 3 channel, uint8' || fail "a.png: $(iinfo a.png)"
+    iinfo -v b.png | grep -q '96 x   64, 3 channel, uint16' || fail "b.png: $(iinfo b.png)"
+    iinfo -v c.tif | grep -q '96 x   64, 1 channel, uint8' || fail "c.tif: $(iinfo c.tif)"
+    iinfo -v d.exr | grep -Eq '96 x   64, 3 channel, (float|half)' || fail "d.exr: $(iinfo d.exr)"
+    iinfo -v a.png | grep -q 'ifsfx:seed: "5"' || fail "a.png metadata: $(iinfo -v a.png)"
+    iinfo -v d.exr | grep -q 'ifsfx:preset: "# Barnsley' || fail "d.exr metadata: $(iinfo -v d.exr)"
+    [ "$(ls -A | wc -l)" -eq 5 ] || fail "stray files: $(ls -A)"
+    ;;
+  same_seed_same_bytes)
+    "$ifsfx" render maple-leaf --size 128x128 --quality 16 --seed 3 --threads 1 -q -o one.png
+    "$ifsfx" render maple-leaf --size 128x128 --quality 16 --seed 3 --threads 2 -q -o two.png
+    "$ifsfx" render maple-leaf --size 128x128 --quality 16 --seed 4 --threads 2 -q -o other.png
+    cmp -s one.png two.png || fail "thread count changed the image"
+    ! cmp -s one.png other.png || fail "the seed does not matter"
+    ;;
+  bad_inputs)
+    expect_error "unknown preset 'fren'" render fren -o x.png
+    expect_error "nope.toml" render ./nope.toml -o x.png
+    printf 'name = "bad"\nmaps = [\n  [0.5, 0, 0, 0.5, 0],\n]\n' >bad-count.toml
+    expect_error "bad-count.toml:3" render ./bad-count.toml -o x.png
+    printf 'name = "big"\nmaps = [[1.2, 0, 0, 0.5, 0, 0], [0.5, 0, 0, 0.5, 1, 0]]\n' >bad-expansive.toml
+    expect_error "contraction factor must be < 1" render ./bad-expansive.toml -o x.png
+    printf 'name = "neg"\nmaps = [[0.5, 0, 0, 0.5, 0, 0]]\nprobabilities = [-1]\n' >bad-prob.toml
+    expect_error "probabilit" render ./bad-prob.toml -o x.png
+    printf 'name = "zero"\nmaps = [[0.5, 0, 0, 0.5, 0, 0], [0.5, 0, 0, 0.5, 1, 0]]\nprobabilities = [0, 0]\n' >bad-zero.toml
+    expect_error "must not all be zero" render ./bad-zero.toml -o x.png
+    printf 'name = "nan"\nmaps = [[nan, 0, 0, 0.5, 0, 0]]\n' >bad-nan.toml
+    expect_error "finite" render ./bad-nan.toml -o x.png
+    expect_error "each side must be 1 to 32768 pixels (got 0x10)" render barnsley-fern --size 0x10 -o x.png
+    expect_error "(got 40000x10)" render barnsley-fern --size 40000x10 -o x.png
+    expect_error "no image writer for extension '.xyz'" render barnsley-fern -o x.xyz
+    expect_error "does not exist" render barnsley-fern -o missing/x.png
+    mkdir ro && chmod 555 ro
+    if [ "$(id -u)" -ne 0 ]; then expect_error "not writable" render barnsley-fern -o ro/x.png; fi
+    ;;
+  allow_expansive)
+    # One map of factor 1.2, but contracting on average: refused, then accepted with the flag.
+    printf 'name = "avg"\nmaps = [[1.2, 0, 0, 1.2, 0, 0], [0.3, 0, 0, 0.3, 1, 0]]\nprobabilities = [0.2, 0.8]\n' >bad-avg.toml
+    expect_error "--allow-expansive" render ./bad-avg.toml -o x.png
+    "$ifsfx" render ./bad-avg.toml --allow-expansive --size 64x64 --quality 4 -q -o bad-avg.png
+    [ -s bad-avg.png ] || fail "no image with --allow-expansive"
+    # Expanding on average too: refused even with the flag.
+    printf 'name = "grow"\nmaps = [[1.5, 0, 0, 1.5, 0, 0], [0.9, 0, 0, 0.9, 1, 0]]\n' >bad-grow.toml
+    expect_error "contract on average" render ./bad-grow.toml --allow-expansive -o x.png
+    ;;
+  *) fail "unknown check '$check'" ;;
+esac
+echo "PASS: $check"
