@@ -32,6 +32,7 @@ struct StealMapOptions {
   double margin = 0.05;     // auto-framing margin
   bool exact = false;       // per-pixel descent (DESIGN.md §3) instead of the chaos game
   double quality = 64;      // chaos game: points per output pixel before the coverage policy
+                            // (the exact map's attractor mask uses 4 per pixel plus growth)
   std::uint64_t seed = 1;
   int threads = 0;  // 0 = all cores
 };

@@ -2,6 +2,7 @@
 // and fit_to_unit_square puts any attractor on it.
 #include <gtest/gtest.h>
 
+#include "ifs/preset.h"
 #include "ifs/rng.h"
 #include "ifs/steal_map.h"
 #include "ifs/view.h"
@@ -51,6 +52,19 @@ TEST(tiling, two_and_three_maps_are_swap_maps) {
   const Point p = default_colouring(3).maps[2]({0.3, 0.9});
   EXPECT_NEAR(p.x, 0.9, 1e-15);
   EXPECT_NEAR(p.y, (0.3 + 2) / 3, 1e-15);
+}
+
+TEST(tiling, default_colourings_are_the_shipped_square_tilings) {
+  for (std::size_t n : {2, 3, 4, 9}) {
+    const Ifs shipped =
+        load_ifs("square-tiling-" + std::to_string(n), {.allow_expansive = true}).ifs;
+    const Ifs g = default_colouring(n);
+    ASSERT_EQ(g.size(), shipped.size());
+    for (std::size_t i = 0; i < n; ++i)
+      for (int k = 0; k < 6; ++k)
+        EXPECT_NEAR(g.maps[i].coefficients()[k], shipped.maps[i].coefficients()[k], 1e-15)
+            << n << " maps, map " << i;
+  }
 }
 
 TEST(tiling, fit_to_unit_square_stretches_the_attractor_onto_it) {
