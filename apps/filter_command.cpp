@@ -19,6 +19,8 @@
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"
+#include "superifs/superifs_file.h"
+#include "superifs/texture.h"
 #include "video/drift.h"
 #include "video/file_sink.h"
 #include "video/file_source.h"
@@ -31,7 +33,7 @@
 namespace ifsfx::app {
 namespace {
 
-enum class Animate { none, drift };
+enum class Animate { none, drift, superifs };
 
 struct FilterArgs {
   std::string input;
@@ -54,6 +56,8 @@ struct FilterArgs {
   double drift_amount = 0.05;
   double drift_speed = 0.2;
   int keyframe_interval = 12;
+  std::string superifs = "paper-fig4";
+  int buffers = 3;
   std::uint64_t seed = 1;
   int threads = 0;
   bool quiet = false;
@@ -231,6 +235,8 @@ void run_filter(const FilterArgs& args) {
 
   video::FrameFilter filter;
   std::unique_ptr<video::MapSchedule> schedule;
+  std::shared_ptr<TextureSequence> sequence;
+  const int interval = args.keyframe_interval;
   if (args.animate == Animate::none) {
     auto table = std::make_shared<const video::RemapTable>(
         video::make_remap_table(compute_steal_map(F.ifs, G, size, map_options), frame_size,
@@ -238,7 +244,7 @@ void run_filter(const FilterArgs& args) {
     filter = [table, filter_options](const video::Frame& frame) {
       return video::filter_frame(frame.image, *table, filter_options);
     };
-  } else {
+  } else if (args.animate == Animate::drift) {
     // Drift: keyframe k shows the IFS drifted to time k·K/fps, in a view fixed from the base IFS
     // so that the frame does not jump as the attractor moves.
     if (!map_options.view)
@@ -247,7 +253,6 @@ void run_filter(const FilterArgs& args) {
         .amount = args.drift_amount, .speed = args.drift_speed, .seed = args.seed};
     video::drift(F.ifs, 0, drift);  // checks the drift options before any work
     const double fps = rate.value();
-    const int interval = args.keyframe_interval;
     schedule = std::make_unique<video::MapSchedule>(
         [=, base = F.ifs](std::int64_t k) {
           const Ifs now = video::drift(base, static_cast<double>(k) * interval / fps, drift);
@@ -255,6 +260,24 @@ void run_filter(const FilterArgs& args) {
                                          args.interpolation, args.threads);
         },
         interval);
+  } else {
+    // superIFS: keyframe k is texture k of the V-variable sequence (paper §5, eq. 14), one step
+    // per keyframe after the burn-in — a pure function of k and the seed.
+    TextureOptions t;
+    t.count = args.buffers;
+    t.mode = TextureMode::steal;
+    t.source = cv::Mat(frame_size, CV_8UC3);  // only its size: it sets the descent depth
+    t.seed = args.seed;
+    t.threads = args.threads;
+    sequence = std::make_shared<TextureSequence>(load_superifs(args.superifs).super, size, t);
+    schedule = std::make_unique<video::MapSchedule>(
+        [=, seq = sequence](std::int64_t k) {
+          return video::make_remap_table(seq->map_at(k), frame_size, args.interpolation,
+                                         args.threads);
+        },
+        interval);
+  }
+  if (schedule) {
     filter = [s = schedule.get(), filter_options](const video::Frame& frame) {
       const video::MapSchedule::Blend b = s->at(frame.index);
       return video::filter_frame(frame.image, *b.from, *b.to, b.t, filter_options);
@@ -277,7 +300,8 @@ void run_filter(const FilterArgs& args) {
   if (!args.quiet)
     std::printf(
         "%s\n",
-        fmt::format("{}: {} frames {}x{} in {:.2f} s ({:.1f} fps){} -> {}", F.ifs.name,
+        fmt::format("{}: {} frames {}x{} in {:.2f} s ({:.1f} fps){} -> {}",
+                    args.animate == Animate::superifs ? args.superifs : F.ifs.name,
                     result.frames_written, size.width, size.height, result.seconds,
                     result.frames_written / std::max(result.seconds, 1e-9),
                     schedule ? fmt::format(", {} map stalls", schedule->stalls()) : "", where)
@@ -334,10 +358,11 @@ void add_filter_command(CLI::App& app) {
                   "Source frames START:END to filter, both included, from 0 (START: or :END too)");
   cmd->add_option("--fps", args->fps, "Frame rate of an image sequence input")
       ->capture_default_str();
-  const std::map<std::string, Animate> animations{{"none", Animate::none},
-                                                  {"drift", Animate::drift}};
+  const std::map<std::string, Animate> animations{
+      {"none", Animate::none}, {"drift", Animate::drift}, {"superifs", Animate::superifs}};
   cmd->add_option("--animate", args->animate,
-                  "none: one fixed map; drift: map coefficients wander by fBm noise")
+                  "none: one fixed map; drift: map coefficients wander by fBm noise; superifs: a "
+                  "V-variable step of --superifs per keyframe")
       ->transform(CLI::CheckedTransformer(animations, CLI::ignore_case))
       ->default_str("none");
   cmd->add_option("--drift-amount", args->drift_amount,
@@ -350,6 +375,13 @@ void add_filter_command(CLI::App& app) {
                   "Animation: frames between rebuilt maps, cross-faded in between")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
+  cmd->add_option("--superifs", args->superifs,
+                  "--animate superifs: the superIFS (shipped name or .toml path); its own view and "
+                  "colouring replace --preset, --colouring and --view")
+      ->capture_default_str();
+  cmd->add_option("--buffers", args->buffers, "--animate superifs: V, the number of buffers")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
   cmd->add_option("--seed", args->seed, "Random seed: the same seed gives the same frames")
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")

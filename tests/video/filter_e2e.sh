@@ -92,6 +92,22 @@ drift_range)
   [[ $(wc -l < psnr.log) == 8 ]] || fail "compared $(wc -l < psnr.log) frames"
   [[ $p == 1000 ]] || fail "drifted frames 6-13 differ from the full run's (PSNR $p dB)"
   ;;
+superifs_range)
+  ffmpeg -v error -y -i "$data/vtest.avi" -frames:v 12 -vf scale=128:96 -c:v ffv1 clip.mkv
+  common=(--codec ffv1 --animate superifs --superifs paper-fig4 --keyframe-interval 3 --seed 5 -q)
+  "$ifsfx" filter clip.mkv -o full.mkv "${common[@]}"
+  "$ifsfx" filter clip.mkv -o part.mkv "${common[@]}" --frames 4:10 --threads 1
+  [[ $(frames_of full.mkv) == 12 ]] || fail "frame count $(frames_of full.mkv)"
+  ffmpeg -v error -y -i full.mkv -vf "trim=start_frame=4:end_frame=11" -c:v ffv1 expected.mkv
+  p=$(min_psnr part.mkv expected.mkv)
+  [[ $(wc -l < psnr.log) == 7 ]] || fail "compared $(wc -l < psnr.log) frames"
+  [[ $p == 1000 ]] || fail "superIFS frames 4-10 differ from the full run's (PSNR $p dB)"
+  # Each keyframe is a new texture: frames 0 and 3 (keyframes 0 and 1) differ.
+  ffmpeg -v error -y -i full.mkv -vf "trim=start_frame=0:end_frame=1" -c:v ffv1 k0.mkv
+  ffmpeg -v error -y -i full.mkv -vf "trim=start_frame=3:end_frame=4" -c:v ffv1 k1.mkv
+  p=$(min_psnr k0.mkv k1.mkv)
+  [[ $p != 1000 ]] || fail "keyframes 0 and 1 are the same texture"
+  ;;
 sigint)
   with_audio 320x240 40
   "$ifsfx" filter in.mp4 -o out.mp4 --preset sierpinski-triangle --quality 4 --threads 1 2> log.txt &
