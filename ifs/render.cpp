@@ -99,10 +99,18 @@ struct CountState {
 // Visit count and palette-coordinate sum per pixel, packed in one 64-bit word so a point costs a
 // single memory update: count in the low 32 bits, Σc in the high 32 with c quantised to 6 bits.
 // Σc ≤ 63 · points, so folding into wide totals every 2^26 points keeps both halves exact.
+//
+// A 1080p raster of such words is 16 MiB, and points land on it at random: updated directly,
+// nearly every point is a cache miss. So points are first binned by tile (2^14 consecutive
+// cells, 128 KiB: a slice of the image that fits in L2) into short queues, and a full queue is
+// applied to its tile in one burst while that tile is in cache.
 class MeasureState {
  public:
   static constexpr std::uint64_t kFoldPoints = std::uint64_t{1} << 26;
   static constexpr int kPaletteBits = 6;
+  static constexpr int kTileBits = 14;
+  static constexpr std::uint32_t kTileMask = (1u << kTileBits) - 1;
+  static constexpr std::uint32_t kQueueLength = 256;
 
   struct Totals {
     std::vector<std::uint64_t> count, colour;
@@ -111,6 +119,9 @@ class MeasureState {
 
   MeasureState(const Viewport& v, const std::vector<std::uint32_t>& map_colours, Totals& totals)
       : cells_(static_cast<std::size_t>(v.size.area()), 0),
+        tiles_((cells_.size() + kTileMask) >> kTileBits),
+        queue_(tiles_ * kQueueLength),
+        queued_(tiles_, 0),
         map_colour_(map_colours),
         totals_(&totals) {
     palette_.fill(0);
@@ -126,10 +137,16 @@ class MeasureState {
     // reach here, so the palette coordinate skips them: it is a local colour, not an address.
     std::uint32_t& c = palette_[static_cast<std::size_t>(lane)];
     c = (c + map_colour_[map]) >> 1;
-    const std::uint64_t c6 = (c + (1u << (15 - kPaletteBits))) >> (16 - kPaletteBits);
-    cells_[static_cast<std::size_t>(pixel)] += (std::min<std::uint64_t>(c6, 63) << 32) | 1;
+    const std::uint32_t c6 = std::min<std::uint32_t>(
+        (c + (1u << (15 - kPaletteBits))) >> (16 - kPaletteBits), 63);
+    const auto cell = static_cast<std::uint32_t>(pixel);
+    const std::uint32_t tile = cell >> kTileBits;
+    std::uint32_t& length = queued_[tile];
+    queue_[tile * kQueueLength + length] = (c6 << kTileBits) | (cell & kTileMask);
+    if (++length == kQueueLength) drain(tile);
   }
   void fold() {
+    for (std::uint32_t tile = 0; tile < tiles_; ++tile) drain(tile);
     std::lock_guard lock(totals_->mutex);
     for (std::size_t i = 0; i < cells_.size(); ++i) {
       if (cells_[i] == 0) continue;
@@ -141,7 +158,18 @@ class MeasureState {
   }
 
  private:
+  void drain(std::uint32_t tile) {
+    std::uint64_t* cells = cells_.data() + (static_cast<std::size_t>(tile) << kTileBits);
+    const std::uint32_t* entry = queue_.data() + tile * kQueueLength;
+    for (std::uint32_t k = 0, n = queued_[tile]; k < n; ++k)
+      cells[entry[k] & kTileMask] += (static_cast<std::uint64_t>(entry[k] >> kTileBits) << 32) | 1;
+    queued_[tile] = 0;
+  }
+
   std::vector<std::uint64_t> cells_;
+  std::uint32_t tiles_;
+  std::vector<std::uint32_t> queue_;   // per tile: kQueueLength entries of (c6 << 14 | cell in tile)
+  std::vector<std::uint32_t> queued_;  // entries waiting per tile
   std::vector<std::uint32_t> map_colour_;  // c_n of each map, 16-bit fixed point
   std::array<std::uint32_t, detail::kLanes> palette_;
   Totals* totals_;

@@ -84,49 +84,98 @@ struct PixelMapping {
   long stride;
 };
 
+// xoshiro256+: the renderers' per-lane generator. Plain 64-bit shifts, xors and adds, so four
+// lanes run in one AVX2 register (walkers_avx2.h) and the scalar loop below is its bit-exact
+// reference. Each lane is seeded from (seed, chunk, lane).
+struct LaneRng {
+  std::uint64_t s[4];
+  void seed(std::uint64_t seed, std::uint64_t chunk, int lane) {
+    std::uint64_t z = stream_seed(seed, chunk * kLanes + static_cast<std::uint64_t>(lane));
+    for (auto& word : s) word = z = mix64(z + 0x9e3779b97f4a7c15ULL);
+  }
+  std::uint64_t next() {
+    const std::uint64_t result = s[0] + s[3];
+    const std::uint64_t t = s[1] << 17;
+    s[2] ^= s[0];
+    s[3] ^= s[1];
+    s[1] ^= s[2];
+    s[0] ^= s[3];
+    s[2] ^= t;
+    s[3] = (s[3] << 45) | (s[3] >> 19);
+    return result;
+  }
+};
+
+// A uniform start in [0,1)² drawn from a lane's generator.
+inline double start_coordinate(LaneRng& rng) {
+  return static_cast<double>(rng.next() >> 11) * 0x1.0p-53;
+}
+
 // The hot loop of the renderers: runs one chunk's walkers and calls plot(lane, pixel, map) for
-// every point that lands on the raster. Everything the loop reads is copied into locals first,
-// so the compiler keeps it in registers whatever memory `plot` writes.
+// every point that lands on the raster, lanes interleaved step by step. Everything the loop reads
+// is copied into locals first, so the compiler keeps it in registers whatever `plot` writes. This
+// is also the reference that the AVX2 kernel must match bit for bit.
 template <class Plot>
-void plot_chunk(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
-                std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
-                Plot&& plot) {
-  Rng rng(stream_seed(seed, chunk));
+void plot_chunk_scalar(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
+                       std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
+                       Plot&& plot) {
   const MapPicker::View pick = picker.view();
   const double *a = maps.a.data(), *b = maps.b.data(), *c = maps.c.data();
   const double *d = maps.d.data(), *e = maps.e.data(), *f = maps.f.data();
   const double sx = mapping.sx, ox = mapping.ox, sy = mapping.sy, oy = mapping.oy;
   const double width = mapping.width, height = mapping.height;
   const long stride = mapping.stride;
+  LaneRng rng[kLanes];
   double x[kLanes], y[kLanes];
   for (int lane = 0; lane < kLanes; ++lane) {
-    x[lane] = rng.uniform();
-    y[lane] = rng.uniform();
+    rng[lane].seed(seed, chunk, lane);
+    x[lane] = start_coordinate(rng[lane]);
+    y[lane] = start_coordinate(rng[lane]);
   }
-  for (int step = 0; step < burn_in; ++step)
-    for (int lane = 0; lane < kLanes; ++lane) {
-      const std::uint32_t n = pick(rng.next());
-      const double nx = a[n] * x[lane] + b[n] * y[lane] + e[n];
-      y[lane] = c[n] * x[lane] + d[n] * y[lane] + f[n];
-      x[lane] = nx;
-    }
-  auto advance = [&](int lane) {
-    const std::uint32_t n = pick(rng.next());
+  auto step = [&](int lane) {
+    const std::uint32_t n = pick(rng[lane].next());
     const double nx = a[n] * x[lane] + b[n] * y[lane] + e[n];
     const double ny = c[n] * x[lane] + d[n] * y[lane] + f[n];
     x[lane] = nx;
     y[lane] = ny;
-    const double px = sx * nx + ox, py = sy * ny + oy;
+    return n;
+  };
+  for (int k = 0; k < burn_in; ++k)
+    for (int lane = 0; lane < kLanes; ++lane) step(lane);
+  auto advance = [&](int lane) {
+    const std::uint32_t n = step(lane);
+    const double px = sx * x[lane] + ox, py = sy * y[lane] + oy;
     // Non-short-circuit tests: one well-predicted branch instead of four.
     if ((px >= 0) & (px < width) & (py >= 0) & (py < height))
       plot(lane, static_cast<long>(py) * stride + static_cast<long>(px), n);
   };
   const std::uint64_t steps = points / kLanes;
-  for (std::uint64_t step = 0; step < steps; ++step) {
+  for (std::uint64_t k = 0; k < steps; ++k) {
 #pragma GCC unroll 8
     for (int lane = 0; lane < kLanes; ++lane) advance(lane);
   }
   for (int lane = 0; lane < static_cast<int>(points % kLanes); ++lane) advance(lane);
+}
+
+}  // namespace ifsfx::detail
+
+#include "ifs/detail/walkers_avx2.h"
+
+namespace ifsfx::detail {
+
+// The renderers' entry: the AVX2 loop where the CPU and the IFS allow it, else the scalar one.
+// Both give the same pixels.
+template <class Plot>
+void plot_chunk(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
+                std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
+                Plot&& plot) {
+#ifdef __AVX2__
+  if (maps.a.size() <= kAvx2MaxMaps) {
+    plot_chunk_avx2(maps, picker, mapping, seed, chunk, points, burn_in, plot);
+    return;
+  }
+#endif
+  plot_chunk_scalar(maps, picker, mapping, seed, chunk, points, burn_in, plot);
 }
 
 }  // namespace ifsfx::detail
