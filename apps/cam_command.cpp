@@ -22,11 +22,10 @@
 #include "ifs/image_io.h"
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"
+#include "video/camera_drift.h"
 #include "video/camera_pipeline.h"
-#include "video/drift.h"
 #include "video/file_sink.h"
 #include "video/fractal_filter.h"
-#include "video/map_schedule.h"
 #include "video/v4l2_capture.h"
 #include "video/v4l2_device.h"
 #include "video/v4l2_output.h"
@@ -63,7 +62,7 @@ struct CamArgs {
   Animate animate = Animate::none;
   double drift_amount = 0.05;
   double drift_speed = 0.2;
-  int keyframe_interval = 12;
+  int fade_frames = 12;
   double mix = 0;
   std::uint64_t seed = 1;
   int threads = 0;
@@ -206,13 +205,12 @@ class RecordingSink final : public FrameSink {
 };
 
 // The live filter: F coloured through G on the camera's frame size (DESIGN.md §3) — one steal
-// map computed once and reapplied per frame, or, animated, maps of F drifting in time built ahead
-// on a worker (video/map_schedule.h) and cross-faded.
+// map computed once and reapplied per frame, or, animated, maps of F drifting in time built on a
+// worker and cross-faded in (video/camera_drift.h).
 class LiveFilter {
  public:
-  LiveFilter(const CamArgs& args, const std::string& preset, cv::Size size, double fps,
-             bool animate)
-      : args_(args), size_(size), fps_(fps) {
+  LiveFilter(const CamArgs& args, const std::string& preset, cv::Size size, bool animate)
+      : args_(args), size_(size) {
     const IfsPreset F = load_ifs(preset);
     F_ = F.ifs;
     name_ = F.ifs.name.empty() ? preset : F.ifs.name;
@@ -233,55 +231,37 @@ class LiveFilter {
   }
 
   const std::string& name() const { return name_; }
-  bool animated() const { return schedule_ != nullptr; }
+  bool animated() const { return drift_ != nullptr; }
 
   void set_animate(bool on) {
     if (!on) {
-      schedule_.reset();
+      drift_.reset();
       return;
     }
-    if (schedule_) return;
-    // Keyframe k shows F drifted to time k·K/fps, in a view fixed from F itself so that the
-    // frame does not jump as the attractor moves.
-    StealMapOptions o = map_options_;
-    if (!o.view) o.view = fit_view(attractor_bounds(F_, args_.seed), size_, args_.margin);
-    const video::DriftOptions drift{
-        .amount = args_.drift_amount, .speed = args_.drift_speed, .seed = args_.seed};
-    video::drift(F_, 0, drift);  // checks the drift options before any work
-    const double fps = fps_;
-    const int interval = args_.keyframe_interval;
-    schedule_ = std::make_unique<video::MapSchedule>(
-        [=, F = F_, G = G_, size = size_, threads = args_.threads](std::int64_t k) {
-          const Ifs now = video::drift(F, static_cast<double>(k) * interval / fps, drift);
-          return video::make_remap_table(compute_steal_map(now, G, size, o), size,
-                                         Interpolation::bilinear, threads);
-        },
-        interval);
-    schedule_->at(0);  // wait for the first maps now, not with a camera frame in hand
-    clock_ = 0;
+    if (drift_) return;
+    video::LiveDriftOptions o;
+    o.drift = {.amount = args_.drift_amount, .speed = args_.drift_speed, .seed = args_.seed};
+    o.map = map_options_;
+    o.fade_frames = args_.fade_frames;
+    drift_ = std::make_unique<video::LiveDrift>(F_, G_, size_, o);
   }
 
   cv::Mat operator()(const Frame& frame) {
-    if (!schedule_) return video::filter_frame(frame.image, fixed_, options_);
-    // The animation advances one step per frame shown, not per camera frame: dropped frames
-    // neither make it jump nor send it waiting for maps far ahead.
-    const video::MapSchedule::Blend b = schedule_->at(clock_++);
-    return video::filter_frame(frame.image, *b.from, *b.to, b.t, options_);
+    if (!drift_) return video::filter_frame(frame.image, fixed_, options_);
+    return drift_->filter(frame.image, frame.timestamp, options_);
   }
 
-  std::int64_t stalls() const { return schedule_ ? schedule_->stalls() : 0; }
+  std::int64_t maps_built() const { return drift_ ? drift_->maps_built() : 0; }
 
  private:
   const CamArgs& args_;
   cv::Size size_;
-  double fps_;
   Ifs F_, G_;
   std::string name_;
   StealMapOptions map_options_;
   video::FilterOptions options_;
   video::RemapTable fixed_;
-  std::unique_ptr<video::MapSchedule> schedule_;
-  std::int64_t clock_ = 0;
+  std::unique_ptr<video::LiveDrift> drift_;
 };
 
 // A snapshot file name not taken yet: cam-snapshot-001.png, -002, ...
@@ -370,7 +350,7 @@ void run_cam(const CamArgs& args) {
     if (shipped[i].name == args.preset) preset_index = i;
   }
   auto filter =
-      std::make_unique<LiveFilter>(args, args.preset, granted, fps, args.animate == Animate::drift);
+      std::make_unique<LiveFilter>(args, args.preset, granted, args.animate == Animate::drift);
 
   std::vector<FrameSink*> sinks;
   std::unique_ptr<video::V4l2Output> webcam;
@@ -408,8 +388,7 @@ void run_cam(const CamArgs& args) {
         std::size_t i = preset_index.value_or(forward ? n - 1 : 0);
         i = forward ? (i + 1) % n : (i + n - 1) % n;
         preset_index = i;
-        filter =
-            std::make_unique<LiveFilter>(args, shipped[i].name, granted, fps, filter->animated());
+        filter = std::make_unique<LiveFilter>(args, shipped[i].name, granted, filter->animated());
         break;
       }
       case 's':
@@ -452,7 +431,7 @@ void run_cam(const CamArgs& args) {
                     "latency mean {:.1f} ms, p95 {:.1f} ms{}{}",
                     stats.frames, stats.seconds, stats.fps(), stats.dropped,
                     100 * stats.drop_fraction(), 1e3 * stats.latency_mean, 1e3 * stats.latency_p95,
-                    filter->animated() ? fmt::format(", {} map stalls", filter->stalls()) : "",
+                    filter->animated() ? fmt::format(", {} drift maps", filter->maps_built()) : "",
                     kept)
             .c_str());
   }
@@ -526,8 +505,9 @@ void add_cam_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--drift-speed", args->drift_speed, "Cycles per second of the slowest drift")
       ->capture_default_str();
-  cmd->add_option("--keyframe-interval", args->keyframe_interval,
-                  "Animation: frames between rebuilt maps, cross-faded in between")
+  cmd->add_option("--fade-frames", args->fade_frames,
+                  "Animation: frames over which each new map fades in (maps are built as fast as "
+                  "the machine allows, never holding up the camera)")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000));
   cmd->add_option("--seed", args->seed, "Random seed of the chaos-game steal map and the drift")

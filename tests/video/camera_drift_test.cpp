@@ -1,0 +1,61 @@
+// Live drift: the first frame shows the map of time 0, later maps arrive from the worker without
+// the caller ever waiting for them, and a new map fades in rather than cuts.
+#include "video/camera_drift.h"
+
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "ifs/preset.h"
+#include "ifs/view.h"
+
+namespace ifsfx::video {
+namespace {
+
+using namespace std::chrono_literals;
+
+struct Fixture {
+  Ifs F = load_ifs("sierpinski-triangle").ifs;
+  Ifs G = default_colouring(F.size());
+  cv::Size size{48, 32};
+  cv::Mat frame;
+  LiveDriftOptions options;
+  Fixture() {
+    frame.create(size, CV_8UC3);
+    cv::randu(frame, 0, 256);
+    options.drift = {.amount = 0.2, .speed = 1, .seed = 3};
+    options.map.quality = 8;
+    options.map.threads = 1;
+    options.fade_frames = 4;
+  }
+};
+
+TEST(camera_drift, the_first_frame_shows_the_map_of_time_zero) {
+  const Fixture x;
+  LiveDrift live(x.F, x.G, x.size, x.options);
+  StealMapOptions map = x.options.map;
+  map.view = fit_view(attractor_bounds(x.F, map.seed), x.size, map.margin);
+  const RemapTable table =
+      make_remap_table(compute_steal_map(drift(x.F, 0, x.options.drift), x.G, x.size, map), x.size);
+  const cv::Mat got = live.filter(x.frame, 0.5);
+  EXPECT_EQ(cv::norm(got, filter_frame(x.frame, table), cv::NORM_INF), 0);
+}
+
+TEST(camera_drift, new_maps_arrive_from_the_worker_without_waiting) {
+  const Fixture x;
+  LiveDrift live(x.F, x.G, x.size, x.options);
+  const cv::Mat first = live.filter(x.frame, 0.0);
+  // Keep filtering at later times (the worker builds maps meanwhile) until maps of t > 0 have
+  // arrived; the first map built in the background is of t = 0 again.
+  for (int i = 1; i < 2000 && live.maps_built() < 3; ++i) {
+    live.filter(x.frame, 0.05 * i);
+    std::this_thread::sleep_for(5ms);
+  }
+  ASSERT_GE(live.maps_built(), 3);
+  cv::Mat now;
+  for (int i = 0; i < x.options.fade_frames; ++i) now = live.filter(x.frame, 99.0);
+  EXPECT_GT(cv::norm(now, first, cv::NORM_L1), 0) << "the drifted maps never showed";
+}
+
+}  // namespace
+}  // namespace ifsfx::video
