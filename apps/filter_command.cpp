@@ -292,6 +292,9 @@ void run_filter(const FilterArgs& args) {
     options.progress = ProgressPrinter(tty);
     options.progress_interval = tty ? 0.25 : 2.0;
   }
+  // Ctrl-C while the steal map was computed: nothing to keep (the sink removes its .part file).
+  if (stop_requested)
+    throw Error(ErrorKind::interrupted, "interrupted before the first frame; nothing written");
   const video::PipelineResult result = video::run_pipeline(*source, *sink, filter, options);
   const std::string where = args.preview ? std::string("the preview") : args.output;
   if (result.interrupted && !args.preview)
