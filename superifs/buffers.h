@@ -45,11 +45,10 @@ class BitMask {
   bool test(double x, double y) const noexcept {
     constexpr double edge = 1e-7;
     if (!(x >= -edge && y >= -edge && x < width_ + edge && y < height_ + edge)) return false;
-    const auto c =
-        std::min(static_cast<std::size_t>(std::max(x, 0.0)), static_cast<std::size_t>(width_ - 1));
-    const auto r =
-        std::min(static_cast<std::size_t>(std::max(y, 0.0)), static_cast<std::size_t>(height_ - 1));
-    return (bits_[r * stride_ + (c >> 3)] >> (c & 7)) & 1u;
+    // Signed conversions: double → unsigned 64-bit has no single instruction on x86-64.
+    const int c = std::min(static_cast<int>(std::max(x, 0.0)), width_ - 1);
+    const int r = std::min(static_cast<int>(std::max(y, 0.0)), height_ - 1);
+    return test(c, r);
   }
   bool test(int col, int row) const noexcept {
     return (bits_[static_cast<std::size_t>(row) * stride_ + (static_cast<std::size_t>(col) >> 3)] >>

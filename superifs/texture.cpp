@@ -35,46 +35,76 @@ bool near(const BitMask& mask, double x, double y, int r) {
   return false;
 }
 
-// The exact descent (DESIGN.md §3, §5) from the centre of pixel (col, row) of buffer v through
-// every level of history, newest first. Writes the symbols, returns how many, and leaves in `z`
-// the point reached (continuous pixel coordinates of the oldest level's buffers).
-std::size_t descend(const Buffers& buffers, std::size_t v, int col, int row,
-                    std::vector<Symbol>& word, Point& z) {
-  const auto& history = buffers.history();
-  const std::size_t m_count = buffers.super().maps();
-  // A preimage that lands just off every conservative mask (x is exact, the masks are not) is
-  // looked for a little further before the descent gives up at this level.
-  const int reach = buffers.dilation() + 1;
-  z = {col + 0.5, row + 0.5};
-  std::size_t depth = 0, buf = v;
-  for (std::size_t level = history.size(); level-- > 0;) {
-    const HistoryLevel& h = history[level];
-    const std::uint32_t n = h.choices.ifs[buf];
-    const std::uint32_t* source = &h.choices.source[buf * m_count];
-    // Top(…) of eq. 14: the highest m whose preimage lies in its source buffer one step back.
-    std::size_t found = m_count;
-    Point y;
-    for (int pass = 0; pass < 2 && found == m_count; ++pass) {
-      for (std::size_t m = m_count; m-- > 0;) {
-        const Box& piece = buffers.piece_bounds(n, m);
-        if (pass == 0 &&
-            !(z.x >= piece.x0 && z.x <= piece.x1 && z.y >= piece.y0 && z.y <= piece.y1))
-          continue;
-        y = buffers.pixel_inverse(n, m)(z);
-        const BitMask& previous = h.previous[source[m]];
-        if (pass == 0 ? previous.test(y.x, y.y) : near(previous, y.x, y.y, reach)) {
+// What the descent reads, flattened once per render: for each (n, m) the inverse map in pixel
+// coordinates and the box its piece lies in; for each level of history, newest first, the choices
+// and the masks one step back.
+struct Descent {
+  struct Piece {
+    AffineMap inverse;
+    Box bounds;
+  };
+  struct Level {
+    const std::uint32_t* ifs;     // n_v
+    const std::uint32_t* source;  // v_m at [v · M + m]
+    const BitMask* previous;      // the V masks one step back
+  };
+  std::vector<Piece> pieces;  // [n · M + m]
+  std::vector<Level> levels;
+  std::size_t maps = 0;
+  int reach = 0;  // how far a preimage that just misses every mask is looked for
+
+  explicit Descent(const Buffers& buffers) : maps(buffers.super().maps()) {
+    for (std::size_t n = 0; n < buffers.super().size(); ++n)
+      for (std::size_t m = 0; m < maps; ++m)
+        pieces.push_back({buffers.pixel_inverse(n, m), buffers.piece_bounds(n, m)});
+    const auto& history = buffers.history();
+    for (std::size_t level = history.size(); level-- > 0;)
+      levels.push_back({history[level].choices.ifs.data(), history[level].choices.source.data(),
+                        history[level].previous.data()});
+    // A preimage that lands just off every conservative mask (x is exact, the masks are not) is
+    // looked for a little further before the descent gives up at that level.
+    reach = buffers.dilation() + 1;
+  }
+
+  // The exact descent (DESIGN.md §3, §5) from the centre of pixel (col, row) of buffer v through
+  // every level, newest first. Writes the symbols, returns how many, and leaves in `z` the point
+  // reached (continuous pixel coordinates of the oldest level's buffers).
+  std::size_t run(std::size_t v, int col, int row, std::vector<Symbol>& word, Point& z) const {
+    z = {col + 0.5, row + 0.5};
+    std::size_t depth = 0, buf = v;
+    for (const Level& level : levels) {
+      const std::uint32_t n = level.ifs[buf];
+      const Piece* piece = &pieces[n * maps];
+      const std::uint32_t* source = &level.source[buf * maps];
+      // Top(…) of eq. 14: the highest m whose preimage lies in its source buffer one step back.
+      std::size_t found = maps;
+      Point y;
+      for (std::size_t m = maps; m-- > 0;) {
+        const Box& b = piece[m].bounds;
+        if (!(z.x >= b.x0 && z.x <= b.x1 && z.y >= b.y0 && z.y <= b.y1)) continue;
+        y = piece[m].inverse(z);
+        if (level.previous[source[m]].test(y.x, y.y)) {
           found = m;
           break;
         }
       }
+      if (found == maps) {
+        for (std::size_t m = maps; m-- > 0;) {
+          y = piece[m].inverse(z);
+          if (near(level.previous[source[m]], y.x, y.y, reach)) {
+            found = m;
+            break;
+          }
+        }
+      }
+      if (found == maps) break;
+      word[depth++] = {n, static_cast<std::uint32_t>(found)};
+      z = y;
+      buf = source[found];
     }
-    if (found == m_count) break;
-    word[depth++] = {n, static_cast<std::uint32_t>(found)};
-    z = y;
-    buf = source[found];
+    return depth;
   }
-  return depth;
-}
+};
 
 void check_buffer(const Buffers& buffers, std::size_t v) {
   if (v >= buffers.count())
@@ -101,14 +131,15 @@ cv::Mat render_tops(const Buffers& buffers, std::size_t v) {
   cv::Mat index(size, CV_8UC1, cv::Scalar(0));
   const auto bands = static_cast<std::size_t>((size.height + band_rows - 1) / band_rows);
   const cv::Mat& mask = buffers.mask(v);
+  const Descent descent(buffers);
   parallel_for(bands, buffers.threads(), [&](std::size_t band, int) {
-    std::vector<Symbol> word(buffers.history().size());
+    std::vector<Symbol> word(descent.levels.size());
     const int row0 = static_cast<int>(band) * band_rows;
     for (int row = row0; row < std::min(size.height, row0 + band_rows); ++row) {
       for (int col = 0; col < size.width; ++col) {
         if (!mask.at<std::uint8_t>(row, col)) continue;
         Point z;
-        const std::size_t depth = descend(buffers, v, col, row, word, z);
+        const std::size_t depth = descent.run(v, col, row, word, z);
         double t = 0, scale = 1;
         for (std::size_t i = 0; i < std::min<std::size_t>(depth, top_symbols); ++i) {
           scale /= m_count;
@@ -223,8 +254,9 @@ StealMap steal_map(const Buffers& buffers, std::size_t v) {
   map.coverage = buffers.mask(v).clone();
   map.source_uv.create(size, CV_32FC2);
   const auto bands = static_cast<std::size_t>((size.height + band_rows - 1) / band_rows);
+  const Descent descent(buffers);
   parallel_for(bands, buffers.threads(), [&](std::size_t band, int) {
-    std::vector<Symbol> word(buffers.history().size());
+    std::vector<Symbol> word(descent.levels.size());
     const int row0 = static_cast<int>(band) * band_rows;
     for (int row = row0; row < std::min(size.height, row0 + band_rows); ++row) {
       auto* uv = map.source_uv.ptr<cv::Vec2f>(row);
@@ -235,7 +267,7 @@ StealMap steal_map(const Buffers& buffers, std::size_t v) {
           continue;
         }
         Point z;
-        const std::size_t depth = descend(buffers, v, col, row, word, z);
+        const std::size_t depth = descent.run(v, col, row, word, z);
         // ρ: the buffers' rectangle onto the colouring's unit square (y up) — the steal
         // coordinates of the starting buffer — then T = g_{σ1} ∘ … ∘ g_{σL}(ρ(z)).
         Point t{z.x / size.width, 1.0 - z.y / size.height};
