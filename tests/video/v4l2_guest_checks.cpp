@@ -440,16 +440,17 @@ bool wait_for_recording(Child& cam, const std::filesystem::path& dir, const std:
 }
 
 // Last: vivid stays disconnected until every handle on it is closed.
+// Also runs the live drift animation, whose worker must not keep the program from ending.
 TEST_F(VividTest, camera_vanishing_mid_stream_ends_cleanly_with_the_recording_playable) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "vanish";
   std::filesystem::create_directories(dir);
   // AVI with MPEG-4 part 2 (its default codec): packets reach the file as they are made, so
   // its growth shows that frames are being recorded.
   const std::filesystem::path rec = dir / "vanish.avi";
-  Child cam(
-      {ifsfx_, "cam", "--device", cap_, "--size", "320x180", "--record", rec.string(), "--preset",
-       "square-tiling-4", "--colouring", "square-tiling-4", "--view", "0,0,1,1", "--exact"},
-      "cam-vanish");
+  Child cam({ifsfx_, "cam", "--device", cap_, "--size", "320x180", "--record", rec.string(),
+             "--preset", "square-tiling-4", "--colouring", "square-tiling-4", "--view", "0,0,1,1",
+             "--exact", "--animate", "drift"},
+            "cam-vanish");
   ASSERT_TRUE(wait_for_recording(cam, dir, "vanish.avi")) << cam.err();
   // vivid's "disconnect" button acts as a USB camera unplugged mid-stream.
   ASSERT_EQ(run({"v4l2-ctl", "-d", cap_, "-c", "disconnect=1"}, "disconnect"), 0);
