@@ -150,7 +150,7 @@ void add_texture_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(1, 1000));
   cmd->add_option("--steps", args->steps,
-                  "Burn-in steps; 0 = enough that s^steps x size < 1 pixel for the largest "
+                  "Burn-in steps; 0 = enough that s^steps x size < 1/8 pixel for the largest "
                   "contraction factor s")
       ->capture_default_str()
       ->check(CLI::NonNegativeNumber);
