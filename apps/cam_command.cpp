@@ -214,8 +214,7 @@ class LiveFilter {
     const IfsPreset F = load_ifs(preset);
     F_ = F.ifs;
     name_ = F.ifs.name.empty() ? preset : F.ifs.name;
-    if (!args.colouring.empty()) G_ = load_ifs(args.colouring).ifs;
-    if (G_.size() != F_.size()) G_ = default_colouring(F_.size());
+    G_ = colouring_option(args.colouring, F_);
     map_options_.view = view_option(args.view);
     map_options_.margin = args.margin;
     map_options_.exact = args.exact;

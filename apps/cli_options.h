@@ -7,6 +7,11 @@
 
 #include <opencv2/core.hpp>
 
+#include <fmt/format.h>
+
+#include "ifs/error.h"
+#include "ifs/preset.h"
+#include "ifs/steal_map.h"
 #include "ifs/view.h"
 
 namespace ifsfx::app {
@@ -20,6 +25,20 @@ inline cv::Size size_option(const std::string& text, const std::string& what = "
 inline std::optional<Box> view_option(const std::string& text, const std::string& what = "--view") {
   if (text.empty()) return std::nullopt;
   return parse_box(text, what);
+}
+
+// The colouring IFS G for a drawing IFS F (the --colouring option): default_colouring(N) for an
+// empty spec, else the named preset fitted to the unit square. Tilings that contract only over
+// two steps (square-tiling-2/3) are accepted; a map count other than F's is refused.
+inline Ifs colouring_option(const std::string& spec, const Ifs& F,
+                            const std::string& what = "--colouring") {
+  if (spec.empty()) return default_colouring(F.size());
+  Ifs G = fit_to_unit_square(load_ifs(spec, {.allow_expansive = true}).ifs);
+  if (G.size() != F.size())
+    throw Error(ErrorKind::invalid_ifs,
+                fmt::format("{} {}: must have as many maps as {} (got {} for {})", what, spec,
+                            F.name, G.size(), F.size()));
+  return G;
 }
 
 }  // namespace ifsfx::app

@@ -45,10 +45,14 @@ struct RenderArgs {
 
 const char* mode_name(Mode mode) {
   switch (mode) {
-    case Mode::attractor: return "attractor";
-    case Mode::measure: return "measure";
-    case Mode::tops: return "tops";
-    case Mode::steal: return "steal";
+    case Mode::attractor:
+      return "attractor";
+    case Mode::measure:
+      return "measure";
+    case Mode::tops:
+      return "tops";
+    case Mode::steal:
+      return "steal";
   }
   return "measure";
 }
@@ -92,8 +96,12 @@ void run_render(const RenderArgs& args) {
   RenderStats stats;
   cv::Mat image;
   switch (args.mode) {
-    case Mode::attractor: image = render_attractor(preset.ifs, size, options, &stats); break;
-    case Mode::measure: image = render_measure(preset.ifs, size, options, &stats); break;
+    case Mode::attractor:
+      image = render_attractor(preset.ifs, size, options, &stats);
+      break;
+    case Mode::measure:
+      image = render_measure(preset.ifs, size, options, &stats);
+      break;
     case Mode::tops:
       image = tops_image(preset.ifs, size, options, args.exact, args.second_symbol, background,
                          args.output, &stats);
@@ -117,20 +125,22 @@ void run_render(const RenderArgs& args) {
       {"ifsfx:preset_name", preset.ifs.name},
       {"ifsfx:mode", mode_name(args.mode)},
       {"ifsfx:seed", std::to_string(args.seed)},
-      {"ifsfx:view", fmt::format("{},{},{},{}", stats.view.x0, stats.view.y0, stats.view.x1,
-                                 stats.view.y1)},
+      {"ifsfx:view",
+       fmt::format("{},{},{},{}", stats.view.x0, stats.view.y0, stats.view.x1, stats.view.y1)},
   };
   write_image(args.output, image, write);
 
-  if (!args.quiet)
-    std::printf("%s\n",
-                fmt::format("{} ({}, {}x{}): {:.1f} M points in {:.3f} s ({:.0f} Mpts/s), "
-                            "coverage {:.1f}% -> {}",
-                            preset.ifs.name, mode_name(args.mode), size.width, size.height,
-                            stats.points / 1e6, stats.seconds,
-                            stats.points / 1e6 / std::max(stats.seconds, 1e-9),
-                            100 * stats.coverage, args.output)
-                    .c_str());
+  if (args.quiet) return;
+  // The exact modes plot no chaos-game points: say so rather than print a rate of zero.
+  const std::string work =
+      stats.points > 0
+          ? fmt::format("{:.1f} M points in {:.3f} s ({:.0f} Mpts/s)", stats.points / 1e6,
+                        stats.seconds, stats.points / 1e6 / std::max(stats.seconds, 1e-9))
+          : fmt::format("{} in {:.3f} s", args.exact ? "exact descent" : "rendered", stats.seconds);
+  std::printf("%s\n", fmt::format("{} ({}, {}x{}): {}, coverage {:.1f}% -> {}", preset.ifs.name,
+                                  mode_name(args.mode), size.width, size.height, work,
+                                  100 * stats.coverage, args.output)
+                          .c_str());
 }
 
 }  // namespace
@@ -138,8 +148,9 @@ void run_render(const RenderArgs& args) {
 void add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
   auto* cmd = app.add_subcommand("render", "Render an IFS preset to a still image");
-  cmd->add_option("preset", args->preset,
-                  "Preset: a shipped name (see `ifsfx presets`), a .toml/.ifs path, or FILE.ifs:NAME")
+  cmd->add_option(
+         "preset", args->preset,
+         "Preset: a shipped name (see `ifsfx presets`), a .toml/.ifs path, or FILE.ifs:NAME")
       ->required();
   cmd->add_option("-o,--output", args->output,
                   "Output image; format by extension: .png (8/16-bit), .tif, .exr (float), .jpg")

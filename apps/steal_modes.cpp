@@ -1,5 +1,7 @@
 #include "apps/steal_modes.h"
 
+#include "apps/cli_options.h"
+
 #include <algorithm>
 #include <cctype>
 #include <chrono>
@@ -120,13 +122,7 @@ cv::Mat steal_image(const Ifs& F, cv::Size size, const RenderOptions& options,
     throw Error(ErrorKind::invalid_argument, "--source: --mode steal needs a source image");
   // Read first: a missing or unreadable source fails before any long work.
   const cv::Mat source = read_image(args.source).pixels;
-  const Ifs G = args.colouring.empty()
-                    ? default_colouring(F.size())
-                    : fit_to_unit_square(load_ifs(args.colouring, {.allow_expansive = true}).ifs);
-  if (G.size() != F.size())
-    throw Error(ErrorKind::invalid_ifs,
-                fmt::format("--colouring {}: must have as many maps as {} (got {} for {})",
-                            args.colouring, F.name, G.size(), F.size()));
+  const Ifs G = colouring_option(args.colouring, F);
   StealMapOptions so;
   so.view = options.view;
   so.margin = options.margin;
