@@ -77,6 +77,13 @@ case "$check" in
     printf 'name = "grow"\nmaps = [[1.5, 0, 0, 1.5, 0, 0], [0.9, 0, 0, 0.9, 1, 0]]\n' >bad-grow.toml
     expect_error "contract on average" render ./bad-grow.toml --allow-expansive -o x.png
     ;;
+  super_presets)
+    # `ifsfx presets --super`: one line per shipped superIFS preset, the paper's among them.
+    "$ifsfx" presets --super >list.txt
+    grep -Eq '^paper-fig4 +Paper Fig. 4' list.txt || fail "no paper-fig4 line: $(cat list.txt)"
+    [ "$(wc -l <list.txt)" -ge 4 ] || fail "fewer than 4 superIFS presets: $(cat list.txt)"
+    ! grep -q barnsley-fern list.txt || fail "IFS presets among the superIFS ones"
+    ;;
   *) fail "unknown check '$check'" ;;
 esac
 echo "PASS: $check"
