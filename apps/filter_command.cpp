@@ -187,12 +187,7 @@ void run_filter(const FilterArgs& args) {
     video::resolve_encoder(args.output, args.codec);
 
   const IfsPreset F = load_ifs(args.preset);
-  Ifs G = args.colouring.empty() ? default_colouring(F.ifs.size())
-                                 : fit_to_unit_square(load_ifs(args.colouring).ifs);
-  if (G.size() != F.ifs.size())
-    throw Error(ErrorKind::invalid_ifs,
-                fmt::format("--colouring: needs as many maps as the preset ({}) (got {})",
-                            F.ifs.size(), G.size()));
+  const Ifs G = colouring_option(args.colouring, F.ifs);
 
   video::silence_libav_log();
   std::unique_ptr<video::FrameSource> source = open_source(args);
