@@ -5,7 +5,9 @@ cd "$(dirname "$0")/.."
 kind=${1:-release}
 case "$kind" in
   release) flags=(-DCMAKE_BUILD_TYPE=Release) ;;
-  asan) flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DIFSFX_SANITIZE=ON -DIFSFX_BUILD_BENCH=OFF) ;;
+  # -O1 -g1: sanitizer builds compile faster and still give file:line stack traces.
+  asan) flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1"
+              -DIFSFX_SANITIZE=ON -DIFSFX_BUILD_BENCH=OFF) ;;
   *) echo "build.sh: unknown build kind '$kind' (release or asan)" >&2; exit 2 ;;
 esac
 launcher=()
