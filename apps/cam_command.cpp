@@ -496,8 +496,9 @@ void add_cam_command(CLI::App& app) {
   cmd->add_option("--animate", args->animate,
                   "none: one fixed map; drift: map coefficients wander by fBm noise (the window's "
                   "a key toggles it)")
-      ->transform(CLI::CheckedTransformer(animations, CLI::ignore_case))
-      ->default_str("none");
+      ->transform(choice(animations))
+      ->default_str("none")
+      ->option_text(choices_text(animations, "none"));
   cmd->add_option("--drift-amount", args->drift_amount,
                   "Largest excursion of a map coefficient (translations: fraction of the "
                   "attractor's size)")

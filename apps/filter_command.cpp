@@ -346,8 +346,9 @@ void add_filter_command(CLI::App& app) {
                                                             {"nearest", Interpolation::nearest}};
   cmd->add_option("--interpolation", args->interpolation,
                   "Lookup in the frame: bilinear or nearest")
-      ->transform(CLI::CheckedTransformer(interpolations, CLI::ignore_case))
-      ->default_str("bilinear");
+      ->transform(choice(interpolations))
+      ->default_str("bilinear")
+      ->option_text(choices_text(interpolations, "bilinear"));
   cmd->add_option("--size", args->size, "Output size WxH (default: the input's)");
   cmd->add_option("--codec", args->codec,
                   "Video encoder (libx264, h264, mpeg4, ffv1, ...; default by container: "
@@ -361,8 +362,9 @@ void add_filter_command(CLI::App& app) {
   cmd->add_option("--animate", args->animate,
                   "none: one fixed map; drift: map coefficients wander by fBm noise; superifs: a "
                   "V-variable step of --superifs per keyframe")
-      ->transform(CLI::CheckedTransformer(animations, CLI::ignore_case))
-      ->default_str("none");
+      ->transform(choice(animations))
+      ->default_str("none")
+      ->option_text(choices_text(animations, "none"));
   cmd->add_option("--drift-amount", args->drift_amount,
                   "Largest excursion of a map coefficient (translations: fraction of the "
                   "attractor's size)")

@@ -164,8 +164,9 @@ void add_render_command(CLI::App& app) {
                   "attractor: the set; measure: log-density of the invariant measure, "
                   "coloured by map; tops: each pixel coloured by the first symbol of its top "
                   "address; steal: colours stolen from --source (fractal tops, colour stealing)")
-      ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case))
-      ->default_str("measure");
+      ->transform(choice(modes))
+      ->default_str("measure")
+      ->option_text(choices_text(modes, "measure"));
   cmd->add_option("--view", args->view,
                   "Plane rectangle x0,y0,x1,y1 shown (default: the attractor, auto-framed)");
   cmd->add_option("--margin", args->margin, "Auto-framing margin, fraction of the larger side")

@@ -162,8 +162,9 @@ void add_texture_command(CLI::App& app) {
   cmd->add_option("--mode", args->mode,
                   "attractor: the set; tops: top addresses through a colour ramp; steal: colours "
                   "stolen from --source; measure: log-density of the measure")
-      ->transform(CLI::CheckedTransformer(modes, CLI::ignore_case))
-      ->default_str("attractor");
+      ->transform(choice(modes))
+      ->default_str("attractor")
+      ->option_text(choices_text(modes, "attractor"));
   cmd->add_option("--source", args->source, "Image colours are stolen from (steal mode)");
   cmd->add_option("--seed", args->seed, "Random seed: the same seed gives the same texture")
       ->capture_default_str();
