@@ -165,7 +165,9 @@ mount -t overlay overlay -o lowerdir=/lower,upperdir=/rw/upper,workdir=/rw/work 
     || { echo "guest-init: overlay FAILED"; poweroff -f; }
 R=/newroot
 mount -t proc proc $R/proc; mount -t sysfs sysfs $R/sys; mount -t devtmpfs devtmpfs $R/dev
-mount -t tmpfs tmpfs $R/run; mount -t tmpfs tmpfs $R/tmp
+# /tmp stays the overlay's (writable in the guest, host contents visible): a checkout or build
+# folder under the host's /tmp, as a CI clone may be, must be reachable from the guest.
+mount -t tmpfs tmpfs $R/run
 mkdir -p $R/dev/shm $R/dev/pts; mount -t tmpfs tmpfs $R/dev/shm; mount -t devpts devpts $R/dev/pts
 ln -sf /proc/self/fd $R/dev/fd; ln -sf /proc/self/fd/0 $R/dev/stdin
 ln -sf /proc/self/fd/1 $R/dev/stdout; ln -sf /proc/self/fd/2 $R/dev/stderr
