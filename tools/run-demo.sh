@@ -17,8 +17,11 @@ $ifsfx filter "$clip" --preset barnsley-fern -o out/vtest-fern.mp4
 $ifsfx texture paper-fig4 -V 3 --size 1024x1024 --mode steal \
   --source /usr/share/doc/opencv-doc/examples/data/baboon.jpg -o out/paper-fig4-steal.png
 $ifsfx texture paper-fig4 -V 3 --size 1024x1024 -o out/paper-fig4.png
+# A denser superfractal texture: carpets with holes in different places, V = 3.
+$ifsfx texture carpet-lace -V 3 --size 1024x1024 --mode steal \
+  --source /usr/share/doc/opencv-doc/examples/data/baboon.jpg -o out/carpet-lace-steal.png
 # IFS stills: the invariant measure, and colour stealing (paper Fig. 1).
 $ifsfx render barnsley-fern --mode measure --size 1024x1024 --supersample 2 -o out/fern-measure.png
 $ifsfx render barnsley-fern --mode steal --exact --size 1024x1024 \
   --source /usr/share/doc/opencv-doc/examples/data/baboon.jpg -o out/fern-steal.png
-echo "run-demo: results in out/ (vtest-fern.mp4, paper-fig4*.png, fern-*.png)"
+echo "run-demo: results in out/ (vtest-fern.mp4, paper-fig4*.png, carpet-lace-steal.png, fern-*.png)"
