@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 #include <linux/videodev2.h>
 #include <poll.h>
-#include <sys/mman.h>
 
 #include "ifs/error.h"
 #include "video/v4l2_device.h"
@@ -17,6 +16,7 @@ namespace ifsfx::video {
 
 namespace {
 
+using detail::MappedBuffer;
 using detail::throw_errno;
 using detail::xioctl;
 using Clock = std::chrono::steady_clock;
@@ -28,11 +28,6 @@ const std::vector<PixelFormat> kDefaultFormats = {
 
 // Consecutive undecodable frames tolerated before the stream counts as broken.
 constexpr int kMaxBadFrames = 30;
-
-struct MappedBuffer {
-  void* start = MAP_FAILED;
-  std::size_t length = 0;
-};
 
 // Whether `format` offers exactly `size` at `fps` or faster, per the device's enumeration. A
 // device that enumerates no sizes (many do not) counts as offering everything.
@@ -94,11 +89,7 @@ struct V4l2Capture::Impl {
       xioctl(fd.get(), VIDIOC_STREAMOFF, &type);
       streaming = false;
     }
-    for (MappedBuffer& m : buffers) {
-      if (m.start != MAP_FAILED) munmap(m.start, m.length);
-      m.start = MAP_FAILED;
-    }
-    buffers.clear();
+    detail::unmap_buffers(buffers);
     fd.reset();
   }
 };
@@ -199,28 +190,9 @@ V4l2Capture::V4l2Capture(const std::string& device, const V4l2CaptureOptions& op
     m.fps = t.numerator == 0 ? 0.0 : static_cast<double>(t.denominator) / t.numerator;
   }
 
-  v4l2_requestbuffers req{};
-  req.count = static_cast<std::uint32_t>(options.buffers);
-  req.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-  req.memory = V4L2_MEMORY_MMAP;
-  if (xioctl(fd, VIDIOC_REQBUFS, &req) != 0) throw_errno(device, "VIDIOC_REQBUFS", errno);
-  if (req.count < 2) {
-    throw Error(ErrorKind::device, fmt::format("{}: driver granted {} buffer(s), streaming needs 2",
-                                               device, req.count));
-  }
-  for (std::uint32_t i = 0; i < req.count; ++i) {
-    v4l2_buffer b{};
-    b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-    b.memory = V4L2_MEMORY_MMAP;
-    b.index = i;
-    if (xioctl(fd, VIDIOC_QUERYBUF, &b) != 0) throw_errno(device, "VIDIOC_QUERYBUF", errno);
-    MappedBuffer mb;
-    mb.length = b.length;
-    mb.start = mmap(nullptr, b.length, PROT_READ | PROT_WRITE, MAP_SHARED, fd, b.m.offset);
-    if (mb.start == MAP_FAILED) throw_errno(device, "mmap", errno);
-    m.buffers.push_back(mb);
-  }
-  for (std::uint32_t i = 0; i < req.count; ++i) m.queue(i);
+  detail::map_buffers(fd, device, V4L2_BUF_TYPE_VIDEO_CAPTURE,
+                      static_cast<std::uint32_t>(options.buffers), m.buffers);
+  for (std::uint32_t i = 0; i < m.buffers.size(); ++i) m.queue(i);
   m.origin = Clock::now();
 }
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <linux/videodev2.h>
 #include <sys/ioctl.h>
+#include <sys/mman.h>
 #include <unistd.h>
 
 #include "ifs/error.h"
@@ -73,6 +74,35 @@ V4l2Fd open_v4l2(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDWR | O_NONBLOCK | O_CLOEXEC);
   if (fd < 0) throw_errno(path, "open", errno);
   return V4l2Fd(fd, path);
+}
+
+void map_buffers(int fd, const std::string& path, std::uint32_t buffer_type, std::uint32_t count,
+                 std::vector<MappedBuffer>& out) {
+  const auto type = static_cast<v4l2_buf_type>(buffer_type);
+  v4l2_requestbuffers req{};
+  req.count = count;
+  req.type = type;
+  req.memory = V4L2_MEMORY_MMAP;
+  if (xioctl(fd, VIDIOC_REQBUFS, &req) != 0) throw_errno(path, "VIDIOC_REQBUFS", errno);
+  if (req.count < 2)
+    throw Error(ErrorKind::device,
+                fmt::format("{}: driver granted {} {} buffer(s), streaming needs 2", path,
+                            req.count, type == V4L2_BUF_TYPE_VIDEO_OUTPUT ? "output" : "capture"));
+  for (std::uint32_t i = 0; i < req.count; ++i) {
+    v4l2_buffer b{};
+    b.type = type;
+    b.memory = V4L2_MEMORY_MMAP;
+    b.index = i;
+    if (xioctl(fd, VIDIOC_QUERYBUF, &b) != 0) throw_errno(path, "VIDIOC_QUERYBUF", errno);
+    void* start = mmap(nullptr, b.length, PROT_READ | PROT_WRITE, MAP_SHARED, fd, b.m.offset);
+    if (start == MAP_FAILED) throw_errno(path, "mmap", errno);
+    out.push_back({start, b.length});
+  }
+}
+
+void unmap_buffers(std::vector<MappedBuffer>& buffers) noexcept {
+  for (const MappedBuffer& m : buffers) munmap(m.start, m.length);
+  buffers.clear();
 }
 
 }  // namespace detail

@@ -86,6 +86,21 @@ int xioctl(int fd, unsigned long request, void* arg);
 // not_found for ENOENT/ENXIO, or unsupported for ENOTTY; ENODEV reads "device vanished".
 [[noreturn]] void throw_errno(const std::string& path, const std::string& what, int err);
 
+// One driver buffer mapped into our memory (mmap streaming).
+struct MappedBuffer {
+  void* start = nullptr;
+  std::size_t length = 0;
+};
+
+// Requests `count` mmap buffers of `buffer_type` (a v4l2_buf_type) with REQBUFS, maps each and
+// appends it to `out` — also when a later step throws, so the caller's unmap_buffers frees what
+// was mapped. Throws naming `path`, also when the driver grants fewer than 2 buffers.
+void map_buffers(int fd, const std::string& path, std::uint32_t buffer_type, std::uint32_t count,
+                 std::vector<MappedBuffer>& out);
+
+// Unmaps and forgets every buffer of `buffers`.
+void unmap_buffers(std::vector<MappedBuffer>& buffers) noexcept;
+
 }  // namespace detail
 
 }  // namespace ifsfx::video

@@ -8,7 +8,6 @@
 #include <fmt/format.h>
 #include <linux/videodev2.h>
 #include <poll.h>
-#include <sys/mman.h>
 #include <unistd.h>
 
 #include "ifs/error.h"
@@ -18,13 +17,9 @@ namespace ifsfx::video {
 
 namespace {
 
+using detail::MappedBuffer;
 using detail::throw_errno;
 using detail::xioctl;
-
-struct MappedBuffer {
-  void* start = MAP_FAILED;
-  std::size_t length = 0;
-};
 
 // Waits until the node can take data; throws on timeout or a device error.
 void wait_writable(int fd, const std::string& path, int timeout_ms) {
@@ -66,10 +61,7 @@ struct V4l2Output::Impl {
       xioctl(fd.get(), VIDIOC_STREAMOFF, &type);
       streaming = false;
     }
-    for (MappedBuffer& m : buffers) {
-      if (m.start != MAP_FAILED) munmap(m.start, m.length);
-    }
-    buffers.clear();
+    detail::unmap_buffers(buffers);
     fd.reset();
   }
 
@@ -195,27 +187,7 @@ V4l2Output::V4l2Output(const std::string& device, cv::Size size, const V4l2Outpu
     xioctl(fd, VIDIOC_S_PARM, &parm);  // optional by the V4L2 spec: failure changes nothing
   }
   if (!m.use_write) {
-    v4l2_requestbuffers req{};
-    req.count = 3;
-    req.type = V4L2_BUF_TYPE_VIDEO_OUTPUT;
-    req.memory = V4L2_MEMORY_MMAP;
-    if (xioctl(fd, VIDIOC_REQBUFS, &req) != 0) throw_errno(device, "VIDIOC_REQBUFS", errno);
-    if (req.count < 2) {
-      throw Error(ErrorKind::device,
-                  fmt::format("{}: driver granted {} output buffer(s)", device, req.count));
-    }
-    for (std::uint32_t i = 0; i < req.count; ++i) {
-      v4l2_buffer b{};
-      b.type = V4L2_BUF_TYPE_VIDEO_OUTPUT;
-      b.memory = V4L2_MEMORY_MMAP;
-      b.index = i;
-      if (xioctl(fd, VIDIOC_QUERYBUF, &b) != 0) throw_errno(device, "VIDIOC_QUERYBUF", errno);
-      MappedBuffer mb;
-      mb.length = b.length;
-      mb.start = mmap(nullptr, b.length, PROT_READ | PROT_WRITE, MAP_SHARED, fd, b.m.offset);
-      if (mb.start == MAP_FAILED) throw_errno(device, "mmap", errno);
-      m.buffers.push_back(mb);
-    }
+    detail::map_buffers(fd, device, V4L2_BUF_TYPE_VIDEO_OUTPUT, 3, m.buffers);
   }
 }
 
