@@ -2,6 +2,7 @@
 // through a steal map computed once, shown in a window, sent to a V4L2 output device (a virtual
 // webcam for any app), recorded to a movie file, or all three.
 #include <atomic>
+#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -13,9 +14,9 @@
 #include <vector>
 
 #include <fmt/format.h>
-#include <opencv2/highgui.hpp>
-#include <opencv2/imgproc.hpp>
 
+#include "apps/cam_recording.h"
+#include "apps/cam_window.h"
 #include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "ifs/error.h"
@@ -26,9 +27,11 @@
 #include "video/camera_pipeline.h"
 #include "video/file_sink.h"
 #include "video/fractal_filter.h"
+#include "video/image_sequence.h"
 #include "video/v4l2_capture.h"
 #include "video/v4l2_device.h"
 #include "video/v4l2_output.h"
+#include "video/window_sink.h"
 
 namespace ifsfx::app {
 namespace {
@@ -52,6 +55,7 @@ struct CamArgs {
   std::string record;
   std::string codec;
   bool window = false;
+  std::string snapshot = "cam-snapshot-%03d.png";
   std::string preset = "sierpinski-triangle";
   std::string colouring;
   std::string view;
@@ -147,63 +151,6 @@ std::string default_device() {
               "it with --device");
 }
 
-// A sink that forwards to a movie file while recording is on, so the window's record key can
-// start and stop files while the loop holds one fixed list of sinks.
-class RecordingSink final : public FrameSink {
- public:
-  // `first` is taken as given when `exact` (the --record path, overwritten like any output);
-  // otherwise, and for every later file, the first free name FIRST-2, FIRST-3, ... is used.
-  RecordingSink(std::filesystem::path first, bool exact, std::string codec, cv::Size size,
-                double fps)
-      : first_(std::move(first)), exact_(exact), codec_(std::move(codec)), size_(size), fps_(fps) {}
-
-  bool recording() const { return file_ != nullptr; }
-  const std::filesystem::path& path() const { return path_; }
-  std::int64_t frames() const { return file_ ? file_->frames_written() : frames_; }
-
-  void start() {
-    std::filesystem::path p = first_;
-    if (started_ > 0 || !exact_) {
-      for (int n = 2; std::filesystem::exists(p); ++n) {
-        p = first_.parent_path() /
-            fmt::format("{}-{}{}", first_.stem().string(), n, first_.extension().string());
-      }
-    }
-    video::FileSinkOptions o;
-    o.codec = codec_;
-    o.size = size_;
-    o.frame_rate = std::abs(fps_ - std::round(fps_)) < 1e-6
-                       ? video::Rational{static_cast<int>(std::lround(fps_)), 1}
-                       : video::Rational{static_cast<int>(std::lround(fps_ * 1000)), 1000};
-    file_ = std::make_unique<video::FileSink>(p, o);
-    path_ = p;
-    frames_ = 0;
-    ++started_;
-  }
-  void stop() {
-    if (!file_) return;
-    frames_ = file_->frames_written();
-    auto file = std::move(file_);
-    file->close();
-  }
-
-  void write(const Frame& frame) override {
-    if (file_) file_->write(frame);
-  }
-  void close() override { stop(); }
-  std::string name() const override { return path_.string(); }
-
- private:
-  std::filesystem::path first_, path_;
-  bool exact_ = false;
-  std::string codec_;
-  cv::Size size_;
-  double fps_;
-  int started_ = 0;
-  std::int64_t frames_ = 0;
-  std::unique_ptr<video::FileSink> file_;
-};
-
 // The live filter: F coloured through G on the camera's frame size (DESIGN.md §3) — one steal
 // map computed once and reapplied per frame, or, animated, maps of F drifting in time built on a
 // worker and cross-faded in (video/camera_drift.h).
@@ -263,53 +210,43 @@ class LiveFilter {
   std::unique_ptr<video::LiveDrift> drift_;
 };
 
-// A snapshot file name not taken yet: cam-snapshot-001.png, -002, ...
-std::filesystem::path next_snapshot() {
-  for (int n = 1;; ++n) {
-    std::filesystem::path p = fmt::format("cam-snapshot-{:03}.png", n);
+// The shipped presets the n/p keys step through: the drawing IFSs (the factor-1 square tilings
+// are colouring IFSs only and are refused as F).
+std::vector<std::string> cycle_presets() {
+  std::vector<std::string> names;
+  for (const PresetSummary& p : list_shipped_presets()) {
+    if (p.contraction < 1) names.push_back(p.name);
+  }
+  return names;
+}
+
+// The first file of the --snapshot pattern, counting from 1, that does not exist yet.
+std::filesystem::path next_snapshot(const std::string& pattern) {
+  for (std::int64_t n = 1;; ++n) {
+    std::filesystem::path p = video::sequence_path(pattern, n);
     if (!std::filesystem::exists(p)) return p;
   }
 }
 
-// The interactive window: keys n/p (preset), a (animation), s (snapshot), r (record), q/Esc
-// (quit).
-class CamWindow {
+// Reports what the window's keys did: on stderr (unless --quiet) and, for a few seconds, in the
+// window's readout.
+class Notices {
  public:
-  static constexpr const char* kTitle = "ifsfx cam";
-  CamWindow() {
-    try {
-      cv::namedWindow(kTitle, cv::WINDOW_AUTOSIZE);
-    } catch (const cv::Exception& e) {
-      throw Error(ErrorKind::unsupported,
-                  fmt::format("--window: cannot open a window (no display?): {}; run headless "
-                              "with --output or --record",
-                              e.err));
-    }
+  explicit Notices(bool quiet) : quiet_(quiet) {}
+  void operator()(const std::string& text) {
+    if (!quiet_) std::fprintf(stderr, "cam: %s\n", text.c_str());
+    text_ = text;
+    until_ = std::chrono::steady_clock::now() + std::chrono::seconds(3);
   }
-  ~CamWindow() {
-    try {
-      cv::destroyWindow(kTitle);
-    } catch (const cv::Exception&) {
-    }
-  }
-  CamWindow(const CamWindow&) = delete;
-  CamWindow& operator=(const CamWindow&) = delete;
-
-  // Shows the frame with the readout; returns the key pressed (-1 for none).
-  int show(const cv::Mat& image, const std::string& readout) {
-    image.copyTo(canvas_);
-    const cv::Point at(10, 24);
-    cv::putText(canvas_, readout, at, cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar::all(0), 3,
-                cv::LINE_AA);
-    cv::putText(canvas_, readout, at, cv::FONT_HERSHEY_SIMPLEX, 0.6, cv::Scalar::all(255), 1,
-                cv::LINE_AA);
-    cv::imshow(kTitle, canvas_);
-    const int key = cv::waitKey(1);
-    return key < 0 ? -1 : key & 0xff;
+  // The latest notice while it is fresh, else "".
+  std::string current() const {
+    return std::chrono::steady_clock::now() < until_ ? text_ : std::string();
   }
 
  private:
-  cv::Mat canvas_;
+  bool quiet_;
+  std::string text_;
+  std::chrono::steady_clock::time_point until_;
 };
 
 void run_cam(const CamArgs& args) {
@@ -323,9 +260,16 @@ void run_cam(const CamArgs& args) {
                 fmt::format("--fps: must be in (0, 1000] (got {:g})", args.fps));
   }
   const bool window = args.window || (args.output.empty() && args.record.empty());
-  // Fail on a bad output path before the camera is opened and the map computed.
+  // Fail on a bad output path, pattern or display before the camera is opened and the map
+  // computed (but say "no camera" first when there is none).
   if (!args.record.empty()) video::resolve_encoder(args.record, args.codec);
+  try {
+    video::sequence_path(args.snapshot, 1);
+  } catch (const Error& e) {
+    throw Error(e.kind(), fmt::format("--snapshot: {}", e.what()));
+  }
   const std::string device = args.device.empty() ? default_device() : args.device;
+  if (window) video::require_display("--window", "run headless with --output or --record");
 
   video::V4l2CaptureOptions copt;
   copt.size = size;
@@ -343,11 +287,6 @@ void run_cam(const CamArgs& args) {
             .c_str());
   }
 
-  const auto shipped = list_shipped_presets();
-  std::optional<std::size_t> preset_index;
-  for (std::size_t i = 0; i < shipped.size(); ++i) {
-    if (shipped[i].name == args.preset) preset_index = i;
-  }
   auto filter =
       std::make_unique<LiveFilter>(args, args.preset, granted, args.animate == Animate::drift);
 
@@ -361,44 +300,91 @@ void run_cam(const CamArgs& args) {
             .fps = fps});
     sinks.push_back(webcam.get());
   }
-  RecordingSink recording(args.record.empty() ? "cam-recording.mkv" : args.record,
-                          !args.record.empty(), args.codec, granted, fps);
+  CamRecording recording(args.record.empty() ? "cam-recording.mkv" : args.record,
+                         !args.record.empty(), args.codec, granted, fps);
   if (!args.record.empty()) recording.start();
   sinks.push_back(&recording);
 
   std::unique_ptr<CamWindow> win;
   if (window) win = std::make_unique<CamWindow>();
+  const std::vector<std::string> presets = cycle_presets();
+  std::optional<std::size_t> preset_index;
+  for (std::size_t i = 0; i < presets.size(); ++i) {
+    if (presets[i] == args.preset) preset_index = i;
+  }
+  Notices notice(args.quiet);
   bool quit = false;
+  std::int64_t drift_maps = 0;  // built by animations that have ended (a preset change, the a key)
+
+  // n/p: the next/previous shipped preset; the map is computed here, between two frames.
+  const auto step_preset = [&](bool forward) {
+    if (presets.empty()) return;
+    const std::size_t n = presets.size();
+    std::size_t i = preset_index.value_or(forward ? n - 1 : 0);
+    i = forward ? (i + 1) % n : (i + n - 1) % n;
+    try {
+      auto next = std::make_unique<LiveFilter>(args, presets[i], granted, filter->animated());
+      drift_maps += filter->maps_built();
+      filter = std::move(next);
+      preset_index = i;
+      notice(fmt::format("preset {} ({}/{})", presets[i], i + 1, n));
+    } catch (const Error& e) {
+      notice(fmt::format("preset {} not shown: {}", presets[i], e.what()));
+    }
+  };
+  // A failed snapshot or recording start is reported and the live view goes on: the session is
+  // worth more than one file.
+  const auto snapshot = [&](const cv::Mat& image) {
+    try {
+      const std::filesystem::path path = next_snapshot(args.snapshot);
+      write_image(path, image);
+      notice(fmt::format("snapshot {}", path.string()));
+    } catch (const Error& e) {
+      notice(fmt::format("snapshot failed: {}", e.what()));
+    }
+  };
+  const auto toggle_recording = [&] {
+    if (recording.recording()) {
+      recording.stop();
+      notice(fmt::format("recording stopped: {} ({} frames)", recording.path().string(),
+                         recording.frames()));
+      return;
+    }
+    try {
+      recording.start();
+      notice(fmt::format("recording {}", recording.path().string()));
+    } catch (const Error& e) {
+      notice(fmt::format("recording failed: {}", e.what()));
+    }
+  };
+
   const auto observer = [&](const Frame& out, const CameraStats& stats) {
     if (!win) return true;
-    const std::string readout = fmt::format("{:.1f} fps  {}{}", stats.fps(), filter->name(),
-                                            recording.recording() ? "  REC" : "");
-    const int key = win->show(out.image, readout);
-    switch (key) {
+    const std::string readout =
+        fmt::format("{:.1f} fps  {}{}{}", stats.fps(), filter->name(),
+                    filter->animated() ? "  drift" : "", recording.recording() ? "  REC" : "");
+    switch (win->show(out.image, {readout, notice.current()})) {
       case 'q':
-      case 27:
+      case 27:  // Esc
+      case CamWindow::kClosed:
         quit = true;
         return false;
       case 'n':
-      case 'p': {
-        if (shipped.empty()) break;
-        const std::size_t n = shipped.size();
-        const bool forward = key == 'n';
-        std::size_t i = preset_index.value_or(forward ? n - 1 : 0);
-        i = forward ? (i + 1) % n : (i + n - 1) % n;
-        preset_index = i;
-        filter = std::make_unique<LiveFilter>(args, shipped[i].name, granted, filter->animated());
+        step_preset(true);
         break;
-      }
+      case 'p':
+        step_preset(false);
+        break;
+      case 'a':
+        drift_maps += filter->maps_built();
+        filter->set_animate(!filter->animated());
+        notice(filter->animated() ? "animation on (drift)" : "animation off");
+        break;
       case 's':
-        write_image(next_snapshot(), out.image);
+        snapshot(out.image);
         break;
       case 'r':
-        if (recording.recording()) {
-          recording.stop();
-        } else {
-          recording.start();
-        }
+        toggle_recording();
         break;
       default:
         break;
@@ -419,6 +405,7 @@ void run_cam(const CamArgs& args) {
     }
     throw;
   }
+  drift_maps += filter->maps_built();
   const std::string kept =
       recording.frames() > 0
           ? fmt::format("; recorded {} ({} frames)", recording.path().string(), recording.frames())
@@ -430,8 +417,7 @@ void run_cam(const CamArgs& args) {
                     "latency mean {:.1f} ms, p95 {:.1f} ms{}{}",
                     stats.frames, stats.seconds, stats.fps(), stats.dropped,
                     100 * stats.drop_fraction(), 1e3 * stats.latency_mean, 1e3 * stats.latency_p95,
-                    filter->animated() ? fmt::format(", {} drift maps", filter->maps_built()) : "",
-                    kept)
+                    drift_maps > 0 ? fmt::format(", {} drift maps", drift_maps) : "", kept)
             .c_str());
   }
   if (g_stop.load() && !quit) {
@@ -472,6 +458,10 @@ void add_cam_command(CLI::App& app) {
                 "Show a window (default when neither --output nor --record is given). Keys: n/p "
                 "next/previous preset, a animation on/off, s snapshot, r start/stop recording, "
                 "q/Esc quit");
+  cmd->add_option("--snapshot", args->snapshot,
+                  "File pattern of the window's snapshots (s key), numbered from 1 on; the first "
+                  "free number is taken")
+      ->capture_default_str();
   cmd->add_option("--preset", args->preset,
                   "Drawing IFS F: a shipped name, a .toml/.ifs path, or FILE.ifs:NAME")
       ->capture_default_str();

@@ -167,11 +167,7 @@ void run_filter(const FilterArgs& args) {
   if (args.preview == !args.output.empty())
     throw Error(ErrorKind::invalid_argument,
                 "filter: give either -o OUTPUT or --preview (got both or neither)");
-  if (args.preview && std::getenv("DISPLAY") == nullptr &&
-      std::getenv("WAYLAND_DISPLAY") == nullptr)
-    throw Error(ErrorKind::unsupported,
-                "--preview: no display (neither DISPLAY nor WAYLAND_DISPLAY is set); write a file "
-                "with -o instead");
+  if (args.preview) video::require_display("--preview", "write a file with -o instead");
   if (!(args.mix >= 0 && args.mix <= 1))
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("--mix: must be in [0, 1] (got {})", args.mix));

@@ -12,6 +12,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # runtime tools and data: ffmpeg/ffprobe (audio remux, tests), OpenCV's sample clips and images
   ffmpeg opencv-doc openimageio-tools
+  # the window of `ifsfx cam` tested under a virtual X server: Xvfb, xdotool (keys), xwd + netpbm
+  xvfb xdotool x11-apps netpbm
 )
 
 missing=()

@@ -1,6 +1,7 @@
 #include "video/file_sink.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <system_error>
 
@@ -79,7 +80,10 @@ AVPixelFormat pick_pixel_format(const AVCodec* encoder) {
                             AV_PIX_FMT_0RGB32, AV_PIX_FMT_RGB32})
       if (supports(f)) return f;
   }
-  for (AVPixelFormat f : {AV_PIX_FMT_YUV420P, AV_PIX_FMT_YUVJ420P})
+  // JPEG-based codecs (MJPEG) code full-range YUV; FFmpeg's MJPEG encoder refuses limited range.
+  std::array<AVPixelFormat, 2> yuv420{AV_PIX_FMT_YUV420P, AV_PIX_FMT_YUVJ420P};
+  if (encoder->id == AV_CODEC_ID_MJPEG) std::swap(yuv420[0], yuv420[1]);
+  for (AVPixelFormat f : yuv420)
     if (supports(f)) return f;
   return formats[0];
 }
@@ -171,6 +175,7 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
   c->framerate = AVRational{options.frame_rate.num, options.frame_rate.den};
   c->sample_aspect_ratio = AVRational{1, 1};
   c->pix_fmt = pick_pixel_format(encoder);
+  if (c->pix_fmt == AV_PIX_FMT_YUVJ420P) c->color_range = AVCOL_RANGE_JPEG;
   c->thread_count = options.threads;
   if (encoder->id == AV_CODEC_ID_MPEG4) {
     c->flags |= AV_CODEC_FLAG_QSCALE;

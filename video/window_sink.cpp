@@ -1,5 +1,6 @@
 #include "video/window_sink.h"
 
+#include <cstdlib>
 #include <thread>
 
 #include <fmt/format.h>
@@ -8,6 +9,13 @@
 #include "ifs/error.h"
 
 namespace ifsfx::video {
+
+void require_display(const std::string& what, const std::string& instead) {
+  if (std::getenv("DISPLAY") != nullptr || std::getenv("WAYLAND_DISPLAY") != nullptr) return;
+  throw Error(ErrorKind::unsupported,
+              fmt::format("{}: no display (neither DISPLAY nor WAYLAND_DISPLAY is set); {}", what,
+                          instead));
+}
 
 WindowSink::WindowSink(const std::string& title, const WindowSinkOptions& options)
     : title_(title), options_(options) {}
@@ -23,7 +31,8 @@ void WindowSink::write(const Frame& frame) {
   using clock = std::chrono::steady_clock;
   if (!open_) {
     try {
-      cv::namedWindow(title_, cv::WINDOW_AUTOSIZE);
+      // GUI_NORMAL: the picture alone, without the Qt backend's toolbar and status bar.
+      cv::namedWindow(title_, cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL);
     } catch (const cv::Exception& e) {
       throw Error(ErrorKind::unsupported,
                   fmt::format("--preview: cannot open a window ({})", e.err));

@@ -10,6 +10,11 @@
 
 namespace ifsfx::video {
 
+// Throws Error{unsupported} "WHAT: no display (neither DISPLAY nor WAYLAND_DISPLAY is set);
+// INSTEAD" when there is no display to open a window on: checked before any work, and before a GUI
+// toolkit that aborts the process without a display is loaded.
+void require_display(const std::string& what, const std::string& instead);
+
 struct WindowSinkOptions {
   double fps = 25;                    // pace of display; 0 = as fast as frames come
   std::atomic<bool>* stop = nullptr;  // set when the user closes the window

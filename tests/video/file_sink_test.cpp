@@ -52,6 +52,25 @@ TEST(file_sink, h264_keeps_every_frame_close_to_its_source) {
   EXPECT_EQ(n, 20);
 }
 
+// MJPEG codes full-range YUV (FFmpeg's encoder refuses limited range): the levels must come back
+// as they went in, not stretched or squeezed by a range mix-up.
+TEST(file_sink, mjpeg_keeps_the_levels_of_its_source) {
+  const auto dir = temp_folder("mjpeg");
+  const cv::Size size{96, 64};
+  write_movie(dir / "a.avi", "mjpeg", size, 10);
+  FileSource in(dir / "a.avi");
+  int n = 0;
+  while (auto f = in.read()) {
+    const cv::Mat source = test_frame(size, n);
+    EXPECT_GT(cv::PSNR(f->image, source), 28.0) << "frame " << n;
+    const cv::Scalar got = cv::mean(f->image), want = cv::mean(source);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(got[c], want[c], 3.0) << "frame " << n << " channel " << c;
+    ++n;
+  }
+  EXPECT_EQ(n, 10);
+}
+
 TEST(file_sink, default_encoder_follows_the_container_like_ffmpeg) {
   EXPECT_EQ(resolve_encoder("x.mp4", ""), "libx264");
   EXPECT_EQ(resolve_encoder("x.mkv", ""), "libx264");

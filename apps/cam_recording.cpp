@@ -1,0 +1,47 @@
+#include "apps/cam_recording.h"
+
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+namespace ifsfx::app {
+
+CamRecording::CamRecording(std::filesystem::path first, bool exact, std::string codec,
+                           cv::Size size, double fps)
+    : first_(std::move(first)), exact_(exact), codec_(std::move(codec)), size_(size), fps_(fps) {}
+
+void CamRecording::start() {
+  if (file_) return;
+  std::filesystem::path p = first_;
+  if (started_ > 0 || !exact_) {
+    for (int n = 2; std::filesystem::exists(p); ++n) {
+      p = first_.parent_path() /
+          fmt::format("{}-{}{}", first_.stem().string(), n, first_.extension().string());
+    }
+  }
+  video::FileSinkOptions o;
+  o.codec = codec_;
+  o.size = size_;
+  // A camera's rate is usually whole (30) or NTSC-like (29.97): keep it exact either way.
+  o.frame_rate = std::abs(fps_ - std::round(fps_)) < 1e-6
+                     ? video::Rational{static_cast<int>(std::lround(fps_)), 1}
+                     : video::Rational{static_cast<int>(std::lround(fps_ * 1000)), 1000};
+  file_ = std::make_unique<video::FileSink>(p, o);
+  path_ = p;
+  frames_ = 0;
+  ++started_;
+}
+
+void CamRecording::stop() {
+  if (!file_) return;
+  frames_ = file_->frames_written();
+  auto file = std::move(file_);
+  file->close();
+}
+
+void CamRecording::write(const video::Frame& frame) {
+  if (file_) file_->write(frame);
+}
+
+}  // namespace ifsfx::app
