@@ -3,7 +3,6 @@
 // webcam for any app), recorded to a movie file, or all three.
 #include <atomic>
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -19,6 +18,8 @@
 #include "apps/cam_window.h"
 #include "apps/cli_options.h"
 #include "apps/commands.h"
+#include "apps/fractal_filter_options.h"
+#include "apps/stop_signals.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/preset.h"
@@ -56,48 +57,10 @@ struct CamArgs {
   std::string codec;
   bool window = false;
   std::string snapshot = "cam-snapshot-%03d.png";
-  std::string preset = "sierpinski-triangle";
-  std::string colouring;
-  std::string view;
-  double margin = 0.05;
-  bool exact = false;
-  double quality = 64;
-  std::string background = "black";
+  FractalFilterArgs fractal{.preset = "sierpinski-triangle"};
   Animate animate = Animate::none;
-  double drift_amount = 0.05;
-  double drift_speed = 0.2;
   int fade_frames = 12;
-  double mix = 0;
-  std::uint64_t seed = 1;
-  int threads = 0;
   bool quiet = false;
-};
-
-// Set by SIGINT/SIGTERM; the live loop checks it between frames.
-std::atomic<bool> g_stop{false};
-
-void on_cam_stop_signal(int) {
-  g_stop.store(true);
-}
-
-// Installs the stop handler for the life of the object, restoring the previous ones after.
-class StopSignals {
- public:
-  StopSignals() {
-    g_stop.store(false);
-    old_int_ = std::signal(SIGINT, on_cam_stop_signal);
-    old_term_ = std::signal(SIGTERM, on_cam_stop_signal);
-  }
-  ~StopSignals() {
-    std::signal(SIGINT, old_int_);
-    std::signal(SIGTERM, old_term_);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-
- private:
-  void (*old_int_)(int) = SIG_DFL;
-  void (*old_term_)(int) = SIG_DFL;
 };
 
 std::string rate_list(const std::vector<double>& fps, bool stepwise) {
@@ -161,18 +124,11 @@ class LiveFilter {
     const IfsPreset F = load_ifs(preset);
     F_ = F.ifs;
     name_ = F.ifs.name.empty() ? preset : F.ifs.name;
-    G_ = colouring_option(args.colouring, F_);
-    map_options_.view = view_option(args.view);
-    map_options_.margin = args.margin;
-    map_options_.exact = args.exact;
-    map_options_.quality = args.quality;
-    map_options_.seed = args.seed;
-    map_options_.threads = args.threads;
-    options_.mix = args.mix;
-    options_.background = video::parse_background(args.background);
-    options_.threads = args.threads;
+    G_ = colouring_option(args.fractal.colouring, F_);
+    map_options_ = args.fractal.map_options();
+    options_ = args.fractal.filter_options();
     fixed_ = video::make_remap_table(compute_steal_map(F_, G_, size, map_options_), size,
-                                     Interpolation::bilinear, args.threads);
+                                     Interpolation::bilinear, args.fractal.threads);
     set_animate(animate);
   }
 
@@ -186,7 +142,7 @@ class LiveFilter {
     }
     if (drift_) return;
     video::LiveDriftOptions o;
-    o.drift = {.amount = args_.drift_amount, .speed = args_.drift_speed, .seed = args_.seed};
+    o.drift = args_.fractal.drift_options();
     o.map = map_options_;
     o.fade_frames = args_.fade_frames;
     drift_ = std::make_unique<video::LiveDrift>(F_, G_, size_, o);
@@ -263,6 +219,8 @@ void run_cam(const CamArgs& args) {
   // Fail on a bad output path, pattern or display before the camera is opened and the map
   // computed (but say "no camera" first when there is none).
   if (!args.record.empty()) video::resolve_encoder(args.record, args.codec);
+  args.fractal.map_options();     // --view
+  args.fractal.filter_options();  // --mix, --background
   try {
     video::sequence_path(args.snapshot, 1);
   } catch (const Error& e) {
@@ -287,8 +245,8 @@ void run_cam(const CamArgs& args) {
             .c_str());
   }
 
-  auto filter =
-      std::make_unique<LiveFilter>(args, args.preset, granted, args.animate == Animate::drift);
+  auto filter = std::make_unique<LiveFilter>(args, args.fractal.preset, granted,
+                                             args.animate == Animate::drift);
 
   std::vector<FrameSink*> sinks;
   std::unique_ptr<video::V4l2Output> webcam;
@@ -310,7 +268,7 @@ void run_cam(const CamArgs& args) {
   const std::vector<std::string> presets = cycle_presets();
   std::optional<std::size_t> preset_index;
   for (std::size_t i = 0; i < presets.size(); ++i) {
-    if (presets[i] == args.preset) preset_index = i;
+    if (presets[i] == args.fractal.preset) preset_index = i;
   }
   Notices notice(args.quiet);
   bool quit = false;
@@ -393,11 +351,12 @@ void run_cam(const CamArgs& args) {
   };
 
   StopSignals signals;
+  std::atomic<bool>& stop = StopSignals::stop_flag();
   CameraStats stats;
   try {
     stats = video::run_camera(
         camera, [&](const Frame& frame) { return (*filter)(frame); }, sinks,
-        {.max_frames = args.max_frames, .stop = &g_stop}, observer);
+        {.max_frames = args.max_frames, .stop = &stop}, observer);
   } catch (const Error& e) {
     if (recording.frames() > 0) {
       throw Error(e.kind(), fmt::format("{}; recording kept: {} ({} frames)", e.what(),
@@ -420,7 +379,7 @@ void run_cam(const CamArgs& args) {
                     drift_maps > 0 ? fmt::format(", {} drift maps", drift_maps) : "", kept)
             .c_str());
   }
-  if (g_stop.load() && !quit) {
+  if (stop.load() && !quit) {
     throw Error(ErrorKind::interrupted,
                 fmt::format("cam: interrupted after {} frames{}", stats.frames, kept));
   }
@@ -462,25 +421,7 @@ void add_cam_command(CLI::App& app) {
                   "File pattern of the window's snapshots (s key), numbered from 1 on; the first "
                   "free number is taken")
       ->capture_default_str();
-  cmd->add_option("--preset", args->preset,
-                  "Drawing IFS F: a shipped name, a .toml/.ifs path, or FILE.ifs:NAME")
-      ->capture_default_str();
-  cmd->add_option("--colouring", args->colouring,
-                  "Colouring IFS G on the frame's unit square (default: the tiling for F's map "
-                  "count)");
-  cmd->add_option("--view", args->view,
-                  "Plane rectangle x0,y0,x1,y1 shown (default: the attractor, auto-framed)");
-  cmd->add_option("--margin", args->margin, "Auto-framing margin, fraction of the larger side")
-      ->capture_default_str();
-  cmd->add_flag("--exact", args->exact, "Exact steal map by per-pixel descent (else chaos game)");
-  cmd->add_option("--quality", args->quality, "Chaos-game points per output pixel")
-      ->capture_default_str();
-  cmd->add_option("--background", args->background,
-                  "Uncovered areas: black, original, #rrggbb or R,G,B")
-      ->capture_default_str();
-  cmd->add_option("--mix", args->mix, "Blend of the original frame over the fractal, 0..1")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 1.0));
+  add_fractal_filter_options(*cmd, args->fractal);
   const std::map<std::string, Animate> animations{{"none", Animate::none},
                                                   {"drift", Animate::drift}};
   cmd->add_option("--animate", args->animate,
@@ -488,22 +429,14 @@ void add_cam_command(CLI::App& app) {
                   "a key toggles it)")
       ->transform(choice(animations))
       ->default_str("none")
-      ->option_text(choices_text(animations, "none"));
-  cmd->add_option("--drift-amount", args->drift_amount,
-                  "Largest excursion of a map coefficient (translations: fraction of the "
-                  "attractor's size)")
-      ->capture_default_str();
-  cmd->add_option("--drift-speed", args->drift_speed, "Cycles per second of the slowest drift")
-      ->capture_default_str();
+      ->option_text(choices_text(animations, "none"))
+      ->group("Animation");
   cmd->add_option("--fade-frames", args->fade_frames,
                   "Animation: frames over which each new map fades in (maps are built as fast as "
                   "the machine allows, never holding up the camera)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
-  cmd->add_option("--seed", args->seed, "Random seed of the chaos-game steal map and the drift")
-      ->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")
-      ->capture_default_str();
+      ->check(CLI::Range(1, 100000))
+      ->group("Animation");
   cmd->add_flag("-q,--quiet", args->quiet, "Do not print the device and summary lines");
   cmd->callback([args] { run_cam(*args); });
 }

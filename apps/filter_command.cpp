@@ -3,8 +3,6 @@
 // rebuilt as time goes on with --animate), on three threads: decode, filter, encode.
 #include <unistd.h>
 
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -16,6 +14,8 @@
 
 #include "apps/cli_options.h"
 #include "apps/commands.h"
+#include "apps/fractal_filter_options.h"
+#include "apps/stop_signals.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"
@@ -39,64 +39,17 @@ struct FilterArgs {
   std::string input;
   std::string output;
   bool preview = false;
-  std::string preset = "barnsley-fern";
-  std::string colouring;
-  bool exact = false;
-  std::string view;
-  double margin = 0.05;
-  double quality = 64;
-  double mix = 0;
-  std::string background = "black";
+  FractalFilterArgs fractal{.preset = "barnsley-fern"};
   Interpolation interpolation = Interpolation::bilinear;
   std::string size;
   std::string codec;
   std::string frames;
   double fps = 25;
   Animate animate = Animate::none;
-  double drift_amount = 0.05;
-  double drift_speed = 0.2;
   int keyframe_interval = 12;
   std::string superifs = "paper-fig4";
   int buffers = 3;
-  std::uint64_t seed = 1;
-  int threads = 0;
   bool quiet = false;
-};
-
-// The stop flag of the running job: a signal handler may only touch a lock-free atomic.
-std::atomic<bool> stop_requested{false};
-static_assert(std::atomic<bool>::is_always_lock_free);
-
-extern "C" void on_stop_signal(int signal) {
-  // A second Ctrl-C while the first is being honoured ends the process the default way.
-  if (stop_requested.exchange(true)) {
-    std::signal(signal, SIG_DFL);
-    std::raise(signal);
-  }
-}
-
-// SIGINT/SIGTERM set the stop flag for the lifetime of the guard; the pipeline then finishes the
-// file with the frames done.
-class StopSignals {
- public:
-  StopSignals() {
-    stop_requested = false;
-    struct sigaction action {};
-    action.sa_handler = on_stop_signal;
-    sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, &old_int_);
-    sigaction(SIGTERM, &action, &old_term_);
-  }
-  ~StopSignals() {
-    sigaction(SIGINT, &old_int_, nullptr);
-    sigaction(SIGTERM, &old_term_, nullptr);
-  }
-  StopSignals(const StopSignals&) = delete;
-  StopSignals& operator=(const StopSignals&) = delete;
-
- private:
-  struct sigaction old_int_ {};
-  struct sigaction old_term_ {};
 };
 
 std::string clock_text(double seconds) {
@@ -145,8 +98,8 @@ std::unique_ptr<video::FrameSource> open_source(const FilterArgs& args) {
   if (video::is_sequence_pattern(args.input))
     return std::make_unique<video::ImageSequenceSource>(args.input,
                                                         video::ImageSequenceOptions{args.fps});
-  return std::make_unique<video::FileSource>(args.input,
-                                             video::FileSourceOptions{.threads = args.threads});
+  return std::make_unique<video::FileSource>(
+      args.input, video::FileSourceOptions{.threads = args.fractal.threads});
 }
 
 video::Rational rate_of(const video::FrameSource& source) {
@@ -168,22 +121,16 @@ void run_filter(const FilterArgs& args) {
     throw Error(ErrorKind::invalid_argument,
                 "filter: give either -o OUTPUT or --preview (got both or neither)");
   if (args.preview) video::require_display("--preview", "write a file with -o instead");
-  if (!(args.mix >= 0 && args.mix <= 1))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("--mix: must be in [0, 1] (got {})", args.mix));
   const video::FrameRange range =
       args.frames.empty() ? video::FrameRange{} : video::parse_frame_range(args.frames);
-  video::FilterOptions filter_options;
+  video::FilterOptions filter_options = args.fractal.filter_options();
   filter_options.interpolation = args.interpolation;
-  filter_options.mix = args.mix;
-  filter_options.background = video::parse_background(args.background);
-  filter_options.threads = args.threads;
   // Cheap checks of the output first: an unusable output fails before any decoding.
   if (!args.output.empty() && !video::is_sequence_pattern(args.output))
     video::resolve_encoder(args.output, args.codec);
 
-  const IfsPreset F = load_ifs(args.preset);
-  const Ifs G = colouring_option(args.colouring, F.ifs);
+  const IfsPreset F = load_ifs(args.fractal.preset);
+  const Ifs G = colouring_option(args.fractal.colouring, F.ifs);
 
   video::silence_libav_log();
   std::unique_ptr<video::FrameSource> source = open_source(args);
@@ -196,7 +143,7 @@ void run_filter(const FilterArgs& args) {
   if (args.preview) {
     sink = std::make_unique<video::WindowSink>(
         fmt::format("ifsfx filter: {}", args.input),
-        video::WindowSinkOptions{.fps = rate.value(), .stop = &stop_requested});
+        video::WindowSinkOptions{.fps = rate.value(), .stop = &StopSignals::stop_flag()});
   } else {
     check_distinct(args.input, args.output);
     if (video::is_sequence_pattern(args.output)) {
@@ -206,7 +153,7 @@ void run_filter(const FilterArgs& args) {
       o.codec = args.codec;
       o.size = size;
       o.frame_rate = rate;
-      o.threads = args.threads;
+      o.threads = args.fractal.threads;
       if (const auto* file = dynamic_cast<const video::FileSource*>(source.get());
           file != nullptr && file->has_audio()) {
         o.audio_from = file->path();
@@ -216,13 +163,7 @@ void run_filter(const FilterArgs& args) {
     }
   }
 
-  StealMapOptions map_options;
-  map_options.view = view_option(args.view);
-  map_options.margin = args.margin;
-  map_options.exact = args.exact;
-  map_options.quality = args.quality;
-  map_options.seed = args.seed;
-  map_options.threads = args.threads;
+  StealMapOptions map_options = args.fractal.map_options();
 
   video::FrameFilter filter;
   std::unique_ptr<video::MapSchedule> schedule;
@@ -231,7 +172,7 @@ void run_filter(const FilterArgs& args) {
   if (args.animate == Animate::none) {
     auto table = std::make_shared<const video::RemapTable>(
         video::make_remap_table(compute_steal_map(F.ifs, G, size, map_options), frame_size,
-                                args.interpolation, args.threads));
+                                args.interpolation, args.fractal.threads));
     filter = [table, filter_options](const video::Frame& frame) {
       return video::filter_frame(frame.image, *table, filter_options);
     };
@@ -239,16 +180,16 @@ void run_filter(const FilterArgs& args) {
     // Drift: keyframe k shows the IFS drifted to time k·K/fps, in a view fixed from the base IFS
     // so that the frame does not jump as the attractor moves.
     if (!map_options.view)
-      map_options.view = fit_view(attractor_bounds(F.ifs, args.seed), size, args.margin);
-    const video::DriftOptions drift{
-        .amount = args.drift_amount, .speed = args.drift_speed, .seed = args.seed};
+      map_options.view =
+          fit_view(attractor_bounds(F.ifs, args.fractal.seed), size, args.fractal.margin);
+    const video::DriftOptions drift = args.fractal.drift_options();
     video::drift(F.ifs, 0, drift);  // checks the drift options before any work
     const double fps = rate.value();
     schedule = std::make_unique<video::MapSchedule>(
         [=, base = F.ifs](std::int64_t k) {
           const Ifs now = video::drift(base, static_cast<double>(k) * interval / fps, drift);
           return video::make_remap_table(compute_steal_map(now, G, size, map_options), frame_size,
-                                         args.interpolation, args.threads);
+                                         args.interpolation, args.fractal.threads);
         },
         interval);
   } else {
@@ -258,13 +199,13 @@ void run_filter(const FilterArgs& args) {
     t.count = args.buffers;
     t.mode = TextureMode::steal;
     t.source = cv::Mat(frame_size, CV_8UC3);  // only its size: it sets the descent depth
-    t.seed = args.seed;
-    t.threads = args.threads;
+    t.seed = args.fractal.seed;
+    t.threads = args.fractal.threads;
     sequence = std::make_shared<TextureSequence>(load_superifs(args.superifs).super, size, t);
     schedule = std::make_unique<video::MapSchedule>(
         [=, seq = sequence](std::int64_t k) {
           return video::make_remap_table(seq->map_at(k), frame_size, args.interpolation,
-                                         args.threads);
+                                         args.fractal.threads);
         },
         interval);
   }
@@ -277,14 +218,14 @@ void run_filter(const FilterArgs& args) {
 
   video::PipelineOptions options;
   options.range = range;
-  options.stop = &stop_requested;
+  options.stop = &StopSignals::stop_flag();
   const bool tty = isatty(fileno(stderr)) != 0;
   if (!args.quiet && !args.preview) {
     options.progress = ProgressPrinter(tty);
     options.progress_interval = tty ? 0.25 : 2.0;
   }
   // Ctrl-C while the steal map was computed: nothing to keep (the sink removes its .part file).
-  if (stop_requested)
+  if (StopSignals::stop_flag())
     throw Error(ErrorKind::interrupted, "interrupted before the first frame; nothing written");
   const video::PipelineResult result = video::run_pipeline(*source, *sink, filter, options);
   const std::string where = args.preview ? std::string("the preview") : args.output;
@@ -316,28 +257,7 @@ void add_filter_command(CLI::App& app) {
                   "OUTPUT.part and renamed at the end");
   cmd->add_flag("--preview", args->preview,
                 "Show the result in a window instead of writing a file");
-  cmd->add_option("--preset", args->preset,
-                  "The drawing IFS F: a shipped name (see `ifsfx presets`), a .toml/.ifs path, or "
-                  "FILE.ifs:NAME")
-      ->capture_default_str();
-  cmd->add_option("--colouring", args->colouring,
-                  "The colouring IFS G on the frame (same map count as F; default: a tiling of the "
-                  "frame)");
-  cmd->add_flag("--exact", args->exact,
-                "Exact per-pixel tops (deterministic descent) instead of the chaos game");
-  cmd->add_option("--view", args->view,
-                  "Plane rectangle x0,y0,x1,y1 shown on the frame (default: the attractor, "
-                  "auto-framed); 0,0,1,1 puts the unit square on the whole frame");
-  cmd->add_option("--margin", args->margin, "Auto-framing margin, fraction of the larger side")
-      ->capture_default_str()
-      ->check(CLI::Range(0.0, 10.0));
-  cmd->add_option("--quality", args->quality, "Chaos-game points per output pixel")
-      ->capture_default_str();
-  cmd->add_option("--mix", args->mix, "Weight of the original frame blended over the fractal, 0..1")
-      ->capture_default_str();
-  cmd->add_option("--background", args->background,
-                  "Where the attractor does not cover: black, original, #rrggbb or R,G,B")
-      ->capture_default_str();
+  add_fractal_filter_options(*cmd, args->fractal);
   const std::map<std::string, Interpolation> interpolations{{"bilinear", Interpolation::bilinear},
                                                             {"nearest", Interpolation::nearest}};
   cmd->add_option("--interpolation", args->interpolation,
@@ -360,28 +280,22 @@ void add_filter_command(CLI::App& app) {
                   "V-variable step of --superifs per keyframe")
       ->transform(choice(animations))
       ->default_str("none")
-      ->option_text(choices_text(animations, "none"));
-  cmd->add_option("--drift-amount", args->drift_amount,
-                  "Largest excursion of a map coefficient (translations: fraction of the "
-                  "attractor's size)")
-      ->capture_default_str();
-  cmd->add_option("--drift-speed", args->drift_speed, "Cycles per second of the slowest drift")
-      ->capture_default_str();
+      ->option_text(choices_text(animations, "none"))
+      ->group("Animation");
   cmd->add_option("--keyframe-interval", args->keyframe_interval,
                   "Animation: frames between rebuilt maps, cross-faded in between")
       ->capture_default_str()
-      ->check(CLI::Range(1, 100000));
+      ->check(CLI::Range(1, 100000))
+      ->group("Animation");
   cmd->add_option("--superifs", args->superifs,
                   "--animate superifs: the superIFS (shipped name or .toml path); its own view and "
                   "colouring replace --preset, --colouring and --view")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->group("Animation");
   cmd->add_option("--buffers", args->buffers, "--animate superifs: V, the number of buffers")
       ->capture_default_str()
-      ->check(CLI::Range(1, 64));
-  cmd->add_option("--seed", args->seed, "Random seed: the same seed gives the same frames")
-      ->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")
-      ->capture_default_str();
+      ->check(CLI::Range(1, 64))
+      ->group("Animation");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress bar or summary");
   cmd->callback([args] { run_filter(*args); });
 }

@@ -3,8 +3,8 @@
 #include <cstdio>
 #include <exception>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <CLI/CLI.hpp>
 
 #include "apps/commands.h"
 #include "ifs/error.h"
@@ -16,17 +16,21 @@ int exit_code(ifsfx::ErrorKind kind) {
   switch (kind) {
     case ifsfx::ErrorKind::parse:
     case ifsfx::ErrorKind::invalid_ifs:
-    case ifsfx::ErrorKind::invalid_argument: return 2;
-    case ifsfx::ErrorKind::interrupted: return 130;
-    default: return 1;
+    case ifsfx::ErrorKind::invalid_argument:
+      return 2;
+    case ifsfx::ErrorKind::interrupted:
+      return 130;
+    default:
+      return 1;
   }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"ifsfx: turn images and video into fractals (IFS, fractal tops, colour stealing,\n"
-               "V-variable superfractals). `ifsfx COMMAND --help` for each command."};
+  CLI::App app{
+      "ifsfx: turn images and video into fractals (IFS, fractal tops, colour stealing,\n"
+      "V-variable superfractals). `ifsfx COMMAND --help` for each command."};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Show the help of every command");
   ifsfx::app::add_presets_command(app);

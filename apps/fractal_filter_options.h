@@ -1,0 +1,44 @@
+// The options `ifsfx filter` and `ifsfx cam` share: the fractal a frame is coloured through (the
+// drawing IFS F, the colouring IFS G, the view, how the steal map is made), how the frame shows
+// through it, the drift animation, the seed and the worker threads.
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "ifs/steal_map.h"
+#include "video/drift.h"
+#include "video/fractal_filter.h"
+
+namespace ifsfx::app {
+
+struct FractalFilterArgs {
+  std::string preset;  // the command's default preset
+  std::string colouring;
+  bool exact = false;
+  std::string view;
+  double margin = 0.05;
+  double quality = 64;
+  double mix = 0;
+  std::string background = "black";
+  double drift_amount = 0.05;
+  double drift_speed = 0.2;
+  std::uint64_t seed = 1;
+  int threads = 0;
+
+  // The steal-map options: view (parsed), margin, exact, quality, seed, threads.
+  StealMapOptions map_options() const;
+  // The frame options: mix (checked to lie in [0, 1]), background (parsed), threads.
+  video::FilterOptions filter_options() const;
+  // The drift of `--animate drift`: amount, speed, seed.
+  video::DriftOptions drift_options() const;
+};
+
+// Registers --preset, --colouring, --exact, --view, --margin, --quality, --mix and --background
+// in the help group "Fractal", --drift-amount and --drift-speed in "Animation", and --seed and
+// --threads.
+void add_fractal_filter_options(CLI::App& cmd, FractalFilterArgs& args);
+
+}  // namespace ifsfx::app
