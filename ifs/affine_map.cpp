@@ -20,7 +20,7 @@ std::optional<AffineMap> AffineMap::inverse(double eps) const {
 }
 
 AffineMap AffineMap::compose(const AffineMap& g) const {
-  return {a * g.a + b * g.c, a * g.b + b * g.d, c * g.a + d * g.c,
+  return {a * g.a + b * g.c, a * g.b + b * g.d,     c * g.a + d * g.c,
           c * g.b + d * g.d, a * g.e + b * g.f + e, c * g.e + d * g.f + f};
 }
 

@@ -15,11 +15,11 @@ enum class ErrorKind {
   parse,        // malformed preset, map file or option value: message names file and line
   invalid_ifs,  // non-contractive map, bad probabilities, NaN/inf coefficient, map count mismatch
   invalid_argument,  // a value out of range: size, thread count, frame range, ...
-  not_found,    // unknown preset name, missing file or device
-  io,           // a read or write that failed: unreadable, unwritable, disk full, corrupt data
-  unsupported,  // a format, codec, extension or device capability we cannot handle
-  device,       // a V4L2 device fault: busy, vanished mid-stream
-  interrupted,  // work stopped by a signal; what was done has been kept
+  not_found,         // unknown preset name, missing file or device
+  io,                // a read or write that failed: unreadable, unwritable, disk full, corrupt data
+  unsupported,       // a format, codec, extension or device capability we cannot handle
+  device,            // a V4L2 device fault: busy, vanished mid-stream
+  interrupted,       // work stopped by a signal; what was done has been kept
 };
 
 const char* to_string(ErrorKind kind) noexcept;

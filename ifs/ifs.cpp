@@ -66,16 +66,18 @@ void validate(const Ifs& ifs, const std::string& where, const ValidateOptions& o
   for (std::size_t i = 0; i < ifs.maps.size(); ++i) {
     const double s = ifs.maps[i].contraction();
     if (s >= 1 && !options.allow_expansive)
-      fail(fmt::format("map {}: contraction factor must be < 1 (got {:.4g}); "
-                       "--allow-expansive accepts it if the IFS contracts on average",
-                       i + 1, s));
+      fail(
+          fmt::format("map {}: contraction factor must be < 1 (got {:.4g}); "
+                      "--allow-expansive accepts it if the IFS contracts on average",
+                      i + 1, s));
   }
   if (options.allow_expansive) {
     const double rate = mean_log_contraction(ifs);
     if (!(rate < 0))
-      fail(fmt::format("the IFS must contract on average: the mean log factor of its map "
-                       "compositions must be < 0 (got {:.4g})",
-                       rate));
+      fail(
+          fmt::format("the IFS must contract on average: the mean log factor of its map "
+                      "compositions must be < 0 (got {:.4g})",
+                      rate));
   }
 }
 

@@ -1,13 +1,13 @@
 #include "ifs/image_io.h"
 
+#include <unistd.h>
 #include <algorithm>
 #include <random>
 #include <system_error>
-#include <unistd.h>
 
 #include <OpenImageIO/imageio.h>
-#include <nlohmann/json.hpp>
 #include <fmt/format.h>
+#include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
 #include "ifs/error.h"
@@ -76,19 +76,21 @@ void check_writable_image(const fs::path& path) {
   const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
   std::error_code ec;
   if (!fs::is_directory(folder, ec))
-    throw Error(ErrorKind::io, fmt::format("{}: folder '{}' does not exist", path.string(),
-                                           folder.string()));
+    throw Error(ErrorKind::io,
+                fmt::format("{}: folder '{}' does not exist", path.string(), folder.string()));
   if (::access(folder.c_str(), W_OK) != 0)
-    throw Error(ErrorKind::io, fmt::format("{}: folder '{}' is not writable", path.string(),
-                                           folder.string()));
+    throw Error(ErrorKind::io,
+                fmt::format("{}: folder '{}' is not writable", path.string(), folder.string()));
 }
 
 void write_image(const fs::path& path, const cv::Mat& image, const WriteOptions& options) {
   check_writable_image(path);
-  if (image.empty()) throw Error(ErrorKind::invalid_argument, fmt::format("{}: empty image", path.string()));
+  if (image.empty())
+    throw Error(ErrorKind::invalid_argument, fmt::format("{}: empty image", path.string()));
   if (options.bits != 8 && options.bits != 16)
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("{}: bits per channel must be 8 or 16 (got {})", path.string(), options.bits));
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("{}: bits per channel must be 8 or 16 (got {})", path.string(), options.bits));
 
   const std::string ext = lower_extension(path);
   const bool is_float_format = ext == ".exr" || ext == ".hdr";
@@ -103,8 +105,9 @@ void write_image(const fs::path& path, const cv::Mat& image, const WriteOptions&
     cv_depth = CV_16U;
     format = OIIO::TypeDesc::UINT16;
   } else if (options.bits == 16) {
-    throw Error(ErrorKind::unsupported,
-                fmt::format("{}: 16 bits per channel needs .png or .tif (got '{}')", path.string(), ext));
+    throw Error(
+        ErrorKind::unsupported,
+        fmt::format("{}: 16 bits per channel needs .png or .tif (got '{}')", path.string(), ext));
   }
   cv::Mat pixels = to_rgb_order(to_file_depth(image, cv_depth));
   if (!pixels.isContinuous()) pixels = pixels.clone();
@@ -124,8 +127,8 @@ void write_image(const fs::path& path, const cv::Mat& image, const WriteOptions&
 
   // Write beside the target and rename: an interrupted write never leaves a half file.
   std::random_device entropy;
-  const fs::path temp =
-      path.parent_path() / fmt::format(".{}.{:08x}.tmp{}", path.filename().string(), entropy(), ext);
+  const fs::path temp = path.parent_path() /
+                        fmt::format(".{}.{:08x}.tmp{}", path.filename().string(), entropy(), ext);
   auto out = OIIO::ImageOutput::create(path.string());
   bool ok = out && out->open(temp.string(), spec);
   ok = ok && out->write_image(format, pixels.data);
@@ -141,7 +144,8 @@ void write_image(const fs::path& path, const cv::Mat& image, const WriteOptions&
   fs::rename(temp, path, ec);
   if (ec) {
     fs::remove(temp, ec);
-    throw Error(ErrorKind::io, fmt::format("{}: cannot rename into place ({})", path.string(), ec.message()));
+    throw Error(ErrorKind::io,
+                fmt::format("{}: cannot rename into place ({})", path.string(), ec.message()));
   }
 }
 
@@ -172,7 +176,8 @@ ImageFile read_image(const fs::path& path) {
   const bool ok = in->read_image(0, 0, 0, keep, format, pixels.data);
   if (!ok) {
     const std::string why = in->geterror();
-    throw Error(ErrorKind::io, fmt::format("{}: corrupt or truncated image ({})", path.string(), why));
+    throw Error(ErrorKind::io,
+                fmt::format("{}: corrupt or truncated image ({})", path.string(), why));
   }
   ImageFile file;
   file.pixels = to_bgr_order(pixels);

@@ -17,8 +17,13 @@ namespace {
 
 detail::PixelMapping pixel_mapping(const Viewport& v) {
   const AffineMap m = v.plane_to_pixel();
-  return {m.a, m.e, m.d, m.f, static_cast<double>(v.size.width),
-          static_cast<double>(v.size.height), v.size.width};
+  return {m.a,
+          m.e,
+          m.d,
+          m.f,
+          static_cast<double>(v.size.width),
+          static_cast<double>(v.size.height),
+          v.size.width};
 }
 
 // Runs `points` chaos-game points over fixed chunks; `make_worker(worker)` gives each worker its
@@ -39,10 +44,9 @@ std::vector<State> scatter(const Ifs& ifs, const Viewport& viewport, std::uint64
     State& state = states[static_cast<std::size_t>(worker)];
     const std::uint64_t n = detail::chunk_size(points, chunk);
     state.begin_chunk(n);
-    detail::plot_chunk(maps, pick, mapping, options.seed, chunk, n, burn_in,
-                       [&](int lane, long pixel, std::uint32_t map) {
-                         state.plot(lane, pixel, map);
-                       });
+    detail::plot_chunk(
+        maps, pick, mapping, options.seed, chunk, n, burn_in,
+        [&](int lane, long pixel, std::uint32_t map) { state.plot(lane, pixel, map); });
   });
   return states;
 }
@@ -67,13 +71,15 @@ void check_render_inputs(const Ifs& ifs, cv::Size size, const RenderOptions& opt
 }
 
 Viewport viewport_for(const Ifs& ifs, cv::Size size, const RenderOptions& options) {
-  const Box view =
-      options.view ? *options.view : fit_view(attractor_bounds(ifs, options.seed), size, options.margin);
+  const Box view = options.view
+                       ? *options.view
+                       : fit_view(attractor_bounds(ifs, options.seed), size, options.margin);
   return {view, size};
 }
 
 std::uint64_t point_budget(cv::Size size, double quality) {
-  return static_cast<std::uint64_t>(std::ceil(quality * size.width * static_cast<double>(size.height)));
+  return static_cast<std::uint64_t>(
+      std::ceil(quality * size.width * static_cast<double>(size.height)));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -93,7 +99,9 @@ struct CountState {
   cv::Mat counts;
   explicit CountState(const Viewport& v) : counts(cv::Mat::zeros(v.size, CV_32SC1)) {}
   void begin_chunk(std::uint64_t) {}
-  void plot(int, long pixel, std::uint32_t) { ++reinterpret_cast<std::uint32_t*>(counts.data)[pixel]; }
+  void plot(int, long pixel, std::uint32_t) {
+    ++reinterpret_cast<std::uint32_t*>(counts.data)[pixel];
+  }
 };
 
 // Visit count and palette-coordinate sum per pixel, packed in one 64-bit word so a point costs a
@@ -137,8 +145,8 @@ class MeasureState {
     // reach here, so the palette coordinate skips them: it is a local colour, not an address.
     std::uint32_t& c = palette_[static_cast<std::size_t>(lane)];
     c = (c + map_colour_[map]) >> 1;
-    const std::uint32_t c6 = std::min<std::uint32_t>(
-        (c + (1u << (15 - kPaletteBits))) >> (16 - kPaletteBits), 63);
+    const std::uint32_t c6 =
+        std::min<std::uint32_t>((c + (1u << (15 - kPaletteBits))) >> (16 - kPaletteBits), 63);
     const auto cell = static_cast<std::uint32_t>(pixel);
     const std::uint32_t tile = cell >> kTileBits;
     std::uint32_t& length = queued_[tile];
@@ -168,8 +176,8 @@ class MeasureState {
 
   std::vector<std::uint64_t> cells_;
   std::uint32_t tiles_;
-  std::vector<std::uint32_t> queue_;   // per tile: kQueueLength entries of (c6 << 14 | cell in tile)
-  std::vector<std::uint32_t> queued_;  // entries waiting per tile
+  std::vector<std::uint32_t> queue_;  // per tile: kQueueLength entries of (c6 << 14 | cell in tile)
+  std::vector<std::uint32_t> queued_;      // entries waiting per tile
   std::vector<std::uint32_t> map_colour_;  // c_n of each map, 16-bit fixed point
   std::array<std::uint32_t, detail::kLanes> palette_;
   Totals* totals_;
@@ -216,7 +224,8 @@ Rgb palette_colour(std::size_t n, std::size_t count) {
 cv::Mat visit_counts(const Ifs& ifs, const Viewport& viewport, std::uint64_t points,
                      const ChaosGameOptions& options) {
   check_size(viewport.size);
-  auto states = scatter<CountState>(ifs, viewport, points, options, [&] { return CountState(viewport); });
+  auto states =
+      scatter<CountState>(ifs, viewport, points, options, [&] { return CountState(viewport); });
   cv::Mat total = states[0].counts;
   for (std::size_t w = 1; w < states.size(); ++w) total += states[w].counts;
   return total;
@@ -228,8 +237,9 @@ cv::Mat render_attractor(const Ifs& ifs, cv::Size size, const RenderOptions& opt
   const Viewport viewport = viewport_for(ifs, size, options);
   const std::uint64_t points = point_budget(size, options.quality);
   const auto start = std::chrono::steady_clock::now();
-  auto states = scatter<HitState>(ifs, viewport, points, {.seed = options.seed, .threads = options.threads},
-                                  [&] { return HitState(viewport); });
+  auto states =
+      scatter<HitState>(ifs, viewport, points, {.seed = options.seed, .threads = options.threads},
+                        [&] { return HitState(viewport); });
   cv::Mat mask = states[0].hits;
   for (std::size_t w = 1; w < states.size(); ++w) cv::bitwise_or(mask, states[w].hits, mask);
   if (stats) *stats = {points, seconds_since(start), coverage_of(mask), viewport.view};
@@ -245,17 +255,19 @@ cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& optio
 
   std::vector<std::uint32_t> map_colour(ifs.size());
   for (std::size_t n = 0; n < ifs.size(); ++n)
-    map_colour[n] = ifs.size() <= 1 ? 0
-                                    : static_cast<std::uint32_t>(std::lround(
-                                          65535.0 * static_cast<double>(n) /
-                                          static_cast<double>(ifs.size() - 1)));
+    map_colour[n] =
+        ifs.size() <= 1
+            ? 0
+            : static_cast<std::uint32_t>(std::lround(65535.0 * static_cast<double>(n) /
+                                                     static_cast<double>(ifs.size() - 1)));
   MeasureState::Totals totals;
   const auto area = static_cast<std::size_t>(viewport.size.area());
   totals.count.assign(area, 0);
   totals.colour.assign(area, 0);
 
   const auto start = std::chrono::steady_clock::now();
-  auto states = scatter<MeasureState>(ifs, viewport, points, {.seed = options.seed, .threads = options.threads},
+  auto states = scatter<MeasureState>(ifs, viewport, points,
+                                      {.seed = options.seed, .threads = options.threads},
                                       [&] { return MeasureState(viewport, map_colour, totals); });
   for (auto& s : states) s.fold();
   const double seconds = seconds_since(start);

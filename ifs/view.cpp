@@ -122,8 +122,8 @@ Box fit_view(const Box& bounds, cv::Size size, double margin) {
 
 namespace {
 
-std::vector<double> parse_numbers(const std::string& text, char separator,
-                                  const std::string& what, const char* form) {
+std::vector<double> parse_numbers(const std::string& text, char separator, const std::string& what,
+                                  const char* form) {
   std::vector<double> out;
   std::size_t start = 0;
   for (;;) {
@@ -169,7 +169,8 @@ cv::Size parse_size(const std::string& text, const std::string& what) {
   const auto v = parse_numbers(lowered, 'x', what, "WxH");
   if (v.size() != 2 || v[0] != std::floor(v[0]) || v[1] != std::floor(v[1]) ||
       std::abs(v[0]) > 1e9 || std::abs(v[1]) > 1e9)
-    throw Error(ErrorKind::parse, fmt::format("{}: expected WxH in whole pixels (got '{}')", what, text));
+    throw Error(ErrorKind::parse,
+                fmt::format("{}: expected WxH in whole pixels (got '{}')", what, text));
   const cv::Size size{static_cast<int>(v[0]), static_cast<int>(v[1])};
   check_size(size, what);
   return size;

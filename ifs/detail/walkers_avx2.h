@@ -35,8 +35,9 @@ struct Lanes4 {
 
 inline Lanes4 pack(const LaneRng* rng) {
   auto word = [&](int k) {
-    return _mm256_set_epi64x(static_cast<long long>(rng[3].s[k]), static_cast<long long>(rng[2].s[k]),
-                             static_cast<long long>(rng[1].s[k]), static_cast<long long>(rng[0].s[k]));
+    return _mm256_set_epi64x(
+        static_cast<long long>(rng[3].s[k]), static_cast<long long>(rng[2].s[k]),
+        static_cast<long long>(rng[1].s[k]), static_cast<long long>(rng[0].s[k]));
   };
   return {word(0), word(1), word(2), word(3)};
 }
@@ -90,7 +91,8 @@ void plot_chunk_avx2(const MapTable& maps, const MapPicker& picker, const PixelM
   {
     const MapPicker::View pick = picker.view();
     alignas(32) std::uint32_t threshold[8] = {}, alias[8] = {};
-    for (std::uint64_t i = 0; i < pick.n; ++i) threshold[i] = pick.threshold[i], alias[i] = pick.alias[i];
+    for (std::uint64_t i = 0; i < pick.n; ++i)
+      threshold[i] = pick.threshold[i], alias[i] = pick.alias[i];
     t.count = _mm256_set1_epi64x(static_cast<long long>(pick.n));
     t.threshold = _mm256_load_si256(reinterpret_cast<const __m256i*>(threshold));
     t.alias = _mm256_load_si256(reinterpret_cast<const __m256i*>(alias));
@@ -133,9 +135,9 @@ void plot_chunk_avx2(const MapTable& maps, const MapPicker& picker, const PixelM
     if (mask == 0) return;
     alignas(16) std::int32_t index[4];
     alignas(32) std::uint32_t map[8];
-    _mm_store_si128(reinterpret_cast<__m128i*>(index),
-                    _mm_add_epi32(_mm_mullo_epi32(_mm256_cvttpd_epi32(py), stride),
-                                  _mm256_cvttpd_epi32(px)));
+    _mm_store_si128(
+        reinterpret_cast<__m128i*>(index),
+        _mm_add_epi32(_mm_mullo_epi32(_mm256_cvttpd_epi32(py), stride), _mm256_cvttpd_epi32(px)));
     _mm256_store_si256(reinterpret_cast<__m256i*>(map), n);
     for (int j = 0; j < 4; ++j)
       if (mask & (1 << j)) plot(first_lane + j, static_cast<long>(index[j]), map[2 * j]);

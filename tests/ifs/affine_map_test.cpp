@@ -9,7 +9,8 @@ namespace {
 
 TEST(affine_map, contraction_is_the_largest_singular_value) {
   const double t = 0.7, s = 0.6;
-  const AffineMap rotation_scale{s * std::cos(t), -s * std::sin(t), s * std::sin(t), s * std::cos(t), 1, 2};
+  const AffineMap rotation_scale{
+      s * std::cos(t), -s * std::sin(t), s * std::sin(t), s * std::cos(t), 1, 2};
   EXPECT_NEAR(rotation_scale.contraction(), 0.6, 1e-12);
   EXPECT_NEAR((AffineMap{0.5, 0, 0, 0.2, 0, 0}).contraction(), 0.5, 1e-12);
   EXPECT_NEAR((AffineMap{0, 0, 0, 0.16, 0, 0}).contraction(), 0.16, 1e-12);  // fern stem

@@ -33,8 +33,10 @@ TEST(chaos_game, points_fall_in_each_piece_with_its_probability) {
 }
 
 TEST(chaos_game, thread_count_does_not_change_the_samples) {
-  const auto one = chaos_game_samples(testing::barnsley_fern(), 9'000'000, {.seed = 5, .threads = 1});
-  const auto four = chaos_game_samples(testing::barnsley_fern(), 9'000'000, {.seed = 5, .threads = 4});
+  const auto one =
+      chaos_game_samples(testing::barnsley_fern(), 9'000'000, {.seed = 5, .threads = 1});
+  const auto four =
+      chaos_game_samples(testing::barnsley_fern(), 9'000'000, {.seed = 5, .threads = 4});
   ASSERT_EQ(one.size(), four.size());
   for (std::size_t i = 0; i < one.size(); i += 997) {
     ASSERT_EQ(one[i].p, four[i].p) << "sample " << i;

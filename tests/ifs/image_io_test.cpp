@@ -27,8 +27,7 @@ class image_io : public ::testing::Test {
 cv::Mat gradient() {
   cv::Mat image(48, 64, CV_32FC3);
   for (int y = 0; y < image.rows; ++y)
-    for (int x = 0; x < image.cols; ++x)
-      image.at<cv::Vec3f>(y, x) = {x / 63.0f, y / 47.0f, 0.25f};
+    for (int x = 0; x < image.cols; ++x) image.at<cv::Vec3f>(y, x) = {x / 63.0f, y / 47.0f, 0.25f};
   return image;
 }
 
@@ -101,9 +100,7 @@ TEST_F(image_io, unreadable_files_name_the_path) {
     EXPECT_EQ(e.kind(), ErrorKind::not_found);
     EXPECT_NE(std::string(e.what()).find("none.png: no such file"), std::string::npos);
   }
-  {
-    std::ofstream(dir_ / "text.png") << "not an image";
-  }
+  { std::ofstream(dir_ / "text.png") << "not an image"; }
   try {
     read_image(dir_ / "text.png");
     FAIL();

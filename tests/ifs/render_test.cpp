@@ -23,8 +23,8 @@ int occupied_boxes(const cv::Mat& mask, int s) {
 }
 
 TEST(render_attractor, sierpinski_box_counting_dimension_is_log3_over_log2) {
-  const cv::Mat mask = render_attractor(testing::sierpinski_triangle(), {1024, 1024},
-                                        {.quality = 16, .seed = 2});
+  const cv::Mat mask =
+      render_attractor(testing::sierpinski_triangle(), {1024, 1024}, {.quality = 16, .seed = 2});
   // Least-squares slope of log N(s) against log(1/s) over box sizes 2..64 pixels.
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   int n = 0;
@@ -66,8 +66,10 @@ TEST(render_measure, thread_count_does_not_change_pixels) {
 }
 
 TEST(render_attractor, thread_count_does_not_change_pixels) {
-  const cv::Mat a = render_attractor(testing::barnsley_fern(), {300, 300}, {.seed = 4, .threads = 1});
-  const cv::Mat b = render_attractor(testing::barnsley_fern(), {300, 300}, {.seed = 4, .threads = 3});
+  const cv::Mat a =
+      render_attractor(testing::barnsley_fern(), {300, 300}, {.seed = 4, .threads = 1});
+  const cv::Mat b =
+      render_attractor(testing::barnsley_fern(), {300, 300}, {.seed = 4, .threads = 3});
   EXPECT_EQ(cv::norm(a, b, cv::NORM_INF), 0.0);
 }
 

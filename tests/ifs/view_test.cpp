@@ -27,7 +27,7 @@ TEST(attractor_bounds, a_tiling_fills_the_unit_square) {
 TEST(fit_view, keeps_the_aspect_and_holds_the_box_with_its_margin) {
   const Box v = fit_view({0, 0, 1, 2}, {400, 100}, 0.05);
   EXPECT_NEAR(v.width() / v.height(), 4.0, 1e-12);
-  EXPECT_NEAR(v.height(), 2.2, 1e-12);  // 2 + 2·0.05·2
+  EXPECT_NEAR(v.height(), 2.2, 1e-12);   // 2 + 2·0.05·2
   EXPECT_NEAR(v.x0 + v.x1, 1.0, 1e-12);  // centred
   EXPECT_NEAR(v.y0, -0.1, 1e-12);
 }
