@@ -7,104 +7,14 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "ifs/detail/toml_reader.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 
 namespace ifsfx {
 namespace {
 
-constexpr std::string_view known_keys = "name, description, maps, probabilities, colours";
-
-// Every message of this parser starts with "FILE:LINE: " so that one line is enough to find the
-// culprit in an editor.
-class TomlReader {
- public:
-  explicit TomlReader(const std::string& filename) : filename_(filename) {}
-
-  [[noreturn]] void fail(ErrorKind kind, const toml::source_region& where,
-                         const std::string& what) const {
-    throw Error(kind, fmt::format("{}:{}: {}", filename_, where.begin.line, what));
-  }
-
-  toml::table parse(std::string_view text) const {
-    try {
-      return toml::parse(text, filename_);
-    } catch (const toml::parse_error& e) {
-      fail(ErrorKind::parse, e.source(), std::string(e.description()));
-    }
-  }
-
-  std::string string_value(const toml::node& node, std::string_view key) const {
-    const auto* s = node.as_string();
-    if (!s) fail(ErrorKind::parse, node.source(), fmt::format("{}: must be a string", key));
-    return s->get();
-  }
-
-  // A TOML integer or float as a double; `what` names the value in the error.
-  double number(const toml::node& node, const std::string& what) const {
-    if (const auto* x = node.as_floating_point()) return x->get();
-    if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
-    fail(ErrorKind::parse, node.source(),
-         fmt::format("{}: must be a number (got {})", what, type_name(node)));
-  }
-
-  const toml::array& array(const toml::node& node, const std::string& what) const {
-    const auto* a = node.as_array();
-    if (!a)
-      fail(ErrorKind::parse, node.source(),
-           fmt::format("{}: must be an array (got {})", what, type_name(node)));
-    return *a;
-  }
-
-  static std::string_view type_name(const toml::node& node) {
-    switch (node.type()) {
-      case toml::node_type::string:
-        return "a string";
-      case toml::node_type::integer:
-        return "an integer";
-      case toml::node_type::floating_point:
-        return "a number";
-      case toml::node_type::boolean:
-        return "a boolean";
-      case toml::node_type::array:
-        return "an array";
-      case toml::node_type::table:
-        return "a table";
-      case toml::node_type::date:
-      case toml::node_type::time:
-      case toml::node_type::date_time:
-        return "a date or time";
-      default:
-        return "nothing";
-    }
-  }
-
- private:
-  const std::string& filename_;
-};
-
-std::vector<AffineMap> read_maps(const TomlReader& in, const toml::node& node) {
-  const auto& rows = in.array(node, "maps");
-  if (rows.empty())
-    in.fail(ErrorKind::invalid_ifs, node.source(), "maps: an IFS needs at least one map (got 0)");
-  std::vector<AffineMap> maps;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const std::string what = fmt::format("map {}", i + 1);
-    const auto& row = in.array(rows[i], what);
-    if (row.size() != 6)
-      in.fail(ErrorKind::parse, rows[i].source(),
-              fmt::format("{}: needs 6 numbers a b c d e f (got {})", what, row.size()));
-    std::array<double, 6> k{};
-    for (std::size_t j = 0; j < 6; ++j) {
-      k[j] = in.number(row[j], what);
-      if (!std::isfinite(k[j]))
-        in.fail(ErrorKind::invalid_ifs, row[j].source(),
-                fmt::format("{}: coefficients must be finite numbers (got {})", what, k[j]));
-    }
-    maps.push_back(AffineMap::from_coefficients(k));
-  }
-  return maps;
-}
+using detail::TomlReader;
 
 std::vector<double> read_probabilities(const TomlReader& in, const toml::node& node,
                                        std::size_t map_count) {
@@ -234,20 +144,15 @@ IfsPreset parse_ifs_toml(std::string_view text, const std::string& filename) {
 
   // Check every key first, so that a misspelt "probabilites" is reported rather than silently
   // giving default probabilities.
-  for (const auto& [key, value] : table) {
-    const std::string_view k = key.str();
-    if (k != "name" && k != "description" && k != "maps" && k != "probabilities" && k != "colours")
-      in.fail(ErrorKind::parse, key.source(),
-              fmt::format("unknown key '{}' (known: {})", k, known_keys));
-  }
+  in.check_keys(table, {"name", "description", "maps", "probabilities", "colours"});
 
   IfsPreset preset;
   preset.origin = filename;
   preset.text = std::string(text);
   preset.ifs.name = std::filesystem::path(filename).stem().string();
-  if (const auto* node = table.get("name")) preset.ifs.name = in.string_value(*node, "name");
+  if (const auto* node = table.get("name")) preset.ifs.name = in.string(*node, "name");
   if (const auto* node = table.get("description"))
-    preset.description = in.string_value(*node, "description");
+    preset.description = in.string(*node, "description");
 
   const auto* maps = table.get("maps");
   if (!maps)
@@ -255,7 +160,7 @@ IfsPreset parse_ifs_toml(std::string_view text, const std::string& filename) {
         ErrorKind::parse,
         fmt::format("{}: maps: an IFS needs a 'maps' array of [a, b, c, d, e, f] (got none)",
                     filename));
-  preset.ifs.maps = read_maps(in, *maps);
+  preset.ifs.maps = in.maps(*maps);
   if (const auto* node = table.get("probabilities"))
     preset.ifs.probabilities = read_probabilities(in, *node, preset.ifs.maps.size());
   if (const auto* node = table.get("colours"))

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include "ifs/detail/toml_reader.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 
@@ -15,137 +16,51 @@ namespace ifsfx {
 
 namespace {
 
-// Reads one file's TOML tree into a SuperIfs, every error prefixed "FILE:LINE:".
-class Reader {
- public:
-  explicit Reader(const std::string& filename) : filename_(filename) {}
+using detail::TomlReader;
 
-  std::string at(const toml::source_region& where) const {
-    return fmt::format("{}:{}", filename_, where.begin.line);
-  }
-  [[noreturn]] void fail(ErrorKind kind, const toml::source_region& where,
-                         const std::string& what) const {
-    throw Error(kind, fmt::format("{}: {}", at(where), what));
-  }
+// An [[ifs]] or [[colouring]] table: maps (a b c d e f each) and optional probabilities.
+Ifs read_ifs(const TomlReader& in, const toml::table& table, const std::string& what,
+             const ValidateOptions& rules) {
+  in.check_keys(table, {"name", "maps", "probabilities"}, what + ": ");
+  Ifs f;
+  if (const auto* n = table.get("name")) f.name = in.string(*n, what + " name");
+  const auto* maps = table.get("maps");
+  if (!maps)
+    in.fail(ErrorKind::parse, table.source(), what + ": needs maps = [[a, b, c, d, e, f], ...]");
+  f.maps = in.maps(*maps, what);
+  if (const auto* p = table.get("probabilities"))
+    f.probabilities = in.numbers(*p, what + " probabilities");
+  validate(f, in.at(table.source()) + ": " + what, rules);
+  return f;
+}
 
-  // Keys other than `allowed` are typos that would silently change the texture: reject them.
-  void check_keys(const toml::table& table, std::initializer_list<std::string_view> allowed,
-                  const std::string& context) const {
-    for (auto&& [key, node] : table) {
-      if (std::find(allowed.begin(), allowed.end(), key.str()) == allowed.end()) {
-        std::string names;
-        for (auto a : allowed) names += fmt::format("{}{}", names.empty() ? "" : ", ", a);
-        fail(ErrorKind::parse, key.source(),
-             fmt::format("{}unknown key '{}' (known: {})", context, key.str(), names));
-      }
-      (void)node;
-    }
+// The tables of an array of tables [[KEY]] (none when the key is absent).
+std::vector<const toml::table*> read_tables(const TomlReader& in, const toml::table& root,
+                                            std::string_view key) {
+  std::vector<const toml::table*> out;
+  const auto* node = root.get(key);
+  if (!node) return out;
+  const auto* array = node->as_array();
+  if (!array)
+    in.fail(ErrorKind::parse, node->source(),
+            fmt::format("{}: must be a list of tables [[{}]] (got {})", key, key,
+                        TomlReader::type_name(*node)));
+  for (const auto& item : *array) {
+    const auto* table = item.as_table();
+    if (!table)
+      in.fail(ErrorKind::parse, item.source(),
+              fmt::format("{}: every entry must be a table [[{}]] (got {})", key, key,
+                          TomlReader::type_name(item)));
+    out.push_back(table);
   }
-
-  double number(const toml::node& node, const std::string& what) const {
-    if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
-    if (const auto* f = node.as_floating_point()) return f->get();
-    fail(ErrorKind::parse, node.source(),
-         fmt::format("{}: must be a number (got {})", what, type_name(node)));
-  }
-
-  std::vector<double> numbers(const toml::node& node, const std::string& what) const {
-    const auto* array = node.as_array();
-    if (!array)
-      fail(ErrorKind::parse, node.source(),
-           fmt::format("{}: must be an array of numbers (got {})", what, type_name(node)));
-    std::vector<double> out;
-    for (const auto& item : *array) out.push_back(number(item, what));
-    return out;
-  }
-
-  std::string string(const toml::node& node, const std::string& what) const {
-    if (const auto* s = node.as_string()) return s->get();
-    fail(ErrorKind::parse, node.source(),
-         fmt::format("{}: must be a string (got {})", what, type_name(node)));
-  }
-
-  // An [[ifs]] or [[colouring]] table: maps (a b c d e f each) and optional probabilities.
-  Ifs ifs(const toml::table& table, const std::string& what, const ValidateOptions& rules) const {
-    check_keys(table, {"name", "maps", "probabilities"}, what + ": ");
-    Ifs f;
-    if (const auto* n = table.get("name")) f.name = string(*n, what + " name");
-    const auto* maps = table.get("maps");
-    if (!maps)
-      fail(ErrorKind::parse, table.source(), what + ": needs maps = [[a, b, c, d, e, f], ...]");
-    const auto* rows = maps->as_array();
-    if (!rows || rows->empty())
-      fail(ErrorKind::invalid_ifs, maps->source(),
-           fmt::format("{} maps: must be a non-empty array of maps (got {})", what,
-                       rows ? "an empty array" : type_name(*maps)));
-    for (std::size_t i = 0; i < rows->size(); ++i) {
-      const auto& row = *rows->get(i);
-      const auto k = numbers(row, fmt::format("{} map {}", what, i + 1));
-      if (k.size() != 6)
-        fail(ErrorKind::parse, row.source(),
-             fmt::format("{} map {}: needs 6 coefficients a b c d e f (got {})", what, i + 1,
-                         k.size()));
-      f.maps.push_back(AffineMap::from_coefficients({k[0], k[1], k[2], k[3], k[4], k[5]}));
-    }
-    if (const auto* p = table.get("probabilities"))
-      f.probabilities = numbers(*p, what + " probabilities");
-    validate(f, at(table.source()) + ": " + what, rules);
-    return f;
-  }
-
-  std::vector<const toml::table*> tables(const toml::table& root, std::string_view key) const {
-    std::vector<const toml::table*> out;
-    const auto* node = root.get(key);
-    if (!node) return out;
-    const auto* array = node->as_array();
-    if (!array)
-      fail(ErrorKind::parse, node->source(),
-           fmt::format("{}: must be a list of tables [[{}]] (got {})", key, key, type_name(*node)));
-    for (const auto& item : *array) {
-      const auto* table = item.as_table();
-      if (!table)
-        fail(ErrorKind::parse, item.source(),
-             fmt::format("{}: every entry must be a table [[{}]] (got {})", key, key,
-                         type_name(item)));
-      out.push_back(table);
-    }
-    return out;
-  }
-
-  static std::string type_name(const toml::node& node) {
-    switch (node.type()) {
-      case toml::node_type::table:
-        return "a table";
-      case toml::node_type::array:
-        return "an array";
-      case toml::node_type::string:
-        return "a string";
-      case toml::node_type::integer:
-        return "an integer";
-      case toml::node_type::floating_point:
-        return "a number";
-      case toml::node_type::boolean:
-        return "a boolean";
-      default:
-        return "a date or time";
-    }
-  }
-
- private:
-  std::string filename_;
-};
+  return out;
+}
 
 }  // namespace
 
 SuperIfsPreset parse_superifs_toml(std::string_view text, const std::string& filename) {
-  toml::table root;
-  try {
-    root = toml::parse(text, filename);
-  } catch (const toml::parse_error& e) {
-    throw Error(ErrorKind::parse,
-                fmt::format("{}:{}: {}", filename, e.source().begin.line, e.description()));
-  }
-  const Reader read(filename);
+  const TomlReader read(filename);
+  const toml::table root = read.parse(text);
   read.check_keys(root, {"name", "description", "probabilities", "view", "ifs", "colouring"}, "");
   SuperIfsPreset preset;
   preset.text = std::string(text);
@@ -153,13 +68,13 @@ SuperIfsPreset parse_superifs_toml(std::string_view text, const std::string& fil
   if (const auto* n = root.get("name")) super.name = read.string(*n, "name");
   if (const auto* d = root.get("description")) preset.description = read.string(*d, "description");
 
-  const auto ifs_tables = read.tables(root, "ifs");
+  const auto ifs_tables = read_tables(read, root, "ifs");
   if (ifs_tables.empty())
     throw Error(ErrorKind::invalid_ifs,
                 fmt::format("{}:1: a superIFS needs at least one [[ifs]] table (got 0)", filename));
   for (std::size_t n = 0; n < ifs_tables.size(); ++n) {
     const std::string what = fmt::format("IFS {}", n + 1);
-    super.ifs.push_back(read.ifs(*ifs_tables[n], what, {}));
+    super.ifs.push_back(read_ifs(read, *ifs_tables[n], what, {}));
     if (super.ifs[n].size() != super.ifs[0].size())
       read.fail(ErrorKind::invalid_ifs, ifs_tables[n]->source(),
                 fmt::format("{}: every IFS needs the same number of maps as IFS 1 (got {} for {})",
@@ -179,11 +94,12 @@ SuperIfsPreset parse_superifs_toml(std::string_view text, const std::string& fil
                 fmt::format("view: needs 4 numbers x0, y0, x1, y1 (got {})", box.size()));
     super.view = Box{box[0], box[1], box[2], box[3]};
   }
-  const auto colouring_tables = read.tables(root, "colouring");
+  const auto colouring_tables = read_tables(read, root, "colouring");
   for (std::size_t n = 0; n < colouring_tables.size(); ++n) {
     const std::string what = fmt::format("colouring {}", n + 1);
     // Colourings may use the strip tilings, factor 1 per map but contracting in pairs.
-    super.colouring.push_back(read.ifs(*colouring_tables[n], what, {.allow_expansive = true}));
+    super.colouring.push_back(
+        read_ifs(read, *colouring_tables[n], what, {.allow_expansive = true}));
     if (super.colouring[n].size() != super.maps())
       read.fail(ErrorKind::invalid_ifs, colouring_tables[n]->source(),
                 fmt::format("{}: needs as many maps as the IFSs (got {} for {})", what,

@@ -103,7 +103,7 @@ TEST(parse_ifs_toml, values_of_the_wrong_type_are_reported_with_their_line) {
   expect_error("maps = [[0.5, 0, 0, \"half\", 0, 0]]\n", ErrorKind::parse,
                "fern.toml:1: map 1: must be a number (got a string)");
   expect_error("name = 3\nmaps = [[0.5, 0, 0, 0.5, 0, 0]]\n", ErrorKind::parse,
-               "fern.toml:1: name: must be a string");
+               "fern.toml:1: name: must be a string (got an integer)");
   expect_error("maps = [0.5, 0, 0, 0.5, 0, 0]\n", ErrorKind::parse,
                "fern.toml:1: map 1: must be an array (got a number)");
   expect_error("name = \"x\"\n", ErrorKind::parse,

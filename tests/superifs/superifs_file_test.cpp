@@ -112,7 +112,7 @@ TEST(superifs_file, rejects_bad_contents_with_the_line) {
                "--allow-expansive accepts it if the IFS contracts on average");
   expect_error("[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0],\n  [0.5, 0, 0, 0.5, 0.5]]\n",
                ErrorKind::parse,
-               "bad.super.toml:3: IFS 1 map 2: needs 6 coefficients a b c d e f (got 5)");
+               "bad.super.toml:3: IFS 1 map 2: needs 6 numbers a b c d e f (got 5)");
   expect_error("[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, \"x\"]]\n", ErrorKind::parse,
                "bad.super.toml:2: IFS 1 map 1: must be a number (got a string)");
   expect_error("probabilities = [1, 2]\n[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0]]\n",

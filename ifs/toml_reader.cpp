@@ -1,0 +1,114 @@
+#include "ifs/detail/toml_reader.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace ifsfx::detail {
+
+std::string TomlReader::at(const toml::source_region& where) const {
+  return fmt::format("{}:{}", filename_, where.begin.line);
+}
+
+void TomlReader::fail(ErrorKind kind, const toml::source_region& where,
+                      const std::string& what) const {
+  throw Error(kind, fmt::format("{}: {}", at(where), what));
+}
+
+toml::table TomlReader::parse(std::string_view text) const {
+  try {
+    return toml::parse(text, filename_);
+  } catch (const toml::parse_error& e) {
+    fail(ErrorKind::parse, e.source(), std::string(e.description()));
+  }
+}
+
+void TomlReader::check_keys(const toml::table& table,
+                            std::initializer_list<std::string_view> allowed,
+                            const std::string& context) const {
+  for (const auto& [key, value] : table) {
+    if (std::find(allowed.begin(), allowed.end(), key.str()) != allowed.end()) continue;
+    std::string names;
+    for (const std::string_view a : allowed)
+      names += fmt::format("{}{}", names.empty() ? "" : ", ", a);
+    fail(ErrorKind::parse, key.source(),
+         fmt::format("{}unknown key '{}' (known: {})", context, key.str(), names));
+  }
+}
+
+std::string TomlReader::string(const toml::node& node, const std::string& what) const {
+  if (const auto* s = node.as_string()) return s->get();
+  fail(ErrorKind::parse, node.source(),
+       fmt::format("{}: must be a string (got {})", what, type_name(node)));
+}
+
+double TomlReader::number(const toml::node& node, const std::string& what) const {
+  if (const auto* x = node.as_floating_point()) return x->get();
+  if (const auto* i = node.as_integer()) return static_cast<double>(i->get());
+  fail(ErrorKind::parse, node.source(),
+       fmt::format("{}: must be a number (got {})", what, type_name(node)));
+}
+
+const toml::array& TomlReader::array(const toml::node& node, const std::string& what) const {
+  if (const auto* a = node.as_array()) return *a;
+  fail(ErrorKind::parse, node.source(),
+       fmt::format("{}: must be an array (got {})", what, type_name(node)));
+}
+
+std::vector<double> TomlReader::numbers(const toml::node& node, const std::string& what) const {
+  std::vector<double> out;
+  for (const toml::node& item : array(node, what)) out.push_back(number(item, what));
+  return out;
+}
+
+std::vector<AffineMap> TomlReader::maps(const toml::node& node, const std::string& prefix) const {
+  const std::string lead = prefix.empty() ? "" : prefix + " ";
+  const toml::array& rows = array(node, lead + "maps");
+  if (rows.empty())
+    fail(ErrorKind::invalid_ifs, node.source(),
+         fmt::format("{}maps: an IFS needs at least one map (got 0)", lead));
+  std::vector<AffineMap> maps;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::string what = fmt::format("{}map {}", lead, i + 1);
+    const toml::array& row = array(rows[i], what);
+    if (row.size() != 6)
+      fail(ErrorKind::parse, rows[i].source(),
+           fmt::format("{}: needs 6 numbers a b c d e f (got {})", what, row.size()));
+    std::array<double, 6> k{};
+    for (std::size_t j = 0; j < 6; ++j) {
+      k[j] = number(row[j], what);
+      if (!std::isfinite(k[j]))
+        fail(ErrorKind::invalid_ifs, row[j].source(),
+             fmt::format("{}: coefficients must be finite numbers (got {})", what, k[j]));
+    }
+    maps.push_back(AffineMap::from_coefficients(k));
+  }
+  return maps;
+}
+
+std::string_view TomlReader::type_name(const toml::node& node) {
+  switch (node.type()) {
+    case toml::node_type::string:
+      return "a string";
+    case toml::node_type::integer:
+      return "an integer";
+    case toml::node_type::floating_point:
+      return "a number";
+    case toml::node_type::boolean:
+      return "a boolean";
+    case toml::node_type::array:
+      return "an array";
+    case toml::node_type::table:
+      return "a table";
+    case toml::node_type::date:
+    case toml::node_type::time:
+    case toml::node_type::date_time:
+      return "a date or time";
+    default:
+      return "nothing";
+  }
+}
+
+}  // namespace ifsfx::detail
