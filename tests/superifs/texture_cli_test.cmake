@@ -1,37 +1,6 @@
 # One end-to-end check of `ifsfx texture`, chosen by -DCHECK=...; -DIFSFX is the binary, -DWORK a
 # scratch folder.
-file(REMOVE_RECURSE ${WORK})
-file(MAKE_DIRECTORY ${WORK})
-
-# Runs ifsfx with ARGN; sets rc, out, err in the caller.
-function(ifsfx)
-  execute_process(COMMAND ${IFSFX} ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE stdout
-                  ERROR_VARIABLE stderr WORKING_DIRECTORY ${WORK})
-  set(rc ${code} PARENT_SCOPE)
-  set(out "${stdout}" PARENT_SCOPE)
-  set(err "${stderr}" PARENT_SCOPE)
-endfunction()
-
-function(expect_success what)
-  if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "${what}: exit ${rc}\n${out}\n${err}")
-  endif()
-endfunction()
-
-# Expects exit code `code` and one line on stderr starting with "ifsfx: " and containing `text`.
-function(expect_failure what code text)
-  if(NOT rc EQUAL code)
-    message(FATAL_ERROR "${what}: expected exit ${code}, got ${rc}\n${out}\n${err}")
-  endif()
-  if(NOT err MATCHES "^ifsfx: " OR NOT err MATCHES "${text}")
-    message(FATAL_ERROR "${what}: expected an error line with '${text}', got:\n${err}")
-  endif()
-  string(REGEX MATCHALL "\n" lines "${err}")
-  list(LENGTH lines count)
-  if(count GREATER 1)
-    message(FATAL_ERROR "${what}: expected one line on stderr, got:\n${err}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../common/cli_test.cmake)
 
 function(expect_file name)
   if(NOT EXISTS ${WORK}/${name})
