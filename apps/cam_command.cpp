@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <future>
 #include <map>
 #include <memory>
 #include <optional>
@@ -274,20 +275,54 @@ void run_cam(const CamArgs& args) {
   bool quit = false;
   std::int64_t drift_maps = 0;  // built by animations that have ended (a preset change, the a key)
 
-  // n/p: the next/previous shipped preset; the map is computed here, between two frames.
+  // n/p: the next/previous shipped preset. Its map is computed on a worker while the current
+  // filter stays live (a map takes several frame intervals); the new filter takes over between
+  // two frames once ready. Keys pressed meanwhile pick the preset to go to after it.
+  bool animate = args.animate == Animate::drift;
+  struct Switch {
+    std::size_t index;
+    std::future<std::unique_ptr<LiveFilter>> filter;
+  };
+  std::optional<Switch> pending;
+  std::optional<std::size_t> wanted;
+  const auto start_switch = [&](std::size_t i) {
+    notice(fmt::format("computing the map of {}", presets[i]));
+    pending =
+        Switch{i, std::async(std::launch::async, [&args, name = presets[i], granted, animate] {
+                 return std::make_unique<LiveFilter>(args, name, granted, animate);
+               })};
+  };
   const auto step_preset = [&](bool forward) {
     if (presets.empty()) return;
     const std::size_t n = presets.size();
-    std::size_t i = preset_index.value_or(forward ? n - 1 : 0);
+    std::size_t i = wanted    ? *wanted
+                    : pending ? pending->index
+                              : preset_index.value_or(forward ? n - 1 : 0);
     i = forward ? (i + 1) % n : (i + n - 1) % n;
+    if (pending) {
+      wanted = i;
+    } else {
+      start_switch(i);
+    }
+  };
+  const auto finish_switch = [&] {
+    using namespace std::chrono_literals;
+    if (!pending || pending->filter.wait_for(0s) != std::future_status::ready) return;
+    const std::size_t i = pending->index;
+    preset_index = i;  // also when it failed: n and p go on from there
     try {
-      auto next = std::make_unique<LiveFilter>(args, presets[i], granted, filter->animated());
+      std::unique_ptr<LiveFilter> next = pending->filter.get();
+      next->set_animate(animate);
       drift_maps += filter->maps_built();
       filter = std::move(next);
-      preset_index = i;
-      notice(fmt::format("preset {} ({}/{})", presets[i], i + 1, n));
+      notice(fmt::format("preset {} ({}/{})", presets[i], i + 1, presets.size()));
     } catch (const Error& e) {
       notice(fmt::format("preset {} not shown: {}", presets[i], e.what()));
+    }
+    pending.reset();
+    if (wanted) {
+      start_switch(*wanted);
+      wanted.reset();
     }
   };
   // A failed snapshot or recording start is reported and the live view goes on: the session is
@@ -318,6 +353,7 @@ void run_cam(const CamArgs& args) {
 
   const auto observer = [&](const Frame& out, const CameraStats& stats) {
     if (!win) return true;
+    finish_switch();
     const std::string readout =
         fmt::format("{:.1f} fps  {}{}{}", stats.fps(), filter->name(),
                     filter->animated() ? "  drift" : "", recording.recording() ? "  REC" : "");
@@ -334,9 +370,10 @@ void run_cam(const CamArgs& args) {
         step_preset(false);
         break;
       case 'a':
+        animate = !animate;
         drift_maps += filter->maps_built();
-        filter->set_animate(!filter->animated());
-        notice(filter->animated() ? "animation on (drift)" : "animation off");
+        filter->set_animate(animate);
+        notice(animate ? "animation on (drift)" : "animation off");
         break;
       case 's':
         snapshot(out.image);
