@@ -6,6 +6,7 @@
 
 #include "ifs/chaos_game.h"
 #include "ifs/detail/address_raster.h"
+#include "ifs/detail/walkers.h"
 #include "ifs/parallel.h"
 #include "ifs/rng.h"
 
@@ -26,29 +27,22 @@ cv::Mat AddressRaster::coverage() const {
 
 namespace {
 
-// Points per chunk: the split of the work depends only on the point count.
-constexpr std::uint64_t kChunkPoints = std::uint64_t{1} << 21;
 constexpr int kHutchinsonPasses = 4;
-// Walkers iterated in lockstep per chunk: independent chains whose cache misses on the pixel
-// buffer overlap (one walker alone waits on every store).
-constexpr int kLanes = 8;
 
-// One map of F seen in continuous pixel coordinates, P ∘ f ∘ P⁻¹: the walkers live on the pixel
-// grid, so that plotting a point costs no transform.
+// One map of F seen in continuous pixel coordinates, P ∘ f ∘ P⁻¹, for the Hutchinson passes, which
+// step points of the pixel grid.
 struct PixelMap {
   double a, b, c, d, e, f;
 };
 
 struct Kernel {
   std::vector<PixelMap> maps;
-  MapPicker pick;
   int bits = 1;
   int burn_in = 64;
   int width = 0, height = 0;
   AffineMap to_pixel;
 
-  Kernel(const Ifs& F, const Viewport& vp)
-      : pick(effective_probabilities(F)), bits(symbol_bits(F.size())) {
+  Kernel(const Ifs& F, const Viewport& vp) : bits(symbol_bits(F.size())) {
     to_pixel = vp.plane_to_pixel();
     const AffineMap from_pixel = *to_pixel.inverse(0);
     for (const auto& m : F.maps) {
@@ -62,52 +56,40 @@ struct Kernel {
   }
 };
 
-// Runs `points` chaos-game points of one chunk into `buffer`: each pixel keeps the largest key
-// (Top keeps the larger address, eq. 7), cut to the top bits of a Cell (32 bits halve the
+// The walkers of render.cpp (walkers.h: AVX2 for up to 4 maps) with address keys, in plane
+// coordinates, plotted by the viewport's pixel mapping.
+struct Walkers {
+  MapTable maps;
+  MapPicker pick;
+  PixelMapping mapping;
+  int bits;
+  int burn_in;
+
+  Walkers(const Ifs& F, const Kernel& k)
+      : maps(F), pick(effective_probabilities(F)), bits(k.bits), burn_in(k.burn_in) {
+    const AffineMap& p = k.to_pixel;
+    mapping = {p.a,    p.e, p.d, p.f, static_cast<double>(k.width), static_cast<double>(k.height),
+               k.width};
+  }
+};
+
+// Runs `points` chaos-game points of chunk `chunk` into `buffer`: each pixel keeps the largest
+// key (Top keeps the larger address, eq. 7), cut to the top bits of a Cell (32 bits halve the
 // buffer's memory traffic; they hold 32/b symbols).
 template <class Cell>
-void run_chunk(const Kernel& k, std::uint64_t seed, std::uint64_t points, Cell* buffer) {
+void run_chunk(const Walkers& w, std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
+               Cell* buffer) {
   constexpr int kCellShift = 64 - 8 * static_cast<int>(sizeof(Cell));
-  Rng rng(seed);
-  std::array<double, kLanes> x{}, y{};
-  std::array<std::uint64_t, kLanes> key{};
-  for (int lane = 0; lane < kLanes; ++lane)
-    x[lane] = rng.uniform() * k.width, y[lane] = rng.uniform() * k.height;
-  const PixelMap* maps = k.maps.data();
-  const int shift = 64 - k.bits, bits = k.bits;
-  for (int step = 0; step < k.burn_in; ++step)
-    for (int lane = 0; lane < kLanes; ++lane) {
-      const std::uint32_t n = k.pick(rng.next());
-      const PixelMap& m = maps[n];
-      const double nx = m.a * x[lane] + m.b * y[lane] + m.e;
-      y[lane] = m.c * x[lane] + m.d * y[lane] + m.f;
-      x[lane] = nx;
-      key[lane] = (key[lane] >> bits) | (std::uint64_t{n} << shift);
-    }
-  const double w = k.width, h = k.height;
-  const std::size_t stride = static_cast<std::size_t>(k.width);
-  auto step_lane = [&](int lane) {
-    const std::uint32_t n = k.pick(rng.next());
-    const PixelMap& m = maps[n];
-    const double nx = m.a * x[lane] + m.b * y[lane] + m.e;
-    const double ny = m.c * x[lane] + m.d * y[lane] + m.f;
-    x[lane] = nx;
-    y[lane] = ny;
-    key[lane] = (key[lane] >> bits) | (std::uint64_t{n} << shift);
-    if (nx >= 0 && nx < w && ny >= 0 && ny < h) {
-      Cell& cell = buffer[static_cast<std::size_t>(ny) * stride + static_cast<std::size_t>(nx)];
-      cell = std::max<Cell>(cell, static_cast<Cell>(key[lane] >> kCellShift) | 1);
-    }
-  };
-  const std::uint64_t steps = points / kLanes;
-  for (std::uint64_t s = 0; s < steps; ++s)
-    for (int lane = 0; lane < kLanes; ++lane) step_lane(lane);
-  for (int lane = 0; lane < static_cast<int>(points % kLanes); ++lane) step_lane(lane);
+  plot_chunk_keyed(w.maps, w.pick, w.mapping, seed, chunk, points, w.burn_in, w.bits,
+                   [buffer](int, long pixel, std::uint32_t, std::uint64_t key) {
+                     Cell& cell = buffer[pixel];
+                     cell = std::max<Cell>(cell, static_cast<Cell>(key >> kCellShift) | 1);
+                   });
 }
 
-// Holes: unhit pixels with hit neighbours on both sides along some line through them; they take
-// the largest neighbouring record. Reads `in`, writes `out` (a copy of `in`), so the result does
-// not depend on the scan order.
+// Holes: unhit pixels with hit neighbours on both sides along some line through them (or, at a
+// corner of the raster, all three neighbours hit); they take the largest neighbouring record. Reads
+// `in`, writes `out` (a copy of `in`), so the result does not depend on the scan order.
 template <class Cell>
 std::size_t fill_holes(const std::vector<Cell>& in, std::vector<Cell>& out, int width, int height) {
   std::size_t filled = 0;
@@ -118,13 +100,19 @@ std::size_t fill_holes(const std::vector<Cell>& in, std::vector<Cell>& out, int 
   for (int r = 0; r < height; ++r)
     for (int c = 0; c < width; ++c) {
       if (get(c, r) != 0) continue;
+      // A corner of the raster has no line through it with both ends inside: there, its three
+      // neighbours all hit say the same (an attractor running off the corner of the view).
+      const bool corner = (c == 0 || c == width - 1) && (r == 0 || r == height - 1);
+      const int dc = c == 0 ? 1 : -1, dr = r == 0 ? 1 : -1;
       const bool inside = (get(c - 1, r) && get(c + 1, r)) || (get(c, r - 1) && get(c, r + 1)) ||
                           (get(c - 1, r - 1) && get(c + 1, r + 1)) ||
-                          (get(c - 1, r + 1) && get(c + 1, r - 1));
+                          (get(c - 1, r + 1) && get(c + 1, r - 1)) ||
+                          (corner && width > 1 && height > 1 && get(c + dc, r) && get(c, r + dr) &&
+                           get(c + dc, r + dr));
       if (!inside) continue;
       Cell best = 0;
-      for (int dr = -1; dr <= 1; ++dr)
-        for (int dc = -1; dc <= 1; ++dc) best = std::max(best, get(c + dc, r + dr));
+      for (int i = -1; i <= 1; ++i)
+        for (int j = -1; j <= 1; ++j) best = std::max(best, get(c + j, r + i));
       out[static_cast<std::size_t>(r) * width + c] = best;
       ++filled;
     }
@@ -223,6 +211,7 @@ std::vector<std::uint64_t> run_policy(const Ifs& F, const Viewport& viewport,
                                       const ChaosTopsOptions& options, ChaosTopsStats* stats) {
   constexpr int kCellBits = 8 * static_cast<int>(sizeof(Cell));
   const Kernel kernel(F, viewport);
+  const Walkers walkers(F, kernel);
   const std::size_t pixels = static_cast<std::size_t>(viewport.size.area());
   const int threads = resolve_threads(options.threads);
   std::vector<std::vector<Cell>> buffers(static_cast<std::size_t>(threads));
@@ -242,8 +231,8 @@ std::vector<std::uint64_t> run_policy(const Ifs& F, const Viewport& viewport,
       auto& buffer = buffers[static_cast<std::size_t>(worker)];
       if (buffer.empty()) buffer.assign(pixels, 0);
       const std::uint64_t begin = chunk * kChunkPoints;
-      run_chunk<Cell>(kernel, stream_seed(options.seed, first + chunk),
-                      std::min(kChunkPoints, points - begin), buffer.data());
+      run_chunk<Cell>(walkers, options.seed, first + chunk, std::min(kChunkPoints, points - begin),
+                      buffer.data());
     });
     s.points += points;
     s.rounds = round + 1;

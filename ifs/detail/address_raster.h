@@ -42,9 +42,9 @@ struct AddressRaster {
 // per pixel while a round still adds more than 0.1 % to the pixels hit (at most kMaxGrowthRounds),
 // then Hutchinson passes (one more step from every pixel's point, by every map, into pixels
 // no point reached; up to 4 passes), then holes are filled from neighbours: a pixel no point
-// reached but with hit neighbours on both sides along a row, a column or a diagonal lies inside the
-// attractor's raster, and takes the largest key among its hit 8-neighbours (the tops rule applied
-// to the neighbourhood).
+// reached but with hit neighbours on both sides along a row, a column or a diagonal (at a corner
+// of the raster: all three neighbours hit) lies inside the attractor's raster, and takes the
+// largest key among its hit 8-neighbours (the tops rule applied to the neighbourhood).
 struct ChaosTopsOptions {
   double quality = 64;
   std::uint64_t seed = 1;

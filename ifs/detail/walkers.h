@@ -115,18 +115,24 @@ inline double start_coordinate(LaneRng& rng) {
 // every point that lands on the raster, lanes interleaved step by step. Everything the loop reads
 // is copied into locals first, so the compiler keeps it in registers whatever `plot` writes. This
 // is also the reference that the AVX2 kernel must match bit for bit.
-template <class Plot>
-void plot_chunk_scalar(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
+//
+// With kKeys, every lane also keeps the address key of its point (ifs/detail/address_raster.h:
+// each step shifts the key right by `key_bits` and puts the map drawn in the top bits, burn-in
+// included) and the call is plot(lane, pixel, map, key).
+template <bool kKeys, class Plot>
+void walk_chunk_scalar(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
                        std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
-                       Plot&& plot) {
+                       int key_bits, Plot&& plot) {
   const MapPicker::View pick = picker.view();
   const double *a = maps.a.data(), *b = maps.b.data(), *c = maps.c.data();
   const double *d = maps.d.data(), *e = maps.e.data(), *f = maps.f.data();
   const double sx = mapping.sx, ox = mapping.ox, sy = mapping.sy, oy = mapping.oy;
   const double width = mapping.width, height = mapping.height;
   const long stride = mapping.stride;
+  const int key_shift = 64 - key_bits;
   LaneRng rng[kLanes];
   double x[kLanes], y[kLanes];
+  std::uint64_t key[kLanes] = {};
   for (int lane = 0; lane < kLanes; ++lane) {
     rng[lane].seed(seed, chunk, lane);
     x[lane] = start_coordinate(rng[lane]);
@@ -138,6 +144,7 @@ void plot_chunk_scalar(const MapTable& maps, const MapPicker& picker, const Pixe
     const double ny = c[n] * x[lane] + d[n] * y[lane] + f[n];
     x[lane] = nx;
     y[lane] = ny;
+    if constexpr (kKeys) key[lane] = (key[lane] >> key_bits) | (std::uint64_t{n} << key_shift);
     return n;
   };
   for (int k = 0; k < burn_in; ++k)
@@ -146,8 +153,14 @@ void plot_chunk_scalar(const MapTable& maps, const MapPicker& picker, const Pixe
     const std::uint32_t n = step(lane);
     const double px = sx * x[lane] + ox, py = sy * y[lane] + oy;
     // Non-short-circuit tests: one well-predicted branch instead of four.
-    if ((px >= 0) & (px < width) & (py >= 0) & (py < height))
-      plot(lane, static_cast<long>(py) * stride + static_cast<long>(px), n);
+    if ((px >= 0) & (px < width) & (py >= 0) & (py < height)) {
+      const long pixel = static_cast<long>(py) * stride + static_cast<long>(px);
+      if constexpr (kKeys) {
+        plot(lane, pixel, n, key[lane]);
+      } else {
+        plot(lane, pixel, n);
+      }
+    }
   };
   const std::uint64_t steps = points / kLanes;
   for (std::uint64_t k = 0; k < steps; ++k) {
@@ -155,6 +168,13 @@ void plot_chunk_scalar(const MapTable& maps, const MapPicker& picker, const Pixe
     for (int lane = 0; lane < kLanes; ++lane) advance(lane);
   }
   for (int lane = 0; lane < static_cast<int>(points % kLanes); ++lane) advance(lane);
+}
+
+template <class Plot>
+void plot_chunk_scalar(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
+                       std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
+                       Plot&& plot) {
+  walk_chunk_scalar<false>(maps, picker, mapping, seed, chunk, points, burn_in, 0, plot);
 }
 
 }  // namespace ifsfx::detail
@@ -176,6 +196,21 @@ void plot_chunk(const MapTable& maps, const MapPicker& picker, const PixelMappin
   }
 #endif
   plot_chunk_scalar(maps, picker, mapping, seed, chunk, points, burn_in, plot);
+}
+
+// plot_chunk with the address keys of the walkers: plot(lane, pixel, map, key), keys shifted by
+// `key_bits` a step (see walk_chunk_scalar).
+template <class Plot>
+void plot_chunk_keyed(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
+                      std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
+                      int key_bits, Plot&& plot) {
+#ifdef __AVX2__
+  if (maps.a.size() <= kAvx2MaxMaps) {
+    walk_chunk_avx2<true>(maps, picker, mapping, seed, chunk, points, burn_in, key_bits, plot);
+    return;
+  }
+#endif
+  walk_chunk_scalar<true>(maps, picker, mapping, seed, chunk, points, burn_in, key_bits, plot);
 }
 
 }  // namespace ifsfx::detail

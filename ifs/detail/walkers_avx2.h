@@ -82,11 +82,11 @@ inline __m256i step(const Tables& t, Lanes4& rng, __m256d& x, __m256d& y) {
 
 }  // namespace avx2
 
-// plot_chunk_scalar on AVX2, for IFSs of at most kAvx2MaxMaps maps.
-template <class Plot>
-void plot_chunk_avx2(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
+// walk_chunk_scalar on AVX2, for IFSs of at most kAvx2MaxMaps maps.
+template <bool kKeys, class Plot>
+void walk_chunk_avx2(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
                      std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
-                     Plot&& plot) {
+                     int key_bits, Plot&& plot) {
   avx2::Tables t;
   {
     const MapPicker::View pick = picker.view();
@@ -114,9 +114,19 @@ void plot_chunk_avx2(const MapTable& maps, const MapPicker& picker, const PixelM
   avx2::Lanes4 rng_lo = avx2::pack(lanes), rng_hi = avx2::pack(lanes + 4);
   __m256d x_lo = _mm256_load_pd(x0), x_hi = _mm256_load_pd(x0 + 4);
   __m256d y_lo = _mm256_load_pd(y0), y_hi = _mm256_load_pd(y0 + 4);
+  // Address keys (kKeys): key = (key >> key_bits) | (map << (64 - key_bits)) per step.
+  __m256i key_lo = _mm256_setzero_si256(), key_hi = _mm256_setzero_si256();
+  const __m128i key_right = _mm_cvtsi32_si128(key_bits);
+  const __m128i key_left = _mm_cvtsi32_si128(64 - key_bits);
+  auto advance = [&](avx2::Lanes4& rng, __m256d& x, __m256d& y, __m256i& key) {
+    const __m256i n = avx2::step(t, rng, x, y);
+    if constexpr (kKeys)
+      key = _mm256_or_si256(_mm256_srl_epi64(key, key_right), _mm256_sll_epi64(n, key_left));
+    return n;
+  };
   for (int k = 0; k < burn_in; ++k) {
-    avx2::step(t, rng_lo, x_lo, y_lo);
-    avx2::step(t, rng_hi, x_hi, y_hi);
+    advance(rng_lo, x_lo, y_lo, key_lo);
+    advance(rng_hi, x_hi, y_hi, key_hi);
   }
 
   const __m256d sx = _mm256_set1_pd(mapping.sx), ox = _mm256_set1_pd(mapping.ox);
@@ -125,7 +135,8 @@ void plot_chunk_avx2(const MapTable& maps, const MapPicker& picker, const PixelM
   const __m256d zero = _mm256_setzero_pd();
   const __m128i stride = _mm_set1_epi32(static_cast<int>(mapping.stride));
   // Pixel indices and maps of four lanes; plot() the lanes on the raster, in lane order.
-  auto emit = [&](int first_lane, int lanes_wanted, __m256i n, __m256d px_x, __m256d px_y) {
+  auto emit = [&](int first_lane, int lanes_wanted, __m256i n, __m256d px_x, __m256d px_y,
+                  __m256i key) {
     const __m256d px = _mm256_add_pd(_mm256_mul_pd(sx, px_x), ox);
     const __m256d py = _mm256_add_pd(_mm256_mul_pd(sy, px_y), oy);
     const __m256d inside = _mm256_and_pd(
@@ -139,23 +150,38 @@ void plot_chunk_avx2(const MapTable& maps, const MapPicker& picker, const PixelM
         reinterpret_cast<__m128i*>(index),
         _mm_add_epi32(_mm_mullo_epi32(_mm256_cvttpd_epi32(py), stride), _mm256_cvttpd_epi32(px)));
     _mm256_store_si256(reinterpret_cast<__m256i*>(map), n);
-    for (int j = 0; j < 4; ++j)
-      if (mask & (1 << j)) plot(first_lane + j, static_cast<long>(index[j]), map[2 * j]);
+    if constexpr (kKeys) {
+      alignas(32) std::uint64_t keys[4];
+      _mm256_store_si256(reinterpret_cast<__m256i*>(keys), key);
+      for (int j = 0; j < 4; ++j)
+        if (mask & (1 << j)) plot(first_lane + j, static_cast<long>(index[j]), map[2 * j], keys[j]);
+    } else {
+      for (int j = 0; j < 4; ++j)
+        if (mask & (1 << j)) plot(first_lane + j, static_cast<long>(index[j]), map[2 * j]);
+    }
   };
   const std::uint64_t steps = points / kLanes;
   for (std::uint64_t k = 0; k < steps; ++k) {
-    const __m256i n_lo = avx2::step(t, rng_lo, x_lo, y_lo);
-    const __m256i n_hi = avx2::step(t, rng_hi, x_hi, y_hi);
-    emit(0, 4, n_lo, x_lo, y_lo);
-    emit(4, 4, n_hi, x_hi, y_hi);
+    const __m256i n_lo = advance(rng_lo, x_lo, y_lo, key_lo);
+    const __m256i n_hi = advance(rng_hi, x_hi, y_hi, key_hi);
+    emit(0, 4, n_lo, x_lo, y_lo, key_lo);
+    emit(4, 4, n_hi, x_hi, y_hi, key_hi);
   }
   const int rest = static_cast<int>(points % kLanes);
   if (rest > 0) {
-    const __m256i n_lo = avx2::step(t, rng_lo, x_lo, y_lo);
-    const __m256i n_hi = avx2::step(t, rng_hi, x_hi, y_hi);
-    emit(0, std::min(rest, 4), n_lo, x_lo, y_lo);
-    if (rest > 4) emit(4, rest - 4, n_hi, x_hi, y_hi);
+    const __m256i n_lo = advance(rng_lo, x_lo, y_lo, key_lo);
+    const __m256i n_hi = advance(rng_hi, x_hi, y_hi, key_hi);
+    emit(0, std::min(rest, 4), n_lo, x_lo, y_lo, key_lo);
+    if (rest > 4) emit(4, rest - 4, n_hi, x_hi, y_hi, key_hi);
   }
+}
+
+// plot_chunk_scalar on AVX2, for IFSs of at most kAvx2MaxMaps maps.
+template <class Plot>
+void plot_chunk_avx2(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
+                     std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
+                     Plot&& plot) {
+  walk_chunk_avx2<false>(maps, picker, mapping, seed, chunk, points, burn_in, 0, plot);
 }
 
 }  // namespace ifsfx::detail

@@ -40,6 +40,50 @@ TEST(walkers, avx2_loop_plots_exactly_what_the_scalar_loop_plots) {
     }
   }
 }
+
+// With keys (fractal tops): the same points, and each point's key is the maps its lane drew, most
+// recent on top — checked against a key rebuilt from the maps plotted when every point lands.
+TEST(walkers, keyed_avx2_loop_gives_the_keys_of_the_scalar_loop) {
+  using Keyed = std::vector<std::tuple<int, long, std::uint32_t, std::uint64_t>>;
+  const Ifs ifs = testing::right_sierpinski();
+  const MapTable maps(ifs);
+  const MapPicker pick(effective_probabilities(ifs));
+  const int bits = 2;
+  // The whole unit square on the raster: every point plots, so the maps of each lane are known.
+  const PixelMapping all{96, 0, -96, 96.5, 97, 97, 97};
+  for (const PixelMapping& mapping : {all, PixelMapping{200, -50, -200, 200, 97, 301, 97}}) {
+    Keyed scalar, avx2;
+    walk_chunk_scalar<true>(maps, pick, mapping, 42, 3, 10'001, 40, bits,
+                            [&](int lane, long pixel, std::uint32_t map, std::uint64_t key) {
+                              scalar.emplace_back(lane, pixel, map, key);
+                            });
+    walk_chunk_avx2<true>(maps, pick, mapping, 42, 3, 10'001, 40, bits,
+                          [&](int lane, long pixel, std::uint32_t map, std::uint64_t key) {
+                            avx2.emplace_back(lane, pixel, map, key);
+                          });
+    ASSERT_GT(scalar.size(), 1000u);
+    EXPECT_EQ(scalar, avx2);
+  }
+  Keyed points;
+  walk_chunk_scalar<true>(maps, pick, all, 42, 3, 8'000, 40, bits,
+                          [&](int lane, long pixel, std::uint32_t map, std::uint64_t key) {
+                            points.emplace_back(lane, pixel, map, key);
+                          });
+  ASSERT_EQ(points.size(), 8'000u);
+  std::uint64_t rebuilt[kLanes] = {};
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto& [lane, pixel, map, key] = points[i];
+    EXPECT_EQ(key >> 62, map) << "point " << i << ": the map drawn is the key's first symbol";
+    rebuilt[lane] = (rebuilt[lane] >> bits) | (std::uint64_t{map} << 62);
+    // After 32 steps of its own, a lane's key holds only maps plotted here.
+    if (i >= 32 * kLanes) {
+      EXPECT_EQ(key, rebuilt[lane]) << "point " << i;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 7000u);
+}
 #endif
 
 }  // namespace
