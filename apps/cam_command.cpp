@@ -2,19 +2,16 @@
 // through a steal map computed once, shown in a window, sent to a V4L2 output device (a virtual
 // webcam for any app), recorded to a movie file, or all three.
 #include <atomic>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
-#include <filesystem>
-#include <future>
 #include <map>
 #include <memory>
-#include <optional>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "apps/cam_controls.h"
 #include "apps/cam_recording.h"
 #include "apps/cam_window.h"
 #include "apps/cli_options.h"
@@ -22,13 +19,8 @@
 #include "apps/fractal_filter_options.h"
 #include "apps/stop_signals.h"
 #include "ifs/error.h"
-#include "ifs/image_io.h"
-#include "ifs/preset.h"
-#include "ifs/steal_map.h"
-#include "video/camera_drift.h"
 #include "video/camera_pipeline.h"
 #include "video/file_sink.h"
-#include "video/fractal_filter.h"
 #include "video/image_sequence.h"
 #include "video/v4l2_capture.h"
 #include "video/v4l2_device.h"
@@ -115,97 +107,6 @@ std::string default_device() {
               "it with --device");
 }
 
-// The live filter: F coloured through G on the camera's frame size (DESIGN.md §3) — one steal
-// map computed once and reapplied per frame, or, animated, maps of F drifting in time built on a
-// worker and cross-faded in (video/camera_drift.h).
-class LiveFilter {
- public:
-  LiveFilter(const CamArgs& args, const std::string& preset, cv::Size size, bool animate)
-      : args_(args), size_(size) {
-    const IfsPreset F = load_ifs(preset);
-    F_ = F.ifs;
-    name_ = F.ifs.name.empty() ? preset : F.ifs.name;
-    G_ = colouring_option(args.fractal.colouring, F_);
-    map_options_ = args.fractal.map_options();
-    options_ = args.fractal.filter_options();
-    fixed_ = video::make_remap_table(compute_steal_map(F_, G_, size, map_options_), size,
-                                     Interpolation::bilinear, args.fractal.threads);
-    set_animate(animate);
-  }
-
-  const std::string& name() const { return name_; }
-  bool animated() const { return drift_ != nullptr; }
-
-  void set_animate(bool on) {
-    if (!on) {
-      drift_.reset();
-      return;
-    }
-    if (drift_) return;
-    video::LiveDriftOptions o;
-    o.drift = args_.fractal.drift_options();
-    o.map = map_options_;
-    o.fade_frames = args_.fade_frames;
-    drift_ = std::make_unique<video::LiveDrift>(F_, G_, size_, o);
-  }
-
-  cv::Mat operator()(const Frame& frame) {
-    if (!drift_) return video::filter_frame(frame.image, fixed_, options_);
-    return drift_->filter(frame.image, frame.timestamp, options_);
-  }
-
-  std::int64_t maps_built() const { return drift_ ? drift_->maps_built() : 0; }
-
- private:
-  const CamArgs& args_;
-  cv::Size size_;
-  Ifs F_, G_;
-  std::string name_;
-  StealMapOptions map_options_;
-  video::FilterOptions options_;
-  video::RemapTable fixed_;
-  std::unique_ptr<video::LiveDrift> drift_;
-};
-
-// The shipped presets the n/p keys step through: the drawing IFSs (the factor-1 square tilings
-// are colouring IFSs only and are refused as F).
-std::vector<std::string> cycle_presets() {
-  std::vector<std::string> names;
-  for (const PresetSummary& p : list_shipped_presets()) {
-    if (p.contraction < 1) names.push_back(p.name);
-  }
-  return names;
-}
-
-// The first file of the --snapshot pattern, counting from 1, that does not exist yet.
-std::filesystem::path next_snapshot(const std::string& pattern) {
-  for (std::int64_t n = 1;; ++n) {
-    std::filesystem::path p = video::sequence_path(pattern, n);
-    if (!std::filesystem::exists(p)) return p;
-  }
-}
-
-// Reports what the window's keys did: on stderr (unless --quiet) and, for a few seconds, in the
-// window's readout.
-class Notices {
- public:
-  explicit Notices(bool quiet) : quiet_(quiet) {}
-  void operator()(const std::string& text) {
-    if (!quiet_) std::fprintf(stderr, "cam: %s\n", text.c_str());
-    text_ = text;
-    until_ = std::chrono::steady_clock::now() + std::chrono::seconds(3);
-  }
-  // The latest notice while it is fresh, else "".
-  std::string current() const {
-    return std::chrono::steady_clock::now() < until_ ? text_ : std::string();
-  }
-
- private:
-  bool quiet_;
-  std::string text_;
-  std::chrono::steady_clock::time_point until_;
-};
-
 void run_cam(const CamArgs& args) {
   if (args.list) {
     list_devices();
@@ -246,8 +147,16 @@ void run_cam(const CamArgs& args) {
             .c_str());
   }
 
-  auto filter = std::make_unique<LiveFilter>(args, args.fractal.preset, granted,
-                                             args.animate == Animate::drift);
+  // The starting map first: a preset that does not load fails before any output is opened.
+  CamRecording recording(args.record.empty() ? "cam-recording.mkv" : args.record,
+                         !args.record.empty(), args.codec, granted, fps);
+  Notices notice(args.quiet);
+  CamControls controls({.fractal = &args.fractal,
+                        .fade_frames = args.fade_frames,
+                        .size = granted,
+                        .snapshot = args.snapshot,
+                        .animate = args.animate == Animate::drift},
+                       recording, notice);
 
   std::vector<FrameSink*> sinks;
   std::unique_ptr<video::V4l2Output> webcam;
@@ -259,131 +168,25 @@ void run_cam(const CamArgs& args) {
             .fps = fps});
     sinks.push_back(webcam.get());
   }
-  CamRecording recording(args.record.empty() ? "cam-recording.mkv" : args.record,
-                         !args.record.empty(), args.codec, granted, fps);
   if (!args.record.empty()) recording.start();
   sinks.push_back(&recording);
 
   std::unique_ptr<CamWindow> win;
   if (window) win = std::make_unique<CamWindow>();
-  const std::vector<std::string> presets = cycle_presets();
-  std::optional<std::size_t> preset_index;
-  for (std::size_t i = 0; i < presets.size(); ++i) {
-    if (presets[i] == args.fractal.preset) preset_index = i;
-  }
-  Notices notice(args.quiet);
   bool quit = false;
-  std::int64_t drift_maps = 0;  // built by animations that have ended (a preset change, the a key)
-
-  // n/p: the next/previous shipped preset. Its map is computed on a worker while the current
-  // filter stays live (a map takes several frame intervals); the new filter takes over between
-  // two frames once ready. Keys pressed meanwhile pick the preset to go to after it.
-  bool animate = args.animate == Animate::drift;
-  struct Switch {
-    std::size_t index;
-    std::future<std::unique_ptr<LiveFilter>> filter;
-  };
-  std::optional<Switch> pending;
-  std::optional<std::size_t> wanted;
-  const auto start_switch = [&](std::size_t i) {
-    notice(fmt::format("computing the map of {}", presets[i]));
-    pending =
-        Switch{i, std::async(std::launch::async, [&args, name = presets[i], granted, animate] {
-                 return std::make_unique<LiveFilter>(args, name, granted, animate);
-               })};
-  };
-  const auto step_preset = [&](bool forward) {
-    if (presets.empty()) return;
-    const std::size_t n = presets.size();
-    std::size_t i = wanted    ? *wanted
-                    : pending ? pending->index
-                              : preset_index.value_or(forward ? n - 1 : 0);
-    i = forward ? (i + 1) % n : (i + n - 1) % n;
-    if (pending) {
-      wanted = i;
-    } else {
-      start_switch(i);
-    }
-  };
-  const auto finish_switch = [&] {
-    using namespace std::chrono_literals;
-    if (!pending || pending->filter.wait_for(0s) != std::future_status::ready) return;
-    const std::size_t i = pending->index;
-    preset_index = i;  // also when it failed: n and p go on from there
-    try {
-      std::unique_ptr<LiveFilter> next = pending->filter.get();
-      next->set_animate(animate);
-      drift_maps += filter->maps_built();
-      filter = std::move(next);
-      notice(fmt::format("preset {} ({}/{})", presets[i], i + 1, presets.size()));
-    } catch (const Error& e) {
-      notice(fmt::format("preset {} not shown: {}", presets[i], e.what()));
-    }
-    pending.reset();
-    if (wanted) {
-      start_switch(*wanted);
-      wanted.reset();
-    }
-  };
-  // A failed snapshot or recording start is reported and the live view goes on: the session is
-  // worth more than one file.
-  const auto snapshot = [&](const cv::Mat& image) {
-    try {
-      const std::filesystem::path path = next_snapshot(args.snapshot);
-      write_image(path, image);
-      notice(fmt::format("snapshot {}", path.string()));
-    } catch (const Error& e) {
-      notice(fmt::format("snapshot failed: {}", e.what()));
-    }
-  };
-  const auto toggle_recording = [&] {
-    if (recording.recording()) {
-      recording.stop();
-      notice(fmt::format("recording stopped: {} ({} frames)", recording.path().string(),
-                         recording.frames()));
-      return;
-    }
-    try {
-      recording.start();
-      notice(fmt::format("recording {}", recording.path().string()));
-    } catch (const Error& e) {
-      notice(fmt::format("recording failed: {}", e.what()));
-    }
-  };
-
   const auto observer = [&](const Frame& out, const CameraStats& stats) {
     if (!win) return true;
-    finish_switch();
+    controls.poll();
+    const LiveFilter& filter = controls.filter();
     const std::string readout =
-        fmt::format("{:.1f} fps  {}{}{}", stats.fps(), filter->name(),
-                    filter->animated() ? "  drift" : "", recording.recording() ? "  REC" : "");
-    switch (win->show(out.image, {readout, notice.current()})) {
-      case 'q':
-      case 27:  // Esc
-      case CamWindow::kClosed:
-        quit = true;
-        return false;
-      case 'n':
-        step_preset(true);
-        break;
-      case 'p':
-        step_preset(false);
-        break;
-      case 'a':
-        animate = !animate;
-        drift_maps += filter->maps_built();
-        filter->set_animate(animate);
-        notice(animate ? "animation on (drift)" : "animation off");
-        break;
-      case 's':
-        snapshot(out.image);
-        break;
-      case 'r':
-        toggle_recording();
-        break;
-      default:
-        break;
+        fmt::format("{:.1f} fps  {}{}{}", stats.fps(), filter.name(),
+                    filter.animated() ? "  drift" : "", recording.recording() ? "  REC" : "");
+    const int key = win->show(out.image, {readout, notice.current()});
+    if (key == 'q' || key == 27 /* Esc */ || key == CamWindow::kClosed) {
+      quit = true;
+      return false;
     }
+    controls.key(key, out.image);
     return true;
   };
 
@@ -392,7 +195,7 @@ void run_cam(const CamArgs& args) {
   CameraStats stats;
   try {
     stats = video::run_camera(
-        camera, [&](const Frame& frame) { return (*filter)(frame); }, sinks,
+        camera, [&](const Frame& frame) { return controls.filter()(frame); }, sinks,
         {.max_frames = args.max_frames, .stop = &stop}, observer);
   } catch (const Error& e) {
     if (recording.frames() > 0) {
@@ -401,7 +204,7 @@ void run_cam(const CamArgs& args) {
     }
     throw;
   }
-  drift_maps += filter->maps_built();
+  const std::int64_t drift_maps = controls.drift_maps();
   const std::string kept =
       recording.frames() > 0
           ? fmt::format("; recorded {} ({} frames)", recording.path().string(), recording.frames())

@@ -1,0 +1,49 @@
+// The filter of `ifsfx cam`: F coloured through G on the camera's frame size (DESIGN.md §3) — one
+// steal map computed once and reapplied per frame, or, animated, maps of F drifting in time built
+// on a worker and cross-faded in (video/camera_drift.h).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "apps/fractal_filter_options.h"
+#include "ifs/ifs.h"
+#include "ifs/steal_map.h"
+#include "video/camera_drift.h"
+#include "video/fractal_filter.h"
+#include "video/frame_io.h"
+
+namespace ifsfx::app {
+
+class LiveFilter {
+ public:
+  // Computes the steal map of `preset` (a shipped name, a path, FILE.ifs:NAME) for frames of
+  // `size`, with the colouring, view and map options of `args` (which must outlive the filter).
+  LiveFilter(const FractalFilterArgs& args, int fade_frames, const std::string& preset,
+             cv::Size size, bool animate);
+
+  const std::string& name() const { return name_; }
+  bool animated() const { return drift_ != nullptr; }
+  // Starts or stops the drift animation (stopping waits for a map being built).
+  void set_animate(bool on);
+  // Maps the animation has built since it was last started.
+  std::int64_t maps_built() const { return drift_ ? drift_->maps_built() : 0; }
+
+  cv::Mat operator()(const video::Frame& frame);
+
+ private:
+  const FractalFilterArgs& args_;
+  int fade_frames_;
+  cv::Size size_;
+  Ifs F_, G_;
+  std::string name_;
+  StealMapOptions map_options_;
+  video::FilterOptions options_;
+  video::RemapTable fixed_;
+  std::unique_ptr<video::LiveDrift> drift_;
+};
+
+}  // namespace ifsfx::app
