@@ -98,11 +98,12 @@ cv::Mat tops_image(const Ifs& F, cv::Size size, const RenderOptions& options, bo
   tops.seed = options.seed;
   tops.threads = options.threads;
   if (!tops.view) tops.view = fit_view(attractor_bounds(F, options.seed), size, options.margin);
-  cv::Mat image = render_tops(F, size, tops);  // BGRA float, alpha = coverage
+  std::uint64_t points = 0;
+  cv::Mat image = render_tops(F, size, tops, &points);  // BGRA float, alpha = coverage
   cv::Mat coverage;
   cv::extractChannel(image, coverage, 3);
   if (stats) {
-    stats->points = 0;
+    stats->points = exact ? 0 : points;  // the exact descent's mask points are not the work
     stats->coverage = cv::countNonZero(coverage) / static_cast<double>(size.area());
     stats->view = *tops.view;
   }

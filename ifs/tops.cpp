@@ -21,18 +21,21 @@ TopSymbols top_symbols(const Ifs& F, cv::Size size, const TopsOptions& options) 
                               ? *options.view
                               : fit_view(attractor_bounds(F, options.seed), size, options.margin),
                           size};
+  detail::ChaosTopsStats chaos;
   const detail::AddressRaster tops =
-      options.exact
-          ? detail::exact_descent(F, nullptr, viewport,
-                                  {.levels = 2, .seed = options.seed, .threads = options.threads})
-                .tops
-          : detail::chaos_tops(F, viewport,
-                               {.quality = options.quality,
-                                .seed = options.seed,
-                                .threads = options.threads,
-                                .key_bits = 32});  // 32/b ≥ 2 symbols for any N ≤ 65536
+      options.exact ? detail::exact_descent(
+                          F, nullptr, viewport,
+                          {.levels = 2, .seed = options.seed, .threads = options.threads}, &chaos)
+                          .tops
+                    : detail::chaos_tops(F, viewport,
+                                         {.quality = options.quality,
+                                          .seed = options.seed,
+                                          .threads = options.threads,
+                                          .key_bits = 32},  // 32/b ≥ 2 symbols for any N ≤ 65536
+                                         &chaos);
   TopSymbols out;
   out.view = viewport.view;
+  out.points = chaos.points;
   out.first = cv::Mat(size, CV_16UC1, cv::Scalar::all(0));
   out.second = cv::Mat(size, CV_16UC1, cv::Scalar::all(0));
   out.coverage = cv::Mat(size, CV_8UC1, cv::Scalar::all(0));
@@ -47,8 +50,10 @@ TopSymbols top_symbols(const Ifs& F, cv::Size size, const TopsOptions& options) 
   return out;
 }
 
-cv::Mat render_tops(const Ifs& F, cv::Size size, const TopsOptions& options) {
+cv::Mat render_tops(const Ifs& F, cv::Size size, const TopsOptions& options,
+                    std::uint64_t* points) {
   const TopSymbols tops = top_symbols(F, size, options);
+  if (points) *points = tops.points;
   std::vector<cv::Vec4f> palette(F.size());
   for (std::size_t n = 0; n < F.size(); ++n) {
     const Rgb c = F.colours.empty() ? palette_colour(n, F.size()) : F.colours[n];

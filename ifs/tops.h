@@ -27,7 +27,8 @@ struct TopsOptions {
 // attractor is. `first`, `second`: CV_16UC1, 0 off the attractor; `coverage`: CV_8UC1, 255 on it.
 struct TopSymbols {
   cv::Mat first, second, coverage;
-  Box view;  // the plane rectangle shown
+  Box view;                  // the plane rectangle shown
+  std::uint64_t points = 0;  // chaos-game points plotted (for the exact descent: its mask's)
 };
 
 // Top symbols by the chaos game (64-bit address keys, largest key wins per pixel) or exactly.
@@ -37,6 +38,8 @@ TopSymbols top_symbols(const Ifs& F, cv::Size size, const TopsOptions& options =
 // Each pixel coloured by the first symbol of its top address through the IFS's colours or the
 // default palette (palette_colour); with `second_symbol`, the colour is (2·c(σ1) + c(σ2)) / 3,
 // so each piece shows its sub-pieces. CV_32FC4 BGRA in [0, 1]; alpha 1 on the attractor, 0 off.
-cv::Mat render_tops(const Ifs& F, cv::Size size, const TopsOptions& options = {});
+// `points`, when given, receives TopSymbols::points.
+cv::Mat render_tops(const Ifs& F, cv::Size size, const TopsOptions& options = {},
+                    std::uint64_t* points = nullptr);
 
 }  // namespace ifsfx

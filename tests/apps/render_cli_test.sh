@@ -29,6 +29,13 @@ case "$check" in
     "$ifsfx" render barnsley-fern --size 96x64 --quality 8 --seed 5 -o a.png >summary.txt
     grep -Eq '^barnsley-fern \(measure, 96x64\): [0-9.]+ M points in [0-9.]+ s \([0-9]+ Mpts/s\), coverage [0-9.]+% -> a.png$' summary.txt ||
       fail "summary line: $(cat summary.txt)"
+    # The chaos-game tops say how many points they plotted; the exact descent says it was exact.
+    "$ifsfx" render barnsley-fern --size 96x64 --quality 8 --mode tops -o t.png >summary.txt
+    grep -Eq '^barnsley-fern \(tops, 96x64\): [0-9.]+ M points in [0-9.]+ s \([0-9]+ Mpts/s\), coverage [0-9.]+% -> t.png$' summary.txt ||
+      fail "tops summary line: $(cat summary.txt)"
+    "$ifsfx" render barnsley-fern --size 96x64 --mode tops --exact -o t.png >summary.txt
+    grep -Eq '^barnsley-fern \(tops, 96x64\): exact descent in [0-9.]+ s, coverage [0-9.]+% -> t.png$' summary.txt ||
+      fail "exact tops summary line: $(cat summary.txt)"
     "$ifsfx" render barnsley-fern --size 96x64 --quality 8 --bits 16 -q -o b.png
     "$ifsfx" render barnsley-fern --size 96x64 --quality 8 --mode attractor -q -o c.tif
     "$ifsfx" render barnsley-fern --size 96x64 --quality 8 -q -o d.exr
@@ -38,7 +45,7 @@ case "$check" in
     iinfo -v d.exr | grep -Eq '96 x   64, 3 channel, (float|half)' || fail "d.exr: $(iinfo d.exr)"
     iinfo -v a.png | grep -q 'ifsfx:seed: "5"' || fail "a.png metadata: $(iinfo -v a.png)"
     iinfo -v d.exr | grep -q 'ifsfx:preset: "# Barnsley' || fail "d.exr metadata: $(iinfo -v d.exr)"
-    [ "$(ls -A | wc -l)" -eq 5 ] || fail "stray files: $(ls -A)"
+    [ "$(ls -A | wc -l)" -eq 6 ] || fail "stray files: $(ls -A)"
     ;;
   same_seed_same_bytes)
     "$ifsfx" render maple-leaf --size 128x128 --quality 16 --seed 3 --threads 1 -q -o one.png
