@@ -221,6 +221,10 @@ Rgb palette_colour(std::size_t n, std::size_t count) {
   return ramp(count <= 1 ? 0.0 : static_cast<double>(n) / static_cast<double>(count - 1));
 }
 
+Rgb palette_ramp(double t) {
+  return ramp(t);
+}
+
 cv::Mat visit_counts(const Ifs& ifs, const Viewport& viewport, std::uint64_t points,
                      const ChaosGameOptions& options) {
   check_size(viewport.size);

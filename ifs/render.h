@@ -50,5 +50,7 @@ cv::Mat visit_counts(const Ifs& ifs, const Viewport& viewport, std::uint64_t poi
 
 // The default palette: colour of map n of N (an evenly spaced, perceptually ordered ramp).
 Rgb palette_colour(std::size_t n, std::size_t count);
+// That ramp at palette coordinate t ∈ [0, 1] (map n of N sits at n / (N − 1)).
+Rgb palette_ramp(double t);
 
 }  // namespace ifsfx

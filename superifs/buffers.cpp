@@ -186,6 +186,7 @@ void Buffers::set_masks(const std::vector<cv::Mat>& masks) {
                             masks.size(), options_.count));
   masks_.clear();
   densities_.clear();
+  colour_masses_.clear();
   for (const auto& m : masks) {
     if (m.size() != viewport_.size || m.type() != CV_8UC1)
       throw Error(ErrorKind::invalid_argument,
@@ -200,6 +201,7 @@ void Buffers::set_masks(const std::vector<cv::Mat>& masks) {
       const double total = cv::sum(d)[0];
       if (total > 0) d /= total;
       densities_.push_back(d);
+      colour_masses_.push_back(d * 0.5);  // mid-palette to start; halved away at every step
     }
   }
   dilate_current();
@@ -243,22 +245,25 @@ void Buffers::step() {
   const int bands = band_count(size);
   std::vector<cv::Mat> next(v_count);
   for (auto& k : next) k.create(size, CV_8UC1);
-  std::vector<cv::Mat> smooth, next_density;
+  std::vector<cv::Mat> smooth, smooth_colour, next_density, next_colour;
   if (options_.density) {
-    smooth.resize(v_count);
-    next_density.resize(v_count);
-    for (std::size_t v = 0; v < v_count; ++v) {
-      smooth[v].create(size, CV_32FC1);
-      next_density[v].create(size, CV_32FC1);
+    for (auto* mats : {&smooth, &smooth_colour, &next_density, &next_colour}) {
+      mats->resize(v_count);
+      for (cv::Mat& m : *mats) m.create(size, CV_32FC1);
     }
     parallel_for(
         v_count * static_cast<std::size_t>(bands), options_.threads, [&](std::size_t chunk, int) {
           const std::size_t v = chunk / static_cast<std::size_t>(bands);
           const int row0 = static_cast<int>(chunk % static_cast<std::size_t>(bands)) * band_rows;
-          box_rows(densities_[v], dilation_, row0, std::min(size.height, row0 + band_rows),
-                   smooth[v]);
+          const int row1 = std::min(size.height, row0 + band_rows);
+          box_rows(densities_[v], dilation_, row0, row1, smooth[v]);
+          box_rows(colour_masses_[v], dilation_, row0, row1, smooth_colour[v]);
         });
   }
+  // c_m of map m: its place on the palette.
+  std::vector<double> map_coordinate(m_count, 0.0);
+  for (std::size_t m = 0; m < m_count && m_count > 1; ++m)
+    map_coordinate[m] = static_cast<double>(m) / static_cast<double>(m_count - 1);
   parallel_for(
       v_count * static_cast<std::size_t>(bands), options_.threads, [&](std::size_t chunk, int) {
         const std::size_t v = chunk / static_cast<std::size_t>(bands);
@@ -291,19 +296,25 @@ void Buffers::step() {
           if (!options_.density) continue;
           // μ'_v = Σ_m p^{n}_m f_m#(μ_{v_m}): the mass of pixel x is the mass of its preimage,
           // |det f_m⁻¹| pixels of the smoothed density around f_m⁻¹(x).
+          // The palette coordinate rides along: (c + c_m) / 2 on what map m carries.
           float* mass = next_density[v].ptr<float>(row);
+          float* colour = next_colour[v].ptr<float>(row);
           for (int col = 0; col < size.width; ++col) {
             const double px = col + 0.5;
-            double sum = 0;
+            double sum = 0, colour_sum = 0;
             for (std::size_t m = 0; m < m_count; ++m) {
               const AffineMap& a = pixel_inverse_[n * m_count + m];
               const double x = a.a * px + a.b * py + a.e, y = a.c * px + a.d * py + a.f;
               if (!(x >= 0 && y >= 0 && x < size.width && y < size.height)) continue;
-              const float rho =
-                  smooth[source[m]].at<float>(static_cast<int>(y), static_cast<int>(x));
-              sum += map_probabilities_[n][m] * std::abs(a.det()) * rho;
+              const int ix = static_cast<int>(x), iy = static_cast<int>(y);
+              const double weight = map_probabilities_[n][m] * std::abs(a.det());
+              const float rho = smooth[source[m]].at<float>(iy, ix);
+              const float rho_c = smooth_colour[source[m]].at<float>(iy, ix);
+              sum += weight * rho;
+              colour_sum += weight * 0.5 * (rho_c + map_coordinate[m] * rho);
             }
             mass[col] = static_cast<float>(sum);
+            colour[col] = static_cast<float>(colour_sum);
           }
         }
       });
@@ -311,9 +322,13 @@ void Buffers::step() {
     for (std::size_t v = 0; v < v_count; ++v) {
       // Mass that left the rectangle is put back by normalising: μ_v stays a probability.
       const double total = cv::sum(next_density[v])[0];
-      if (total > 0) next_density[v] /= total;
+      if (total > 0) {
+        next_density[v] /= total;
+        next_colour[v] /= total;
+      }
     }
     densities_ = std::move(next_density);
+    colour_masses_ = std::move(next_colour);
   }
   masks_ = std::move(next);
   if (options_.history > 0) {

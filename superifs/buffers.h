@@ -117,6 +117,11 @@ class Buffers {
   const cv::Mat& mask(std::size_t v) const { return masks_.at(v); }
   // The measure μ_v: CV_32FC1 mass per pixel summing to 1 (empty without options.density).
   const cv::Mat& density(std::size_t v) const { return densities_.at(v); }
+  // The palette coordinate carried with that mass, ∫ c dμ_v per pixel (CV_32FC1): each step
+  // takes c to (c + c_m) / 2 on the mass map m moves, c_m = m / (M − 1) (DESIGN.md §4, the chaos
+  // game's c_k = (c_{k−1} + c_σk) / 2 in expectation). colour_mass / density is the pixel's mean
+  // coordinate in [0, 1], so the measure can be coloured by map.
+  const cv::Mat& colour_mass(std::size_t v) const { return colour_masses_.at(v); }
 
   // The last min(history, steps_done()) levels, oldest first; back() made the current buffers.
   const std::deque<HistoryLevel>& history() const { return history_; }
@@ -148,9 +153,10 @@ class Buffers {
   std::vector<double> ifs_probabilities_;               // P_n
   int dilation_ = 1;
   int steps_ = 0;
-  std::vector<cv::Mat> masks_;      // K_v
-  std::vector<BitMask> dilated_;    // K_v dilated, what the next step looks up
-  std::vector<cv::Mat> densities_;  // μ_v
+  std::vector<cv::Mat> masks_;          // K_v
+  std::vector<BitMask> dilated_;        // K_v dilated, what the next step looks up
+  std::vector<cv::Mat> densities_;      // μ_v
+  std::vector<cv::Mat> colour_masses_;  // ∫ c dμ_v
   std::deque<HistoryLevel> history_;
   StepChoices last_choices_;
 };

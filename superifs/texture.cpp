@@ -9,6 +9,7 @@
 
 #include "ifs/error.h"
 #include "ifs/parallel.h"
+#include "ifs/render.h"
 
 namespace ifsfx {
 
@@ -156,28 +157,36 @@ cv::Mat render_tops(const Buffers& buffers, std::size_t v) {
   return colour;
 }
 
-// Measure: v = log(1 + k·ρ/mean) / log(1 + k·max/mean), then gamma (DESIGN.md §4), mean over the
-// pixels that carry mass.
+// Measure: brightness v = log(1 + k·ρ/mean) / log(1 + k·max/mean), then gamma, mean over the
+// pixels that carry mass; hue the palette ramp at the pixel's mean palette coordinate, so the
+// measure is coloured by map (DESIGN.md §4).
 cv::Mat render_measure(const Buffers& buffers, std::size_t v) {
   if (buffers.density(v).empty())
     throw Error(ErrorKind::invalid_argument,
                 "measure mode: the buffers carry no density (BufferOptions::density is false)");
   const cv::Mat& rho = buffers.density(v);
+  const cv::Mat& colour = buffers.colour_mass(v);
   constexpr double k = 4, gamma = 2.2;
   double max = 0;
   cv::minMaxLoc(rho, nullptr, &max);
   const int carrying = cv::countNonZero(rho > 0);
-  cv::Mat out(rho.size(), CV_8UC1, cv::Scalar(0));
+  cv::Mat out(rho.size(), CV_8UC3, cv::Scalar::all(0));
   if (max <= 0 || carrying == 0) return out;
   const double mean = 1.0 / carrying;  // ρ sums to 1
   const double norm = std::log1p(k * max / mean);
   for (int row = 0; row < rho.rows; ++row) {
     const float* src = rho.ptr<float>(row);
-    std::uint8_t* dst = out.ptr<std::uint8_t>(row);
+    const float* c = colour.ptr<float>(row);
+    auto* dst = out.ptr<cv::Vec3b>(row);
     for (int col = 0; col < rho.cols; ++col) {
       if (!(src[col] > 0)) continue;
       const double t = std::pow(std::log1p(k * src[col] / mean) / norm, 1.0 / gamma);
-      dst[col] = cv::saturate_cast<std::uint8_t>(t * 255.0);
+      const Rgb hue = palette_ramp(c[col] / src[col]);
+      const cv::Vec3b bgr(cv::saturate_cast<std::uint8_t>(t * hue.b * 255.0),
+                          cv::saturate_cast<std::uint8_t>(t * hue.g * 255.0),
+                          cv::saturate_cast<std::uint8_t>(t * hue.r * 255.0));
+      // A pixel with mass is never black: it is on the set.
+      dst[col] = bgr == cv::Vec3b::all(0) ? cv::Vec3b(1, 0, 0) : bgr;
     }
   }
   return out;

@@ -28,7 +28,7 @@ enum class TextureMode {
   attractor,  // the set K_v, white on black (CV_8UC1)
   tops,       // the top address of each pixel through a colour ramp (CV_8UC3)
   steal,      // colours stolen from a source image (the source's type)
-  measure,    // the measure μ_v, log-density tone-mapped (CV_8UC1)
+  measure,    // the measure μ_v, log-density tone-mapped, coloured by map (CV_8UC3)
 };
 
 const char* to_string(TextureMode mode) noexcept;

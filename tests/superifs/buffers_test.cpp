@@ -261,6 +261,30 @@ TEST(buffers, density_is_a_probability_on_the_set_with_the_self_similar_weights)
   for (int m = 0; m < 3; ++m) EXPECT_NEAR(mass[m], 1.0 / 3, 0.01) << "corner " << m;
 }
 
+// The palette coordinate carried with the measure: for the quadrant tiling (map m = i + 2j for
+// the quadrant at column i, row j; c_m = m / 3), a point of address σ1σ2… has
+// c = Σ c_σk / 2^k = (x + 2y) / 3, so each pixel's mean coordinate is that of its centre.
+TEST(buffers, colour_mass_carries_the_palette_coordinate_of_the_addresses) {
+  SuperIfs s;
+  s.ifs = {testing::square_grid(2)};
+  s.view = Box{0, 0, 1, 1};
+  const cv::Size size{64, 64};
+  Buffers k(s, size, {.count = 1, .seed = 4, .density = true});
+  k.run(16);
+  const cv::Mat& rho = k.density(0);
+  const cv::Mat& colour = k.colour_mass(0);
+  double worst = 0;
+  for (int row = 0; row < size.height; ++row)
+    for (int col = 0; col < size.width; ++col) {
+      ASSERT_GT(rho.at<float>(row, col), 0) << row << "," << col;
+      const Point p = k.viewport().pixel_centre(col, row);
+      const double c = colour.at<float>(row, col) / rho.at<float>(row, col);
+      worst = std::max(worst, std::abs(c - (p.x + 2 * p.y) / 3));
+    }
+  EXPECT_LT(worst, 0.03);
+  EXPECT_NEAR(cv::sum(colour)[0], 0.5, 0.01);  // the mean of (x + 2y) / 3 over the square
+}
+
 TEST(buffers, rejects_bad_arguments) {
   const SuperIfs s = paper_fig4();
   EXPECT_THROW(Buffers(s, {64, 64}, {.count = 0}), Error);
