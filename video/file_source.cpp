@@ -85,6 +85,49 @@ struct FileSource::Impl {
 
   // After the last frame: a short or damaged stream is an error, raised once everything that
   // decoded has been handed out.
+  // The next frame, its image converted to BGR only when `convert`.
+  std::optional<Frame> next(bool convert) {
+    if (finished) return std::nullopt;
+    if (!decode_next()) {
+      finished = true;
+      check_complete();
+      return std::nullopt;
+    }
+    AVFrame* f = frame.get();
+    if (f->width != codec->width || f->height != codec->height)
+      throw Error(ErrorKind::unsupported,
+                  fmt::format("{}: frame size changes mid-stream ({}x{} to {}x{})", what(),
+                              codec->width, codec->height, f->width, f->height));
+    Frame out;
+    out.index = decoded;
+    const std::int64_t pts = f->best_effort_timestamp;
+    if (pts != AV_NOPTS_VALUE) {
+      if (start_pts == AV_NOPTS_VALUE) {
+        start_pts = stream->start_time != AV_NOPTS_VALUE ? std::min(stream->start_time, pts) : pts;
+      }
+      out.timestamp = static_cast<double>(pts - start_pts) * av_q2d(stream->time_base);
+    } else {
+      out.timestamp = static_cast<double>(decoded) / rate.value();
+    }
+    if (convert) {
+      out.image.create(f->height, f->width, CV_8UC3);
+      sws.reset(sws_getCachedContext(sws.release(), f->width, f->height,
+                                     static_cast<AVPixelFormat>(f->format), f->width, f->height,
+                                     AV_PIX_FMT_BGR24, SWS_BICUBIC, nullptr, nullptr, nullptr));
+      if (!sws)
+        throw Error(ErrorKind::unsupported,
+                    fmt::format("{}: cannot convert pixel format {} to BGR", what(),
+                                av_get_pix_fmt_name(static_cast<AVPixelFormat>(f->format))));
+      std::uint8_t* dst[4] = {out.image.data, nullptr, nullptr, nullptr};
+      const int dst_stride[4] = {static_cast<int>(out.image.step), 0, 0, 0};
+      sws_scale(sws.get(), f->data, f->linesize, 0, f->height, dst, dst_stride);
+    }
+    av_frame_unref(f);
+    ++decoded;
+    last_timestamp = out.timestamp;
+    return out;
+  }
+
   void check_complete() const {
     const double period = 1.0 / rate.value();
     // A stream with gaps in its timestamps (an AVI index that skips frames) holds fewer frames
@@ -159,45 +202,11 @@ FileSource::FileSource(const std::filesystem::path& path, const FileSourceOption
 FileSource::~FileSource() = default;
 
 std::optional<Frame> FileSource::read() {
-  Impl& s = *impl_;
-  if (s.finished) return std::nullopt;
-  if (!s.decode_next()) {
-    s.finished = true;
-    s.check_complete();
-    return std::nullopt;
-  }
-  AVFrame* f = s.frame.get();
-  if (f->width != s.codec->width || f->height != s.codec->height)
-    throw Error(ErrorKind::unsupported,
-                fmt::format("{}: frame size changes mid-stream ({}x{} to {}x{})", s.what(),
-                            s.codec->width, s.codec->height, f->width, f->height));
-  Frame out;
-  out.index = s.decoded;
-  const std::int64_t pts = f->best_effort_timestamp;
-  if (pts != AV_NOPTS_VALUE) {
-    if (s.start_pts == AV_NOPTS_VALUE) {
-      s.start_pts =
-          s.stream->start_time != AV_NOPTS_VALUE ? std::min(s.stream->start_time, pts) : pts;
-    }
-    out.timestamp = static_cast<double>(pts - s.start_pts) * av_q2d(s.stream->time_base);
-  } else {
-    out.timestamp = static_cast<double>(s.decoded) / s.rate.value();
-  }
-  out.image.create(f->height, f->width, CV_8UC3);
-  s.sws.reset(sws_getCachedContext(s.sws.release(), f->width, f->height,
-                                   static_cast<AVPixelFormat>(f->format), f->width, f->height,
-                                   AV_PIX_FMT_BGR24, SWS_BICUBIC, nullptr, nullptr, nullptr));
-  if (!s.sws)
-    throw Error(ErrorKind::unsupported,
-                fmt::format("{}: cannot convert pixel format {} to BGR", s.what(),
-                            av_get_pix_fmt_name(static_cast<AVPixelFormat>(f->format))));
-  std::uint8_t* dst[4] = {out.image.data, nullptr, nullptr, nullptr};
-  const int dst_stride[4] = {static_cast<int>(out.image.step), 0, 0, 0};
-  sws_scale(s.sws.get(), f->data, f->linesize, 0, f->height, dst, dst_stride);
-  av_frame_unref(f);
-  ++s.decoded;
-  s.last_timestamp = out.timestamp;
-  return out;
+  return impl_->next(true);
+}
+
+bool FileSource::skip() {
+  return impl_->next(false).has_value();
 }
 
 cv::Size FileSource::size() const {

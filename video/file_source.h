@@ -39,6 +39,7 @@ class FileSource final : public FrameSource {
   FileSource& operator=(const FileSource&) = delete;
 
   std::optional<Frame> read() override;
+  bool skip() override;  // decodes (the next frames depend on it) but does not convert
   cv::Size size() const override;
   double fps() const override;
   // The container's frame count (or duration × rate); -1 when it says neither.

@@ -23,6 +23,9 @@ class FrameSource {
   // The next frame, or nothing at the end of the stream. Throws ifsfx::Error on a fault (a
   // corrupt file, a camera that vanished), naming the source.
   virtual std::optional<Frame> read() = 0;
+  // Moves past the next frame without delivering it (a frame range that starts later): false at
+  // the end of the stream. Sources override it to skip the work of making the image.
+  virtual bool skip() { return read().has_value(); }
   virtual cv::Size size() const = 0;
   virtual double fps() const = 0;                          // frames per second; 0 when unknown
   virtual std::int64_t frame_count() const { return -1; }  // -1 when unknown (cameras)

@@ -121,6 +121,12 @@ std::optional<Frame> ImageSequenceSource::read() {
   return frame;
 }
 
+bool ImageSequenceSource::skip() {
+  if (next_ >= count_) return false;
+  ++next_;
+  return true;
+}
+
 ImageSequenceSink::ImageSequenceSink(const std::string& pattern) : pattern_(pattern) {
   check_writable_image(sequence_path(pattern, 0));
 }

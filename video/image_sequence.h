@@ -30,6 +30,7 @@ class ImageSequenceSource final : public FrameSource {
   explicit ImageSequenceSource(const std::string& pattern,
                                const ImageSequenceOptions& options = {});
   std::optional<Frame> read() override;
+  bool skip() override;  // the image is not read
   cv::Size size() const override { return size_; }
   double fps() const override { return fps_; }
   std::int64_t frame_count() const override { return count_; }

@@ -80,11 +80,18 @@ PipelineResult run_pipeline(FrameSource& source, FrameSink& sink, const FrameFil
   }
 
   std::jthread decoder([&] {
+    std::int64_t skipped = 0;
     try {
       while (true) {
         if (stop_requested()) {
           interrupted = true;
           break;
+        }
+        // Frames before the range: passed over without making their images.
+        if (skipped < options.range.first) {
+          if (!source.skip()) break;
+          ++skipped;
+          continue;
         }
         std::optional<Frame> frame = source.read();
         if (!frame) break;

@@ -1,6 +1,8 @@
 #include "video/file_source.h"
 
 #include <fstream>
+#include <optional>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -13,6 +15,32 @@ namespace {
 
 using testing::temp_folder;
 using testing::test_frame;
+
+// skip() passes over frames without converting them: what read() gives next is the frame a plain
+// read of the whole file gives at that place, index and timestamp included.
+TEST(file_source, skipped_frames_leave_the_next_frame_as_a_full_read_gives_it) {
+  const auto dir = temp_folder("skip");
+  const cv::Size size{64, 48};
+  {
+    FileSink sink(dir / "a.mkv", {.codec = "ffv1", .size = size, .frame_rate = {25, 1}});
+    for (int i = 0; i < 12; ++i) sink.write({test_frame(size, i), i, i / 25.0});
+    sink.close();
+  }
+  std::vector<Frame> all;
+  FileSource whole(dir / "a.mkv");
+  while (auto f = whole.read()) all.push_back(*f);
+  ASSERT_EQ(all.size(), 12u);
+  FileSource in(dir / "a.mkv");
+  for (int i = 0; i < 7; ++i) ASSERT_TRUE(in.skip()) << i;
+  const std::optional<Frame> next = in.read();
+  ASSERT_TRUE(next);
+  EXPECT_EQ(next->index, 7);
+  EXPECT_DOUBLE_EQ(next->timestamp, all[7].timestamp);
+  EXPECT_EQ(cv::norm(next->image, all[7].image, cv::NORM_INF), 0);
+  for (int i = 8; i < 12; ++i) EXPECT_TRUE(in.skip()) << i;
+  EXPECT_FALSE(in.skip());
+  EXPECT_FALSE(in.read());
+}
 
 TEST(file_source, missing_file_is_not_found) {
   try {

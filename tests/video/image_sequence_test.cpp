@@ -49,6 +49,18 @@ TEST(image_sequence, written_frames_read_back_unchanged) {
     ++n;
   }
   EXPECT_EQ(n, 5);
+
+  // Skipped frames are not read; the next read is the frame at that place.
+  ImageSequenceSource later(pattern, {.fps = 10});
+  ASSERT_TRUE(later.skip());
+  ASSERT_TRUE(later.skip());
+  const auto third = later.read();
+  ASSERT_TRUE(third);
+  EXPECT_EQ(third->index, 2);
+  EXPECT_EQ(cv::norm(third->image, test_frame(size, 2), cv::NORM_INF), 0.0);
+  EXPECT_TRUE(later.skip());
+  EXPECT_TRUE(later.skip());
+  EXPECT_FALSE(later.skip());
 }
 
 TEST(image_sequence, missing_sequence_is_not_found) {
