@@ -15,23 +15,12 @@
 namespace ifsfx {
 namespace {
 
-detail::PixelMapping pixel_mapping(const Viewport& v) {
-  const AffineMap m = v.plane_to_pixel();
-  return {m.a,
-          m.e,
-          m.d,
-          m.f,
-          static_cast<double>(v.size.width),
-          static_cast<double>(v.size.height),
-          v.size.width};
-}
-
 // Runs `points` chaos-game points over fixed chunks; `make_worker(worker)` gives each worker its
 // per-thread state, and state.plot(lane, pixel, map) plots one point that lands on `viewport`.
 template <class State, class MakeState>
 std::vector<State> scatter(const Ifs& ifs, const Viewport& viewport, std::uint64_t points,
                            const ChaosGameOptions& options, MakeState&& make_state) {
-  const detail::PixelMapping mapping = pixel_mapping(viewport);
+  const detail::PixelMapping mapping = detail::pixel_mapping(viewport);
   const detail::MapTable maps(ifs);
   const MapPicker pick(effective_probabilities(ifs));
   const int burn_in = options.burn_in > 0 ? options.burn_in : default_burn_in(ifs);

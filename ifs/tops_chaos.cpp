@@ -38,7 +38,6 @@ struct PixelMap {
 struct Kernel {
   std::vector<PixelMap> maps;
   int bits = 1;
-  int burn_in = 64;
   int width = 0, height = 0;
   AffineMap to_pixel;
 
@@ -49,8 +48,6 @@ struct Kernel {
       const AffineMap h = to_pixel.compose(m).compose(from_pixel);
       maps.push_back({h.a, h.b, h.c, h.d, h.e, h.f});
     }
-    // Keys are compared only once full: 64/b symbols in, on top of the usual burn-in.
-    burn_in = std::max(default_burn_in(F), 64 / bits + 1);
     width = vp.size.width;
     height = vp.size.height;
   }
@@ -65,12 +62,13 @@ struct Walkers {
   int bits;
   int burn_in;
 
-  Walkers(const Ifs& F, const Kernel& k)
-      : maps(F), pick(effective_probabilities(F)), bits(k.bits), burn_in(k.burn_in) {
-    const AffineMap& p = k.to_pixel;
-    mapping = {p.a,    p.e, p.d, p.f, static_cast<double>(k.width), static_cast<double>(k.height),
-               k.width};
-  }
+  Walkers(const Ifs& F, const Viewport& vp)
+      : maps(F),
+        pick(effective_probabilities(F)),
+        mapping(pixel_mapping(vp)),
+        bits(symbol_bits(F.size())),
+        // Keys are compared only once full: 64/b symbols in, on top of the usual burn-in.
+        burn_in(std::max(default_burn_in(F), 64 / bits + 1)) {}
 };
 
 // Runs `points` chaos-game points of chunk `chunk` into `buffer`: each pixel keeps the largest
@@ -211,7 +209,7 @@ std::vector<std::uint64_t> run_policy(const Ifs& F, const Viewport& viewport,
                                       const ChaosTopsOptions& options, ChaosTopsStats* stats) {
   constexpr int kCellBits = 8 * static_cast<int>(sizeof(Cell));
   const Kernel kernel(F, viewport);
-  const Walkers walkers(F, kernel);
+  const Walkers walkers(F, viewport);
   const std::size_t pixels = static_cast<std::size_t>(viewport.size.area());
   const int threads = resolve_threads(options.threads);
   std::vector<std::vector<Cell>> buffers(static_cast<std::size_t>(threads));

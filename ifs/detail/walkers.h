@@ -11,6 +11,7 @@
 #include "ifs/chaos_game.h"
 #include "ifs/ifs.h"
 #include "ifs/rng.h"
+#include "ifs/view.h"
 
 namespace ifsfx::detail {
 
@@ -83,6 +84,18 @@ struct PixelMapping {
   double width, height;
   long stride;
 };
+
+// The mapping of a viewport (its plane → pixel transform has no rotation).
+inline PixelMapping pixel_mapping(const Viewport& v) {
+  const AffineMap m = v.plane_to_pixel();
+  return {m.a,
+          m.e,
+          m.d,
+          m.f,
+          static_cast<double>(v.size.width),
+          static_cast<double>(v.size.height),
+          v.size.width};
+}
 
 // xoshiro256+: the renderers' per-lane generator. Plain 64-bit shifts, xors and adds, so four
 // lanes run in one AVX2 register (walkers_avx2.h) and the scalar loop below is its bit-exact
@@ -183,19 +196,27 @@ void plot_chunk_scalar(const MapTable& maps, const MapPicker& picker, const Pixe
 
 namespace ifsfx::detail {
 
-// The renderers' entry: the AVX2 loop where the CPU and the IFS allow it, else the scalar one.
-// Both give the same pixels.
+// The walkers of one chunk on the AVX2 loop where the CPU and the IFS allow it, else on the scalar
+// one; both give the same points (and keys, with kKeys).
+template <bool kKeys, class Plot>
+void walk_chunk(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
+                std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
+                int key_bits, Plot&& plot) {
+#ifdef __AVX2__
+  if (maps.a.size() <= kAvx2MaxMaps) {
+    walk_chunk_avx2<kKeys>(maps, picker, mapping, seed, chunk, points, burn_in, key_bits, plot);
+    return;
+  }
+#endif
+  walk_chunk_scalar<kKeys>(maps, picker, mapping, seed, chunk, points, burn_in, key_bits, plot);
+}
+
+// The renderers' entry: plot(lane, pixel, map) for every point that lands on the raster.
 template <class Plot>
 void plot_chunk(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
                 std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
                 Plot&& plot) {
-#ifdef __AVX2__
-  if (maps.a.size() <= kAvx2MaxMaps) {
-    plot_chunk_avx2(maps, picker, mapping, seed, chunk, points, burn_in, plot);
-    return;
-  }
-#endif
-  plot_chunk_scalar(maps, picker, mapping, seed, chunk, points, burn_in, plot);
+  walk_chunk<false>(maps, picker, mapping, seed, chunk, points, burn_in, 0, plot);
 }
 
 // plot_chunk with the address keys of the walkers: plot(lane, pixel, map, key), keys shifted by
@@ -204,13 +225,7 @@ template <class Plot>
 void plot_chunk_keyed(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
                       std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
                       int key_bits, Plot&& plot) {
-#ifdef __AVX2__
-  if (maps.a.size() <= kAvx2MaxMaps) {
-    walk_chunk_avx2<true>(maps, picker, mapping, seed, chunk, points, burn_in, key_bits, plot);
-    return;
-  }
-#endif
-  walk_chunk_scalar<true>(maps, picker, mapping, seed, chunk, points, burn_in, key_bits, plot);
+  walk_chunk<true>(maps, picker, mapping, seed, chunk, points, burn_in, key_bits, plot);
 }
 
 }  // namespace ifsfx::detail
