@@ -12,6 +12,7 @@
 #include <opencv2/core.hpp>
 
 #include "ifs/ifs.h"
+#include "ifs/output_file.h"
 #include "ifs/view.h"
 
 namespace ifsfx {
@@ -101,7 +102,9 @@ void apply(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out);
 // save/load: a versioned binary file; load throws Error{io} or Error{unsupported} for a file that
 // is not a steal map, of another version, or truncated, naming the path.
 // With `expected_size`, a map of another size is refused (Error{invalid_argument}).
-void save(const StealMap& map, const std::filesystem::path& path);
+// save writes through the output policy (ifs/output_file.h): `output` names the inputs the map
+// must not replace.
+void save(const StealMap& map, const std::filesystem::path& path, const OutputOptions& output = {});
 StealMap load_steal_map(const std::filesystem::path& path,
                         std::optional<cv::Size> expected_size = std::nullopt);
 
