@@ -11,6 +11,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "ifs/cancel.h"
 #include "ifs/ifs.h"
 #include "ifs/output_file.h"
 #include "ifs/view.h"
@@ -36,6 +37,9 @@ struct StealMapOptions {
                             // (the exact map's attractor mask uses 4 per pixel plus growth)
   std::uint64_t seed = 1;
   int threads = 0;  // 0 = all cores
+  // Polled between chunks of work (the attractor raster, the chaos game, the descent): a stop
+  // request ends the computation within a fraction of a second with Error{interrupted}.
+  CancelToken cancel;
 };
 
 // What compute_steal_map did. The chaos game's coverage policy: `quality` points per pixel,
