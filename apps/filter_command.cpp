@@ -109,13 +109,6 @@ video::Rational rate_of(const video::FrameSource& source) {
   return {static_cast<int>(std::lround(fps * 1001)), 1001};
 }
 
-void check_distinct(const std::string& input, const std::string& output) {
-  std::error_code ec;
-  if (std::filesystem::exists(output, ec) && std::filesystem::equivalent(input, output, ec))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("{}: the output would overwrite the input", output));
-}
-
 void run_filter(const FilterArgs& args) {
   if (args.preview == !args.output.empty())
     throw Error(ErrorKind::invalid_argument,
@@ -126,8 +119,10 @@ void run_filter(const FilterArgs& args) {
   video::FilterOptions filter_options = args.fractal.filter_options();
   filter_options.interpolation = args.interpolation;
   // Cheap checks of the output first: an unusable output fails before any decoding.
+  video::check_output_name(args.output);
   if (!args.output.empty() && !video::is_sequence_pattern(args.output))
     video::resolve_encoder(args.output, args.codec);
+  StopSignals signals;  // from here on, Ctrl-C and SIGTERM stop the command within 0.5 s
 
   const IfsPreset F = load_ifs(args.fractal.preset);
   const Ifs G = colouring_option(args.fractal.colouring, F.ifs);
@@ -138,22 +133,38 @@ void run_filter(const FilterArgs& args) {
   const cv::Size size = args.size.empty() ? frame_size : size_option(args.size);
   const video::Rational rate = rate_of(*source);
 
-  StopSignals signals;
+  // The output policy: no output file replaces an input (the movie, every file of an image
+  // sequence, the presets), whatever its spelling or links.
+  OutputOptions output;
+  if (const auto* sequence = dynamic_cast<const video::ImageSequenceSource*>(source.get()))
+    for (const auto& file : sequence->files()) output.inputs.add(file);
+  else
+    output.inputs.add(args.input);
+  add_preset_input(output.inputs, args.fractal.preset);
+  add_preset_input(output.inputs, args.fractal.colouring);
+  if (args.animate == Animate::superifs) add_preset_input(output.inputs, args.superifs);
   std::unique_ptr<video::FrameSink> sink;
   if (args.preview) {
     sink = std::make_unique<video::WindowSink>(
         fmt::format("ifsfx filter: {}", args.input),
         video::WindowSinkOptions{.fps = rate.value(), .stop = &StopSignals::stop_flag()});
   } else {
-    check_distinct(args.input, args.output);
     if (video::is_sequence_pattern(args.output)) {
-      sink = std::make_unique<video::ImageSequenceSink>(args.output);
+      const std::int64_t count = source->frame_count();
+      const std::int64_t expected =
+          count < 0
+              ? -1
+              : std::max<std::int64_t>(
+                    0, (range.last < 0 ? count : std::min(count, range.last + 1)) - range.first);
+      sink = std::make_unique<video::ImageSequenceSink>(
+          args.output, video::ImageSequenceSinkOptions{.expected = expected, .output = output});
     } else {
       video::FileSinkOptions o;
       o.codec = args.codec;
       o.size = size;
       o.frame_rate = rate;
       o.threads = args.fractal.threads;
+      o.output = output;
       if (const auto* file = dynamic_cast<const video::FileSource*>(source.get());
           file != nullptr && file->has_audio()) {
         o.audio_from = file->path();
@@ -180,8 +191,8 @@ void run_filter(const FilterArgs& args) {
     // Drift: keyframe k shows the IFS drifted to time k·K/fps, in a view fixed from the base IFS
     // so that the frame does not jump as the attractor moves.
     if (!map_options.view)
-      map_options.view =
-          fit_view(attractor_bounds(F.ifs, args.fractal.seed), size, args.fractal.margin);
+      map_options.view = fit_view(attractor_bounds(F.ifs, args.fractal.seed, map_options.cancel),
+                                  size, args.fractal.margin);
     const video::DriftOptions drift = args.fractal.drift_options();
     video::drift(F.ifs, 0, drift);  // checks the drift options before any work
     const double fps = rate.value();
@@ -201,6 +212,7 @@ void run_filter(const FilterArgs& args) {
     t.source = cv::Mat(frame_size, CV_8UC3);  // only its size: it sets the descent depth
     t.seed = args.fractal.seed;
     t.threads = args.fractal.threads;
+    t.cancel = StopSignals::token();
     sequence = std::make_shared<TextureSequence>(load_superifs(args.superifs).super, size, t);
     schedule = std::make_unique<video::MapSchedule>(
         [=, seq = sequence](std::int64_t k) {
@@ -224,14 +236,20 @@ void run_filter(const FilterArgs& args) {
     options.progress = ProgressPrinter(tty);
     options.progress_interval = tty ? 0.25 : 2.0;
   }
-  // Ctrl-C while the steal map was computed: nothing to keep (the sink removes its .part file).
+  // Ctrl-C while the steal map was computed is honoured by the map's own polling; one that came
+  // just after it ends here, before any frame (the sink removes its temporary file).
   if (StopSignals::stop_flag())
     throw Error(ErrorKind::interrupted, "interrupted before the first frame; nothing written");
   const video::PipelineResult result = video::run_pipeline(*source, *sink, filter, options);
   const std::string where = args.preview ? std::string("the preview") : args.output;
   if (result.interrupted && !args.preview)
-    throw Error(ErrorKind::interrupted,
-                fmt::format("interrupted: {} frames written to {}", result.frames_written, where));
+    throw Error(
+        ErrorKind::interrupted,
+        result.partial.empty()
+            ? fmt::format("interrupted after {} frames; nothing written ({} left as it was)",
+                          result.frames_written, where)
+            : fmt::format("interrupted: {} frames kept in {} ({} left as it was)",
+                          result.frames_written, result.partial.string(), where));
   if (!args.quiet)
     std::printf(
         "%s\n",
@@ -252,9 +270,11 @@ void add_filter_command(CLI::App& app) {
   cmd->add_option("input", args->input,
                   "Input movie (any file FFmpeg reads) or image sequence pattern (frame_%04d.png)")
       ->required();
-  cmd->add_option("-o,--output", args->output,
-                  "Output movie (.mp4, .mkv, .avi, ...) or image sequence pattern; written as "
-                  "OUTPUT.part and renamed at the end");
+  cmd->add_option(
+      "-o,--output", args->output,
+      "Output movie (.mp4, .mkv, .avi, ...) or image sequence pattern (frame_%04d.png); "
+      "put in place when complete, never over an input; a run that fails or is "
+      "stopped keeps its frames in OUTPUT-STEM.partial.EXT");
   cmd->add_flag("--preview", args->preview,
                 "Show the result in a window instead of writing a file");
   add_fractal_filter_options(*cmd, args->fractal);
@@ -272,7 +292,8 @@ void add_filter_command(CLI::App& app) {
   cmd->add_option("--frames", args->frames,
                   "Source frames START:END to filter, both included, from 0 (START: or :END too)");
   cmd->add_option("--fps", args->fps, "Frame rate of an image sequence input")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(number_in(0, 1000, true));
   const std::map<std::string, Animate> animations{
       {"none", Animate::none}, {"drift", Animate::drift}, {"superifs", Animate::superifs}};
   cmd->add_option("--animate", args->animate,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string_view>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -28,6 +29,13 @@ const AVOutputFormat* guess_container(const std::filesystem::path& path) {
                 fmt::format("{}: unknown movie container extension '{}' (use .mp4, .mkv, .avi, "
                             ".mov, ...)",
                             path.string(), path.extension().string()));
+  // FFmpeg's image muxer reads printf patterns in the name itself, bypassing the output policy:
+  // image sequences go through ImageSequenceSink instead.
+  if (std::string_view(format->name).starts_with("image2"))
+    throw Error(ErrorKind::unsupported,
+                fmt::format("{}: a still image format; write an image sequence with a pattern "
+                            "such as {}_%04d{}",
+                            path.string(), path.stem().string(), path.extension().string()));
   return format;
 }
 
@@ -88,12 +96,6 @@ AVPixelFormat pick_pixel_format(const AVCodec* encoder) {
   return formats[0];
 }
 
-std::filesystem::path part_path(const std::filesystem::path& path) {
-  std::filesystem::path p = path;
-  p += ".part";
-  return p;
-}
-
 }  // namespace
 
 std::string resolve_encoder(const std::filesystem::path& path, const std::string& codec) {
@@ -102,7 +104,7 @@ std::string resolve_encoder(const std::filesystem::path& path, const std::string
 
 struct FileSink::Impl {
   std::filesystem::path path;
-  std::filesystem::path temp;
+  std::optional<OutputFile> out;  // the temporary file written, under the output policy
   std::unique_ptr<AVFormatContext, detail::OutputContextDeleter> format;
   std::unique_ptr<AVCodecContext, detail::CodecContextDeleter> codec;
   std::unique_ptr<AVFrame, detail::FrameDeleter> frame{av_frame_alloc()};
@@ -138,8 +140,17 @@ struct FileSink::Impl {
 
   void discard_temp() noexcept {
     format.reset();
-    std::error_code ec;
-    std::filesystem::remove(temp, ec);
+    if (out) out->discard();
+  }
+
+  // The encoder flushed, the audio up to the end of the last frame, the trailer written and the
+  // file closed: a complete movie in the temporary file.
+  void finish() {
+    encode(nullptr);
+    if (audio) audio->copy_until(seconds(last_pts + 1));
+    check_av(av_write_trailer(format.get()), ErrorKind::io, what(), "cannot finish the file");
+    check_av(avio_closep(&format->pb), ErrorKind::io, what(), "cannot finish the file");
+    format.reset();
   }
 };
 
@@ -147,7 +158,6 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
     : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;
   s.path = path;
-  s.temp = part_path(path);
   if (options.size.width <= 0 || options.size.height <= 0)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("{}: frame size must be positive (got {}x{})", s.what(),
@@ -156,9 +166,7 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("{}: frame rate must be positive (got {}/{})", s.what(),
                             options.frame_rate.num, options.frame_rate.den));
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw Error(ErrorKind::io, fmt::format("{}: is a folder", s.what()));
+  check_output(path, options.output);
   const AVOutputFormat* container = guess_container(path);
   const AVCodec* encoder = find_encoder(path, container, options.codec);
 
@@ -176,7 +184,7 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
   c->sample_aspect_ratio = AVRational{1, 1};
   c->pix_fmt = pick_pixel_format(encoder);
   if (c->pix_fmt == AV_PIX_FMT_YUVJ420P) c->color_range = AVCOL_RANGE_JPEG;
-  c->thread_count = options.threads;
+  c->thread_count = detail::codec_threads(options.threads);
   if (encoder->id == AV_CODEC_ID_MPEG4) {
     c->flags |= AV_CODEC_FLAG_QSCALE;
     c->global_quality = 3 * FF_QP2LAMBDA;
@@ -209,9 +217,10 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
     throw Error(ErrorKind::unsupported, fmt::format("{}: cannot convert BGR to {}", s.what(),
                                                     av_get_pix_fmt_name(c->pix_fmt)));
   // Open the temporary file last: every check that can fail without touching the disk is done.
-  check_av(avio_open(&raw->pb, s.temp.c_str(), AVIO_FLAG_WRITE), ErrorKind::io, s.what(),
-           fmt::format("cannot write {}", s.temp.string()));
+  s.out.emplace(path, options.output);
   try {
+    check_av(avio_open(&raw->pb, s.out->temporary().c_str(), AVIO_FLAG_WRITE), ErrorKind::io,
+             s.what(), "cannot write");
     check_av(avformat_write_header(raw, nullptr), ErrorKind::io, s.what(),
              "cannot write the header");
   } catch (...) {
@@ -221,12 +230,7 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
 }
 
 FileSink::~FileSink() {
-  if (impl_->closed) return;
-  try {
-    close();
-  } catch (...) {
-    impl_->discard_temp();
-  }
+  abandon();
 }
 
 void FileSink::write(const Frame& frame) {
@@ -265,20 +269,27 @@ void FileSink::close() {
   try {
     if (s.written == 0)
       throw Error(ErrorKind::io, fmt::format("{}: no frame to write; nothing was saved", s.what()));
-    s.encode(nullptr);
-    if (s.audio) s.audio->copy_until(s.seconds(s.last_pts + 1));
-    check_av(av_write_trailer(s.format.get()), ErrorKind::io, s.what(), "cannot finish the file");
-    check_av(avio_closep(&s.format->pb), ErrorKind::io, s.what(), "cannot finish the file");
-    s.format.reset();
-    std::error_code ec;
-    std::filesystem::rename(s.temp, s.path, ec);
-    if (ec)
-      throw Error(ErrorKind::io, fmt::format("{}: cannot rename {} into place ({})", s.what(),
-                                             s.temp.string(), ec.message()));
+    s.finish();
+    s.out->commit();
   } catch (...) {
     s.discard_temp();
     throw;
   }
+}
+
+std::filesystem::path FileSink::abandon() noexcept {
+  Impl& s = *impl_;
+  if (s.closed) return {};
+  s.closed = true;
+  if (s.written > 0) {
+    try {
+      s.finish();
+      return s.out->keep_partial();
+    } catch (...) {
+    }
+  }
+  s.discard_temp();
+  return {};
 }
 
 std::string FileSink::name() const {
