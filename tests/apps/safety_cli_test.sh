@@ -36,11 +36,24 @@ same_bytes() { [[ $(md5sum <"$1") == "$2" ]] || fail "$1 was changed"; }
 # IFSFX_STOP_BOUND_MS (2 s by default: the target is 0.5 s, the bound is generous for a loaded
 # machine) with one line on stderr. Prints the time it took.
 stop_bound_ms=${IFSFX_STOP_BOUND_MS:-2000}
+
+# Waits (up to 30 s) until process PID catches SIGINT and SIGTERM: before its handlers are in, a
+# background job of a script ignores SIGINT, and a loaded machine may take seconds to get there.
+wait_for_handlers() {
+  local mask
+  for _ in $(seq 600); do
+    mask=$(sed -n 's/^SigCgt:\s*//p' "/proc/$1/status" 2>/dev/null || true)
+    [[ -n $mask ]] && (((16#$mask & 16#4002) == 16#4002)) && return 0
+    sleep 0.05
+  done
+  fail "process $1 never caught SIGINT and SIGTERM"
+}
 stop_during() {
   local signal=$1 code=$2 delay=$3 rc=0
   shift 3
   "$ifsfx" "$@" >out.txt 2>err.txt &
   local pid=$!
+  wait_for_handlers "$pid"
   sleep "$delay"
   kill -0 "$pid" 2>/dev/null || fail "'$*' ended before the signal: $(cat err.txt)"
   local start
@@ -195,6 +208,7 @@ case "$check" in
     # the movie's temporary file exists, during the steal map.
     "$ifsfx" filter in.avi --size 8000x8000 --exact -o out.mp4 2>err.txt &
     pid=$!
+    wait_for_handlers "$pid"
     sleep 1.5
     kill -INT "$pid"
     sleep 0.05
@@ -208,6 +222,7 @@ case "$check" in
     # While frames are written: the movie's frames kept apart as a playable partial movie.
     "$ifsfx" filter long.avi -o out.mp4 --codec mpeg4 --quality 4 --size 320x240 --threads 1 >out.txt 2>err.txt &
     pid=$!
+    wait_for_handlers "$pid"
     for _ in $(seq 200); do  # until the encoder has written a few frames to its temporary file
       [[ -n $(find . -name '.out.mp4.*' -size +20k) ]] && break
       sleep 0.05
