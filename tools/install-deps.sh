@@ -4,14 +4,15 @@
 set -euo pipefail
 
 packages=(
-  # toolchain
-  g++ cmake ninja-build pkg-config ccache clang-format
+  # toolchain; dpkg-dev (dpkg-shlibdeps) and file: the Debian packages' Depends, made by cpack
+  g++ cmake ninja-build pkg-config ccache clang-format dpkg-dev file
   # libraries
   libopencv-dev libopenimageio-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  # runtime tools and data: ffmpeg/ffprobe (audio remux, tests), OpenCV's sample clips and images
-  ffmpeg opencv-doc openimageio-tools
+  # runtime tools and data: ffmpeg/ffprobe (audio remux, tests), OpenCV's sample clips and images;
+  # groff-base checks the man page
+  ffmpeg opencv-doc openimageio-tools groff-base
   # the window of `ifsfx cam` tested under a virtual X server: Xvfb, xdotool (keys), xwd + netpbm
   xvfb xdotool x11-apps netpbm
 )
