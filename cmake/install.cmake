@@ -22,7 +22,7 @@
 # something more in the ifsfx package, e.g. the frei0r plugins, write an install() rule next to its
 # target, without COMPONENT:
 #   install(TARGETS ifsfx_frei0r LIBRARY DESTINATION lib/frei0r-1)
-# The package test (tests/install/deb_test.sh) lists the files it expects in the package: add the
+# The package test (`deb` in tests/install/install_test.sh) lists files it expects: add the
 # new ones there. Their shared-library dependencies reach Depends through dpkg-shlibdeps.
 include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)

@@ -55,9 +55,11 @@ case "$check" in
     commands=$("$built_ifsfx" --help | sed -n '/^Subcommands:/,$p' | awk '/^  [a-z]/ { print $1 }')
     [ "$(echo "$commands" | wc -l)" -ge 7 ] || fail "ifsfx --help lists: $commands"
     for c in $commands; do
-      grep -qx ".SS $c" "$man" || fail "man page: no section for '$c'"
-      for option in $("$built_ifsfx" "$c" --help | grep -o -- '--[a-z][a-z0-9-]*' | sort -u); do
-        grep -qF -- "\\fB${option//-/\\-}\\fR" "$man" || fail "man page: '$c' lacks $option"
+      section=$(awk -v c="$c" '$0 == ".SS " c { on = 1; next } /^\.S[SH] / { on = 0 } on' "$man")
+      [ -n "$section" ] || fail "man page: no section for '$c'"
+      for option in $("$built_ifsfx" "$c" --help | awk '/^  -/ { print $1 }' | tr , ' '); do
+        case $option in -h | --help | --help-all) continue ;; esac
+        grep -qF -- "\\fB${option//-/\\-}\\fR" <<<"$section" || fail "man page: '$c' lacks $option"
       done
     done
     preconv "$man" | groff -man -ww -z 2>roff.txt
