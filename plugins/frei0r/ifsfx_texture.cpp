@@ -14,7 +14,6 @@
 #include <memory>
 #include <optional>
 
-#include <frei0r.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -33,7 +32,7 @@ constexpr const char* plugin_name = "ifsfx-texture";
 
 // The parameters, in the order hosts address them by position. Do not reorder or rename.
 enum Param { preset, buffers, mode, source, seed, speed, crossfade };
-constexpr ParamInfo params[] = {
+constexpr ParamInfo table[] = {
     {"preset", ParamType::text,
      "The superIFS: a shipped name (paper-fig4, carpet-lace, ...) or a .super.toml path", 0,
      "paper-fig4"},
@@ -61,7 +60,7 @@ struct SequenceKey {
 
 SequenceKey key_of(const ParamValues::Values& v) {
   SequenceKey k;
-  k.preset = v.text(preset).empty() ? params[preset].text : v.text(preset);
+  k.preset = v.text(preset).empty() ? table[preset].text : v.text(preset);
   k.count = static_cast<int>(whole_number(v.number(buffers), "buffers", 1, 64));
   k.mode = parse_texture_mode(v.text(mode), "mode");
   k.source = v.text(source);
@@ -142,7 +141,7 @@ class TextureInstance {
   }
 
   cv::Size size_;
-  ParamValues values_{params};
+  ParamValues values_{table};
   Reporter reporter_{plugin_name};
   SequenceKey key_;
   std::unique_ptr<TextureSequence> sequence_;
@@ -156,13 +155,13 @@ using ifsfx::frei0r::TextureInstance;
 
 extern "C" {
 
-// No global state: see ifsfx_filter.cpp.
-int f0r_init() {
+// No global state: see ifsfx.cpp.
+IFSFX_F0R_EXPORT int f0r_init() {
   return 1;
 }
-void f0r_deinit() {}
+IFSFX_F0R_EXPORT void f0r_deinit() {}
 
-void f0r_get_plugin_info(f0r_plugin_info_t* info) {
+IFSFX_F0R_EXPORT void f0r_get_plugin_info(f0r_plugin_info_t* info) {
   info->name = ifsfx::frei0r::plugin_name;
   info->author = "ifsfx";
   info->plugin_type = F0R_PLUGIN_TYPE_SOURCE;
@@ -170,15 +169,15 @@ void f0r_get_plugin_info(f0r_plugin_info_t* info) {
   info->frei0r_version = FREI0R_MAJOR_VERSION;
   info->major_version = 0;
   info->minor_version = 1;
-  info->num_params = static_cast<int>(std::size(ifsfx::frei0r::params));
+  info->num_params = static_cast<int>(std::size(ifsfx::frei0r::table));
   info->explanation = "V-variable superfractal textures from a superIFS, one step per 1/speed s";
 }
 
-void f0r_get_param_info(f0r_param_info_t* info, int index) {
-  ifsfx::frei0r::describe(ifsfx::frei0r::params, info, index);
+IFSFX_F0R_EXPORT void f0r_get_param_info(f0r_param_info_t* info, int index) {
+  ifsfx::frei0r::describe(ifsfx::frei0r::table, info, index);
 }
 
-f0r_instance_t f0r_construct(unsigned int width, unsigned int height) {
+IFSFX_F0R_EXPORT f0r_instance_t f0r_construct(unsigned int width, unsigned int height) {
   try {
     return new TextureInstance(width, height);
   } catch (...) {
@@ -186,11 +185,11 @@ f0r_instance_t f0r_construct(unsigned int width, unsigned int height) {
   }
 }
 
-void f0r_destruct(f0r_instance_t instance) {
+IFSFX_F0R_EXPORT void f0r_destruct(f0r_instance_t instance) {
   delete static_cast<TextureInstance*>(instance);
 }
 
-void f0r_set_param_value(f0r_instance_t instance, f0r_param_t param, int index) {
+IFSFX_F0R_EXPORT void f0r_set_param_value(f0r_instance_t instance, f0r_param_t param, int index) {
   try {
     static_cast<TextureInstance*>(instance)->params().set(param, index);
   } catch (...) {
@@ -198,11 +197,12 @@ void f0r_set_param_value(f0r_instance_t instance, f0r_param_t param, int index) 
   }
 }
 
-void f0r_get_param_value(f0r_instance_t instance, f0r_param_t param, int index) {
+IFSFX_F0R_EXPORT void f0r_get_param_value(f0r_instance_t instance, f0r_param_t param, int index) {
   static_cast<TextureInstance*>(instance)->params().get(param, index);
 }
 
-void f0r_update(f0r_instance_t instance, double time, const uint32_t*, uint32_t* outframe) {
+IFSFX_F0R_EXPORT void f0r_update(f0r_instance_t instance, double time, const uint32_t*,
+                                 uint32_t* outframe) {
   static_cast<TextureInstance*>(instance)->update(
       ifsfx::frei0r::seconds_from_host(time, __builtin_return_address(0)), outframe);
 }

@@ -9,7 +9,14 @@
 #include <string>
 #include <vector>
 
+// frei0r.h declares the API without extern "C": the plugins define it with C linkage.
+extern "C" {
 #include <frei0r.h>
+}
+
+// The plugins are compiled with hidden visibility; the frei0r API is what they export (and
+// exports.map keeps everything else local).
+#define IFSFX_F0R_EXPORT __attribute__((visibility("default")))
 
 namespace ifsfx::frei0r {
 

@@ -26,7 +26,7 @@ TEST(timeline, host_times_with_rounding_errors_land_on_the_frames_they_stand_for
 TEST(timeline, positions_off_any_small_fraction_are_kept_as_given) {
   const StepPosition p = position_of_steps(2.0 + 1.0 / 3001);
   EXPECT_EQ(p.step, 2);
-  EXPECT_DOUBLE_EQ(p.phase, 1.0 / 3001);
+  EXPECT_NEAR(p.phase, 1.0 / 3001, 1e-12);
   EXPECT_EQ(position_of_steps(-0.25), (StepPosition{-1, 0.75}));
 }
 

@@ -23,7 +23,9 @@
 #include <thread>
 #include <vector>
 
-#include <frei0r.h>
+extern "C" {
+#include <frei0r.h>  // declares the API without extern "C"
+}
 
 namespace {
 

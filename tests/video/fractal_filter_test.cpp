@@ -157,7 +157,8 @@ TEST(fractal_filter, frame_of_the_wrong_size_is_refused) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
-    EXPECT_STREQ(e.what(), "fractal filter: frame must be 16x16 8-bit BGR (got 17x16, type 16)");
+    EXPECT_STREQ(e.what(),
+                 "fractal filter: frame must be 16x16 8-bit BGR or BGRA (got 17x16, type 16)");
   }
 }
 

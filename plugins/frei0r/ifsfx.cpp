@@ -12,7 +12,6 @@
 #include <memory>
 #include <optional>
 
-#include <frei0r.h>
 #include <opencv2/core.hpp>
 
 #include "ifs/error.h"
@@ -28,7 +27,7 @@ constexpr const char* plugin_name = "ifsfx";
 
 // The parameters, in the order hosts address them by position. Do not reorder or rename.
 enum Param { preset, colouring, mix, background, exact, drift, speed, seed, view };
-constexpr ParamInfo params[] = {
+constexpr ParamInfo table[] = {
     {"preset", ParamType::text,
      "The drawing IFS F: a shipped name (see `ifsfx presets`), a .toml/.ifs path or FILE.ifs:NAME",
      0, "barnsley-fern"},
@@ -50,7 +49,7 @@ constexpr ParamInfo params[] = {
 // The engine's settings for parameter values; throws ifsfx::Error naming the parameter.
 video::FractalSettings settings_of(const ParamValues::Values& v) {
   video::FractalSettings s;
-  s.preset = v.text(preset).empty() ? params[preset].text : v.text(preset);
+  s.preset = v.text(preset).empty() ? table[preset].text : v.text(preset);
   s.colouring = v.text(colouring);
   s.mix = v.number(mix);
   s.background = video::parse_background(v.text(background), "background");
@@ -149,7 +148,7 @@ class FilterInstance {
   }
 
   cv::Size size_;
-  ParamValues values_{params};
+  ParamValues values_{table};
   Reporter reporter_{plugin_name};
   std::unique_ptr<video::FractalEngine> engine_;
   std::future<std::unique_ptr<video::FractalEngine>> prefetch_;
@@ -166,12 +165,12 @@ extern "C" {
 
 // No global state: f0r_init and f0r_deinit have nothing to do (GStreamer does not even call
 // f0r_init in a process that found the plugin in its registry cache).
-int f0r_init() {
+IFSFX_F0R_EXPORT int f0r_init() {
   return 1;
 }
-void f0r_deinit() {}
+IFSFX_F0R_EXPORT void f0r_deinit() {}
 
-void f0r_get_plugin_info(f0r_plugin_info_t* info) {
+IFSFX_F0R_EXPORT void f0r_get_plugin_info(f0r_plugin_info_t* info) {
   info->name = ifsfx::frei0r::plugin_name;
   info->author = "ifsfx";
   info->plugin_type = F0R_PLUGIN_TYPE_FILTER;
@@ -179,16 +178,16 @@ void f0r_get_plugin_info(f0r_plugin_info_t* info) {
   info->frei0r_version = FREI0R_MAJOR_VERSION;
   info->major_version = 0;
   info->minor_version = 1;
-  info->num_params = static_cast<int>(std::size(ifsfx::frei0r::params));
+  info->num_params = static_cast<int>(std::size(ifsfx::frei0r::table));
   info->explanation =
       "Fractal filter: every frame coloured through the steal map of an IFS (colour stealing)";
 }
 
-void f0r_get_param_info(f0r_param_info_t* info, int index) {
-  ifsfx::frei0r::describe(ifsfx::frei0r::params, info, index);
+IFSFX_F0R_EXPORT void f0r_get_param_info(f0r_param_info_t* info, int index) {
+  ifsfx::frei0r::describe(ifsfx::frei0r::table, info, index);
 }
 
-f0r_instance_t f0r_construct(unsigned int width, unsigned int height) {
+IFSFX_F0R_EXPORT f0r_instance_t f0r_construct(unsigned int width, unsigned int height) {
   try {
     return new FilterInstance(width, height);
   } catch (...) {
@@ -196,11 +195,11 @@ f0r_instance_t f0r_construct(unsigned int width, unsigned int height) {
   }
 }
 
-void f0r_destruct(f0r_instance_t instance) {
+IFSFX_F0R_EXPORT void f0r_destruct(f0r_instance_t instance) {
   delete static_cast<FilterInstance*>(instance);
 }
 
-void f0r_set_param_value(f0r_instance_t instance, f0r_param_t param, int index) {
+IFSFX_F0R_EXPORT void f0r_set_param_value(f0r_instance_t instance, f0r_param_t param, int index) {
   auto* self = static_cast<FilterInstance*>(instance);
   try {
     if (self->params().set(param, index)) self->changed();
@@ -209,11 +208,12 @@ void f0r_set_param_value(f0r_instance_t instance, f0r_param_t param, int index) 
   }
 }
 
-void f0r_get_param_value(f0r_instance_t instance, f0r_param_t param, int index) {
+IFSFX_F0R_EXPORT void f0r_get_param_value(f0r_instance_t instance, f0r_param_t param, int index) {
   static_cast<FilterInstance*>(instance)->params().get(param, index);
 }
 
-void f0r_update(f0r_instance_t instance, double time, const uint32_t* inframe, uint32_t* outframe) {
+IFSFX_F0R_EXPORT void f0r_update(f0r_instance_t instance, double time, const uint32_t* inframe,
+                                 uint32_t* outframe) {
   static_cast<FilterInstance*>(instance)->update(
       ifsfx::frei0r::seconds_from_host(time, __builtin_return_address(0)), inframe, outframe);
 }
