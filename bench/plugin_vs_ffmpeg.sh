@@ -8,17 +8,20 @@
 #   ifsfx     ifsfx filter clip -o out.mkv --codec ffv1         (decode, filter, FFV1 encode)
 # Each is also run on the first frame alone; "steady" is (N − 1) frames over the difference, which
 # leaves out start-up and the steal map computed before the first frame (shown as "first frame").
+# Every time is the best of REPEAT runs (a shared machine's noise only ever adds time).
 #
-#   bench/plugin_vs_ffmpeg.sh [BUILD] [FRAMES] [SIZE] [CPUS]
-#   defaults: build/release 300 1920x1080 0,1   (CPUS: the cores to run on, taskset -c)
+#   bench/plugin_vs_ffmpeg.sh [BUILD] [FRAMES] [SIZE] [CPUS] [REPEAT]
+#   defaults: build/release 300 1920x1080 0,1 3   (CPUS: the cores to run on, taskset -c)
 set -euo pipefail
 build=$(realpath "${1:-build/release}")
 frames=${2:-300}
 size=${3:-1920x1080}
 cpus=${4:-0,1}
+repeat=${5:-3}
 preset=barnsley-fern
 export FREI0R_PATH=$build/plugins/frei0r
 [[ -f $FREI0R_PATH/ifsfx.so ]] || { echo "no $FREI0R_PATH/ifsfx.so: build first" >&2; exit 1; }
+taskset -cp "$cpus" $$ > /dev/null  # this script and all it runs on $cpus
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -28,12 +31,16 @@ ffmpeg -v error -y -stream_loop -1 -i /usr/share/doc/opencv-doc/examples/data/vt
   -frames:v "$frames" -vf "scale=${size/x/:}" -r 25 -c:v libx264 -preset fast -crf 20 \
   -pix_fmt yuv420p in.mp4
 
-seconds() {  # seconds CMD...: wall time of CMD on $cpus
-  local t0 t1
-  t0=$(date +%s.%N)
-  taskset -c "$cpus" "$@" > /dev/null 2> err.txt || { cat err.txt >&2; exit 1; }
-  t1=$(date +%s.%N)
-  awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.3f", b - a }'
+seconds() {  # seconds CMD...: the shortest wall time of CMD in $repeat runs
+  local t0 t1 best=
+  for ((i = 0; i < repeat; ++i)); do
+    t0=$(date +%s.%N)
+    "$@" > /dev/null 2> err.txt || { cat err.txt >&2; exit 1; }
+    t1=$(date +%s.%N)
+    best=$(awk -v a="$t0" -v b="$t1" -v best="$best" \
+      'BEGIN { t = b - a; if (best != "" && best < t) t = best; printf "%.3f", t }')
+  done
+  echo "$best"
 }
 declare -A first all
 run() {  # run NAME CMD... (the command takes its frame limit from $limit)

@@ -14,8 +14,6 @@
 
 namespace ifsfx::video {
 
-namespace {}  // namespace
-
 bool same_maps(const FractalSettings& a, const FractalSettings& b) {
   FractalSettings looks_like_b = a;
   looks_like_b.mix = b.mix;

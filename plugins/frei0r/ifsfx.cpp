@@ -10,6 +10,7 @@
 #include <cstring>
 #include <future>
 #include <memory>
+#include <mutex>
 #include <optional>
 
 #include <opencv2/core.hpp>
@@ -83,6 +84,7 @@ class FilterInstance {
   // next frame finds them ready (a GStreamer property set from the application's thread). Before
   // the first frame nothing is built: hosts set every parameter first, one by one.
   void changed() {
+    std::lock_guard lock(mutex_);
     if (!engine_ || prefetch_.valid()) return;
     std::optional<video::FractalSettings> s;
     try {
@@ -100,6 +102,7 @@ class FilterInstance {
   void update(double seconds, const std::uint32_t* in, std::uint32_t* out) {
     const std::size_t bytes = static_cast<std::size_t>(size_.area()) * 4;
     if (in == nullptr || out == nullptr) return;
+    std::lock_guard lock(mutex_);
     try {
       const video::FractalSettings s = settings_of(values_.values());
       engine_for(s);
@@ -150,6 +153,7 @@ class FilterInstance {
   cv::Size size_;
   ParamValues values_{table};
   Reporter reporter_{plugin_name};
+  std::mutex mutex_;  // a parameter set from another thread while a frame is made (GStreamer)
   std::unique_ptr<video::FractalEngine> engine_;
   std::future<std::unique_ptr<video::FractalEngine>> prefetch_;
   video::FractalSettings prefetch_settings_;
