@@ -8,7 +8,10 @@
 #   ifsfx     ifsfx filter clip -o out.mkv --codec ffv1         (decode, filter, FFV1 encode)
 # Each is also run on the first frame alone; "steady" is (N − 1) frames over the difference, which
 # leaves out start-up and the steal map computed before the first frame (shown as "first frame").
-# Every time is the best of REPEAT runs (a shared machine's noise only ever adds time).
+# Every time is the best of REPEAT runs (a shared machine's noise only ever adds time); CPU time
+# (user + sys) is shown too, and "cpu-bound" = cores / CPU time per frame, the rate on that many
+# otherwise idle cores when the work spreads over them — on a loaded machine the wall times say
+# more about the load than about the filter.
 #
 #   bench/plugin_vs_ffmpeg.sh [BUILD] [FRAMES] [SIZE] [CPUS] [REPEAT]
 #   defaults: build/release 300 1920x1080 0,1 3   (CPUS: the cores to run on, taskset -c)
@@ -31,46 +34,50 @@ ffmpeg -v error -y -stream_loop -1 -i /usr/share/doc/opencv-doc/examples/data/vt
   -frames:v "$frames" -vf "scale=${size/x/:}" -r 25 -c:v libx264 -preset fast -crf 20 \
   -pix_fmt yuv420p in.mp4
 
-seconds() {  # seconds CMD...: the shortest wall time of CMD in $repeat runs
-  local t0 t1 best=
+seconds() {  # seconds CMD...: "WALL CPU" of the run with the shortest wall time of $repeat
+  local best=
   for ((i = 0; i < repeat; ++i)); do
-    t0=$(date +%s.%N)
-    "$@" > /dev/null 2> err.txt || { cat err.txt >&2; exit 1; }
-    t1=$(date +%s.%N)
-    best=$(awk -v a="$t0" -v b="$t1" -v best="$best" \
-      'BEGIN { t = b - a; if (best != "" && best < t) t = best; printf "%.3f", t }')
+    /usr/bin/time -f "%e %U %S" -o time.txt "$@" > /dev/null 2> err.txt || { cat err.txt >&2; exit 1; }
+    best=$(awk -v best="$best" '{ t = $1; c = $2 + $3 }
+      END { split(best, b, " "); if (best != "" && b[1] < t) { t = b[1]; c = b[2] } printf "%.3f %.3f", t, c }' time.txt)
   done
   echo "$best"
 }
-declare -A first all
+declare -A first all cpu1 cpu
 run() {  # run NAME CMD... (the command takes its frame limit from $limit)
-  local name=$1
+  local name=$1 t
   shift
   limit=1
-  first[$name]=$(seconds "$@")
+  read -r t c < <(seconds "$@")
+  first[$name]=$t cpu1[$name]=$c
   limit=$frames
-  all[$name]=$(seconds "$@")
+  read -r t c < <(seconds "$@")
+  all[$name]=$t cpu[$name]=$c
 }
 ff() { ffmpeg -v error -nostdin -i in.mp4 -frames:v "$limit" "$@"; }
-run decode ff -f null -
-run rgba ff -vf format=rgba -f null -
-run plugin ff -vf "frei0r=ifsfx:$preset" -f null -
-ifsfx_run() { "$build/apps/ifsfx" filter in.mp4 -o out.mkv --codec ffv1 --preset "$preset" \
-  --frames "0:$((limit - 1))" -q; }
-run ifsfx ifsfx_run
+export -f ff
+export limit
+run decode bash -c 'ff -f null -'
+run rgba bash -c 'ff -vf format=rgba -f null -'
+run plugin bash -c "ff -vf frei0r=ifsfx:$preset -f null -"
+run ifsfx bash -c "\"$build/apps/ifsfx\" filter in.mp4 -o out.mkv --codec ffv1 --preset $preset --frames 0:\$((limit - 1)) -q"
 
 echo "input: $frames frames $size H.264; cores $cpus of $(nproc); load $(cut -d' ' -f1 /proc/loadavg)"
+cores=$(taskset -cp $$ | awk -F': ' '{ n = split($2, r, ","); c = 0
+  for (i = 1; i <= n; ++i) { if (split(r[i], ab, "-") == 2) c += ab[2] - ab[1] + 1; else c += 1 }
+  print c }')
 for name in decode rgba plugin ifsfx; do
-  awk -v name="$name" -v n="$frames" -v t1="${first[$name]}" -v tn="${all[$name]}" 'BEGIN {
+  awk -v name="$name" -v n="$frames" -v t1="${first[$name]}" -v tn="${all[$name]}" \
+    -v c1="${cpu1[$name]}" -v cn="${cpu[$name]}" -v cores="$cores" 'BEGIN {
     steady = (tn > t1) ? (n - 1) / (tn - t1) : 0
-    printf "%-7s total %6.2f s %7.1f fps   first frame %5.2f s   steady %7.1f fps\n",
-           name, tn, n / tn, t1, steady
+    ms = (cn - c1) / (n - 1) * 1000
+    printf "%-7s total %6.2f s %6.1f fps  first frame %5.2f s  steady %6.1f fps  cpu %5.2f ms/frame  cpu-bound %6.1f fps\n",
+           name, tn, n / tn, t1, steady, ms, (ms > 0 ? cores * 1000 / ms : 0)
   }'
 done
-awk -v n="$frames" -v d="${all[decode]}" -v d1="${first[decode]}" -v r="${all[rgba]}" \
-  -v r1="${first[rgba]}" -v p="${all[plugin]}" -v p1="${first[plugin]}" 'BEGIN {
-  conv = ((r - r1) - (d - d1)) / (n - 1) * 1000
-  filt = ((p - p1) - (r - r1)) / (n - 1) * 1000
-  printf "per frame: RGBA conversion %.2f ms, fractal filter %.2f ms; plugin steady %.1f fps (target >= 100)\n",
-         conv, filt, (n - 1) / (p - p1)
+awk -v n="$frames" -v d="${cpu[decode]}" -v d1="${cpu1[decode]}" -v r="${cpu[rgba]}" \
+  -v r1="${cpu1[rgba]}" -v p="${cpu[plugin]}" -v p1="${cpu1[plugin]}" 'BEGIN {
+  printf "cpu per frame: decode %.2f ms, + RGBA conversion %.2f ms, + fractal filter %.2f ms\n",
+         (d - d1) / (n - 1) * 1000, ((r - r1) - (d - d1)) / (n - 1) * 1000,
+         ((p - p1) - (r - r1)) / (n - 1) * 1000
 }'
