@@ -17,23 +17,17 @@
 #include "apps/fractal_filter_options.h"
 #include "apps/stop_signals.h"
 #include "ifs/error.h"
-#include "ifs/preset.h"
-#include "ifs/steal_map.h"
-#include "superifs/superifs_file.h"
-#include "superifs/texture.h"
-#include "video/drift.h"
 #include "video/file_sink.h"
 #include "video/file_source.h"
-#include "video/fractal_filter.h"
+#include "video/fractal_engine.h"
 #include "video/image_sequence.h"
-#include "video/map_schedule.h"
 #include "video/pipeline.h"
 #include "video/window_sink.h"
 
 namespace ifsfx::app {
 namespace {
 
-enum class Animate { none, drift, superifs };
+using video::Animate;
 
 struct FilterArgs {
   std::string input;
@@ -123,14 +117,18 @@ void run_filter(const FilterArgs& args) {
   if (args.preview) video::require_display("--preview", "write a file with -o instead");
   const video::FrameRange range =
       args.frames.empty() ? video::FrameRange{} : video::parse_frame_range(args.frames);
-  video::FilterOptions filter_options = args.fractal.filter_options();
-  filter_options.interpolation = args.interpolation;
   // Cheap checks of the output first: an unusable output fails before any decoding.
   if (!args.output.empty() && !video::is_sequence_pattern(args.output))
     video::resolve_encoder(args.output, args.codec);
 
-  const IfsPreset F = load_ifs(args.fractal.preset);
-  const Ifs G = colouring_option(args.fractal.colouring, F.ifs);
+  // The fractal is loaded and checked before any decoding; its maps wait for the frame size.
+  video::FractalSettings settings = args.fractal.settings();
+  settings.interpolation = args.interpolation;
+  settings.animate = args.animate;
+  settings.keyframe_interval = args.keyframe_interval;
+  settings.superifs = args.superifs;
+  settings.buffers = args.buffers;
+  video::FractalEngine engine(settings);
 
   video::silence_libav_log();
   std::unique_ptr<video::FrameSource> source = open_source(args);
@@ -163,58 +161,10 @@ void run_filter(const FilterArgs& args) {
     }
   }
 
-  StealMapOptions map_options = args.fractal.map_options();
-
-  video::FrameFilter filter;
-  std::unique_ptr<video::MapSchedule> schedule;
-  std::shared_ptr<TextureSequence> sequence;
-  const int interval = args.keyframe_interval;
-  if (args.animate == Animate::none) {
-    auto table = std::make_shared<const video::RemapTable>(
-        video::make_remap_table(compute_steal_map(F.ifs, G, size, map_options), frame_size,
-                                args.interpolation, args.fractal.threads));
-    filter = [table, filter_options](const video::Frame& frame) {
-      return video::filter_frame(frame.image, *table, filter_options);
-    };
-  } else if (args.animate == Animate::drift) {
-    // Drift: keyframe k shows the IFS drifted to time k·K/fps, in a view fixed from the base IFS
-    // so that the frame does not jump as the attractor moves.
-    if (!map_options.view)
-      map_options.view =
-          fit_view(attractor_bounds(F.ifs, args.fractal.seed), size, args.fractal.margin);
-    const video::DriftOptions drift = args.fractal.drift_options();
-    video::drift(F.ifs, 0, drift);  // checks the drift options before any work
-    const double fps = rate.value();
-    schedule = std::make_unique<video::MapSchedule>(
-        [=, base = F.ifs](std::int64_t k) {
-          const Ifs now = video::drift(base, static_cast<double>(k) * interval / fps, drift);
-          return video::make_remap_table(compute_steal_map(now, G, size, map_options), frame_size,
-                                         args.interpolation, args.fractal.threads);
-        },
-        interval);
-  } else {
-    // superIFS: keyframe k is texture k of the V-variable sequence (paper §5, eq. 14), one step
-    // per keyframe after the burn-in — a pure function of k and the seed.
-    TextureOptions t;
-    t.count = args.buffers;
-    t.mode = TextureMode::steal;
-    t.source = cv::Mat(frame_size, CV_8UC3);  // only its size: it sets the descent depth
-    t.seed = args.fractal.seed;
-    t.threads = args.fractal.threads;
-    sequence = std::make_shared<TextureSequence>(load_superifs(args.superifs).super, size, t);
-    schedule = std::make_unique<video::MapSchedule>(
-        [=, seq = sequence](std::int64_t k) {
-          return video::make_remap_table(seq->map_at(k), frame_size, args.interpolation,
-                                         args.fractal.threads);
-        },
-        interval);
-  }
-  if (schedule) {
-    filter = [s = schedule.get(), filter_options](const video::Frame& frame) {
-      const video::MapSchedule::Blend b = s->at(frame.index);
-      return video::filter_frame(frame.image, *b.from, *b.to, b.t, filter_options);
-    };
-  }
+  engine.prepare(frame_size, size, rate.value());
+  const video::FrameFilter filter = [&engine](const video::Frame& frame) {
+    return engine.filter(frame.image, frame.index);
+  };
 
   video::PipelineOptions options;
   options.range = range;
@@ -235,11 +185,13 @@ void run_filter(const FilterArgs& args) {
   if (!args.quiet)
     std::printf(
         "%s\n",
-        fmt::format("{}: {} frames {}x{} in {:.2f} s ({:.1f} fps){} -> {}",
-                    args.animate == Animate::superifs ? args.superifs : F.ifs.name,
-                    result.frames_written, size.width, size.height, result.seconds,
-                    result.frames_written / std::max(result.seconds, 1e-9),
-                    schedule ? fmt::format(", {} map stalls", schedule->stalls()) : "", where)
+        fmt::format(
+            "{}: {} frames {}x{} in {:.2f} s ({:.1f} fps){} -> {}",
+            args.animate == Animate::superifs ? args.superifs : engine.name(),
+            result.frames_written, size.width, size.height, result.seconds,
+            result.frames_written / std::max(result.seconds, 1e-9),
+            args.animate != Animate::none ? fmt::format(", {} map stalls", engine.stalls()) : "",
+            where)
             .c_str());
 }
 

@@ -169,7 +169,15 @@ CPP
              ./usr/share/ifsfx/presets/barnsley-fern.toml ./usr/share/doc/ifsfx/README.md; do
       grep -qx -- "$f" deb-files.txt || fail "$deb lacks $f"
     done
-    ! grep -E '^\./usr/(include|lib)/' deb-files.txt || fail "$deb holds development files"
+    # The frei0r plugins (built where frei0r.h is installed) ship with the command.
+    if [ -f "$build/plugins/frei0r/ifsfx.so" ]; then
+      for f in ./usr/lib/frei0r-1/ifsfx.so ./usr/lib/frei0r-1/ifsfx-texture.so \
+               ./usr/share/kdenlive/effects/frei0r_ifsfx.xml; do
+        grep -qx -- "$f" deb-files.txt || fail "$deb lacks $f"
+      done
+    fi
+    ! grep -E '^\./usr/(include|lib)/' deb-files.txt | grep -Ev '^\./usr/lib/(frei0r-1/.*)?$' ||
+      fail "$deb holds development files"
     for f in ./usr/include/ifsfx/ifs/steal_map.h 'libifsfx_ifs\.a' 'cmake/ifsfx/ifsfxConfig\.cmake' \
              'pkgconfig/ifsfx\.pc'; do
       grep -q -- "$f\$" dev-files.txt || fail "$dev lacks $f"
@@ -177,9 +185,15 @@ CPP
     ! grep -E '^\./usr/(bin|share)/' dev-files.txt || fail "$dev holds the command's files"
     [ "$(dpkg-deb -f "$deb" Package)" = ifsfx ] && [ "$(dpkg-deb -f "$deb" Section)" = graphics ] ||
       fail "fields: $(dpkg-deb -f "$deb")"
-    # No maintainer scripts: the control archive holds control and md5sums only.
-    ! dpkg-deb --ctrl-tarfile "$deb" | tar -t | grep -Ev '^\./(control|md5sums)?$' ||
+    # No maintainer scripts of ours: the control archive holds control and md5sums, and at most
+    # the postinst/postrm that CPack adds for shared objects under /usr/lib (the frei0r plugins),
+    # which run ldconfig and nothing else.
+    ! dpkg-deb --ctrl-tarfile "$deb" | tar -t | grep -Ev '^\./(control|md5sums|postinst|postrm)?$' ||
       fail "$deb has maintainer scripts"
+    for script in postinst postrm; do
+      body=$(dpkg-deb --ctrl-tarfile "$deb" | tar -xO "./$script" 2>/dev/null | grep -Ev '^(#!|set -e|if |fi|$)') || true
+      [ -z "$body" ] || [ "$(echo $body)" = ldconfig ] || fail "$deb $script does more than ldconfig: $body"
+    done
     # Depends, from dpkg-shlibdeps: the package of every library the command links to.
     depends=$(dpkg-deb -f "$deb" Depends)
     [ -n "$depends" ] || fail "$deb has no Depends"
