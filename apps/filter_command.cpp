@@ -135,7 +135,20 @@ void run_filter(const FilterArgs& args) {
   video::silence_libav_log();
   std::unique_ptr<video::FrameSource> source = open_source(args);
   const cv::Size frame_size = source->size();
-  const cv::Size size = args.size.empty() ? frame_size : size_option(args.size);
+  cv::Size size = args.size.empty() ? frame_size : size_option(args.size);
+  if (movie_output) {
+    // 4:2:0 encoders need even sides: the map is made at the nearest size that fits, so the whole
+    // picture is still shown, one pixel narrower or lower.
+    const cv::Size fit = video::encodable_size(args.output, args.codec, size);
+    if (fit != size)
+      std::fputs(fmt::format("ifsfx: note: {}: writing {}x{}, not {}x{}: {} codes colour at half "
+                             "resolution and needs even sides\n",
+                             args.output, fit.width, fit.height, size.width, size.height,
+                             video::resolve_encoder(args.output, args.codec))
+                     .c_str(),
+                 stderr);
+    size = fit;
+  }
   const video::Rational rate = source->frame_rate();
 
   StopSignals signals;
@@ -279,7 +292,10 @@ void add_filter_command(CLI::App& app) {
       ->transform(choice(interpolations))
       ->default_str("bilinear")
       ->option_text(choices_text(interpolations, "bilinear"));
-  cmd->add_option("--size", args->size, "Output size WxH (default: the input's, upright)");
+  cmd->add_option("--size", args->size,
+                  "Output size WxH (default: the input's, upright). Encoders that code colour at "
+                  "half resolution (H.264 in yuv420p, MPEG-4, ...) need even sides: an odd side "
+                  "is made one pixel smaller, with a note on stderr");
   cmd->add_option("--codec", args->codec,
                   "Video encoder (libx264, h264, mpeg4, ffv1, ...; default by container: "
                   ".mp4/.mkv H.264 CRF 23, .avi MPEG-4 part 2)");

@@ -96,6 +96,13 @@ std::filesystem::path part_path(const std::filesystem::path& path) {
   return p;
 }
 
+// The chroma block of a pixel format: 2×2 for 4:2:0, 2×1 for 4:2:2, 1×1 for 4:4:4 and RGB.
+cv::Size chroma_block(AVPixelFormat format) {
+  int w_shift = 0, h_shift = 0;
+  if (av_pix_fmt_get_chroma_sub_sample(format, &w_shift, &h_shift) < 0) return {1, 1};
+  return {1 << w_shift, 1 << h_shift};
+}
+
 FrameTiming timing_for(const std::filesystem::path& path, const AVOutputFormat* container,
                        const AVCodec* encoder, FrameTiming requested) {
   // AVI counts frames instead of storing times, raw streams store none, and MPEG-1/2 video knows
@@ -140,6 +147,14 @@ Rational supported_rate(const AVCodec* encoder, Rational rate) {
 
 std::string resolve_encoder(const std::filesystem::path& path, const std::string& codec) {
   return find_encoder(path, guess_container(path), codec)->name;
+}
+
+cv::Size encodable_size(const std::filesystem::path& path, const std::string& codec,
+                        cv::Size size) {
+  const cv::Size block =
+      chroma_block(pick_pixel_format(find_encoder(path, guess_container(path), codec)));
+  return {std::max(block.width, size.width / block.width * block.width),
+          std::max(block.height, size.height / block.height * block.height)};
 }
 
 FrameTiming resolve_timing(const std::filesystem::path& path, const std::string& codec,
@@ -296,6 +311,15 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
   c->framerate = AVRational{s.rate.num, s.rate.den};
   c->sample_aspect_ratio = AVRational{1, 1};
   c->pix_fmt = pick_pixel_format(encoder);
+  if (const cv::Size block = chroma_block(c->pix_fmt);
+      c->width % block.width != 0 || c->height % block.height != 0)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: {} in {} needs a width that is a multiple of {} and a height that "
+                            "is a multiple of {} (got {}x{}; {}x{} would do)",
+                            s.what(), encoder->name, av_get_pix_fmt_name(c->pix_fmt), block.width,
+                            block.height, c->width, c->height,
+                            encodable_size(path, options.codec, options.size).width,
+                            encodable_size(path, options.codec, options.size).height));
   if (c->pix_fmt == AV_PIX_FMT_YUVJ420P) c->color_range = AVCOL_RANGE_JPEG;
   c->thread_count = options.threads;
   if (encoder->id == AV_CODEC_ID_MPEG4) {

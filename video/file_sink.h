@@ -29,7 +29,9 @@ struct FileSinkOptions {
   // part 2. Encoder settings are ffmpeg's defaults (libx264: preset medium, CRF 23), except
   // MPEG-4 part 2, encoded at constant quality q 3 instead of ffmpeg's 200 kb/s.
   std::string codec;
-  cv::Size size;               // frame size; every frame written must have it
+  // Frame size; every frame written must have it. Sides must suit the encoder's pixel format
+  // (even for 4:2:0 H.264): encodable_size() gives the nearest that does.
+  cv::Size size;
   Rational frame_rate{25, 1};  // the nominal rate, and the rate of a constant-rate output
   // The clock of the frames' exact times (Frame::pts; FileSource::time_base()): kept timestamps
   // are written on it. 0/1 (cameras): Frame::timestamp, on the grid of frame_rate.
@@ -81,6 +83,12 @@ class FileSink final : public FrameSink {
 // The encoder `codec` names (or the default of the container `path` names), checked as close() of
 // a FileSink would check it; for --help and for errors before work. Throws as FileSink does.
 std::string resolve_encoder(const std::filesystem::path& path, const std::string& codec);
+
+// The frame size nearest `size` that the encoder takes in the pixel format a FileSink picks:
+// each side rounded down to a multiple of its chroma block (2 for 4:2:0, e.g. H.264 in yuv420p),
+// and never below one block. `size` itself when it already fits.
+//   const cv::Size out = encodable_size("out.mp4", "", {641, 481});  // 640x480
+cv::Size encodable_size(const std::filesystem::path& path, const std::string& codec, cv::Size size);
 
 // What FrameTiming::automatic means for `path` and `codec`: constant for containers that store no
 // per-frame times (AVI counts frames) and encoders bound to a list of rates (MPEG-1/2), keep

@@ -269,5 +269,24 @@ TEST(file_sink, timing_follows_what_the_container_can_store) {
   }
 }
 
+TEST(file_sink, odd_sides_are_rounded_for_4_2_0_encoders_only) {
+  EXPECT_EQ(encodable_size("x.mp4", "", {161, 121}), cv::Size(160, 120));
+  EXPECT_EQ(encodable_size("x.mp4", "", {160, 120}), cv::Size(160, 120));
+  EXPECT_EQ(encodable_size("x.mp4", "", {1, 1}), cv::Size(2, 2));
+  EXPECT_EQ(encodable_size("x.mkv", "ffv1", {161, 121}), cv::Size(161, 121));
+  const auto dir = temp_folder("odd");
+  try {
+    FileSink sink(dir / "out.mp4", {.size = {161, 121}});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
+    EXPECT_EQ(std::string(e.what()),
+              (dir / "out.mp4").string() +
+                  ": libx264 in yuv420p needs a width that is a multiple of 2 and a height that "
+                  "is a multiple of 2 (got 161x121; 160x120 would do)");
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
 }  // namespace
 }  // namespace ifsfx::video

@@ -256,6 +256,20 @@ rotation)
   "$ifsfx" filter tag.mkv -o tag-out.mkv --codec ffv1 "${identity[@]}" -q
   [[ $(quadrants tag-out.mkv) == "R G B RGB 96,160" ]] || fail "rotate tag: $(quadrants tag-out.mkv)"
   ;;
+odd_size)
+  ffmpeg -v error -y -f lavfi -i "testsrc=size=161x121:rate=25" -t 0.4 -pix_fmt bgr0 -c:v ffv1 odd.mkv
+  "$ifsfx" filter odd.mkv -o out.mp4 --quality 4 -q 2> err.txt
+  [[ $(probe out.mp4 v:0 width,height) == "160,120" ]] || fail "size $(probe out.mp4 v:0 width,height)"
+  [[ $(cat err.txt) == "ifsfx: note: out.mp4: writing 160x120, not 161x121: libx264 codes colour at half resolution and needs even sides" ]] ||
+    fail "note: $(cat err.txt)"
+  [[ $(frames_of out.mp4) == 10 ]] || fail "frame count $(frames_of out.mp4)"
+  "$ifsfx" filter odd.mkv -o sized.mp4 --size 99x77 --quality 4 -q 2> err.txt
+  [[ $(probe sized.mp4 v:0 width,height) == "98,76" ]] || fail "--size 99x77 gave $(probe sized.mp4 v:0 width,height)"
+  grep -q "writing 98x76, not 99x77" err.txt || fail "no note for --size: $(cat err.txt)"
+  # Encoders without chroma subsampling take odd sides as they are, without a note.
+  "$ifsfx" filter odd.mkv -o same.mkv --codec ffv1 --quality 4 -q 2> err.txt
+  [[ $(probe same.mkv v:0 width,height) == "161,121" && ! -s err.txt ]] || fail "FFV1: $(probe same.mkv v:0 width,height) $(cat err.txt)"
+  ;;
 sequence_gap)
   mkdir seq
   ffmpeg -v error -y -f lavfi -i "testsrc2=size=64x48:rate=25" -frames:v 6 -start_number 1 seq/frame_%04d.png
