@@ -276,11 +276,12 @@ ImageFile read_image(const fs::path& path) {
   if (description.starts_with(kMetadataTag)) {
     const auto all = nlohmann::json::parse(description.substr(kMetadataTag.size()), nullptr, false);
     if (all.is_object())
-      for (const auto& [key, value] : all.items()) {
-        if (!value.is_string()) continue;
+      for (const auto& item : all.items()) {
+        if (!item.value().is_string()) continue;
+        const std::string& key = item.key();
         const bool known = std::any_of(file.metadata.begin(), file.metadata.end(),
                                        [&](const auto& kv) { return kv.first == key; });
-        if (!known) file.metadata.emplace_back(key, value.get<std::string>());
+        if (!known) file.metadata.emplace_back(key, item.value().get<std::string>());
       }
   }
   return file;

@@ -4,8 +4,8 @@
 set -euo pipefail
 
 packages=(
-  # toolchain
-  g++ cmake ninja-build pkg-config ccache clang-format
+  # toolchain; clang and its runtime libraries (libFuzzer, sanitizers) for tools/run-fuzz.sh
+  g++ cmake ninja-build pkg-config ccache clang-format clang libclang-rt-14-dev
   # libraries
   libopencv-dev libopenimageio-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
