@@ -214,8 +214,8 @@ struct FileSink::Impl {
     return static_cast<double>(ticks) * av_q2d(codec->time_base);
   }
 
-  // The time of `frame` after the first frame, on the codec's clock: exact (from pts) where the
-  // frame has a clock, else from its timestamp in seconds.
+  // The time of frame `f` after the first frame, on the codec's clock: exact (from pts) where
+  // the frame has a clock, else from its timestamp in seconds.
   std::int64_t ticks(const Frame& f) const {
     if (f.time_base.positive() && f.time_base.num == first.time_base.num &&
         f.time_base.den == first.time_base.den)
@@ -223,7 +223,7 @@ struct FileSink::Impl {
     return std::llround((f.timestamp - first.timestamp) / av_q2d(codec->time_base));
   }
 
-  // How long `frame` lasts on the codec's clock: its own duration, else one nominal f.
+  // How long frame `f` lasts on the codec's clock: its own duration, else one nominal frame.
   std::int64_t length(const Frame& f) const {
     std::int64_t d = 0;
     if (f.duration > 0 && f.time_base.positive())
@@ -311,15 +311,14 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
   c->framerate = AVRational{s.rate.num, s.rate.den};
   c->sample_aspect_ratio = AVRational{1, 1};
   c->pix_fmt = pick_pixel_format(encoder);
-  if (const cv::Size block = chroma_block(c->pix_fmt);
-      c->width % block.width != 0 || c->height % block.height != 0)
+  if (const cv::Size fit = encodable_size(path, options.codec, options.size); fit != options.size) {
+    const cv::Size block = chroma_block(c->pix_fmt);
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("{}: {} in {} needs a width that is a multiple of {} and a height that "
                             "is a multiple of {} (got {}x{}; {}x{} would do)",
                             s.what(), encoder->name, av_get_pix_fmt_name(c->pix_fmt), block.width,
-                            block.height, c->width, c->height,
-                            encodable_size(path, options.codec, options.size).width,
-                            encodable_size(path, options.codec, options.size).height));
+                            block.height, c->width, c->height, fit.width, fit.height));
+  }
   if (c->pix_fmt == AV_PIX_FMT_YUVJ420P) c->color_range = AVCOL_RANGE_JPEG;
   c->thread_count = options.threads;
   if (encoder->id == AV_CODEC_ID_MPEG4) {
