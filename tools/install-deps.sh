@@ -4,8 +4,9 @@
 set -euo pipefail
 
 packages=(
-  # toolchain; dpkg-dev (dpkg-shlibdeps) and file: the Debian packages' Depends, made by cpack
-  g++ cmake ninja-build pkg-config ccache clang-format dpkg-dev file
+  # toolchain; dpkg-dev (dpkg-shlibdeps) and file: the Debian packages' Depends, made by cpack;
+  # clang and its runtime libraries (libFuzzer, sanitizers) for tools/run-fuzz.sh
+  g++ cmake ninja-build pkg-config ccache clang-format dpkg-dev file clang libclang-rt-14-dev
   # libraries
   libopencv-dev libopenimageio-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
