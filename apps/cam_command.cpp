@@ -119,8 +119,7 @@ void run_cam(const CamArgs& args) {
   StopSignals signals;  // from here on, Ctrl-C and SIGTERM end the session
   video::check_output_name(args.record, "--record");
   if (!args.record.empty()) video::resolve_encoder(args.record, args.codec);
-  args.fractal.map_options();     // --view
-  args.fractal.filter_options();  // --mix, --background
+  video::check_filter_options({.mix = args.fractal.settings().mix});  // --view, --background, --mix
   try {
     video::sequence_path(args.snapshot, 1);
   } catch (const Error& e) {

@@ -103,25 +103,11 @@ void run_texture(const TextureArgs& args) {
   // The frames are written to temporary files and put in place together at the end: a run that
   // fails or is stopped leaves every existing frame file as it was.
   std::vector<OutputFile> written;
-  cv::Mat current = textures.frame(), next;
-  const auto advance = [&] {
-    textures.step();
-    next = textures.frame();
-  };
   for (int frame = 0; frame < args.frames; ++frame) {
-    const int step = frame / args.crossfade, phase = frame % args.crossfade;
-    if (phase == 0 && frame > 0) {
-      if (next.empty()) advance();
-      current = std::move(next);
-      next = cv::Mat();
-    }
-    cv::Mat image = current;
-    if (phase != 0) {
-      if (next.empty()) advance();
-      image = crossfade(current, next, static_cast<double>(phase) / args.crossfade);
-    }
+    const StepPosition position = position_of_frame(frame, args.crossfade);
     OutputFile file(path_of(frame), output);
-    write_image(file, image, metadata(textures.burn_in() + step));
+    write_image(file, textures.frame_at(position),
+                metadata(textures.burn_in() + static_cast<int>(position.step)));
     written.push_back(std::move(file));
   }
   for (OutputFile& file : written) file.commit();

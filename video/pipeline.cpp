@@ -114,10 +114,9 @@ PipelineResult run_pipeline(FrameSource& source, FrameSink& sink, const FrameFil
           decoded.cancel();
           break;
         }
-        Frame out;
-        out.index = frame->index;
-        out.timestamp = frame->timestamp;
-        out.image = filter(*frame);
+        cv::Mat image = filter(*frame);
+        Frame out = std::move(*frame);  // index and time as the source gave them
+        out.image = std::move(image);
         if (!filtered.push(std::move(out))) break;
       }
     } catch (...) {
