@@ -15,11 +15,14 @@
 namespace ifsfx {
 namespace {
 
-// Runs `points` chaos-game points over fixed chunks; `make_worker(worker)` gives each worker its
-// per-thread state, and state.plot(lane, pixel, map) plots one point that lands on `viewport`.
+// Runs `points` chaos-game points over fixed chunks; `make_state()` gives each worker its
+// per-thread state, and state.plot(pixel) plots one point that lands on `viewport` — or, for a
+// State with kColoured, state.plot(pixel, c) with the walker's palette coordinate c (`palette`
+// holds c_n of each map).
 template <class State, class MakeState>
 std::vector<State> scatter(const Ifs& ifs, const Viewport& viewport, std::uint64_t points,
-                           const ChaosGameOptions& options, MakeState&& make_state) {
+                           const ChaosGameOptions& options, MakeState&& make_state,
+                           const std::uint32_t* palette = nullptr) {
   const detail::PixelMapping mapping = detail::pixel_mapping(viewport);
   const detail::MapTable maps(ifs);
   const MapPicker pick(effective_probabilities(ifs));
@@ -33,9 +36,13 @@ std::vector<State> scatter(const Ifs& ifs, const Viewport& viewport, std::uint64
     State& state = states[static_cast<std::size_t>(worker)];
     const std::uint64_t n = detail::chunk_size(points, chunk);
     state.begin_chunk(n);
-    detail::plot_chunk(
-        maps, pick, mapping, options.seed, chunk, n, burn_in,
-        [&](int lane, long pixel, std::uint32_t map) { state.plot(lane, pixel, map); });
+    if constexpr (State::kColoured)
+      detail::plot_chunk_coloured(
+          maps, pick, mapping, options.seed, chunk, n, burn_in, palette,
+          [&](int, long pixel, std::uint32_t, std::uint32_t c) { state.plot(pixel, c); });
+    else
+      detail::plot_chunk(maps, pick, mapping, options.seed, chunk, n, burn_in,
+                         [&](int, long pixel, std::uint32_t) { state.plot(pixel); });
   });
   return states;
 }
@@ -78,19 +85,19 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 // Per-worker hit mask: the attractor as a set needs one byte store per point, no read.
 struct HitState {
   cv::Mat hits;
+  static constexpr bool kColoured = false;
   explicit HitState(const Viewport& v) : hits(cv::Mat::zeros(v.size, CV_8UC1)) {}
   void begin_chunk(std::uint64_t) {}
-  void plot(int, long pixel, std::uint32_t) { hits.data[pixel] = 255; }
+  void plot(long pixel) { hits.data[pixel] = 255; }
 };
 
 // Per-worker visit counts.
 struct CountState {
   cv::Mat counts;
+  static constexpr bool kColoured = false;
   explicit CountState(const Viewport& v) : counts(cv::Mat::zeros(v.size, CV_32SC1)) {}
   void begin_chunk(std::uint64_t) {}
-  void plot(int, long pixel, std::uint32_t) {
-    ++reinterpret_cast<std::uint32_t*>(counts.data)[pixel];
-  }
+  void plot(long pixel) { ++reinterpret_cast<std::uint32_t*>(counts.data)[pixel]; }
 };
 
 // Visit count and palette-coordinate sum per pixel, packed in one 64-bit word so a point costs a
@@ -114,26 +121,22 @@ class MeasureState {
     std::mutex mutex;
   };
 
-  MeasureState(const Viewport& v, const std::vector<std::uint32_t>& map_colours, Totals& totals)
+  static constexpr bool kColoured = true;
+
+  MeasureState(const Viewport& v, Totals& totals)
       : cells_(static_cast<std::size_t>(v.size.area()), 0),
         tiles_((cells_.size() + kTileMask) >> kTileBits),
         queue_(tiles_ * kQueueLength),
         queued_(tiles_, 0),
-        map_colour_(map_colours),
-        totals_(&totals) {
-    palette_.fill(0);
-  }
+        totals_(&totals) {}
   MeasureState(MeasureState&&) = default;
 
   void begin_chunk(std::uint64_t points) {
     if (pending_ + points > kFoldPoints) fold();
     pending_ += points;
   }
-  void plot(int lane, long pixel, std::uint32_t map) {
-    // c_k = (c_{k-1} + c_σk) / 2 in 16-bit fixed point (DESIGN.md §4). Off-raster points do not
-    // reach here, so the palette coordinate skips them: it is a local colour, not an address.
-    std::uint32_t& c = palette_[static_cast<std::size_t>(lane)];
-    c = (c + map_colour_[map]) >> 1;
+  // A point on `pixel` with palette coordinate c (16-bit fixed point, carried by its walker).
+  void plot(long pixel, std::uint32_t c) {
     const std::uint32_t c6 =
         std::min<std::uint32_t>((c + (1u << (15 - kPaletteBits))) >> (16 - kPaletteBits), 63);
     const auto cell = static_cast<std::uint32_t>(pixel);
@@ -166,9 +169,7 @@ class MeasureState {
   std::vector<std::uint64_t> cells_;
   std::uint32_t tiles_;
   std::vector<std::uint32_t> queue_;  // per tile: kQueueLength entries of (c6 << 14 | cell in tile)
-  std::vector<std::uint32_t> queued_;      // entries waiting per tile
-  std::vector<std::uint32_t> map_colour_;  // c_n of each map, 16-bit fixed point
-  std::array<std::uint32_t, detail::kLanes> palette_;
+  std::vector<std::uint32_t> queued_;  // entries waiting per tile
   Totals* totals_;
   std::uint64_t pending_ = 0;
 };
@@ -259,9 +260,9 @@ cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& optio
   totals.colour.assign(area, 0);
 
   const auto start = std::chrono::steady_clock::now();
-  auto states = scatter<MeasureState>(ifs, viewport, points,
-                                      {.seed = options.seed, .threads = options.threads},
-                                      [&] { return MeasureState(viewport, map_colour, totals); });
+  auto states = scatter<MeasureState>(
+      ifs, viewport, points, {.seed = options.seed, .threads = options.threads},
+      [&] { return MeasureState(viewport, totals); }, map_colour.data());
   for (auto& s : states) s.fold();
   const double seconds = seconds_since(start);
 

@@ -132,10 +132,17 @@ inline double start_coordinate(LaneRng& rng) {
 // With kKeys, every lane also keeps the address key of its point (ifs/detail/address_raster.h:
 // each step shifts the key right by `key_bits` and puts the map drawn in the top bits, burn-in
 // included) and the call is plot(lane, pixel, map, key).
-template <bool kKeys, class Plot>
+//
+// With kPalette, every lane also keeps the palette coordinate of its point (DESIGN.md §4),
+// c_k = (c_{k-1} + c_σk) / 2 in 16-bit fixed point with `palette[n]` = c_n, from 0 at the start
+// of the chunk and at every step, burn-in and points off the raster included: like the position,
+// it is the walker's state, so it depends on the lane's own draws only, never on the chunks a
+// worker ran before. The call is plot(lane, pixel, map, c).
+template <bool kKeys, bool kPalette = false, class Plot>
 void walk_chunk_scalar(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
                        std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
-                       int key_bits, Plot&& plot) {
+                       int key_bits, const std::uint32_t* palette, Plot&& plot) {
+  static_assert(!(kKeys && kPalette), "a walk keeps keys or palette coordinates, not both");
   const MapPicker::View pick = picker.view();
   const double *a = maps.a.data(), *b = maps.b.data(), *c = maps.c.data();
   const double *d = maps.d.data(), *e = maps.e.data(), *f = maps.f.data();
@@ -146,6 +153,7 @@ void walk_chunk_scalar(const MapTable& maps, const MapPicker& picker, const Pixe
   LaneRng rng[kLanes];
   double x[kLanes], y[kLanes];
   std::uint64_t key[kLanes] = {};
+  std::uint32_t colour[kLanes] = {};
   for (int lane = 0; lane < kLanes; ++lane) {
     rng[lane].seed(seed, chunk, lane);
     x[lane] = start_coordinate(rng[lane]);
@@ -158,6 +166,7 @@ void walk_chunk_scalar(const MapTable& maps, const MapPicker& picker, const Pixe
     x[lane] = nx;
     y[lane] = ny;
     if constexpr (kKeys) key[lane] = (key[lane] >> key_bits) | (std::uint64_t{n} << key_shift);
+    if constexpr (kPalette) colour[lane] = (colour[lane] + palette[n]) >> 1;
     return n;
   };
   for (int k = 0; k < burn_in; ++k)
@@ -170,6 +179,8 @@ void walk_chunk_scalar(const MapTable& maps, const MapPicker& picker, const Pixe
       const long pixel = static_cast<long>(py) * stride + static_cast<long>(px);
       if constexpr (kKeys) {
         plot(lane, pixel, n, key[lane]);
+      } else if constexpr (kPalette) {
+        plot(lane, pixel, n, colour[lane]);
       } else {
         plot(lane, pixel, n);
       }
@@ -187,7 +198,7 @@ template <class Plot>
 void plot_chunk_scalar(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
                        std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
                        Plot&& plot) {
-  walk_chunk_scalar<false>(maps, picker, mapping, seed, chunk, points, burn_in, 0, plot);
+  walk_chunk_scalar<false>(maps, picker, mapping, seed, chunk, points, burn_in, 0, nullptr, plot);
 }
 
 }  // namespace ifsfx::detail
@@ -198,17 +209,19 @@ namespace ifsfx::detail {
 
 // The walkers of one chunk on the AVX2 loop where the CPU and the IFS allow it, else on the scalar
 // one; both give the same points (and keys, with kKeys).
-template <bool kKeys, class Plot>
+template <bool kKeys, bool kPalette = false, class Plot>
 void walk_chunk(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
                 std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
-                int key_bits, Plot&& plot) {
+                int key_bits, const std::uint32_t* palette, Plot&& plot) {
 #ifdef __AVX2__
   if (maps.a.size() <= kAvx2MaxMaps) {
-    walk_chunk_avx2<kKeys>(maps, picker, mapping, seed, chunk, points, burn_in, key_bits, plot);
+    walk_chunk_avx2<kKeys, kPalette>(maps, picker, mapping, seed, chunk, points, burn_in, key_bits,
+                                     palette, plot);
     return;
   }
 #endif
-  walk_chunk_scalar<kKeys>(maps, picker, mapping, seed, chunk, points, burn_in, key_bits, plot);
+  walk_chunk_scalar<kKeys, kPalette>(maps, picker, mapping, seed, chunk, points, burn_in, key_bits,
+                                     palette, plot);
 }
 
 // The renderers' entry: plot(lane, pixel, map) for every point that lands on the raster.
@@ -216,7 +229,16 @@ template <class Plot>
 void plot_chunk(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
                 std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
                 Plot&& plot) {
-  walk_chunk<false>(maps, picker, mapping, seed, chunk, points, burn_in, 0, plot);
+  walk_chunk<false>(maps, picker, mapping, seed, chunk, points, burn_in, 0, nullptr, plot);
+}
+
+// plot_chunk with the palette coordinates of the walkers (DESIGN.md §4, see walk_chunk_scalar):
+// plot(lane, pixel, map, c), c in 16-bit fixed point, `palette[n]` = c_n of map n.
+template <class Plot>
+void plot_chunk_coloured(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
+                         std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
+                         const std::uint32_t* palette, Plot&& plot) {
+  walk_chunk<false, true>(maps, picker, mapping, seed, chunk, points, burn_in, 0, palette, plot);
 }
 
 // plot_chunk with the address keys of the walkers: plot(lane, pixel, map, key), keys shifted by
@@ -225,7 +247,7 @@ template <class Plot>
 void plot_chunk_keyed(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
                       std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
                       int key_bits, Plot&& plot) {
-  walk_chunk<true>(maps, picker, mapping, seed, chunk, points, burn_in, key_bits, plot);
+  walk_chunk<true>(maps, picker, mapping, seed, chunk, points, burn_in, key_bits, nullptr, plot);
 }
 
 }  // namespace ifsfx::detail

@@ -83,11 +83,17 @@ inline __m256i step(const Tables& t, Lanes4& rng, __m256d& x, __m256d& y) {
 }  // namespace avx2
 
 // walk_chunk_scalar on AVX2, for IFSs of at most kAvx2MaxMaps maps.
-template <bool kKeys, class Plot>
+template <bool kKeys, bool kPalette = false, class Plot>
 void walk_chunk_avx2(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
                      std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
-                     int key_bits, Plot&& plot) {
+                     int key_bits, const std::uint32_t* palette, Plot&& plot) {
   avx2::Tables t;
+  __m256i colour_table = _mm256_setzero_si256();  // c_n of maps 0..3, 32-bit entries
+  if constexpr (kPalette) {
+    alignas(32) std::uint32_t c[8] = {};
+    for (std::size_t i = 0; i < maps.a.size(); ++i) c[i] = palette[i];
+    colour_table = _mm256_load_si256(reinterpret_cast<const __m256i*>(c));
+  }
   {
     const MapPicker::View pick = picker.view();
     alignas(32) std::uint32_t threshold[8] = {}, alias[8] = {};
@@ -114,14 +120,21 @@ void walk_chunk_avx2(const MapTable& maps, const MapPicker& picker, const PixelM
   avx2::Lanes4 rng_lo = avx2::pack(lanes), rng_hi = avx2::pack(lanes + 4);
   __m256d x_lo = _mm256_load_pd(x0), x_hi = _mm256_load_pd(x0 + 4);
   __m256d y_lo = _mm256_load_pd(y0), y_hi = _mm256_load_pd(y0 + 4);
-  // Address keys (kKeys): key = (key >> key_bits) | (map << (64 - key_bits)) per step.
+  // Address keys (kKeys): key = (key >> key_bits) | (map << (64 - key_bits)) per step; with
+  // kPalette the same registers carry the palette coordinates, c = (c + c_n) >> 1 per step.
   __m256i key_lo = _mm256_setzero_si256(), key_hi = _mm256_setzero_si256();
   const __m128i key_right = _mm_cvtsi32_si128(key_bits);
   const __m128i key_left = _mm_cvtsi32_si128(64 - key_bits);
+  const __m256i low32 = _mm256_set1_epi64x(0xffffffff);
   auto advance = [&](avx2::Lanes4& rng, __m256d& x, __m256d& y, __m256i& key) {
     const __m256i n = avx2::step(t, rng, x, y);
     if constexpr (kKeys)
       key = _mm256_or_si256(_mm256_srl_epi64(key, key_right), _mm256_sll_epi64(n, key_left));
+    if constexpr (kPalette) {
+      // The high half of each lane's n is 0, so the permute puts c_0 there: masked off.
+      const __m256i c_n = _mm256_and_si256(_mm256_permutevar8x32_epi32(colour_table, n), low32);
+      key = _mm256_srli_epi64(_mm256_add_epi64(key, c_n), 1);
+    }
     return n;
   };
   for (int k = 0; k < burn_in; ++k) {
@@ -150,11 +163,17 @@ void walk_chunk_avx2(const MapTable& maps, const MapPicker& picker, const PixelM
         reinterpret_cast<__m128i*>(index),
         _mm_add_epi32(_mm_mullo_epi32(_mm256_cvttpd_epi32(py), stride), _mm256_cvttpd_epi32(px)));
     _mm256_store_si256(reinterpret_cast<__m256i*>(map), n);
-    if constexpr (kKeys) {
+    if constexpr (kKeys || kPalette) {
       alignas(32) std::uint64_t keys[4];
       _mm256_store_si256(reinterpret_cast<__m256i*>(keys), key);
       for (int j = 0; j < 4; ++j)
-        if (mask & (1 << j)) plot(first_lane + j, static_cast<long>(index[j]), map[2 * j], keys[j]);
+        if (mask & (1 << j)) {
+          if constexpr (kKeys)
+            plot(first_lane + j, static_cast<long>(index[j]), map[2 * j], keys[j]);
+          else
+            plot(first_lane + j, static_cast<long>(index[j]), map[2 * j],
+                 static_cast<std::uint32_t>(keys[j]));
+        }
     } else {
       for (int j = 0; j < 4; ++j)
         if (mask & (1 << j)) plot(first_lane + j, static_cast<long>(index[j]), map[2 * j]);
@@ -181,7 +200,7 @@ template <class Plot>
 void plot_chunk_avx2(const MapTable& maps, const MapPicker& picker, const PixelMapping& mapping,
                      std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, int burn_in,
                      Plot&& plot) {
-  walk_chunk_avx2<false>(maps, picker, mapping, seed, chunk, points, burn_in, 0, plot);
+  walk_chunk_avx2<false>(maps, picker, mapping, seed, chunk, points, burn_in, 0, nullptr, plot);
 }
 
 }  // namespace ifsfx::detail

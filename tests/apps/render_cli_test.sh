@@ -48,11 +48,18 @@ case "$check" in
     [ "$(ls -A | wc -l)" -eq 6 ] || fail "stray files: $(ls -A)"
     ;;
   same_seed_same_bytes)
-    "$ifsfx" render maple-leaf --size 128x128 --quality 16 --seed 3 --threads 1 -q -o one.png
-    "$ifsfx" render maple-leaf --size 128x128 --quality 16 --seed 3 --threads 2 -q -o two.png
-    "$ifsfx" render maple-leaf --size 128x128 --quality 16 --seed 4 --threads 2 -q -o other.png
-    cmp -s one.png two.png || fail "thread count changed the image"
-    ! cmp -s one.png other.png || fail "the seed does not matter"
+    # 640x480 at 64 points per pixel spans five chunks of the chaos game: with 2 or 3 threads a
+    # worker runs several of them.
+    for preset in barnsley-fern maple-leaf; do
+      for threads in 1 2 3; do
+        "$ifsfx" render $preset --mode measure --size 640x480 --seed 7 --threads $threads -q \
+          -o $preset-$threads.png
+      done
+      cmp -s $preset-1.png $preset-2.png || fail "$preset: 2 threads changed the image"
+      cmp -s $preset-1.png $preset-3.png || fail "$preset: 3 threads changed the image"
+    done
+    "$ifsfx" render maple-leaf --mode measure --size 640x480 --seed 8 --threads 2 -q -o other.png
+    ! cmp -s maple-leaf-2.png other.png || fail "the seed does not matter"
     ;;
   bad_inputs)
     expect_error "unknown preset 'fren'" render fren -o x.png

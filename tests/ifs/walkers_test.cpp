@@ -53,11 +53,11 @@ TEST(walkers, keyed_avx2_loop_gives_the_keys_of_the_scalar_loop) {
   const PixelMapping all{96, 0, -96, 96.5, 97, 97, 97};
   for (const PixelMapping& mapping : {all, PixelMapping{200, -50, -200, 200, 97, 301, 97}}) {
     Keyed scalar, avx2;
-    walk_chunk_scalar<true>(maps, pick, mapping, 42, 3, 10'001, 40, bits,
+    walk_chunk_scalar<true>(maps, pick, mapping, 42, 3, 10'001, 40, bits, nullptr,
                             [&](int lane, long pixel, std::uint32_t map, std::uint64_t key) {
                               scalar.emplace_back(lane, pixel, map, key);
                             });
-    walk_chunk_avx2<true>(maps, pick, mapping, 42, 3, 10'001, 40, bits,
+    walk_chunk_avx2<true>(maps, pick, mapping, 42, 3, 10'001, 40, bits, nullptr,
                           [&](int lane, long pixel, std::uint32_t map, std::uint64_t key) {
                             avx2.emplace_back(lane, pixel, map, key);
                           });
@@ -65,7 +65,7 @@ TEST(walkers, keyed_avx2_loop_gives_the_keys_of_the_scalar_loop) {
     EXPECT_EQ(scalar, avx2);
   }
   Keyed points;
-  walk_chunk_scalar<true>(maps, pick, all, 42, 3, 8'000, 40, bits,
+  walk_chunk_scalar<true>(maps, pick, all, 42, 3, 8'000, 40, bits, nullptr,
                           [&](int lane, long pixel, std::uint32_t map, std::uint64_t key) {
                             points.emplace_back(lane, pixel, map, key);
                           });
@@ -83,6 +83,27 @@ TEST(walkers, keyed_avx2_loop_gives_the_keys_of_the_scalar_loop) {
     }
   }
   EXPECT_GT(checked, 7000u);
+}
+
+// With palette coordinates (measure): the same points and the same c per point as the scalar loop.
+TEST(walkers, coloured_avx2_loop_gives_the_palette_coordinates_of_the_scalar_loop) {
+  using Coloured = std::vector<std::tuple<int, long, std::uint32_t, std::uint32_t>>;
+  const Ifs ifs = testing::barnsley_fern();
+  const MapTable maps(ifs);
+  const MapPicker pick(effective_probabilities(ifs));
+  const std::uint32_t palette[4] = {0, 21845, 43690, 65535};
+  const PixelMapping mapping{64, 32, -64, 600, 97, 301, 97};
+  Coloured scalar, avx2;
+  walk_chunk_scalar<false, true>(maps, pick, mapping, 42, 3, 10'001, 40, 0, palette,
+                                 [&](int lane, long pixel, std::uint32_t map, std::uint32_t c) {
+                                   scalar.emplace_back(lane, pixel, map, c);
+                                 });
+  walk_chunk_avx2<false, true>(maps, pick, mapping, 42, 3, 10'001, 40, 0, palette,
+                               [&](int lane, long pixel, std::uint32_t map, std::uint32_t c) {
+                                 avx2.emplace_back(lane, pixel, map, c);
+                               });
+  ASSERT_GT(scalar.size(), 1000u);
+  EXPECT_EQ(scalar, avx2);
 }
 #endif
 
