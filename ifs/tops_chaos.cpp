@@ -3,6 +3,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "ifs/chaos_game.h"
 #include "ifs/detail/address_raster.h"
@@ -53,22 +54,17 @@ struct Kernel {
   }
 };
 
-// The walkers of render.cpp (walkers.h: AVX2 for up to 4 maps) with address keys, in plane
-// coordinates, plotted by the viewport's pixel mapping.
+// The walkers of render.cpp with address keys (walk_kernels.h), in plane coordinates, plotted by
+// the viewport's pixel mapping. Keys are compared only once full: 64/b symbols in, on top of the
+// usual burn-in.
 struct Walkers {
-  MapTable maps;
-  MapPicker pick;
-  PixelMapping mapping;
-  int bits;
-  int burn_in;
+  WalkTables tables;
+  const WalkKernels& kernels;
 
   Walkers(const Ifs& F, const Viewport& vp)
-      : maps(F),
-        pick(effective_probabilities(F)),
-        mapping(pixel_mapping(vp)),
-        bits(symbol_bits(F.size())),
-        // Keys are compared only once full: 64/b symbols in, on top of the usual burn-in.
-        burn_in(std::max(default_burn_in(F), 64 / bits + 1)) {}
+      : tables(F, vp, std::max(default_burn_in(F), 64 / symbol_bits(F.size()) + 1),
+               symbol_bits(F.size())),
+        kernels(walk_kernels()) {}
 };
 
 // Runs `points` chaos-game points of chunk `chunk` into `buffer`: each pixel keeps the largest
@@ -77,12 +73,11 @@ struct Walkers {
 template <class Cell>
 void run_chunk(const Walkers& w, std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
                Cell* buffer) {
-  constexpr int kCellShift = 64 - 8 * static_cast<int>(sizeof(Cell));
-  plot_chunk_keyed(w.maps, w.pick, w.mapping, seed, chunk, points, w.burn_in, w.bits,
-                   [buffer](int, long pixel, std::uint32_t, std::uint64_t key) {
-                     Cell& cell = buffer[pixel];
-                     cell = std::max<Cell>(cell, static_cast<Cell>(key >> kCellShift) | 1);
-                   });
+  const LaneSeeds seeds = lane_seeds(seed, chunk);
+  if constexpr (sizeof(Cell) == 4)
+    w.kernels.tops32(w.tables.spec(), seeds, points, buffer);
+  else
+    w.kernels.tops64(w.tables.spec(), seeds, points, buffer);
 }
 
 // Holes: unhit pixels with hit neighbours on both sides along some line through them (or, at a

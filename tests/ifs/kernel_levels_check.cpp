@@ -1,0 +1,210 @@
+// kernel_levels_check: runs the chaos-game kernels of every level this CPU supports (ifs/cpu.h)
+// on IFSs of 2 to 17 maps, compares every mode's output with the scalar level byte for byte, and
+// prints each level's speed on one core. Exit status 0 when every level matched, 1 on any
+// mismatch, 2 on a bad argument. It links the kernel objects alone (no OpenCV, no OpenImageIO)
+// and is linked statically where it can be, so it can be copied to another machine and run there:
+//   cmake --build build/release --target kernel_levels_check
+//   scp build/release/tests/ifs/kernel_levels_check elsewhere: && ssh elsewhere
+//   ./kernel_levels_check
+// Options: --points N (points per timed run, default 4194304), --repeat R (timed runs per level
+// and IFS, the best is kept; default 3).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "ifs/cpu.h"
+#include "ifs/detail/walk_kernels.h"
+#include "ifs/rng.h"
+
+namespace {
+
+using namespace ifsfx;
+using namespace ifsfx::detail;
+
+// An IFS as the kernels see it, with its tables.
+struct TestIfs {
+  std::string name;
+  std::vector<double> a, b, c, d, e, f, p;
+  std::vector<std::uint32_t> palette;
+  MapPicker pick;
+
+  WalkSpec spec(double x0, double y0, double x1, double y1, int width, int height) const {
+    WalkSpec w{};
+    w.maps = static_cast<std::uint32_t>(a.size());
+    w.a = a.data(), w.b = b.data(), w.c = c.data(), w.d = d.data(), w.e = e.data(), w.f = f.data();
+    const MapPicker::View v = pick.view();
+    w.pick_n = v.n, w.threshold = v.threshold, w.alias = v.alias;
+    w.sx = width / (x1 - x0), w.ox = -x0 * w.sx;
+    w.sy = -height / (y1 - y0), w.oy = y1 * height / (y1 - y0);
+    w.width = width, w.height = height, w.stride = width;
+    w.burn_in = 40;
+    w.key_bits = 1;
+    while ((1u << w.key_bits) < w.maps) ++w.key_bits;
+    w.palette = palette.data();
+    return w;
+  }
+};
+
+// N maps of factor 0.45, each turned a little more, towards the corners of an N-gon; unequal
+// probabilities so that the alias table has aliases. Its attractor lies in [-1, 1]².
+TestIfs polygon(int n) {
+  TestIfs t;
+  t.name = std::to_string(n) + "-gon";
+  for (int k = 0; k < n; ++k) {
+    const double angle = 2 * 3.141592653589793 * k / n, turn = 0.1 * k;
+    const double s = 0.45, cs = s * std::cos(turn), sn = s * std::sin(turn);
+    t.a.push_back(cs), t.b.push_back(-sn), t.c.push_back(sn), t.d.push_back(cs);
+    t.e.push_back(0.5 * std::cos(angle)), t.f.push_back(0.5 * std::sin(angle));
+    t.p.push_back(1.0 + k % 3);
+    t.palette.push_back(n > 1 ? static_cast<std::uint32_t>(std::lround(65535.0 * k / (n - 1))) : 0);
+  }
+  t.pick = MapPicker(t.p);
+  return t;
+}
+
+bool same_bytes(const void* a, const void* b, std::size_t bytes) {
+  return std::memcmp(a, b, bytes) == 0;
+}
+
+// Every mode of `level` against the scalar level on a raster that cuts the attractor. Returns the
+// modes that differ.
+std::vector<std::string> compare(const TestIfs& ifs, const WalkKernels& k, const WalkKernels& ref) {
+  std::vector<std::string> wrong;
+  const int width = 301, height = 203;
+  const WalkSpec w = ifs.spec(-0.7, -1.05, 1.05, 0.6, width, height);
+  const auto area = static_cast<std::size_t>(width) * height;
+  for (std::uint64_t points : {std::uint64_t{200'003}, std::uint64_t{8}, std::uint64_t{3}}) {
+    const LaneSeeds seeds = lane_seeds(42, points);
+    std::vector<TracedPoint> t1(points), t2(points);
+    const std::size_t n1 = k.trace(w, seeds, points, t1.data());
+    const std::size_t n2 = ref.trace(w, seeds, points, t2.data());
+    if (n1 != n2 || !same_bytes(t1.data(), t2.data(), n1 * sizeof(TracedPoint)))
+      wrong.push_back("trace of " + std::to_string(points) + " points");
+  }
+  const LaneSeeds seeds = lane_seeds(7, 11);
+  const std::uint64_t points = 500'001;
+  {
+    std::vector<std::uint8_t> h1(area), h2(area);
+    k.hits(w, seeds, points, h1.data());
+    ref.hits(w, seeds, points, h2.data());
+    if (h1 != h2) wrong.push_back("hits");
+  }
+  {
+    std::vector<std::uint32_t> c1(area), c2(area);
+    k.counts(w, seeds, points, c1.data());
+    ref.counts(w, seeds, points, c2.data());
+    if (c1 != c2) wrong.push_back("counts");
+    std::vector<std::uint32_t> t1(area), t2(area);
+    k.tops32(w, seeds, points, t1.data());
+    ref.tops32(w, seeds, points, t2.data());
+    if (t1 != t2) wrong.push_back("tops32");
+  }
+  {
+    std::vector<std::uint64_t> t1(area), t2(area);
+    k.tops64(w, seeds, points, t1.data());
+    ref.tops64(w, seeds, points, t2.data());
+    if (t1 != t2) wrong.push_back("tops64");
+  }
+  {
+    auto measure = [&](const WalkKernels& kernels) {
+      const auto tiles = static_cast<std::uint32_t>(
+          (area + (std::size_t{1} << MeasureCells::kTileBits) - 1) >> MeasureCells::kTileBits);
+      std::vector<std::uint64_t> cells(area);
+      std::vector<std::uint32_t> queue(tiles * MeasureCells::kQueueLength), queued(tiles);
+      MeasureCells m{cells.data(), queue.data(), queued.data(), tiles};
+      kernels.measure(w, seeds, points, m);
+      kernels.measure_flush(m);
+      return cells;
+    };
+    if (measure(k) != measure(ref)) wrong.push_back("measure");
+  }
+  return wrong;
+}
+
+// Points per second of the measure kernel on a 1920×1080 raster holding the attractor, best of
+// `repeat` runs of `points` points.
+double measure_rate(const TestIfs& ifs, const WalkKernels& k, std::uint64_t points, int repeat) {
+  const int width = 1920, height = 1080;
+  const WalkSpec w = ifs.spec(-1.8, -1.0, 1.8, 1.0, width, height);
+  const auto area = static_cast<std::size_t>(width) * height;
+  const auto tiles = static_cast<std::uint32_t>(
+      (area + (std::size_t{1} << MeasureCells::kTileBits) - 1) >> MeasureCells::kTileBits);
+  std::vector<std::uint64_t> cells(area);
+  std::vector<std::uint32_t> queue(tiles * MeasureCells::kQueueLength), queued(tiles);
+  MeasureCells m{cells.data(), queue.data(), queued.data(), tiles};
+  double best = 0;
+  for (int r = 0; r < repeat; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    for (std::uint64_t done = 0, chunk = 0; done < points; done += std::uint64_t{1} << 22, ++chunk)
+      k.measure(w, lane_seeds(1, chunk), std::min<std::uint64_t>(points - done, 1 << 22), m);
+    k.measure_flush(m);
+    const double s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    best = std::max(best, static_cast<double>(points) / s);
+  }
+  return best;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::uint64_t points = std::uint64_t{1} << 22;
+  int repeat = 3;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if ((arg == "--points" || arg == "--repeat") && i + 1 < argc) {
+      const long long v = std::atoll(argv[++i]);
+      if (v <= 0) {
+        std::fprintf(stderr, "kernel_levels_check: %s must be positive\n", arg.c_str());
+        return 2;
+      }
+      if (arg == "--points")
+        points = static_cast<std::uint64_t>(v);
+      else
+        repeat = static_cast<int>(v);
+    } else {
+      std::fprintf(stderr, "usage: kernel_levels_check [--points N] [--repeat R]\n");
+      return 2;
+    }
+  }
+  const std::vector<CpuLevel> levels = supported_cpu_levels();
+  std::printf("kernel levels this CPU runs:");
+  for (CpuLevel level : levels) std::printf(" %s", to_string(level));
+  std::printf("\n");
+  std::vector<TestIfs> cases;
+  for (int n : {2, 3, 4, 5, 6, 7, 8, 9, 12, 16, 17}) cases.push_back(polygon(n));
+
+  const WalkKernels& ref = walk_kernels(CpuLevel::scalar);
+  int mismatches = 0;
+  std::printf("%-8s", "maps");
+  for (CpuLevel level : levels)
+    std::printf(" %12s", (std::string(to_string(level)) + " Mpts/s").c_str());
+  std::printf("   (measure kernel, 1 core, 1920x1080, %llu points, best of %d)\n",
+              static_cast<unsigned long long>(points), repeat);
+  for (const TestIfs& ifs : cases) {
+    std::printf("%-8s", ifs.name.c_str());
+    std::string notes;
+    for (CpuLevel level : levels) {
+      const WalkKernels& k = walk_kernels(level);
+      const auto wrong =
+          level == CpuLevel::scalar ? std::vector<std::string>{} : compare(ifs, k, ref);
+      for (const auto& mode : wrong) {
+        notes += std::string(" MISMATCH ") + to_string(level) + " " + mode + ";";
+        ++mismatches;
+      }
+      std::printf(" %12.1f", measure_rate(ifs, k, points, repeat) / 1e6);
+    }
+    std::printf("%s\n", notes.c_str());
+  }
+  if (mismatches > 0) {
+    std::printf("FAIL: %d mode(s) differ from the scalar level\n", mismatches);
+    return 1;
+  }
+  std::printf("PASS: every level gives the scalar bytes in every mode\n");
+  return 0;
+}
