@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
       "V-variable superfractals). `ifsfx COMMAND --help` for each command."};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Show the help of every command");
+  app.set_version_flag("--version", ifsfx::app::version_text,
+                       "Show the version, the build and the kernel level used here, and exit");
   ifsfx::app::add_presets_command(app);
   ifsfx::app::add_render_command(app);
   ifsfx::app::add_apply_command(app);
@@ -40,12 +42,16 @@ int main(int argc, char** argv) {
   ifsfx::app::add_texture_command(app);
   ifsfx::app::add_cam_command(app);
   ifsfx::app::add_filter_command(app);
+  ifsfx::app::add_info_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    std::fputs(e.what(), stdout);
+    return 0;
   } catch (const CLI::ParseError& e) {
     std::fputs(fmt::format("ifsfx: {}\n", e.what()).c_str(), stderr);
     return 2;

@@ -14,6 +14,8 @@ packages=(
   ffmpeg opencv-doc openimageio-tools
   # the window of `ifsfx cam` tested under a virtual X server: Xvfb, xdotool (keys), xwd + netpbm
   xvfb xdotool x11-apps netpbm
+  # the portable binary under other CPU models (qemu-x86_64 -cpu qemu64/Haswell); objdump checks it
+  qemu-user binutils
 )
 
 missing=()
