@@ -1,12 +1,12 @@
 // The chaos-game kernels on AVX-512 (compiled with -march=x86-64-v4 -mno-fma, see
 // ifs/CMakeLists.txt; chosen at run time, ifs/cpu.h): the eight lanes of a chunk in one vector of
-// eight doubles. They compute exactly what walk_scalar computes — same generators, same
-// alias-table draws, same operation order, no fused multiply-add — so every mode gives the bytes of
-// the scalar level. IFSs of up to 16 maps keep their coefficients in registers (one for 8 maps,
-// two for 16), selected per lane by a permute; larger ones run walk_scalar, compiled here for this
-// instruction set.
-// GCC 12's AVX-512 headers initialise their "undefined" vectors from themselves, which -O3 reports
-// as used uninitialised where they are inlined (GCC bug 105593): not a fault of this file.
+// eight doubles (or, where that pays less, as two vectors of four: walk_quads.inl, see walk()).
+// They compute exactly what walk_scalar computes — same generators, same alias-table draws, same
+// operation order, no fused multiply-add — so every mode gives the bytes of the scalar level. IFSs
+// of up to 16 maps keep their coefficients in registers (one for 8 maps, two for 16), selected per
+// lane by a permute; larger ones run walk_scalar, compiled here for this instruction set. GCC 12's
+// AVX-512 headers initialise their "undefined" vectors from themselves, which -O3 reports as used
+// uninitialised where they are inlined (GCC bug 105593): not a fault of this file.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wuninitialized"
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
@@ -21,7 +21,8 @@ namespace {
 #include "ifs/detail/walk_kernels_common.inl"
 
 constexpr CpuLevel kLevel = CpuLevel::avx512;
-constexpr std::uint32_t kVectorMaps = 16;
+
+#include "ifs/detail/walk_quads.inl"
 
 // A table of 16 64-bit entries (maps 0–7, 8–15), indexed per lane.
 struct Table {
@@ -47,14 +48,14 @@ __m512d lookup(const TablePd& t, __m512i index) {
     return _mm512_permutexvar_pd(index, t.lo);
 }
 
-struct Tables {
+struct OctoTables {
   __m512i count;
   Table threshold, alias, palette;  // alias table of MapPicker and c_n, zero-extended
   TablePd a, b, c, d, e, f;
 };
 
-Tables load_tables(const WalkSpec& w) {
-  Tables t;
+OctoTables load_octo_tables(const WalkSpec& w) {
+  OctoTables t;
   alignas(64) std::uint64_t threshold[16] = {}, alias[16] = {}, palette[16] = {};
   for (std::uint64_t i = 0; i < w.pick_n; ++i) threshold[i] = w.threshold[i], alias[i] = w.alias[i];
   for (std::uint32_t i = 0; i < w.maps; ++i) palette[i] = w.palette[i];
@@ -94,7 +95,7 @@ struct Lanes8 {
 
 // One chaos-game step of the eight lanes: the maps drawn (one per 64-bit lane) and the new points.
 template <bool kSixteen>
-__m512i step(const Tables& t, Lanes8& rng, __m512d& x, __m512d& y) {
+__m512i octo_step(const OctoTables& t, Lanes8& rng, __m512d& x, __m512d& y) {
   const __m512i r = rng.next();
   // column = ((r >> 32) · N) >> 32; map = low32(r) < threshold[column] ? column : alias[column]
   const __m512i column = _mm512_srli_epi64(_mm512_mul_epu32(_mm512_srli_epi64(r, 32), t.count), 32);
@@ -114,8 +115,8 @@ __m512i step(const Tables& t, Lanes8& rng, __m512d& x, __m512d& y) {
 }
 
 template <class Sink, bool kSixteen>
-void walk_vector(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, Sink& sink) {
-  const Tables t = load_tables(w);
+void walk_octo(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, Sink& sink) {
+  const OctoTables t = load_octo_tables(w);
   alignas(64) std::uint64_t s[4][kLanes];
   alignas(64) double x0[kLanes], y0[kLanes];
   for (int lane = 0; lane < kLanes; ++lane) {
@@ -132,7 +133,7 @@ void walk_vector(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points
   const __m128i key_right = _mm_cvtsi32_si128(w.key_bits);
   const __m128i key_left = _mm_cvtsi32_si128(64 - w.key_bits);
   auto advance = [&] {
-    const __m512i n = step<kSixteen>(t, rng, x, y);
+    const __m512i n = octo_step<kSixteen>(t, rng, x, y);
     if constexpr (Sink::kKeys)
       key = _mm512_or_si512(_mm512_srl_epi64(key, key_right), _mm512_sll_epi64(n, key_left));
     if constexpr (Sink::kPalette)
@@ -178,12 +179,19 @@ void walk_vector(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points
   if (rest > 0) emit(static_cast<__mmask8>((1u << rest) - 1), advance());
 }
 
+// Where each walker pays, measured with tests/ifs/kernel_levels_check on a Sapphire Rapids core
+// (Mpts/s, AVX2 loop / this one): with up to 4 maps and no keys, the two independent chains of
+// four lanes of walk_quads beat one chain of eight (hits 266/229 with 2 maps, measure 145/130
+// with 3); with keys (tops) the eight lanes win at any size (256/387 with 2 maps), and from 5 maps
+// on in every mode (hits 169/206 with 7 maps, measure 58/102 with 9, tops 69/270 with 9).
 template <class Sink>
 void walk(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, Sink& sink) {
-  if (w.maps <= 8)
-    walk_vector<Sink, false>(w, seeds, points, sink);
-  else if (w.maps <= kVectorMaps)
-    walk_vector<Sink, true>(w, seeds, points, sink);
+  if (w.maps <= 4 && !Sink::kKeys)
+    walk_quads<Sink, false>(w, seeds, points, sink);
+  else if (w.maps <= 8)
+    walk_octo<Sink, false>(w, seeds, points, sink);
+  else if (w.maps <= 16)
+    walk_octo<Sink, true>(w, seeds, points, sink);
   else
     walk_scalar(w, seeds, points, sink);
 }

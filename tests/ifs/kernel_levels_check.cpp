@@ -6,8 +6,8 @@
 //   cmake --build build/release --target kernel_levels_check
 //   scp build/release/tests/ifs/kernel_levels_check elsewhere: && ssh elsewhere
 //   ./kernel_levels_check
-// Options: --points N (points per timed run, default 4194304), --repeat R (timed runs per level
-// and IFS, the best is kept; default 3).
+// Options: --points N (points per timed run, default 4194304), --repeat R (timed runs per level,
+// mode and IFS, the best is kept; default 3).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -126,23 +126,40 @@ std::vector<std::string> compare(const TestIfs& ifs, const WalkKernels& k, const
   return wrong;
 }
 
-// Points per second of the measure kernel on a 1920×1080 raster holding the attractor, best of
-// `repeat` runs of `points` points.
-double measure_rate(const TestIfs& ifs, const WalkKernels& k, std::uint64_t points, int repeat) {
+enum class Mode { hits, tops, measure };
+const char* const kModeNames[] = {"hits", "tops", "measure"};
+
+// Points per second of one kernel (hits, 64-bit tops or measure) on a 1920×1080 raster holding
+// the attractor, best of `repeat` runs of `points` points in chunks of 2^22.
+double rate(const TestIfs& ifs, const WalkKernels& k, Mode mode, std::uint64_t points, int repeat) {
   const int width = 1920, height = 1080;
-  const WalkSpec w = ifs.spec(-1.8, -1.0, 1.8, 1.0, width, height);
+  WalkSpec w = ifs.spec(-1.8, -1.0, 1.8, 1.0, width, height);
   const auto area = static_cast<std::size_t>(width) * height;
   const auto tiles = static_cast<std::uint32_t>(
       (area + (std::size_t{1} << MeasureCells::kTileBits) - 1) >> MeasureCells::kTileBits);
   std::vector<std::uint64_t> cells(area);
+  std::vector<std::uint8_t> hits(area);
   std::vector<std::uint32_t> queue(tiles * MeasureCells::kQueueLength), queued(tiles);
   MeasureCells m{cells.data(), queue.data(), queued.data(), tiles};
   double best = 0;
   for (int r = 0; r < repeat; ++r) {
     const auto start = std::chrono::steady_clock::now();
-    for (std::uint64_t done = 0, chunk = 0; done < points; done += std::uint64_t{1} << 22, ++chunk)
-      k.measure(w, lane_seeds(1, chunk), std::min<std::uint64_t>(points - done, 1 << 22), m);
-    k.measure_flush(m);
+    for (std::uint64_t done = 0, chunk = 0; done < points;
+         done += std::uint64_t{1} << 22, ++chunk) {
+      const std::uint64_t n = std::min<std::uint64_t>(points - done, std::uint64_t{1} << 22);
+      switch (mode) {
+        case Mode::hits:
+          k.hits(w, lane_seeds(1, chunk), n, hits.data());
+          break;
+        case Mode::tops:
+          k.tops64(w, lane_seeds(1, chunk), n, cells.data());
+          break;
+        case Mode::measure:
+          k.measure(w, lane_seeds(1, chunk), n, m);
+          break;
+      }
+    }
+    if (mode == Mode::measure) k.measure_flush(m);
     const double s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     best = std::max(best, static_cast<double>(points) / s);
@@ -181,25 +198,26 @@ int main(int argc, char** argv) {
 
   const WalkKernels& ref = walk_kernels(CpuLevel::scalar);
   int mismatches = 0;
-  std::printf("%-8s", "maps");
-  for (CpuLevel level : levels)
-    std::printf(" %12s", (std::string(to_string(level)) + " Mpts/s").c_str());
-  std::printf("   (measure kernel, 1 core, 1920x1080, %llu points, best of %d)\n",
+  for (const TestIfs& ifs : cases)
+    for (CpuLevel level : levels)
+      if (level != CpuLevel::scalar)
+        for (const auto& mode : compare(ifs, walk_kernels(level), ref)) {
+          std::printf("MISMATCH: %s, %s kernels, %s\n", ifs.name.c_str(), to_string(level),
+                      mode.c_str());
+          ++mismatches;
+        }
+  std::printf("Mpts/s on 1 core, 1920x1080 raster, %llu points, best of %d\n",
               static_cast<unsigned long long>(points), repeat);
-  for (const TestIfs& ifs : cases) {
-    std::printf("%-8s", ifs.name.c_str());
-    std::string notes;
-    for (CpuLevel level : levels) {
-      const WalkKernels& k = walk_kernels(level);
-      const auto wrong =
-          level == CpuLevel::scalar ? std::vector<std::string>{} : compare(ifs, k, ref);
-      for (const auto& mode : wrong) {
-        notes += std::string(" MISMATCH ") + to_string(level) + " " + mode + ";";
-        ++mismatches;
-      }
-      std::printf(" %12.1f", measure_rate(ifs, k, points, repeat) / 1e6);
+  for (Mode mode : {Mode::hits, Mode::tops, Mode::measure}) {
+    std::printf("%-8s", kModeNames[static_cast<int>(mode)]);
+    for (CpuLevel level : levels) std::printf(" %8s", to_string(level));
+    std::printf("\n");
+    for (const TestIfs& ifs : cases) {
+      std::printf("%-8s", ifs.name.c_str());
+      for (CpuLevel level : levels)
+        std::printf(" %8.1f", rate(ifs, walk_kernels(level), mode, points, repeat) / 1e6);
+      std::printf("\n");
     }
-    std::printf("%s\n", notes.c_str());
   }
   if (mismatches > 0) {
     std::printf("FAIL: %d mode(s) differ from the scalar level\n", mismatches);
