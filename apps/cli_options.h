@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cctype>
+#include <cstdio>
 #include <optional>
 #include <string>
 
@@ -58,13 +59,22 @@ inline std::optional<Box> view_option(const std::string& text, const std::string
   return parse_box(text, what);
 }
 
+// load_ifs, and its warnings (a Fractint entry accepted because it contracts on average) printed
+// on stderr, one line each: "ifsfx: warning: ...".
+inline IfsPreset load_preset(const std::string& spec, const ValidateOptions& options = {}) {
+  IfsPreset preset = load_ifs(spec, options);
+  for (const std::string& warning : preset.warnings)
+    std::fputs(fmt::format("ifsfx: warning: {}\n", warning).c_str(), stderr);
+  return preset;
+}
+
 // The colouring IFS G for a drawing IFS F (the --colouring option): default_colouring(N) for an
 // empty spec, else the named preset fitted to the unit square. Tilings that contract only over
 // two steps (square-tiling-2/3) are accepted; a map count other than F's is refused.
 inline Ifs colouring_option(const std::string& spec, const Ifs& F,
                             const std::string& what = "--colouring") {
   if (spec.empty()) return default_colouring(F.size());
-  Ifs G = fit_to_unit_square(load_ifs(spec, {.allow_expansive = true}).ifs);
+  Ifs G = fit_to_unit_square(load_preset(spec, {.allow_expansive = true}).ifs);
   if (G.size() != F.size())
     throw Error(ErrorKind::invalid_ifs,
                 fmt::format("{} {}: must have as many maps as {} (got {} for {})", what, spec,

@@ -122,14 +122,14 @@ void run_filter(const FilterArgs& args) {
                 "filter: give either -o OUTPUT or --preview (got both or neither)");
   if (args.preview) video::require_display("--preview", "write a file with -o instead");
   const video::FrameRange range =
-      args.frames.empty() ? video::FrameRange{} : video::parse_frame_range(args.frames);
+      args.frames.empty() ? video::FrameRange{} : video::parse_frame_range(args.frames, "--frames");
   video::FilterOptions filter_options = args.fractal.filter_options();
   filter_options.interpolation = args.interpolation;
   // Cheap checks of the output first: an unusable output fails before any decoding.
   if (!args.output.empty() && !video::is_sequence_pattern(args.output))
     video::resolve_encoder(args.output, args.codec);
 
-  const IfsPreset F = load_ifs(args.fractal.preset);
+  const IfsPreset F = load_preset(args.fractal.preset);
   const Ifs G = colouring_option(args.fractal.colouring, F.ifs);
 
   video::silence_libav_log();

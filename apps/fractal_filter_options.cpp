@@ -23,7 +23,7 @@ video::FilterOptions FractalFilterArgs::filter_options() const {
     throw Error(ErrorKind::invalid_argument, fmt::format("--mix: must be in [0, 1] (got {})", mix));
   video::FilterOptions o;
   o.mix = mix;
-  o.background = video::parse_background(background);
+  o.background = video::parse_background(background, "--background");
   o.threads = threads;
   return o;
 }

@@ -8,7 +8,7 @@ namespace ifsfx::app {
 LiveFilter::LiveFilter(const FractalFilterArgs& args, int fade_frames, const std::string& preset,
                        cv::Size size, bool animate)
     : args_(args), fade_frames_(fade_frames), size_(size) {
-  const IfsPreset F = load_ifs(preset);
+  const IfsPreset F = load_preset(preset);
   F_ = F.ifs;
   name_ = F.ifs.name.empty() ? preset : F.ifs.name;
   G_ = colouring_option(args.colouring, F_);

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "apps/cli_errors.h"
 #include "apps/commands.h"
 #include "ifs/error.h"
 
@@ -56,7 +57,7 @@ int main(int argc, char** argv) {
     std::fputs(fmt::format("ifsfx: {}\n", e.what()).c_str(), stderr);
     return 2;
   } catch (const ifsfx::Error& e) {
-    std::fputs(fmt::format("ifsfx: {}\n", e.what()).c_str(), stderr);
+    std::fputs(fmt::format("ifsfx: {}\n", ifsfx::app::with_flag_names(e.what())).c_str(), stderr);
     return exit_code(e.kind());
   } catch (const std::exception& e) {
     std::fputs(fmt::format("ifsfx: internal error: {}\n", e.what()).c_str(), stderr);

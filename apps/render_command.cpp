@@ -81,7 +81,7 @@ void run_render(const RenderArgs& args) {
   check_mode_options(args);
   const Rgb background = colour_option(args.background.empty() ? "black" : args.background);
   check_writable_image(args.output);
-  const IfsPreset preset = load_ifs(args.preset, {.allow_expansive = args.allow_expansive});
+  const IfsPreset preset = load_preset(args.preset, {.allow_expansive = args.allow_expansive});
 
   RenderOptions options;
   options.view = view_option(args.view);

@@ -58,7 +58,7 @@ cv::Mat shape_mask(const cv::Mat& image, const TargetOptions& options, const std
         fmt::format("{}: images of 1 to 4 channels are supported (got {})", what, channels));
   if (options.threshold && !(*options.threshold >= 0 && *options.threshold <= 1))
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("--threshold: must be in [0, 1] (got {})", *options.threshold));
+                fmt::format("threshold: must be in [0, 1] (got {})", *options.threshold));
 
   const bool has_alpha = channels == 2 || channels == 4;
   cv::Mat mask;
@@ -111,7 +111,7 @@ cv::Mat working_raster(const cv::Mat& mask, const FrameOptions& options) {
   if (options.size < 8 || options.size > 2048)
     throw Error(
         ErrorKind::invalid_argument,
-        fmt::format("--size: the working raster's side must be in 8..2048 (got {})", options.size));
+        fmt::format("size: the working raster's side must be in 8..2048 (got {})", options.size));
   if (!(options.margin >= 0 && options.margin < 0.5))
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("margin: must be in [0, 0.5) (got {})", options.margin));

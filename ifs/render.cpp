@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
+#include "ifs/detail/preconditions.h"
 #include "ifs/detail/walkers.h"
 #include "ifs/error.h"
 #include "ifs/parallel.h"
@@ -39,20 +40,21 @@ int burn_in_of(const Ifs& ifs, const ChaosGameOptions& options) {
   return options.burn_in > 0 ? options.burn_in : default_burn_in(ifs);
 }
 
+// The chaos-game family's checks (detail::check_chaos_game), then the renderers' own options.
 void check_render_inputs(const Ifs& ifs, cv::Size size, const RenderOptions& options) {
-  check_size(size);
-  if (ifs.maps.empty()) throw Error(ErrorKind::invalid_ifs, "ifs: needs at least one map (got 0)");
+  detail::check_chaos_game({.ifs = ifs,
+                            .threads = options.threads,
+                            .quality = options.quality,
+                            .size = size,
+                            .view = options.view,
+                            .margin = options.margin});
   if (options.supersample < 1 || options.supersample > 16)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("--supersample: must be 1 to 16 (got {})", options.supersample));
-  check_size(size * options.supersample, "--size × --supersample");
-  if (!(options.quality > 0) || !std::isfinite(options.quality))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("--quality: must be a positive number of points per pixel (got {})",
-                            options.quality));
+                fmt::format("supersample: must be 1 to 16 (got {})", options.supersample));
+  check_size(size * options.supersample, "size × supersample");
   if (!(options.gamma > 0) || !std::isfinite(options.gamma))
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("--gamma: must be positive (got {})", options.gamma));
+                fmt::format("gamma: must be positive (got {})", options.gamma));
   if (!(options.brightness > 0) || !std::isfinite(options.brightness))
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("brightness: must be positive (got {})", options.brightness));
@@ -193,7 +195,11 @@ Rgb palette_ramp(double t) {
 
 cv::Mat visit_counts(const Ifs& ifs, const Viewport& viewport, std::uint64_t points,
                      const ChaosGameOptions& options) {
-  check_size(viewport.size);
+  detail::check_chaos_game({.ifs = ifs,
+                            .threads = options.threads,
+                            .burn_in = options.burn_in,
+                            .size = viewport.size,
+                            .view = viewport.view});
   const detail::WalkTables walk(ifs, viewport, burn_in_of(ifs, options));
   auto states = scatter<CountState>(walk, points, options, [&] { return CountState(viewport); });
   cv::Mat total = states[0].counts;

@@ -5,18 +5,20 @@
 #include <fmt/format.h>
 
 #include "ifs/detail/address_raster.h"
+#include "ifs/detail/preconditions.h"
 #include "ifs/error.h"
 #include "ifs/render.h"
 
 namespace ifsfx {
 
 TopSymbols top_symbols(const Ifs& F, cv::Size size, const TopsOptions& options) {
-  check_size(size);
-  validate(F, F.name.empty() ? "IFS" : F.name, {.allow_expansive = true});
-  if (!(options.quality > 0) || !std::isfinite(options.quality))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("quality: must be a positive number of points per pixel (got {})",
-                            options.quality));
+  detail::check_chaos_game({.ifs = F,
+                            .contracting = true,
+                            .threads = options.threads,
+                            .quality = options.quality,
+                            .size = size,
+                            .view = options.view,
+                            .margin = options.margin});
   const Viewport viewport{options.view
                               ? *options.view
                               : fit_view(attractor_bounds(F, options.seed), size, options.margin),

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "ifs/chaos_game.h"
+#include "ifs/detail/preconditions.h"
 #include "ifs/error.h"
 
 namespace ifsfx {
@@ -34,6 +35,7 @@ Box bounds_by_sampling(const Ifs& ifs, std::uint64_t seed) {
 }  // namespace
 
 Box attractor_bounds(const Ifs& ifs, std::uint64_t seed) {
+  detail::check_chaos_game({.ifs = ifs});
   const double s = ifs.contraction();
   if (!(s < 1)) return bounds_by_sampling(ifs, seed);
 

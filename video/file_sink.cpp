@@ -51,7 +51,7 @@ const AVCodec* find_encoder(const std::filesystem::path& path, const AVOutputFor
     }
     if (encoder == nullptr || encoder->type != AVMEDIA_TYPE_VIDEO)
       throw Error(ErrorKind::unsupported,
-                  fmt::format("--codec: unknown video encoder (got '{}'; `ffmpeg -encoders` lists "
+                  fmt::format("codec: unknown video encoder (got '{}'; `ffmpeg -encoders` lists "
                               "them)",
                               codec));
   }

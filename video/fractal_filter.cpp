@@ -65,7 +65,7 @@ void fill_background(const cv::Mat& original, const FilterOptions& options, cv::
 
 void check_mix(double mix) {
   if (!(mix >= 0 && mix <= 1))
-    throw Error(ErrorKind::invalid_argument, fmt::format("--mix: must be in [0, 1] (got {})", mix));
+    throw Error(ErrorKind::invalid_argument, fmt::format("mix: must be in [0, 1] (got {})", mix));
 }
 
 }  // namespace

@@ -18,9 +18,9 @@ struct Background {
   cv::Scalar colour = cv::Scalar::all(0);  // BGR, 0..255 (kind == colour)
 };
 
-// Parses --background: "black", "original", "#rrggbb" or "R,G,B" (0..255 each); throws
+// Parses a background: "black", "original", "#rrggbb" or "R,G,B" (0..255 each); throws
 // Error{parse} naming `what`.
-Background parse_background(const std::string& text, const std::string& what = "--background");
+Background parse_background(const std::string& text, const std::string& what = "background");
 
 struct FilterOptions {
   Interpolation interpolation = Interpolation::bilinear;

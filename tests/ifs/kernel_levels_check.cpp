@@ -88,28 +88,18 @@ std::vector<std::string> compare(const TestIfs& ifs, const WalkKernels& k, const
   }
   const LaneSeeds seeds = lane_seeds(7, 11);
   const std::uint64_t points = 500'001;
-  {
-    std::vector<std::uint8_t> h1(area), h2(area);
-    k.hits(w, seeds, points, h1.data());
-    ref.hits(w, seeds, points, h2.data());
-    if (h1 != h2) wrong.push_back("hits");
-  }
-  {
-    std::vector<std::uint32_t> c1(area), c2(area);
-    k.counts(w, seeds, points, c1.data());
-    ref.counts(w, seeds, points, c2.data());
-    if (c1 != c2) wrong.push_back("counts");
-    std::vector<std::uint32_t> t1(area), t2(area);
-    k.tops32(w, seeds, points, t1.data());
-    ref.tops32(w, seeds, points, t2.data());
-    if (t1 != t2) wrong.push_back("tops32");
-  }
-  {
-    std::vector<std::uint64_t> t1(area), t2(area);
-    k.tops64(w, seeds, points, t1.data());
-    ref.tops64(w, seeds, points, t2.data());
-    if (t1 != t2) wrong.push_back("tops64");
-  }
+  // One raster-writing kernel of both levels on zeroed rasters of Cell: the same bytes?
+  const auto same_raster = [&](auto kernel, auto cell, const char* mode) {
+    using Cell = decltype(cell);
+    std::vector<Cell> mine(area), scalar(area);
+    (k.*kernel)(w, seeds, points, mine.data());
+    (ref.*kernel)(w, seeds, points, scalar.data());
+    if (mine != scalar) wrong.push_back(mode);
+  };
+  same_raster(&WalkKernels::hits, std::uint8_t{}, "hits");
+  same_raster(&WalkKernels::counts, std::uint32_t{}, "counts");
+  same_raster(&WalkKernels::tops32, std::uint32_t{}, "tops32");
+  same_raster(&WalkKernels::tops64, std::uint64_t{}, "tops64");
   {
     auto measure = [&](const WalkKernels& kernels) {
       const auto tiles = static_cast<std::uint32_t>(

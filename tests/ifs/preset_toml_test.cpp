@@ -78,7 +78,7 @@ probabilites = [1]
 )",
                ErrorKind::parse,
                "fern.toml:3: unknown key 'probabilites' "
-               "(known: name, description, maps, probabilities, colours)");
+               "(known: name, description, maps, probabilities, colours, allow_expansive)");
 }
 
 TEST(parse_ifs_toml, a_toml_syntax_error_is_reported_with_its_line) {

@@ -80,7 +80,7 @@ TEST(render, rejects_absurd_sizes_and_options) {
     FAIL() << "no error";
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
-    EXPECT_STREQ(e.what(), "--size: each side must be 1 to 32768 pixels (got 0x100)");
+    EXPECT_STREQ(e.what(), "size: each side must be 1 to 32768 pixels (got 0x100)");
   }
   EXPECT_THROW(render_attractor(fern, {40000, 10}), Error);
   EXPECT_THROW(render_measure(fern, {64, 64}, {.quality = -1}), Error);

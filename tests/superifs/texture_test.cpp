@@ -226,15 +226,15 @@ TEST(texture, rejects_bad_options_with_the_option_named) {
       EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
     }
   };
-  kind_and_text({.count = 2, .buffer = 2}, "--buffer: must be 1..2 for V = 2 (got 3)");
-  kind_and_text({.mode = TextureMode::steal}, "--source");
-  kind_and_text({.count = 0}, "-V");
+  kind_and_text({.count = 2, .buffer = 2}, "buffer: must be 0..1 for count = 2 (got 2)");
+  kind_and_text({.mode = TextureMode::steal}, "source: steal mode needs a source image");
+  kind_and_text({.count = 0}, "count: the number of buffers must be ≥ 1 (got 0)");
   try {
     parse_texture_mode("stealing");
     ADD_FAILURE();
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::parse);
-    EXPECT_STREQ(e.what(), "--mode: must be attractor, tops, steal or measure (got 'stealing')");
+    EXPECT_STREQ(e.what(), "mode: must be attractor, tops, steal or measure (got 'stealing')");
   }
   EXPECT_EQ(parse_texture_mode("measure"), TextureMode::measure);
 }

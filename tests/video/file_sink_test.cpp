@@ -85,9 +85,8 @@ TEST(file_sink, unknown_codec_and_container_are_refused) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::unsupported);
-    EXPECT_STREQ(
-        e.what(),
-        "--codec: unknown video encoder (got 'nosuchcodec'; `ffmpeg -encoders` lists them)");
+    EXPECT_STREQ(e.what(),
+                 "codec: unknown video encoder (got 'nosuchcodec'; `ffmpeg -encoders` lists them)");
   }
   try {
     resolve_encoder("x.qqq", "");
