@@ -33,7 +33,7 @@ struct TablePd {
 };
 
 template <bool kSixteen>
-__m512i lookup(const Table& t, __m512i index) {
+[[gnu::always_inline]] inline __m512i lookup(const Table& t, __m512i index) {
   if constexpr (kSixteen)
     return _mm512_permutex2var_epi64(t.lo, index, t.hi);
   else
@@ -41,7 +41,7 @@ __m512i lookup(const Table& t, __m512i index) {
 }
 
 template <bool kSixteen>
-__m512d lookup(const TablePd& t, __m512i index) {
+[[gnu::always_inline]] inline __m512d lookup(const TablePd& t, __m512i index) {
   if constexpr (kSixteen)
     return _mm512_permutex2var_pd(t.lo, index, t.hi);
   else
@@ -80,7 +80,7 @@ OctoTables load_octo_tables(const WalkSpec& w) {
 struct Lanes8 {
   __m512i s0, s1, s2, s3;
 
-  __m512i next() {
+  [[gnu::always_inline]] __m512i next() {
     const __m512i result = _mm512_add_epi64(s0, s3);
     const __m512i t = _mm512_slli_epi64(s1, 17);
     s2 = _mm512_xor_si512(s2, s0);
@@ -95,7 +95,8 @@ struct Lanes8 {
 
 // One chaos-game step of the eight lanes: the maps drawn (one per 64-bit lane) and the new points.
 template <bool kSixteen>
-__m512i octo_step(const OctoTables& t, Lanes8& rng, __m512d& x, __m512d& y) {
+[[gnu::always_inline]] inline __m512i octo_step(const OctoTables& t, Lanes8& rng, __m512d& x,
+                                                __m512d& y) {
   const __m512i r = rng.next();
   // column = ((r >> 32) · N) >> 32; map = low32(r) < threshold[column] ? column : alias[column]
   const __m512i column = _mm512_srli_epi64(_mm512_mul_epu32(_mm512_srli_epi64(r, 32), t.count), 32);

@@ -12,7 +12,7 @@
 
 // xoshiro256+ (Blackman and Vigna): plain 64-bit shifts, xors and adds, so that four or eight
 // lanes run in one vector register and this scalar step is their bit-exact reference.
-inline std::uint64_t xoshiro_next(std::uint64_t* s) {
+[[gnu::always_inline]] inline std::uint64_t xoshiro_next(std::uint64_t* s) {
   const std::uint64_t result = s[0] + s[3];
   const std::uint64_t t = s[1] << 17;
   s[2] ^= s[0];
@@ -31,7 +31,7 @@ inline double unit_interval(std::uint64_t r) {
 
 // Walker's alias method (MapPicker): the high 32 bits pick a column, the low 32 bits decide
 // between the column and its alias.
-inline std::uint32_t pick_map(const WalkSpec& w, std::uint64_t r) {
+[[gnu::always_inline]] inline std::uint32_t pick_map(const WalkSpec& w, std::uint64_t r) {
   const auto column = static_cast<std::uint32_t>(((r >> 32) * w.pick_n) >> 32);
   return static_cast<std::uint32_t>(r) < w.threshold[column] ? column : w.alias[column];
 }

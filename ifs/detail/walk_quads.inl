@@ -7,13 +7,14 @@
 // It computes exactly what walk_scalar computes — same generators, same alias-table draws, same
 // operation order, no fused multiply-add — so every mode gives the bytes of the scalar level. IFSs
 // of up to 8 maps keep their coefficients in registers, selected per lane by permutes instead of
-// gathers: walk_quads<Sink, false> for up to 4 maps, <Sink, true> for 5 to 8.
+// gathers: walk_quads<Sink, false> for up to 4 maps, <Sink, true> for 5 to 8. The per-step helpers
+// are always inlined: out of line, each step pays a call and spills its vectors to memory.
 
 // xoshiro256+ of four lanes, word k of each lane in s_k (xoshiro_next, four at a time).
 struct Lanes4 {
   __m256i s0, s1, s2, s3;
 
-  __m256i next() {
+  [[gnu::always_inline]] __m256i next() {
     const __m256i result = _mm256_add_epi64(s0, s3);
     const __m256i t = _mm256_slli_epi64(s1, 17);
     s2 = _mm256_xor_si256(s2, s0);
@@ -42,7 +43,8 @@ struct Coefficient {
 // Per-lane coefficient k[n]: a permute of 32-bit halves (2n, 2n+1) of the register holding map n;
 // for IFSs of more than four maps, both registers permuted and the lane's one blended in.
 template <bool kEight>
-__m256d select_coefficient(const Coefficient& k, __m256i pair_index, __m256d upper) {
+[[gnu::always_inline]] inline __m256d select_coefficient(const Coefficient& k, __m256i pair_index,
+                                                         __m256d upper) {
   const __m256d lo = _mm256_castps_pd(_mm256_permutevar8x32_ps(_mm256_castpd_ps(k.lo), pair_index));
   if constexpr (!kEight) {
     return lo;
@@ -81,7 +83,8 @@ QuadTables load_quad_tables(const WalkSpec& w) {
 // One chaos-game step of four lanes: the maps drawn (one per 64-bit lane, in its low half) and
 // the new points.
 template <bool kEight>
-__m256i quad_step(const QuadTables& t, Lanes4& rng, __m256d& x, __m256d& y) {
+[[gnu::always_inline]] inline __m256i quad_step(const QuadTables& t, Lanes4& rng, __m256d& x,
+                                                __m256d& y) {
   const __m256i r = rng.next();
   // column = ((r >> 32) · N) >> 32; map = low32(r) < threshold[column] ? column : alias[column]
   const __m256i column = _mm256_srli_epi64(_mm256_mul_epu32(_mm256_srli_epi64(r, 32), t.count), 32);
