@@ -26,6 +26,8 @@ constexpr std::pair<std::string_view, std::string_view> kFlags[] = {
     {"frames", "--frames"},
     {"background", "--background"},
     {"mix", "--mix"},
+    {"keyframe interval", "--keyframe-interval"},
+    {"colouring", "--colouring"},
     {"drift amount", "--drift-amount"},
     {"drift speed", "--drift-speed"},
     {"codec", "--codec"},

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <opencv2/core.hpp>
@@ -59,27 +60,24 @@ inline std::optional<Box> view_option(const std::string& text, const std::string
   return parse_box(text, what);
 }
 
-// load_ifs, and its warnings (a Fractint entry accepted because it contracts on average) printed
-// on stderr, one line each: "ifsfx: warning: ...".
+// A library's warnings (IfsPreset::warnings: a Fractint entry accepted because it contracts on
+// average) on stderr, one line each: "ifsfx: warning: ...".
+inline void print_warnings(const std::vector<std::string>& warnings) {
+  for (const std::string& warning : warnings)
+    std::fputs(fmt::format("ifsfx: warning: {}\n", warning).c_str(), stderr);
+}
+
+// load_ifs, and its warnings printed.
 inline IfsPreset load_preset(const std::string& spec, const ValidateOptions& options = {}) {
   IfsPreset preset = load_ifs(spec, options);
-  for (const std::string& warning : preset.warnings)
-    std::fputs(fmt::format("ifsfx: warning: {}\n", warning).c_str(), stderr);
+  print_warnings(preset.warnings);
   return preset;
 }
 
-// The colouring IFS G for a drawing IFS F (the --colouring option): default_colouring(N) for an
-// empty spec, else the named preset fitted to the unit square. Tilings that contract only over
-// two steps (square-tiling-2/3) are accepted; a map count other than F's is refused.
+// The colouring IFS G for a drawing IFS F (the --colouring option): see load_colouring.
 inline Ifs colouring_option(const std::string& spec, const Ifs& F,
                             const std::string& what = "--colouring") {
-  if (spec.empty()) return default_colouring(F.size());
-  Ifs G = fit_to_unit_square(load_preset(spec, {.allow_expansive = true}).ifs);
-  if (G.size() != F.size())
-    throw Error(ErrorKind::invalid_ifs,
-                fmt::format("{} {}: must have as many maps as {} (got {} for {})", what, spec,
-                            F.name, G.size(), F.size()));
-  return G;
+  return load_colouring(spec, F, what);
 }
 
 }  // namespace ifsfx::app
