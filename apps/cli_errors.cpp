@@ -37,6 +37,13 @@ constexpr std::pair<std::string_view, std::string_view> kFlags[] = {
 // Named inside messages, not as their subject.
 constexpr std::pair<std::string_view, std::string_view> kInside[] = {
     {"allow_expansive accepts it", "--allow-expansive accepts it"},
+    {"(raise max_seconds)", "(raise --max-seconds)"},
+    {"(try invert or threshold)", "(try --invert or --threshold)"},
+    {"try a larger size)", "try a larger --size)"},
+    {"; skip_gaps goes on without", "; --skip-gaps goes on without"},
+    {"(pick one with codec)", "(pick one with --codec)"},
+    {"(timing keep); use .mkv or .mp4, or timing constant",
+     "(--fps-mode vfr); use .mkv or .mp4, or --fps-mode cfr"},
 };
 
 }  // namespace

@@ -187,7 +187,7 @@ FitResult fit(const cv::Mat& target, const FitOptions& options) {
   }
   if (result.ifs.maps.empty())
     throw Error(ErrorKind::invalid_argument,
-                "fit: no contractive IFS was found within the budget (raise --max-seconds)");
+                "fit: no contractive IFS was found within the budget (raise max_seconds)");
   result.seconds = seconds_since_start();
   return result;
 }

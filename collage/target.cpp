@@ -93,12 +93,12 @@ cv::Mat shape_mask(const cv::Mat& image, const TargetOptions& options, const std
   const int inside = cv::countNonZero(mask);
   if (inside == 0)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("{}: the shape is empty: no pixel has {} (try --invert or --threshold)",
+                fmt::format("{}: the shape is empty: no pixel has {} (try invert or threshold)",
                             what, rule));
   if (inside == static_cast<int>(mask.total()))
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("{}: the shape is the whole image: every pixel has {} (try --invert "
-                            "or --threshold)",
+                fmt::format("{}: the shape is the whole image: every pixel has {} (try invert or "
+                            "threshold)",
                             what, rule));
   return mask;
 }
@@ -141,7 +141,7 @@ cv::Mat working_raster(const cv::Mat& mask, const FrameOptions& options) {
   if (cv::countNonZero(raster) == 0)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("target: the shape vanishes on a {}×{} working raster (it is too thin "
-                            "or too small; try a larger --size)",
+                            "or too small; try a larger size)",
                             options.size, options.size));
   return raster;
 }

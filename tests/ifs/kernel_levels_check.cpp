@@ -1,8 +1,10 @@
 // kernel_levels_check: runs the chaos-game kernels of every level this CPU supports (ifs/cpu.h)
 // on IFSs of 2 to 17 maps, compares every mode's output with the scalar level byte for byte, and
-// prints each level's speed on one core. Exit status 0 when every level matched, 1 on any
-// mismatch, 2 on a bad argument. It links the kernel objects alone (no OpenCV, no OpenImageIO)
-// and is linked statically where it can be, so it can be copied to another machine and run there:
+// prints a hash of each level's outputs and each level's speed on one core. The scalar level's
+// hash is the same on every x86-64 machine, so two machines' runs compare too. Exit status 0 when
+// every level matched, 1 on any mismatch, 2 on a bad argument. It links the kernel objects alone
+// (no OpenCV, no OpenImageIO) and is linked statically where it can be, so it can be copied to
+// another machine and run there:
 //   cmake --build build/release --target kernel_levels_check
 //   scp build/release/tests/ifs/kernel_levels_check elsewhere: && ssh elsewhere
 //   ./kernel_levels_check
@@ -11,10 +13,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ifs/cpu.h"
@@ -50,16 +53,23 @@ struct TestIfs {
   }
 };
 
-// N maps of factor 0.45, each turned a little more, towards the corners of an N-gon; unequal
-// probabilities so that the alias table has aliases. Its attractor lies in [-1, 1]².
+// N maps of factor 0.45, each turned a little more, towards N points spread over the unit circle;
+// unequal probabilities so that the alias table has aliases. Its attractor lies in [-1, 1]².
 TestIfs polygon(int n) {
   TestIfs t;
   t.name = std::to_string(n) + "-gon";
+  // Points of the unit circle as ((1 − u²), 2u) / (1 + u²): rational, so the coefficients are the
+  // same bits on every machine (libm's cos and sin may round differently on CPUs with FMA), and
+  // so is the hash of the scalar level's outputs.
+  const auto on_circle = [](double u) {
+    return std::pair{(1 - u * u) / (1 + u * u), 2 * u / (1 + u * u)};
+  };
   for (int k = 0; k < n; ++k) {
-    const double angle = 2 * 3.141592653589793 * k / n, turn = 0.1 * k;
-    const double s = 0.45, cs = s * std::cos(turn), sn = s * std::sin(turn);
-    t.a.push_back(cs), t.b.push_back(-sn), t.c.push_back(sn), t.d.push_back(cs);
-    t.e.push_back(0.5 * std::cos(angle)), t.f.push_back(0.5 * std::sin(angle));
+    const auto [cs, sn] = on_circle(0.05 * k);  // turned a little more
+    const auto [cx, cy] = on_circle(n > 1 ? 2.5 * (2.0 * k / (n - 1) - 1) : 0);  // a corner
+    const double s = 0.45;
+    t.a.push_back(s * cs), t.b.push_back(-s * sn), t.c.push_back(s * sn), t.d.push_back(s * cs);
+    t.e.push_back(0.5 * cx), t.f.push_back(0.5 * cy);
     t.p.push_back(1.0 + k % 3);
     t.palette.push_back(n > 1 ? static_cast<std::uint32_t>(std::lround(65535.0 * k / (n - 1))) : 0);
   }
@@ -67,54 +77,60 @@ TestIfs polygon(int n) {
   return t;
 }
 
-bool same_bytes(const void* a, const void* b, std::size_t bytes) {
-  return std::memcmp(a, b, bytes) == 0;
+// The outputs of every mode of one level on one IFS, as bytes: the traced points of three point
+// counts, then the rasters of hits, counts, 32- and 64-bit tops and measure.
+struct Output {
+  std::string mode;
+  std::vector<unsigned char> bytes;
+};
+
+template <class T>
+std::vector<unsigned char> bytes_of(const std::vector<T>& v, std::size_t n) {
+  const auto* p = reinterpret_cast<const unsigned char*>(v.data());
+  return {p, p + n * sizeof(T)};
 }
 
-// Every mode of `level` against the scalar level on a raster that cuts the attractor. Returns the
-// modes that differ.
-std::vector<std::string> compare(const TestIfs& ifs, const WalkKernels& k, const WalkKernels& ref) {
-  std::vector<std::string> wrong;
+// Every mode of `k` on a raster that cuts the attractor.
+std::vector<Output> outputs(const TestIfs& ifs, const WalkKernels& k) {
+  std::vector<Output> out;
   const int width = 301, height = 203;
   const WalkSpec w = ifs.spec(-0.7, -1.05, 1.05, 0.6, width, height);
   const auto area = static_cast<std::size_t>(width) * height;
   for (std::uint64_t points : {std::uint64_t{200'003}, std::uint64_t{8}, std::uint64_t{3}}) {
-    const LaneSeeds seeds = lane_seeds(42, points);
-    std::vector<TracedPoint> t1(points), t2(points);
-    const std::size_t n1 = k.trace(w, seeds, points, t1.data());
-    const std::size_t n2 = ref.trace(w, seeds, points, t2.data());
-    if (n1 != n2 || !same_bytes(t1.data(), t2.data(), n1 * sizeof(TracedPoint)))
-      wrong.push_back("trace of " + std::to_string(points) + " points");
+    std::vector<TracedPoint> t(points);
+    const std::size_t n = k.trace(w, lane_seeds(42, points), points, t.data());
+    out.push_back({"trace of " + std::to_string(points) + " points", bytes_of(t, n)});
   }
   const LaneSeeds seeds = lane_seeds(7, 11);
   const std::uint64_t points = 500'001;
-  // One raster-writing kernel of both levels on zeroed rasters of Cell: the same bytes?
-  const auto same_raster = [&](auto kernel, auto cell, const char* mode) {
-    using Cell = decltype(cell);
-    std::vector<Cell> mine(area), scalar(area);
-    (k.*kernel)(w, seeds, points, mine.data());
-    (ref.*kernel)(w, seeds, points, scalar.data());
-    if (mine != scalar) wrong.push_back(mode);
+  // One raster-writing kernel on a zeroed raster of Cell.
+  const auto raster = [&](auto kernel, auto cell, const char* mode) {
+    std::vector<decltype(cell)> r(area);
+    (k.*kernel)(w, seeds, points, r.data());
+    out.push_back({mode, bytes_of(r, area)});
   };
-  same_raster(&WalkKernels::hits, std::uint8_t{}, "hits");
-  same_raster(&WalkKernels::counts, std::uint32_t{}, "counts");
-  same_raster(&WalkKernels::tops32, std::uint32_t{}, "tops32");
-  same_raster(&WalkKernels::tops64, std::uint64_t{}, "tops64");
-  {
-    auto measure = [&](const WalkKernels& kernels) {
-      const auto tiles = static_cast<std::uint32_t>(
-          (area + (std::size_t{1} << MeasureCells::kTileBits) - 1) >> MeasureCells::kTileBits);
-      std::vector<std::uint64_t> cells(area);
-      std::vector<std::uint32_t> queue(tiles * MeasureCells::kQueueLength), queued(tiles);
-      MeasureCells m{cells.data(), queue.data(), queued.data(), tiles};
-      kernels.measure(w, seeds, points, m);
-      kernels.measure_flush(m);
-      return cells;
-    };
-    if (measure(k) != measure(ref)) wrong.push_back("measure");
-  }
-  return wrong;
+  raster(&WalkKernels::hits, std::uint8_t{}, "hits");
+  raster(&WalkKernels::counts, std::uint32_t{}, "counts");
+  raster(&WalkKernels::tops32, std::uint32_t{}, "tops32");
+  raster(&WalkKernels::tops64, std::uint64_t{}, "tops64");
+  const auto tiles = static_cast<std::uint32_t>(
+      (area + (std::size_t{1} << MeasureCells::kTileBits) - 1) >> MeasureCells::kTileBits);
+  std::vector<std::uint64_t> cells(area);
+  std::vector<std::uint32_t> queue(tiles * MeasureCells::kQueueLength), queued(tiles);
+  MeasureCells m{cells.data(), queue.data(), queued.data(), tiles};
+  k.measure(w, seeds, points, m);
+  k.measure_flush(m);
+  out.push_back({"measure", bytes_of(cells, area)});
+  return out;
 }
+
+// FNV-1a, 64 bits: a fingerprint of a level's outputs, to compare across machines (the scalar
+// level's is the same on every x86-64 CPU).
+std::uint64_t fnv1a(std::uint64_t h, const std::vector<unsigned char>& bytes) {
+  for (unsigned char byte : bytes) h = (h ^ byte) * 0x100000001b3ULL;
+  return h;
+}
+constexpr std::uint64_t kFnvBasis = 0xcbf29ce484222325ULL;
 
 enum class Mode { hits, tops, measure };
 const char* const kModeNames[] = {"hits", "tops", "measure"};
@@ -186,16 +202,32 @@ int main(int argc, char** argv) {
   std::vector<TestIfs> cases;
   for (int n : {2, 3, 4, 5, 6, 7, 8, 9, 12, 16, 17}) cases.push_back(polygon(n));
 
-  const WalkKernels& ref = walk_kernels(CpuLevel::scalar);
-  int mismatches = 0;
+  // Every level's outputs against the scalar level's, byte for byte, and a hash of each level's.
+  std::vector<std::vector<Output>> reference;
   for (const TestIfs& ifs : cases)
-    for (CpuLevel level : levels)
-      if (level != CpuLevel::scalar)
-        for (const auto& mode : compare(ifs, walk_kernels(level), ref)) {
-          std::printf("MISMATCH: %s, %s kernels, %s\n", ifs.name.c_str(), to_string(level),
-                      mode.c_str());
-          ++mismatches;
+    reference.push_back(outputs(ifs, walk_kernels(CpuLevel::scalar)));
+  int mismatches = 0;
+  for (CpuLevel level : levels) {
+    std::uint64_t hash = kFnvBasis;
+    int wrong = 0;
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+      const std::vector<Output> mine =
+          level == CpuLevel::scalar ? reference[i] : outputs(cases[i], walk_kernels(level));
+      for (std::size_t j = 0; j < mine.size(); ++j) {
+        hash = fnv1a(hash, mine[j].bytes);
+        if (mine[j].bytes != reference[i][j].bytes) {
+          std::printf("MISMATCH: %s, %s kernels, %s\n", cases[i].name.c_str(), to_string(level),
+                      mine[j].mode.c_str());
+          ++wrong;
         }
+      }
+    }
+    std::printf("%-8s hash %016llx  %s\n", to_string(level), static_cast<unsigned long long>(hash),
+                level == CpuLevel::scalar ? "(the reference)"
+                : wrong == 0              ? "= scalar, byte for byte"
+                                          : "DIFFERS from scalar");
+    mismatches += wrong;
+  }
   std::printf("Mpts/s on 1 core, 1920x1080 raster, %llu points, best of %d\n",
               static_cast<unsigned long long>(points), repeat);
   for (Mode mode : {Mode::hits, Mode::tops, Mode::measure}) {
