@@ -132,7 +132,7 @@ void run_cam(const CamArgs& args) {
   copt.size = size;
   copt.fps = args.fps;
   copt.buffers = args.buffers;
-  if (!args.format.empty()) copt.formats = {video::parse_pixel_format(args.format)};
+  if (!args.format.empty()) copt.formats = {video::parse_pixel_format(args.format, "--format")};
   video::V4l2Capture camera(device, copt);
   const cv::Size granted = camera.size();
   const double fps = camera.fps() > 0 ? camera.fps() : args.fps;

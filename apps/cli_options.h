@@ -4,8 +4,10 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 #include <opencv2/core.hpp>
@@ -115,6 +117,20 @@ inline cv::Size size_option(const std::string& text, const std::string& what = "
 inline std::optional<Box> view_option(const std::string& text, const std::string& what = "--view") {
   if (text.empty()) return std::nullopt;
   return parse_box(text, what);
+}
+
+// A library's warnings (IfsPreset::warnings: a Fractint entry accepted because it contracts on
+// average) on stderr, one line each: "ifsfx: warning: ...".
+inline void print_warnings(const std::vector<std::string>& warnings) {
+  for (const std::string& warning : warnings)
+    std::fputs(fmt::format("ifsfx: warning: {}\n", warning).c_str(), stderr);
+}
+
+// load_ifs, and its warnings printed.
+inline IfsPreset load_preset(const std::string& spec, const ValidateOptions& options = {}) {
+  IfsPreset preset = load_ifs(spec, options);
+  print_warnings(preset.warnings);
+  return preset;
 }
 
 // The colouring IFS G for a drawing IFS F (the --colouring option): see load_colouring.

@@ -2,6 +2,8 @@
 // itself on the top-level CLI11 app; main() turns any error into one line and an exit code.
 #pragma once
 
+#include <string>
+
 #include <CLI/CLI.hpp>
 
 namespace ifsfx::app {
@@ -13,5 +15,9 @@ void add_fit_command(CLI::App& app);      // fit an IFS to a shape (collage theo
 void add_texture_command(CLI::App& app);  // render a superIFS texture or texture sequence
 void add_cam_command(CLI::App& app);      // live camera kaleidoscope over V4L2
 void add_filter_command(CLI::App& app);   // fractal video filter on movie files
+void add_info_command(CLI::App& app);     // version, build and kernel level
+
+// "ifsfx VERSION (BUILD TYPE build, ...)" and the kernel level line, for --version and `info`.
+std::string version_text();
 
 }  // namespace ifsfx::app

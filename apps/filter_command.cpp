@@ -124,6 +124,7 @@ void run_filter(const FilterArgs& args) {
   settings.superifs = args.superifs;
   settings.buffers = args.buffers;
   video::FractalEngine engine(settings);
+  print_warnings(engine.warnings());
 
   video::silence_libav_log();
   std::unique_ptr<video::FrameSource> source = open_source(args);

@@ -1,5 +1,7 @@
 #include "apps/live_filter.h"
 
+#include "apps/cli_options.h"
+
 namespace ifsfx::app {
 
 LiveFilter::LiveFilter(const FractalFilterArgs& args, int fade_frames, const std::string& preset,
@@ -8,6 +10,7 @@ LiveFilter::LiveFilter(const FractalFilterArgs& args, int fade_frames, const std
   video::FractalSettings settings = args.settings();
   settings.preset = preset;
   engine_ = std::make_unique<video::FractalEngine>(settings, size);
+  print_warnings(engine_->warnings());
   set_animate(animate);
 }
 

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <CLI/CLI.hpp>
 
+#include "apps/cli_errors.h"
 #include "apps/commands.h"
 #include "apps/stop_signals.h"
 #include "ifs/error.h"
@@ -38,6 +39,8 @@ int main(int argc, char** argv) {
       "V-variable superfractals). `ifsfx COMMAND --help` for each command."};
   app.require_subcommand(1);
   app.set_help_all_flag("--help-all", "Show the help of every command");
+  app.set_version_flag("--version", ifsfx::app::version_text,
+                       "Show the version, the build and the kernel level used here, and exit");
   ifsfx::app::add_presets_command(app);
   ifsfx::app::add_render_command(app);
   ifsfx::app::add_apply_command(app);
@@ -45,17 +48,21 @@ int main(int argc, char** argv) {
   ifsfx::app::add_texture_command(app);
   ifsfx::app::add_cam_command(app);
   ifsfx::app::add_filter_command(app);
+  ifsfx::app::add_info_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    std::fputs(e.what(), stdout);
+    return 0;
   } catch (const CLI::ParseError& e) {
     std::fputs(fmt::format("ifsfx: {}\n", e.what()).c_str(), stderr);
     return 2;
   } catch (const ifsfx::Error& e) {
-    std::fputs(fmt::format("ifsfx: {}\n", e.what()).c_str(), stderr);
+    std::fputs(fmt::format("ifsfx: {}\n", ifsfx::app::with_flag_names(e.what())).c_str(), stderr);
     return exit_code(e.kind());
   } catch (const std::exception& e) {
     std::fputs(fmt::format("ifsfx: internal error: {}\n", e.what()).c_str(), stderr);

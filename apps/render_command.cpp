@@ -96,7 +96,7 @@ void run_render(const RenderArgs& args) {
           ErrorKind::invalid_argument,
           fmt::format("--save-map {}: must differ from -o (got the same file)", args.save_map));
   }
-  const IfsPreset preset = load_ifs(args.preset, {.allow_expansive = args.allow_expansive});
+  const IfsPreset preset = load_preset(args.preset, {.allow_expansive = args.allow_expansive});
 
   RenderOptions options;
   options.view = view_option(args.view);

@@ -46,6 +46,10 @@ void run_texture(const TextureArgs& args) {
   if (args.crossfade < 1)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("--crossfade: must be ≥ 1 frame per step (got {})", args.crossfade));
+  if (args.buffer < 1 || args.buffer > args.count)  // the library counts buffers from 0
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--buffer: must be 1..{} for V = {} (got {})", args.count, args.count,
+                            args.buffer));
   if (args.mode == TextureMode::steal && args.source.empty())
     throw Error(ErrorKind::invalid_argument,
                 "--source: steal mode needs a source image to steal colours from");

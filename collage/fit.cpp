@@ -109,7 +109,7 @@ FitResult fit(const cv::Mat& target, const FitOptions& options) {
                             options.restarts, options.max_evaluations));
   if (!(options.max_seconds >= 0))
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("--max-seconds: must be ≥ 0 (got {})", options.max_seconds));
+                fmt::format("max_seconds: must be ≥ 0 (got {})", options.max_seconds));
   const auto start = Clock::now();
   const CollageObjective objective(target, options.objective);
   const auto seconds_since_start = [&] {
@@ -191,7 +191,7 @@ FitResult fit(const cv::Mat& target, const FitOptions& options) {
   }
   if (result.ifs.maps.empty())
     throw Error(ErrorKind::invalid_argument,
-                "fit: no contractive IFS was found within the budget (raise --max-seconds)");
+                "fit: no contractive IFS was found within the budget (raise max_seconds)");
   result.seconds = seconds_since_start();
   return result;
 }

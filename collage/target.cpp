@@ -58,7 +58,7 @@ cv::Mat shape_mask(const cv::Mat& image, const TargetOptions& options, const std
         fmt::format("{}: images of 1 to 4 channels are supported (got {})", what, channels));
   if (options.threshold && !(*options.threshold >= 0 && *options.threshold <= 1))
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("--threshold: must be in [0, 1] (got {})", *options.threshold));
+                fmt::format("threshold: must be in [0, 1] (got {})", *options.threshold));
 
   const bool has_alpha = channels == 2 || channels == 4;
   cv::Mat mask;
@@ -93,12 +93,12 @@ cv::Mat shape_mask(const cv::Mat& image, const TargetOptions& options, const std
   const int inside = cv::countNonZero(mask);
   if (inside == 0)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("{}: the shape is empty: no pixel has {} (try --invert or --threshold)",
+                fmt::format("{}: the shape is empty: no pixel has {} (try invert or threshold)",
                             what, rule));
   if (inside == static_cast<int>(mask.total()))
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("{}: the shape is the whole image: every pixel has {} (try --invert "
-                            "or --threshold)",
+                fmt::format("{}: the shape is the whole image: every pixel has {} (try invert or "
+                            "threshold)",
                             what, rule));
   return mask;
 }
@@ -111,7 +111,7 @@ cv::Mat working_raster(const cv::Mat& mask, const FrameOptions& options) {
   if (options.size < 8 || options.size > 2048)
     throw Error(
         ErrorKind::invalid_argument,
-        fmt::format("--size: the working raster's side must be in 8..2048 (got {})", options.size));
+        fmt::format("size: the working raster's side must be in 8..2048 (got {})", options.size));
   if (!(options.margin >= 0 && options.margin < 0.5))
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("margin: must be in [0, 0.5) (got {})", options.margin));
@@ -141,7 +141,7 @@ cv::Mat working_raster(const cv::Mat& mask, const FrameOptions& options) {
   if (cv::countNonZero(raster) == 0)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("target: the shape vanishes on a {}×{} working raster (it is too thin "
-                            "or too small; try a larger --size)",
+                            "or too small; try a larger size)",
                             options.size, options.size));
   return raster;
 }

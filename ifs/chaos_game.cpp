@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ifs/detail/preconditions.h"
 #include "ifs/detail/walkers.h"
 #include "ifs/parallel.h"
 
@@ -20,6 +21,7 @@ int default_burn_in(const Ifs& ifs) {
 
 std::vector<Sample> chaos_game_samples(const Ifs& ifs, std::size_t count,
                                        const ChaosGameOptions& options) {
+  detail::check_chaos_game({.ifs = ifs, .threads = options.threads, .burn_in = options.burn_in});
   std::vector<Sample> out(count);
   const detail::MapTable maps(ifs);
   const MapPicker pick(effective_probabilities(ifs));

@@ -1,6 +1,7 @@
 // Fractint's .ifs format: named entries `NAME { a b c d e f p ... }`, `;` comments to the end of
 // the line, numbers separated by spaces, tabs, commas or newlines. Fractint's a b c d e f are
-// ours: x' = a x + b y + e, y' = c x + d y + f (DESIGN.md §1).
+// ours: x' = a x + b y + e, y' = c x + d y + f (DESIGN.md §1); its p are weights, drawn from by
+// Fractint's selection rule (fractint_probabilities).
 #include <algorithm>
 #include <cctype>
 #include <charconv>
@@ -190,6 +191,7 @@ class FractintReader {
     }
     preset.ifs.name = name;
     preset.origin = fmt::format("{}:{}", filename_, name);
+    preset.format = PresetFormat::fractint;
     preset.text = std::string(text_.substr(begin, pos_ - begin)) + "\n";
     out.preset = std::move(preset);
     return out;
@@ -235,10 +237,10 @@ class FractintReader {
       ifs.maps.push_back(AffineMap::from_coefficients(k));
       if (stride == 7) {
         const Number& p = numbers[i + 6];
-        if (!std::isfinite(p.value) || p.value < 0)
+        if (!std::isfinite(p.value))
           fail(ErrorKind::invalid_ifs, p.line,
-               fmt::format("entry '{}': map {}: probability must be a finite number ≥ 0 (got {})",
-                           name, map, p.value));
+               fmt::format("entry '{}': map {}: probability must be a finite number (got {})", name,
+                           map, p.value));
         ifs.probabilities.push_back(p.value);
       }
     }
@@ -246,6 +248,7 @@ class FractintReader {
                                    [](double p) { return p == 0; }))
       fail(ErrorKind::invalid_ifs, name_line,
            fmt::format("entry '{}': probabilities: they must not all be zero (got sum 0)", name));
+    if (stride == 7) ifs.probabilities = fractint_probabilities(ifs.probabilities);
     return ifs;
   }
 
@@ -256,6 +259,28 @@ class FractintReader {
 };
 
 }  // namespace
+
+std::vector<double> fractint_probabilities(const std::vector<double>& weights) {
+  // Weights that already are probabilities are kept as they are: Fractint's walk gives exactly
+  // them (up to the rounding of the running sums, which is not worth carrying over).
+  double sum = 0;
+  bool negative = false;
+  for (double w : weights) sum += w, negative = negative || w < 0;
+  if (!negative && std::abs(sum - 1) <= 1e-9) return weights;
+  // Map k is drawn for r ∈ (L_{k−1}, L_k], L_k = the running maximum of the cumulative sums
+  // S_0..S_k clamped to [0, 1] (L_{−1} = 0); the last map takes r ∈ (L_{N−2}, 1]. A negative
+  // weight lowers S, so the maps after it get nothing until S climbs back over L.
+  std::vector<double> p(weights.size(), 0.0);
+  double cumulative = 0, reached = 0;
+  for (std::size_t k = 0; k + 1 < weights.size(); ++k) {
+    cumulative += weights[k];
+    const double next = std::max(reached, std::clamp(cumulative, 0.0, 1.0));
+    p[k] = next - reached;
+    reached = next;
+  }
+  if (!p.empty()) p.back() = 1 - reached;
+  return p;
+}
 
 namespace detail {
 

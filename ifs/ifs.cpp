@@ -67,12 +67,13 @@ void validate(const Ifs& ifs, const std::string& where, const ValidateOptions& o
   if (!ifs.colours.empty() && ifs.colours.size() != ifs.maps.size())
     fail(fmt::format("colours: one per map is needed (got {} for {} maps)", ifs.colours.size(),
                      ifs.maps.size()));
+  if (!options.require_contraction) return;
   for (std::size_t i = 0; i < ifs.maps.size(); ++i) {
     const double s = ifs.maps[i].contraction();
     if (s >= 1 && !options.allow_expansive)
       fail(
           fmt::format("map {}: contraction factor must be < 1 (got {:.4g}); "
-                      "--allow-expansive accepts it if the IFS contracts on average",
+                      "allow_expansive accepts it if the IFS contracts on average",
                       i + 1, s));
   }
   // Where the attractor reaches: within max_n |f_n(c) − c| / (1 − s) of any point c (here the

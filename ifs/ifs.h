@@ -44,14 +44,16 @@ std::vector<double> effective_probabilities(const Ifs& ifs);
 struct ValidateOptions {
   // Accept maps with factor ≥ 1 provided the IFS contracts on average (mean_log_contraction < 0).
   bool allow_expansive = false;
+  // false: check only what a chaos game needs to run at all (the checks below but contraction).
+  bool require_contraction = true;
 };
 
 // Checks an IFS before use and throws Error{invalid_ifs} naming the culprit: no maps, a NaN/inf
 // coefficient or one beyond ±kMaxCoordinate, an attractor that would reach beyond
 // ±kMaxCoordinate (a contractive IFS's lies within max_n |f_n(c) − c| / (1 − s) of the fixed
-// point c of its first map), a map with factor ≥ 1 (unless allowed), probabilities of the wrong
-// count, negative, non-finite or all zero, colours of the wrong count. `where` prefixes messages
-// (a file name, a preset name).
+// point c of its first map), probabilities of the wrong count, negative, non-finite or all zero,
+// colours of the wrong count, a map with factor ≥ 1 (unless allowed, and then an IFS that does
+// not contract on average). `where` prefixes messages (a file name, a preset name).
 void validate(const Ifs& ifs, const std::string& where, const ValidateOptions& options = {});
 
 // The mean log contraction of the IFS per step, min over word lengths k = 1..3 of

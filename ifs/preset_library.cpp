@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "ifs/error.h"
 #include "ifs/fractint.h"
@@ -212,7 +213,28 @@ std::vector<PresetSummary> list_shipped_presets() {
 
 IfsPreset load_ifs(const std::string& spec, const ValidateOptions& options) {
   IfsPreset preset = resolve(spec);
-  validate(preset.ifs, preset.origin, options);
+  // Fractint renders IFSs that contract only on average; so do we, saying so once, unless the
+  // caller or the file already accepted that.
+  const bool fractint = preset.format == PresetFormat::fractint;
+  const bool allowed = options.allow_expansive || preset.allow_expansive;
+  ValidateOptions relaxed = options;
+  relaxed.allow_expansive = allowed || fractint;
+  validate(preset.ifs, preset.origin, relaxed);
+  if (fractint && !allowed) {
+    std::vector<std::string> maps, factors;
+    for (std::size_t i = 0; i < preset.ifs.size(); ++i)
+      if (const double s = preset.ifs.maps[i].contraction(); s >= 1) {
+        maps.push_back(std::to_string(i + 1));
+        factors.push_back(fmt::format("{:.4g}", s));
+      }
+    if (!maps.empty())
+      preset.warnings.push_back(fmt::format(
+          "{}: {} {} {} not contract (factor{} {}); accepted as Fractint renders it, since the "
+          "IFS contracts on average (mean log factor {:.3g})",
+          preset.origin, maps.size() == 1 ? "map" : "maps", fmt::join(maps, ", "),
+          maps.size() == 1 ? "does" : "do", maps.size() == 1 ? "" : "s", fmt::join(factors, ", "),
+          mean_log_contraction(preset.ifs)));
+  }
   return preset;
 }
 
@@ -221,7 +243,7 @@ Ifs load_colouring(const std::string& spec, const Ifs& F, const std::string& wha
   Ifs G = fit_to_unit_square(load_ifs(spec, {.allow_expansive = true}).ifs);
   if (G.size() != F.size())
     throw Error(ErrorKind::invalid_ifs,
-                fmt::format("{} {}: must have as many maps as {} (got {} for {})", what, spec,
+                fmt::format("{}: {} must have as many maps as {} (got {} for {})", what, spec,
                             F.name, G.size(), F.size()));
   return G;
 }

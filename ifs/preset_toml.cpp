@@ -147,7 +147,8 @@ IfsPreset parse_ifs_toml(std::string_view text, const std::string& filename) {
 
   // Check every key first, so that a misspelt "probabilites" is reported rather than silently
   // giving default probabilities.
-  in.check_keys(table, {"name", "description", "maps", "probabilities", "colours"});
+  in.check_keys(table,
+                {"name", "description", "maps", "probabilities", "colours", "allow_expansive"});
 
   IfsPreset preset;
   preset.origin = filename;
@@ -168,6 +169,8 @@ IfsPreset parse_ifs_toml(std::string_view text, const std::string& filename) {
     preset.ifs.probabilities = read_probabilities(in, *node, preset.ifs.maps.size());
   if (const auto* node = table.get("colours"))
     preset.ifs.colours = read_colours(in, *node, preset.ifs.maps.size());
+  if (const auto* node = table.get("allow_expansive"))
+    preset.allow_expansive = in.boolean(*node, "allow_expansive");
   return preset;
 }
 

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
+#include "ifs/detail/preconditions.h"
 #include "ifs/detail/walkers.h"
 #include "ifs/error.h"
 #include "ifs/parallel.h"
@@ -15,15 +16,13 @@
 namespace ifsfx {
 namespace {
 
-// Runs `points` chaos-game points over fixed chunks; `make_worker(worker)` gives each worker its
-// per-thread state, and state.plot(lane, pixel, map) plots one point that lands on `viewport`.
+// Runs `points` chaos-game points of `walk` over fixed chunks, on the kernels of this CPU's level
+// (ifs/cpu.h); `make_state()` gives each worker its state, and state.run(kernels, spec, seeds, n)
+// runs one chunk of n points into it.
 template <class State, class MakeState>
-std::vector<State> scatter(const Ifs& ifs, const Viewport& viewport, std::uint64_t points,
+std::vector<State> scatter(const detail::WalkTables& walk, std::uint64_t points,
                            const ChaosGameOptions& options, MakeState&& make_state) {
-  const detail::PixelMapping mapping = detail::pixel_mapping(viewport);
-  const detail::MapTable maps(ifs);
-  const MapPicker pick(effective_probabilities(ifs));
-  const int burn_in = options.burn_in > 0 ? options.burn_in : default_burn_in(ifs);
+  const detail::WalkKernels& kernels = detail::walk_kernels();
   const std::uint64_t chunks = detail::chunk_count(points);
   const int workers = worker_count(chunks, options.threads);
   std::vector<State> states;
@@ -31,32 +30,32 @@ std::vector<State> scatter(const Ifs& ifs, const Viewport& viewport, std::uint64
   for (int w = 0; w < workers; ++w) states.push_back(make_state());
   parallel_for(chunks, workers, [&](std::size_t chunk, int worker) {
     options.cancel.check("render");
-    State& state = states[static_cast<std::size_t>(worker)];
-    const std::uint64_t n = detail::chunk_size(points, chunk);
-    state.begin_chunk(n);
-    detail::plot_chunk(
-        maps, pick, mapping, options.seed, chunk, n, burn_in,
-        [&](int lane, long pixel, std::uint32_t map) { state.plot(lane, pixel, map); });
+    states[static_cast<std::size_t>(worker)].run(kernels, walk.spec(),
+                                                 detail::lane_seeds(options.seed, chunk),
+                                                 detail::chunk_size(points, chunk));
   });
   return states;
 }
 
+int burn_in_of(const Ifs& ifs, const ChaosGameOptions& options) {
+  return options.burn_in > 0 ? options.burn_in : default_burn_in(ifs);
+}
+
+// The chaos-game family's checks (detail::check_chaos_game), then the renderers' own options.
 void check_render_inputs(const Ifs& ifs, cv::Size size, const RenderOptions& options) {
-  check_size(size);
-  if (ifs.maps.empty()) throw Error(ErrorKind::invalid_ifs, "ifs: needs at least one map (got 0)");
+  detail::check_chaos_game({.ifs = ifs,
+                            .threads = options.threads,
+                            .quality = options.quality,
+                            .size = size,
+                            .view = options.view,
+                            .margin = options.margin});
   if (options.supersample < 1 || options.supersample > 16)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("--supersample: must be 1 to 16 (got {})", options.supersample));
-  check_size(size * options.supersample, "--size × --supersample");
-  if (!(options.quality > 0 && options.quality <= kMaxQuality))
-    throw Error(
-        ErrorKind::invalid_argument,
-        fmt::format("--quality: must be a positive number of points per pixel, at most {:g} "
-                    "(got {})",
-                    kMaxQuality, options.quality));
+                fmt::format("supersample: must be 1 to 16 (got {})", options.supersample));
+  check_size(size * options.supersample, "size × supersample");
   if (!(options.gamma > 0) || !std::isfinite(options.gamma))
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("--gamma: must be positive (got {})", options.gamma));
+                fmt::format("gamma: must be positive (got {})", options.gamma));
   if (!(options.brightness > 0) || !std::isfinite(options.brightness))
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("brightness: must be positive (got {})", options.brightness));
@@ -82,71 +81,54 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 struct HitState {
   cv::Mat hits;
   explicit HitState(const Viewport& v) : hits(cv::Mat::zeros(v.size, CV_8UC1)) {}
-  void begin_chunk(std::uint64_t) {}
-  void plot(int, long pixel, std::uint32_t) { hits.data[pixel] = 255; }
+  void run(const detail::WalkKernels& k, const detail::WalkSpec& w, const detail::LaneSeeds& seeds,
+           std::uint64_t points) {
+    k.hits(w, seeds, points, hits.data);
+  }
 };
 
 // Per-worker visit counts.
 struct CountState {
   cv::Mat counts;
   explicit CountState(const Viewport& v) : counts(cv::Mat::zeros(v.size, CV_32SC1)) {}
-  void begin_chunk(std::uint64_t) {}
-  void plot(int, long pixel, std::uint32_t) {
-    ++reinterpret_cast<std::uint32_t*>(counts.data)[pixel];
+  void run(const detail::WalkKernels& k, const detail::WalkSpec& w, const detail::LaneSeeds& seeds,
+           std::uint64_t points) {
+    k.counts(w, seeds, points, reinterpret_cast<std::uint32_t*>(counts.data));
   }
 };
 
 // Visit count and palette-coordinate sum per pixel, packed in one 64-bit word so a point costs a
-// single memory update: count in the low 32 bits, Σc in the high 32 with c quantised to 6 bits.
-// Σc ≤ 63 · points, so folding into wide totals every 2^26 points keeps both halves exact.
-//
-// A 1080p raster of such words is 16 MiB, and points land on it at random: updated directly,
-// nearly every point is a cache miss. So points are first binned by tile (2^14 consecutive
-// cells, 128 KiB: a slice of the image that fits in L2) into short queues, and a full queue is
-// applied to its tile in one burst while that tile is in cache.
+// single memory update, binned by tile on the way (detail::MeasureCells). Σc6 ≤ 63 · points, so
+// folding into wide totals every 2^26 points keeps both halves of the words exact.
 class MeasureState {
  public:
   static constexpr std::uint64_t kFoldPoints = std::uint64_t{1} << 26;
-  static constexpr int kPaletteBits = 6;
-  static constexpr int kTileBits = 14;
-  static constexpr std::uint32_t kTileMask = (1u << kTileBits) - 1;
-  static constexpr std::uint32_t kQueueLength = 256;
 
   struct Totals {
     std::vector<std::uint64_t> count, colour;
     std::mutex mutex;
   };
 
-  MeasureState(const Viewport& v, const std::vector<std::uint32_t>& map_colours, Totals& totals)
+  MeasureState(const Viewport& v, Totals& totals)
       : cells_(static_cast<std::size_t>(v.size.area()), 0),
-        tiles_((cells_.size() + kTileMask) >> kTileBits),
-        queue_(tiles_ * kQueueLength),
+        tiles_(static_cast<std::uint32_t>((cells_.size() + kTileCells - 1) / kTileCells)),
+        queue_(std::size_t{tiles_} * detail::MeasureCells::kQueueLength),
         queued_(tiles_, 0),
-        map_colour_(map_colours),
-        totals_(&totals) {
-    palette_.fill(0);
-  }
+        totals_(&totals) {}
   MeasureState(MeasureState&&) = default;
 
-  void begin_chunk(std::uint64_t points) {
+  void run(const detail::WalkKernels& k, const detail::WalkSpec& w, const detail::LaneSeeds& seeds,
+           std::uint64_t points) {
+    kernels_ = &k;
     if (pending_ + points > kFoldPoints) fold();
     pending_ += points;
-  }
-  void plot(int lane, long pixel, std::uint32_t map) {
-    // c_k = (c_{k-1} + c_σk) / 2 in 16-bit fixed point (DESIGN.md §4). Off-raster points do not
-    // reach here, so the palette coordinate skips them: it is a local colour, not an address.
-    std::uint32_t& c = palette_[static_cast<std::size_t>(lane)];
-    c = (c + map_colour_[map]) >> 1;
-    const std::uint32_t c6 =
-        std::min<std::uint32_t>((c + (1u << (15 - kPaletteBits))) >> (16 - kPaletteBits), 63);
-    const auto cell = static_cast<std::uint32_t>(pixel);
-    const std::uint32_t tile = cell >> kTileBits;
-    std::uint32_t& length = queued_[tile];
-    queue_[tile * kQueueLength + length] = (c6 << kTileBits) | (cell & kTileMask);
-    if (++length == kQueueLength) drain(tile);
+    detail::MeasureCells cells = view();
+    k.measure(w, seeds, points, cells);
   }
   void fold() {
-    for (std::uint32_t tile = 0; tile < tiles_; ++tile) drain(tile);
+    if (kernels_ == nullptr) return;  // no chunk ran here
+    detail::MeasureCells cells = view();
+    kernels_->measure_flush(cells);
     std::lock_guard lock(totals_->mutex);
     for (std::size_t i = 0; i < cells_.size(); ++i) {
       if (cells_[i] == 0) continue;
@@ -158,21 +140,16 @@ class MeasureState {
   }
 
  private:
-  void drain(std::uint32_t tile) {
-    std::uint64_t* cells = cells_.data() + (static_cast<std::size_t>(tile) << kTileBits);
-    const std::uint32_t* entry = queue_.data() + tile * kQueueLength;
-    for (std::uint32_t k = 0, n = queued_[tile]; k < n; ++k)
-      cells[entry[k] & kTileMask] += (static_cast<std::uint64_t>(entry[k] >> kTileBits) << 32) | 1;
-    queued_[tile] = 0;
-  }
+  static constexpr std::size_t kTileCells = std::size_t{1} << detail::MeasureCells::kTileBits;
+
+  detail::MeasureCells view() { return {cells_.data(), queue_.data(), queued_.data(), tiles_}; }
 
   std::vector<std::uint64_t> cells_;
   std::uint32_t tiles_;
-  std::vector<std::uint32_t> queue_;  // per tile: kQueueLength entries of (c6 << 14 | cell in tile)
-  std::vector<std::uint32_t> queued_;      // entries waiting per tile
-  std::vector<std::uint32_t> map_colour_;  // c_n of each map, 16-bit fixed point
-  std::array<std::uint32_t, detail::kLanes> palette_;
+  std::vector<std::uint32_t> queue_;   // per tile: kQueueLength entries (c6 << 14 | cell in tile)
+  std::vector<std::uint32_t> queued_;  // entries waiting per tile
   Totals* totals_;
+  const detail::WalkKernels* kernels_ = nullptr;
   std::uint64_t pending_ = 0;
 };
 
@@ -219,9 +196,13 @@ Rgb palette_ramp(double t) {
 
 cv::Mat visit_counts(const Ifs& ifs, const Viewport& viewport, std::uint64_t points,
                      const ChaosGameOptions& options) {
-  check_size(viewport.size);
-  auto states =
-      scatter<CountState>(ifs, viewport, points, options, [&] { return CountState(viewport); });
+  detail::check_chaos_game({.ifs = ifs,
+                            .threads = options.threads,
+                            .burn_in = options.burn_in,
+                            .size = viewport.size,
+                            .view = viewport.view});
+  const detail::WalkTables walk(ifs, viewport, burn_in_of(ifs, options));
+  auto states = scatter<CountState>(walk, points, options, [&] { return CountState(viewport); });
   cv::Mat total = states[0].counts;
   for (std::size_t w = 1; w < states.size(); ++w) total += states[w].counts;
   return total;
@@ -233,10 +214,10 @@ cv::Mat render_attractor(const Ifs& ifs, cv::Size size, const RenderOptions& opt
   const Viewport viewport = viewport_for(ifs, size, options);
   const std::uint64_t points = point_budget(size, options.quality);
   const auto start = std::chrono::steady_clock::now();
-  auto states = scatter<HitState>(
-      ifs, viewport, points,
-      {.seed = options.seed, .threads = options.threads, .cancel = options.cancel},
-      [&] { return HitState(viewport); });
+  const ChaosGameOptions chaos{
+      .seed = options.seed, .threads = options.threads, .cancel = options.cancel};
+  const detail::WalkTables walk(ifs, viewport, burn_in_of(ifs, chaos));
+  auto states = scatter<HitState>(walk, points, chaos, [&] { return HitState(viewport); });
   cv::Mat mask = states[0].hits;
   for (std::size_t w = 1; w < states.size(); ++w) cv::bitwise_or(mask, states[w].hits, mask);
   if (stats) *stats = {points, seconds_since(start), coverage_of(mask), viewport.view};
@@ -250,23 +231,17 @@ cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& optio
   const Viewport viewport{viewport_for(ifs, size, options).view, size * k};
   const std::uint64_t points = point_budget(size, options.quality);
 
-  std::vector<std::uint32_t> map_colour(ifs.size());
-  for (std::size_t n = 0; n < ifs.size(); ++n)
-    map_colour[n] =
-        ifs.size() <= 1
-            ? 0
-            : static_cast<std::uint32_t>(std::lround(65535.0 * static_cast<double>(n) /
-                                                     static_cast<double>(ifs.size() - 1)));
   MeasureState::Totals totals;
   const auto area = static_cast<std::size_t>(viewport.size.area());
   totals.count.assign(area, 0);
   totals.colour.assign(area, 0);
 
   const auto start = std::chrono::steady_clock::now();
-  auto states = scatter<MeasureState>(
-      ifs, viewport, points,
-      {.seed = options.seed, .threads = options.threads, .cancel = options.cancel},
-      [&] { return MeasureState(viewport, map_colour, totals); });
+  const ChaosGameOptions chaos{
+      .seed = options.seed, .threads = options.threads, .cancel = options.cancel};
+  const detail::WalkTables walk(ifs, viewport, burn_in_of(ifs, chaos));
+  auto states =
+      scatter<MeasureState>(walk, points, chaos, [&] { return MeasureState(viewport, totals); });
   for (auto& s : states) s.fold();
   const double seconds = seconds_since(start);
 

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "ifs/detail/address_raster.h"
+#include "ifs/detail/preconditions.h"
 #include "ifs/error.h"
 #include "ifs/parallel.h"
 
@@ -117,16 +118,23 @@ cv::Mat uv_from_keys(const AddressRaster& tops, const Ifs& F, const Ifs& G, int 
 StealMap compute_steal_map(const Ifs& F, const Ifs& G, cv::Size size,
                            const StealMapOptions& options, StealMapStats* stats) {
   const auto start = std::chrono::steady_clock::now();
-  check_size(size);
-  validate(F, F.name.empty() ? "drawing IFS" : F.name, {.allow_expansive = true});
-  validate(G, G.name.empty() ? "colouring IFS" : G.name, {.allow_expansive = true});
+  detail::check_chaos_game({.ifs = F,
+                            .name = F.name.empty() ? "drawing IFS" : F.name,
+                            .contracting = true,
+                            .threads = options.threads,
+                            .quality = options.quality,
+                            .size = size,
+                            .view = options.view,
+                            .margin = options.margin});
+  detail::check_chaos_game(
+      {.ifs = G, .name = G.name.empty() ? "colouring IFS" : G.name, .contracting = true});
   if (G.size() != F.size())
     throw Error(ErrorKind::invalid_ifs,
                 fmt::format("colouring IFS: must have as many maps as the drawing IFS (got {} "
                             "for {})",
                             G.size(), F.size()));
-  const Viewport viewport = detail::checked_viewport(F, size, options.view, options.margin,
-                                                     options.quality, options.seed, options.cancel);
+  const Viewport viewport =
+      detail::framed_viewport(F, size, options.view, options.margin, options.seed, options.cancel);
   StealMap map;
   StealMapStats s;
   s.view = viewport.view;

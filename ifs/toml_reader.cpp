@@ -114,6 +114,12 @@ std::string TomlReader::string(const toml::node& node, const std::string& what) 
        fmt::format("{}: must be a string (got {})", what, type_name(node)));
 }
 
+bool TomlReader::boolean(const toml::node& node, const std::string& what) const {
+  if (const auto* b = node.as_boolean()) return b->get();
+  fail(ErrorKind::parse, node.source(),
+       fmt::format("{}: must be true or false (got {})", what, type_name(node)));
+}
+
 double TomlReader::number(const toml::node& node, const std::string& what) const {
   if (const auto* x = node.as_floating_point()) return x->get();
   if (const auto* i = node.as_integer()) return static_cast<double>(i->get());

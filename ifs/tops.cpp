@@ -5,16 +5,22 @@
 #include <fmt/format.h>
 
 #include "ifs/detail/address_raster.h"
+#include "ifs/detail/preconditions.h"
 #include "ifs/error.h"
 #include "ifs/render.h"
 
 namespace ifsfx {
 
 TopSymbols top_symbols(const Ifs& F, cv::Size size, const TopsOptions& options) {
-  check_size(size);
-  validate(F, F.name.empty() ? "IFS" : F.name, {.allow_expansive = true});
-  const Viewport viewport = detail::checked_viewport(F, size, options.view, options.margin,
-                                                     options.quality, options.seed, options.cancel);
+  detail::check_chaos_game({.ifs = F,
+                            .contracting = true,
+                            .threads = options.threads,
+                            .quality = options.quality,
+                            .size = size,
+                            .view = options.view,
+                            .margin = options.margin});
+  const Viewport viewport =
+      detail::framed_viewport(F, size, options.view, options.margin, options.seed, options.cancel);
   detail::ChaosTopsStats chaos;
   const detail::AddressRaster tops =
       options.exact ? detail::exact_descent(F, nullptr, viewport,

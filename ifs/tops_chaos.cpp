@@ -3,6 +3,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include <fmt/format.h>
 
@@ -19,14 +20,8 @@ int symbol_bits(std::size_t n) {
   return std::max(1, static_cast<int>(std::bit_width(std::max<std::size_t>(n, 2) - 1)));
 }
 
-Viewport checked_viewport(const Ifs& F, cv::Size size, const std::optional<Box>& view,
-                          double margin, double quality, std::uint64_t seed,
-                          const CancelToken& cancel) {
-  if (!(quality > 0 && quality <= kMaxQuality))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("quality: must be a positive number of points per pixel, at most {:g} "
-                            "(got {})",
-                            kMaxQuality, quality));
+Viewport framed_viewport(const Ifs& F, cv::Size size, const std::optional<Box>& view, double margin,
+                         std::uint64_t seed, const CancelToken& cancel) {
   return {view ? *view : fit_view(attractor_bounds(F, seed, cancel), size, margin), size};
 }
 
@@ -67,40 +62,30 @@ struct Kernel {
   }
 };
 
-// The walkers of render.cpp (walkers.h: AVX2 for up to 4 maps) with address keys, in plane
-// coordinates, plotted by the viewport's pixel mapping.
+// The walkers of render.cpp with address keys (walk_kernels.h), in plane coordinates, plotted by
+// the viewport's pixel mapping. Keys are compared only once full: 64/b symbols in, on top of the
+// usual burn-in.
 struct Walkers {
-  MapTable maps;
-  MapPicker pick;
-  PixelMapping mapping;
-  int bits;
-  int burn_in;
+  WalkTables tables;
+  const WalkKernels& kernels;
 
   Walkers(const Ifs& F, const Viewport& vp)
-      : maps(F),
-        pick(effective_probabilities(F)),
-        mapping(pixel_mapping(vp)),
-        bits(symbol_bits(F.size())),
-        // Keys are compared only once full: 64/b symbols in, on top of the usual burn-in.
-        burn_in(std::max(default_burn_in(F), 64 / bits + 1)) {}
+      : tables(F, vp, std::max(default_burn_in(F), 64 / symbol_bits(F.size()) + 1),
+               symbol_bits(F.size())),
+        kernels(walk_kernels()) {}
 };
 
 // Runs `points` chaos-game points of chunk `chunk` into `buffer`: each pixel keeps the largest
 // key (Top keeps the larger address, eq. 7), cut to the top bits of a Cell (32 bits halve the
-// buffer's memory traffic; they hold 32/b symbols). On a raster larger than the caches every
-// point is a cache miss and a chunk takes a good fraction of a second, so `cancel` is polled at
-// every point plotted: one relaxed load of a flag that stays in the L1 cache, next to the miss.
+// buffer's memory traffic; they hold 32/b symbols).
 template <class Cell>
 void run_chunk(const Walkers& w, std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
-               Cell* buffer, const CancelToken& cancel) {
-  constexpr int kCellShift = 64 - 8 * static_cast<int>(sizeof(Cell));
-  plot_chunk_keyed(w.maps, w.pick, w.mapping, seed, chunk, points, w.burn_in, w.bits,
-                   [buffer, cancel](int, long pixel, std::uint32_t, std::uint64_t key) {
-                     Cell& cell = buffer[pixel];
-                     cell = std::max<Cell>(cell, static_cast<Cell>(key >> kCellShift) | 1);
-                     if (cancel.requested()) [[unlikely]]
-                       cancel.check("chaos game");
-                   });
+               Cell* buffer) {
+  const LaneSeeds seeds = lane_seeds(seed, chunk);
+  if constexpr (sizeof(Cell) == 4)
+    w.kernels.tops32(w.tables.spec(), seeds, points, buffer);
+  else
+    w.kernels.tops64(w.tables.spec(), seeds, points, buffer);
 }
 
 // Holes: unhit pixels with hit neighbours on both sides along some line through them (or, at a
@@ -259,7 +244,7 @@ std::vector<std::uint64_t> run_policy(const Ifs& F, const Viewport& viewport,
       if (buffer.empty()) buffer.assign(pixels, 0);
       const std::uint64_t begin = chunk * kChunkPoints;
       run_chunk<Cell>(walkers, options.seed, first + chunk, std::min(kChunkPoints, points - begin),
-                      buffer.data(), options.cancel);
+                      buffer.data());
     });
     s.points += points;
     s.rounds = round + 1;

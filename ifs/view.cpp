@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "ifs/chaos_game.h"
+#include "ifs/detail/preconditions.h"
 #include "ifs/error.h"
 
 namespace ifsfx {
@@ -46,6 +47,7 @@ Box checked(const Box& b, const Ifs& ifs) {
 }  // namespace
 
 Box attractor_bounds(const Ifs& ifs, std::uint64_t seed, const CancelToken& cancel) {
+  detail::check_chaos_game({.ifs = ifs});
   const double s = ifs.contraction();
   if (!(s < 1)) return checked(bounds_by_sampling(ifs, seed, cancel), ifs);
 

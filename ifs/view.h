@@ -56,13 +56,13 @@ Box attractor_bounds(const Ifs& ifs, std::uint64_t seed = 1, const CancelToken& 
 // extent so that the view is never empty.
 Box fit_view(const Box& bounds, cv::Size size, double margin = 0.05);
 
-// Parses "x0,y0,x1,y1" (the --view option); throws Error{parse} naming `what`.
-Box parse_box(const std::string& text, const std::string& what = "--view");
+// Parses "x0,y0,x1,y1" (a view); throws Error{parse} naming `what`.
+Box parse_box(const std::string& text, const std::string& what = "view");
 
-// Parses "WxH" (the --size option), 1..32768 on each side; throws Error naming `what`.
-cv::Size parse_size(const std::string& text, const std::string& what = "--size");
+// Parses "WxH" (a size), 1..32768 on each side; throws Error naming `what`.
+cv::Size parse_size(const std::string& text, const std::string& what = "size");
 
 // Checks a raster size: each side in 1..32768 (Error{invalid_argument} otherwise).
-void check_size(cv::Size size, const std::string& what = "--size");
+void check_size(cv::Size size, const std::string& what = "size");
 
 }  // namespace ifsfx

@@ -137,7 +137,7 @@ Buffers::Buffers(const SuperIfs& super, cv::Size size, const BufferOptions& opti
   check_size(size);
   if (options.count < 1)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("-V: the number of buffers must be ≥ 1 (got {})", options.count));
+                fmt::format("count: the number of buffers must be ≥ 1 (got {})", options.count));
   if (options.history < 0)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("history: must be ≥ 0 steps (got {})", options.history));
@@ -345,7 +345,7 @@ void Buffers::step() {
 
 void Buffers::run(int steps) {
   if (steps < 0)
-    throw Error(ErrorKind::invalid_argument, fmt::format("--steps: must be ≥ 0 (got {})", steps));
+    throw Error(ErrorKind::invalid_argument, fmt::format("steps: must be ≥ 0 (got {})", steps));
   for (int k = 0; k < steps; ++k) step();
 }
 

@@ -110,8 +110,8 @@ struct Descent {
 void check_buffer(const Buffers& buffers, std::size_t v) {
   if (v >= buffers.count())
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("--buffer: must be 1..{} for V = {} (got {})", buffers.count(),
-                            buffers.count(), v + 1));
+                fmt::format("buffer: must be 0..{} for count = {} (got {})", buffers.count() - 1,
+                            buffers.count(), v));
 }
 
 void check_history(const Buffers& buffers, const char* what) {
@@ -213,14 +213,14 @@ BufferOptions buffer_options(const SuperIfs& super, cv::Size size, const Texture
 void check_options(const TextureOptions& options) {
   if (options.count < 1)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("-V: the number of buffers must be ≥ 1 (got {})", options.count));
+                fmt::format("count: the number of buffers must be ≥ 1 (got {})", options.count));
   if (options.buffer < 0 || options.buffer >= options.count)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("--buffer: must be 1..{} for V = {} (got {})", options.count,
-                            options.count, options.buffer + 1));
+                fmt::format("buffer: must be 0..{} for count = {} (got {})", options.count - 1,
+                            options.count, options.buffer));
   if (options.steps < 0)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("--steps: must be ≥ 0, 0 for the default (got {})", options.steps));
+                fmt::format("steps: must be ≥ 0, 0 for the default (got {})", options.steps));
 }
 
 }  // namespace
@@ -304,7 +304,7 @@ cv::Mat render_buffer(const Buffers& buffers, std::size_t v, TextureMode mode,
     case TextureMode::steal: {
       if (source.empty())
         throw Error(ErrorKind::invalid_argument,
-                    "--source: steal mode needs a source image to steal colours from");
+                    "source: steal mode needs a source image to steal colours from");
       ApplyOptions apply_options;
       apply_options.threads = buffers.threads();
       return apply(steal_map(buffers, v), source, apply_options);

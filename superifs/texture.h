@@ -34,7 +34,7 @@ enum class TextureMode {
 
 const char* to_string(TextureMode mode) noexcept;
 // "attractor", "tops", "steal" or "measure"; throws Error{parse} naming `what` otherwise.
-TextureMode parse_texture_mode(const std::string& text, const std::string& what = "--mode");
+TextureMode parse_texture_mode(const std::string& text, const std::string& what = "mode");
 
 // Descent depth that brings the colouring's pieces below a pixel of a raster of `pixels` on its
 // longer side: the least L with s_G^L · pixels < 1, capped at 64.

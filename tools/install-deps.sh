@@ -16,6 +16,8 @@ packages=(
   ffmpeg opencv-doc openimageio-tools groff-base
   # the window of `ifsfx cam` tested under a virtual X server: Xvfb, xdotool (keys), xwd + netpbm
   xvfb xdotool x11-apps netpbm
+  # the portable binary under other CPU models (qemu-x86_64 -cpu qemu64/Haswell); objdump checks it
+  qemu-user binutils
   # the frei0r plugins: frei0r.h, and the hosts they are tested in (melt; GStreamer with the
   # frei0r wrapper in -bad, Matroska in -good, FFV1 in -libav)
   frei0r-plugins-dev melt gstreamer1.0-tools gstreamer1.0-plugins-base gstreamer1.0-plugins-good

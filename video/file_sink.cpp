@@ -49,7 +49,7 @@ const AVCodec* find_encoder(const std::filesystem::path& path, const AVOutputFor
     if (encoder == nullptr)
       throw Error(ErrorKind::unsupported,
                   fmt::format("{}: no encoder for the container's default codec {} (pick one "
-                              "with --codec)",
+                              "with codec)",
                               path.string(), avcodec_get_name(format->video_codec)));
   } else {
     encoder = avcodec_find_encoder_by_name(codec.c_str());
@@ -59,7 +59,7 @@ const AVCodec* find_encoder(const std::filesystem::path& path, const AVOutputFor
     }
     if (encoder == nullptr || encoder->type != AVMEDIA_TYPE_VIDEO)
       throw Error(ErrorKind::unsupported,
-                  fmt::format("--codec: unknown video encoder (got '{}'; `ffmpeg -encoders` lists "
+                  fmt::format("codec: unknown video encoder (got '{}'; `ffmpeg -encoders` lists "
                               "them)",
                               codec));
   }
@@ -112,8 +112,8 @@ FrameTiming timing_for(const std::filesystem::path& path, const AVOutputFormat* 
                         encoder->supported_framerates != nullptr;
   if (requested == FrameTiming::keep && no_times)
     throw Error(ErrorKind::unsupported,
-                fmt::format("{}: {} cannot keep each frame's time (--fps-mode vfr); use .mkv or "
-                            ".mp4, or --fps-mode cfr",
+                fmt::format("{}: {} cannot keep each frame's time (timing keep); use .mkv or "
+                            ".mp4, or timing constant",
                             path.string(),
                             encoder->supported_framerates != nullptr
                                 ? fmt::format("{} video", encoder->name)

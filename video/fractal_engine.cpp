@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -24,7 +25,7 @@ bool same_maps(const FractalSettings& a, const FractalSettings& b) {
 FractalEngine::FractalEngine(const FractalSettings& settings) : settings_(settings) {
   if (settings.keyframe_interval < 1)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("--keyframe-interval: must be 1 or more frames (got {})",
+                fmt::format("keyframe interval: must be 1 or more frames (got {})",
                             settings.keyframe_interval));
   options_.interpolation = settings.interpolation;
   options_.mix = settings.mix;
@@ -36,7 +37,9 @@ FractalEngine::FractalEngine(const FractalSettings& settings) : settings_(settin
     name_ = super_.name.empty() ? settings.superifs : super_.name;
     return;
   }
-  F_ = load_ifs(settings.preset).ifs;
+  IfsPreset preset = load_ifs(settings.preset);
+  F_ = std::move(preset.ifs);
+  warnings_ = std::move(preset.warnings);
   G_ = load_colouring(settings.colouring, F_);
   name_ = F_.name.empty() ? settings.preset : F_.name;
   if (settings.animate == Animate::drift) drift(F_, 0, drift_options());  // checks them

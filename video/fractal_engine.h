@@ -17,6 +17,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -116,6 +117,9 @@ class FractalEngine {
   const std::string& name() const { return name_; }
   const Ifs& drawing() const { return F_; }
   const Ifs& colouring() const { return G_; }
+  // What the caller should tell the user about the preset, one line each (IfsPreset::warnings:
+  // a Fractint entry that contracts only on average); the library never prints.
+  const std::vector<std::string>& warnings() const { return warnings_; }
   // The steal-map options of the settings (view, margin, exact, quality, seed, threads).
   StealMapOptions map_options() const;
   // How frames show through the maps (interpolation, mix, background, threads).
@@ -132,6 +136,7 @@ class FractalEngine {
   double frame_rate_ = 25;
   FilterOptions options_;
   std::string name_;
+  std::vector<std::string> warnings_;
   Ifs F_, G_;
   SuperIfs super_;                             // animate superifs
   std::shared_ptr<TextureSequence> sequence_;  // animate superifs

@@ -85,7 +85,7 @@ void fill_background(const cv::Mat& original, const FilterOptions& options, cv::
 void check_filter_options(const FilterOptions& options) {
   if (!(options.mix >= 0 && options.mix <= 1))
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("--mix: must be in [0, 1] (got {})", options.mix));
+                fmt::format("mix: must be in [0, 1] (got {})", options.mix));
 }
 
 Background parse_background(const std::string& text, const std::string& what) {

@@ -21,9 +21,9 @@ struct Background {
   friend bool operator==(const Background&, const Background&) = default;
 };
 
-// Parses --background: "black", "white", "original", "#rrggbb" or "R,G,B" (0..255 each); throws
+// Parses a background: "black", "white", "original", "#rrggbb" or "R,G,B" (0..255 each); throws
 // Error{parse} naming `what`.
-Background parse_background(const std::string& text, const std::string& what = "--background");
+Background parse_background(const std::string& text, const std::string& what = "background");
 
 struct FilterOptions {
   Interpolation interpolation = Interpolation::bilinear;

@@ -162,7 +162,7 @@ ImageSequenceSource::ImageSequenceSource(const std::string& pattern,
       throw Error(
           ErrorKind::not_found,
           fmt::format("{}: missing from the sequence {} ({} missing between {} and {}; "
-                      "--skip-gaps goes on without {})",
+                      "skip_gaps goes on without {})",
                       sequence_path(pattern, first_missing).string(), pattern,
                       missing == 1 ? std::string("1 file") : fmt::format("{} files", missing),
                       sequence_path(pattern, numbers_.front()).filename().string(),

@@ -22,7 +22,7 @@ struct FrameRange {
 
 // Parses "START:END" (both included), "START:" or ":END" (the --frames option); throws
 // Error{parse} naming `what`.
-FrameRange parse_frame_range(const std::string& text, const std::string& what = "--frames");
+FrameRange parse_frame_range(const std::string& text, const std::string& what = "frames");
 
 // The filter applied to each frame, on the filter thread, in frame order. It returns the output
 // image; the frame's index is its position in the source (not in the range), so an animation keyed

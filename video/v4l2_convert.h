@@ -31,7 +31,7 @@ std::string fourcc_name(std::uint32_t fourcc);
 
 // Parses a format name as given on the command line: yuyv, uyvy, nv12, yuv420 (or i420, yu12),
 // rgb24, bgr24, mjpeg (or mjpg); case-insensitive. Throws Error{parse} naming `what`.
-PixelFormat parse_pixel_format(const std::string& text, const std::string& what = "--format");
+PixelFormat parse_pixel_format(const std::string& text, const std::string& what = "format");
 
 // How one frame lies in a buffer. `bytes_per_line` is the stride of the first plane (V4L2's
 // bytesperline; 0 means tightly packed); chroma planes of NV12/YUV420 follow V4L2's single-plane

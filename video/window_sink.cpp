@@ -34,8 +34,7 @@ void WindowSink::write(const Frame& frame) {
       // GUI_NORMAL: the picture alone, without the Qt backend's toolbar and status bar.
       cv::namedWindow(title_, cv::WINDOW_AUTOSIZE | cv::WINDOW_GUI_NORMAL);
     } catch (const cv::Exception& e) {
-      throw Error(ErrorKind::unsupported,
-                  fmt::format("--preview: cannot open a window ({})", e.err));
+      throw Error(ErrorKind::unsupported, fmt::format("window: cannot open one ({})", e.err));
     }
     open_ = true;
     next_due_ = clock::now();

@@ -23,12 +23,10 @@ namespace ifsfx::detail {
 // b = ceil(log2 N), at least 1.
 int symbol_bits(std::size_t n);
 
-// The check and the framing the tops and steal-map entries share: `quality` in (0, kMaxQuality]
-// points per pixel (Error{invalid_argument} naming `quality`), then `view`, or F's attractor
-// auto-framed with `margin` (attractor_bounds, polling `cancel`).
-Viewport checked_viewport(const Ifs& F, cv::Size size, const std::optional<Box>& view,
-                          double margin, double quality, std::uint64_t seed,
-                          const CancelToken& cancel);
+// The framing the tops and steal-map entries share (after detail::check_chaos_game): `view`, or
+// F's attractor auto-framed with `margin` (attractor_bounds, polling `cancel`).
+Viewport framed_viewport(const Ifs& F, cv::Size size, const std::optional<Box>& view, double margin,
+                         std::uint64_t seed, const CancelToken& cancel);
 
 struct AddressRaster {
   Viewport viewport;

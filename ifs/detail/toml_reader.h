@@ -39,6 +39,7 @@ class TomlReader {
 
   // Values of one type, else Error{parse} "WHAT: must be a string (got an integer)" and the like.
   std::string string(const toml::node& node, const std::string& what) const;
+  bool boolean(const toml::node& node, const std::string& what) const;
   double number(const toml::node& node, const std::string& what) const;  // integer or float
   const toml::array& array(const toml::node& node, const std::string& what) const;
   std::vector<double> numbers(const toml::node& node, const std::string& what) const;

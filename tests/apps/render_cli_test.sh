@@ -48,11 +48,18 @@ case "$check" in
     [ "$(ls -A | wc -l)" -eq 6 ] || fail "stray files: $(ls -A)"
     ;;
   same_seed_same_bytes)
-    "$ifsfx" render maple-leaf --size 128x128 --quality 16 --seed 3 --threads 1 -q -o one.png
-    "$ifsfx" render maple-leaf --size 128x128 --quality 16 --seed 3 --threads 2 -q -o two.png
-    "$ifsfx" render maple-leaf --size 128x128 --quality 16 --seed 4 --threads 2 -q -o other.png
-    cmp -s one.png two.png || fail "thread count changed the image"
-    ! cmp -s one.png other.png || fail "the seed does not matter"
+    # 640x480 at 64 points per pixel spans five chunks of the chaos game: with 2 or 3 threads a
+    # worker runs several of them.
+    for preset in barnsley-fern maple-leaf; do
+      for threads in 1 2 3; do
+        "$ifsfx" render $preset --mode measure --size 640x480 --seed 7 --threads $threads -q \
+          -o $preset-$threads.png
+      done
+      cmp -s $preset-1.png $preset-2.png || fail "$preset: 2 threads changed the image"
+      cmp -s $preset-1.png $preset-3.png || fail "$preset: 3 threads changed the image"
+    done
+    "$ifsfx" render maple-leaf --mode measure --size 640x480 --seed 8 --threads 2 -q -o other.png
+    ! cmp -s maple-leaf-2.png other.png || fail "the seed does not matter"
     ;;
   bad_inputs)
     expect_error "unknown preset 'fren'" render fren -o x.png
@@ -69,6 +76,18 @@ case "$check" in
     expect_error "finite" render ./bad-nan.toml -o x.png
     expect_error "each side must be 1 to 32768 pixels (got 0x10)" render barnsley-fern --size 0x10 -o x.png
     expect_error "(got 40000x10)" render barnsley-fern --size 40000x10 -o x.png
+    # The command line checks its flags first; where the library checks (its own parameter
+    # names), the command line reports the flags typed (--size × --supersample).
+    expect_error "ifsfx: --quality: must be a number in (0, 1e+06] (got 0)" \
+      render barnsley-fern --quality 0 -o x.png
+    expect_error "ifsfx: --supersample: Value 0 not in range 1 to 16" render barnsley-fern --supersample 0 -o x.png
+    expect_error "ifsfx: --size × --supersample: each side must be 1 to 32768 pixels (got 40000x40000)" \
+      render barnsley-fern --size 20000x20000 --supersample 2 -o x.png
+    expect_error "ifsfx: --gamma: must be a number in (0, 100] (got -1)" render barnsley-fern --gamma -1 -o x.png
+    expect_error "ifsfx: --threads: Value -2 not in range 0 to 256" \
+      render barnsley-fern --threads -2 -o x.png
+    expect_error "ifsfx: --view: needs x1 > x0 and y1 > y0 (got '1,0,0,1')" \
+      render barnsley-fern --view 1,0,0,1 -o x.png
     expect_error "no image writer for extension '.xyz'" render barnsley-fern -o x.xyz
     expect_error "does not exist" render barnsley-fern -o missing/x.png
     mkdir ro && chmod 555 ro
@@ -83,6 +102,21 @@ case "$check" in
     # Expanding on average too: refused even with the flag.
     printf 'name = "grow"\nmaps = [[1.5, 0, 0, 1.5, 0, 0], [0.9, 0, 0, 0.9, 1, 0]]\n' >bad-grow.toml
     expect_error "contract on average" render ./bad-grow.toml --allow-expansive -o x.png
+    # The file itself may opt in.
+    printf 'name = "avg"\nallow_expansive = true\nmaps = [[1.2, 0, 0, 1.2, 0, 0], [0.3, 0, 0, 0.3, 1, 0]]\nprobabilities = [0.2, 0.8]\n' >avg-opted-in.toml
+    "$ifsfx" render ./avg-opted-in.toml --size 64x64 --quality 4 -q -o opted-in.png 2>err.txt
+    [ -s opted-in.png ] && [ ! -s err.txt ] || fail "allow_expansive = true: $(cat err.txt)"
+    # A Fractint entry with a point reflection (factor 1) that contracts on average renders as
+    # Fractint renders it, with exactly one warning line; with the flag, without a word.
+    printf 'reflect {\n -1 0 0 -1 0 10 .55\n .5 0 0 .5 0 0 .15\n .5 0 0 .5 0 5 .15\n .5 0 0 .5 5 0 .15\n}\n' >designer.ifs
+    "$ifsfx" render ./designer.ifs:reflect --size 64x64 --quality 4 -q -o reflect.png 2>err.txt
+    [ -s reflect.png ] || fail "the Fractint entry did not render: $(cat err.txt)"
+    [ "$(wc -l <err.txt)" -eq 1 ] || fail "expected one warning line: $(cat err.txt)"
+    grep -q '^ifsfx: warning: ./designer.ifs:reflect: map 1 does not contract (factor 1); accepted as Fractint renders it' err.txt ||
+      fail "warning: $(cat err.txt)"
+    "$ifsfx" render ./designer.ifs:reflect --allow-expansive --size 64x64 --quality 4 -q -o reflect2.png 2>err.txt
+    [ ! -s err.txt ] || fail "a warning with --allow-expansive: $(cat err.txt)"
+    rm -f reflect.png reflect2.png opted-in.png
     ;;
   super_presets)
     # `ifsfx presets --super`: one line per shipped superIFS preset, the paper's among them.

@@ -46,4 +46,16 @@ inline Ifs square_grid(int cells_per_side) {
   return ifs;
 }
 
+// The Sierpinski carpet: the eight outer thirds of the unit square (the middle one left out), in
+// raster order from the bottom-left.
+inline Ifs sierpinski_carpet() {
+  Ifs ifs;
+  ifs.name = "sierpinski-carpet";
+  const double s = 1.0 / 3;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i)
+      if (i != 1 || j != 1) ifs.maps.push_back({s, 0, 0, s, i * s, j * s});
+  return ifs;
+}
+
 }  // namespace ifsfx::testing

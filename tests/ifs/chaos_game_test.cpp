@@ -1,8 +1,15 @@
 #include "ifs/chaos_game.h"
 
+#include <functional>
+#include <string>
+
 #include <gtest/gtest.h>
 
+#include "ifs/error.h"
+#include "ifs/render.h"
 #include "ifs/rng.h"
+#include "ifs/steal_map.h"
+#include "ifs/tops.h"
 #include "known_ifs.h"
 
 namespace ifsfx {
@@ -73,6 +80,63 @@ TEST(rng, streams_of_one_seed_differ_and_repeat) {
     ASSERT_EQ(x, a2.next());
   }
   EXPECT_EQ(equal, 0);
+}
+
+// Every chaos-game entry point checks its inputs first, with one helper: a probability vector of
+// the wrong length (which would make the map picker read past its table), a NaN coefficient, a
+// negative thread count — each refused with the same message naming the library's parameter.
+TEST(chaos_game, every_entry_point_refuses_what_the_walk_cannot_run) {
+  Ifs short_p = testing::barnsley_fern();
+  short_p.probabilities.pop_back();
+  Ifs nan = testing::right_sierpinski();
+  nan.maps[1].e = std::nan("");
+  const Ifs fern = testing::barnsley_fern();
+  const Viewport view{{0, 0, 1, 1}, {16, 16}};
+  using Call = std::function<void(const Ifs&, int threads)>;
+  const std::pair<const char*, Call> calls[] = {
+      {"chaos_game_samples",
+       [](const Ifs& f, int t) { chaos_game_samples(f, 100, {.threads = t}); }},
+      {"visit_counts", [&](const Ifs& f, int t) { visit_counts(f, view, 100, {.threads = t}); }},
+      {"render_attractor",
+       [](const Ifs& f, int t) {
+         render_attractor(f, {16, 16}, {.quality = 1, .threads = t});
+       }},
+      {"render_measure",
+       [](const Ifs& f, int t) {
+         render_measure(f, {16, 16}, {.quality = 1, .threads = t});
+       }},
+      {"top_symbols",
+       [](const Ifs& f, int t) {
+         top_symbols(f, {16, 16}, {.quality = 1, .threads = t});
+       }},
+      {"compute_steal_map",
+       [](const Ifs& f, int t) {
+         compute_steal_map(f, default_colouring(f.size()), {16, 16}, {.quality = 1, .threads = t});
+       }},
+  };
+  const auto message = [](const Call& call, const Ifs& f, int threads) -> std::string {
+    try {
+      call(f, threads);
+    } catch (const Error& e) {
+      return std::string(to_string(e.kind())) + ": " + e.what();
+    }
+    return "accepted";
+  };
+  for (const auto& [name, call] : calls) {
+    EXPECT_EQ(message(call, short_p, 0),
+              "invalid IFS: barnsley-fern: probabilities: one per map is needed (got 3 for 4 maps)")
+        << name;
+    EXPECT_EQ(message(call, nan, 0),
+              "invalid IFS: right-sierpinski: map 2: coefficients must be finite numbers (got NaN "
+              "or inf)")
+        << name;
+    EXPECT_EQ(message(call, fern, -1),
+              "invalid argument: threads: must be 0 (all cores) to 256 (got -1)")
+        << name;
+  }
+  EXPECT_THROW(chaos_game_samples(fern, 100, {.burn_in = -3}), Error);
+  EXPECT_THROW(render_measure(fern, {16, 16}, {.quality = 0}), Error);
+  EXPECT_THROW(attractor_bounds(Ifs{}), Error);  // would read maps[0]
 }
 
 }  // namespace

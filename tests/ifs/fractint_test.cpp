@@ -1,4 +1,5 @@
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -130,12 +131,88 @@ TEST(parse_fractint, a_token_that_is_not_a_number_is_reported_with_its_line) {
 TEST(parse_fractint, bad_values_are_invalid_with_their_line) {
   expect_error("e {\n .5 0 0 .5 0 0 1\n .5 0 0 .5 nan 0 1\n}\n", ErrorKind::invalid_ifs,
                "test.ifs:3: entry 'e': map 2: coefficients must be finite numbers (got nan)");
-  expect_error("e {\n .5 0 0 .5 0 0 1\n .5 0 0 .5 1 0\n -1\n}\n", ErrorKind::invalid_ifs,
-               "test.ifs:4: entry 'e': map 2: probability must be a finite number ≥ 0 (got -1)");
+  expect_error("e {\n .5 0 0 .5 0 0 1\n .5 0 0 .5 1 0\n inf\n}\n", ErrorKind::invalid_ifs,
+               "test.ifs:4: entry 'e': map 2: probability must be a finite number (got inf)");
   expect_error("e {\n .5 0 0 .5 0 0 0\n .5 0 0 .5 1 0 0\n}\n", ErrorKind::invalid_ifs,
                "test.ifs:1: entry 'e': probabilities: they must not all be zero (got sum 0)");
   expect_error("empty { ; nothing here\n}\n", ErrorKind::invalid_ifs,
                "test.ifs:1: entry 'empty': an IFS needs at least one map (got 0 numbers)");
+}
+
+// Fractint's selection rule, by hand: the cumulative sums S_k of the weights, their running
+// maximum clamped to [0, 1] L_k, map k < N−1 gets L_k − L_{k−1}, the last map 1 − L_{N−2}.
+TEST(fractint_probabilities, follow_a_hand_computed_table) {
+  struct Row {
+    std::vector<double> weights, expected;
+  };
+  const Row table[] = {
+      // probabilities already: kept as they are
+      {{0.01, 0.85, 0.07, 0.07}, {0.01, 0.85, 0.07, 0.07}},
+      // a negative first weight: S = −1/7, 5/14, 6/7; map 1 gets nothing, map 2 loses 1/7
+      {{-0.1428571, 0.5, 0.5}, {0, 0.3571429, 0.6428571}},
+      // a negative weight inside: S = .3, .2, .5, 1; L = .3, .3, .5
+      {{0.3, -0.1, 0.3, 0.5}, {0.3, 0, 0.2, 0.5}},
+      // a large negative weight: S = .5, −.2, .2, .5; L = .5, .5, .5
+      {{0.5, -0.7, 0.4, 0.3}, {0.5, 0, 0, 0.5}},
+      // a sum above 1 is cut: S = .5, .9, 1.2
+      {{0.5, 0.4, 0.3}, {0.5, 0.4, 0.1}},
+      {{1.5, 0.5}, {1, 0}},
+      // a sum below 1 leaves the rest to the last map
+      {{0.2, 0.2, 0.2}, {0.2, 0.2, 0.6}},
+      {{0.333333, 0.333333, 0.333333}, {0.333333, 0.333333, 0.333334}},
+      // nothing reached: the last map takes everything
+      {{-0.5, -0.5}, {0, 1}},
+  };
+  for (const Row& row : table) {
+    const std::vector<double> p = fractint_probabilities(row.weights);
+    ASSERT_EQ(p.size(), row.expected.size());
+    for (std::size_t k = 0; k < p.size(); ++k)
+      EXPECT_NEAR(p[k], row.expected[k], 1e-12)
+          << "weights " << ::testing::PrintToString(row.weights) << ", map " << k;
+  }
+}
+
+// The same rule as Fractint codes it (lorenz.c's ifs loop: walk the cumulative sum while it is
+// below r, stop at the last map), applied to a fine grid of r: the share of each map is its
+// effective probability, for weight vectors with negative entries and sums off 1.
+TEST(fractint_probabilities, match_the_literal_walk_over_r) {
+  const auto walk = [](const std::vector<double>& w, double r) {
+    std::size_t k = 0;
+    double sum = w[0];
+    while (sum < r && k + 1 < w.size()) sum += w[++k];
+    return k;
+  };
+  const std::vector<std::vector<double>> cases = {{-0.1428571, 0.5, 0.5},
+                                                  {0.2, -0.3, 0.6, 0.1, 0.9},
+                                                  {0.1, 0.1, -0.05, 0.2, 0.1},
+                                                  {0.7, 0.6, -0.9, 0.5, 0.2}};
+  constexpr int kSteps = 1'000'000;
+  for (const auto& w : cases) {
+    std::vector<double> share(w.size(), 0.0);
+    for (int i = 0; i < kSteps; ++i) share[walk(w, (i + 0.5) / kSteps)] += 1.0 / kSteps;
+    const std::vector<double> p = fractint_probabilities(w);
+    for (std::size_t k = 0; k < w.size(); ++k)
+      EXPECT_NEAR(p[k], share[k], 2e-6) << ::testing::PrintToString(w) << ", map " << k;
+  }
+}
+
+// An entry with a negative weight (as Fractint designers' files have) reads, with the effective
+// probabilities of the rule: its first map is never drawn.
+TEST(parse_fractint, a_negative_weight_gives_fractints_probabilities) {
+  const auto entries = parse_fractint(R"(shortened { ; a negative weight first
+ .25  0    0   .25  0    0   -0.1428571
+ .5   .5  -.5  .5   0    0    0.5
+ .5   .5  -.5  .5   .5  -.5   0.5
+}
+)",
+                                      "neg.ifs");
+  ASSERT_EQ(entries.size(), 1u);
+  const std::vector<double>& p = entries[0].ifs.probabilities;
+  ASSERT_EQ(p.size(), 3u);
+  EXPECT_EQ(p[0], 0);
+  EXPECT_NEAR(p[1], 0.3571429, 1e-12);
+  EXPECT_NEAR(p[2], 0.6428571, 1e-12);
+  EXPECT_EQ(entries[0].format, PresetFormat::fractint);
 }
 
 TEST(parse_fractint, an_empty_file_has_no_entries) {

@@ -112,11 +112,11 @@ TEST(validate, rejects_a_map_of_factor_one_or_more) {
   ifs.maps[1] = {1.25, 0, 0, 0.5, 0, 0};
   expect_error(ifs, ErrorKind::invalid_ifs,
                "test.toml: map 2: contraction factor must be < 1 (got 1.25); "
-               "--allow-expansive accepts it if the IFS contracts on average");
+               "allow_expansive accepts it if the IFS contracts on average");
   ifs.maps[1] = {0, -1, 1, 0, 0, 0};  // a quarter turn: factor exactly 1
   expect_error(ifs, ErrorKind::invalid_ifs,
                "test.toml: map 2: contraction factor must be < 1 (got 1); "
-               "--allow-expansive accepts it if the IFS contracts on average");
+               "allow_expansive accepts it if the IFS contracts on average");
 }
 
 TEST(validate, allow_expansive_accepts_maps_that_contract_once_composed) {
@@ -125,7 +125,7 @@ TEST(validate, allow_expansive_accepts_maps_that_contract_once_composed) {
   swap.maps = {{0, 1, 0.5, 0, 0, 0}, {0, 1, 0.5, 0, 0, 0.5}};
   expect_error(swap, ErrorKind::invalid_ifs,
                "test.toml: map 1: contraction factor must be < 1 (got 1); "
-               "--allow-expansive accepts it if the IFS contracts on average");
+               "allow_expansive accepts it if the IFS contracts on average");
   EXPECT_NO_THROW(validate(swap, "swap", {.allow_expansive = true}));
 }
 

@@ -124,10 +124,10 @@ TEST(shipped_presets, toml_names_match_their_file_names_and_super_presets_are_sk
 TEST(shipped_presets, the_swap_tilings_need_allow_expansive) {
   expect_error("square-tiling-2", ErrorKind::invalid_ifs,
                "shipped:square-tiling-2.toml: map 1: contraction factor must be < 1 (got 1); "
-               "--allow-expansive accepts it if the IFS contracts on average");
+               "allow_expansive accepts it if the IFS contracts on average");
   expect_error("square-tiling-3", ErrorKind::invalid_ifs,
                "shipped:square-tiling-3.toml: map 1: contraction factor must be < 1 (got 1); "
-               "--allow-expansive accepts it if the IFS contracts on average");
+               "allow_expansive accepts it if the IFS contracts on average");
 }
 
 TEST(shipped_presets, classic_coefficients_are_the_published_ones) {
@@ -280,6 +280,62 @@ TEST(load_ifs, a_2d_entry_loads_from_a_file_with_3d_and_broken_entries) {
   EXPECT_THROW(parse_fractint("half { .5 0 0 .5 0 0 }\nsolid (3D) { 1 }\n", "x.ifs"), Error);
 }
 
+// A designer's kind of Fractint entry: a point reflection (factor exactly 1) among three halves;
+// it contracts on average (0.55 · log 1 + 0.45 · log ½ < 0).
+constexpr const char* kReflection =
+    "reflect { ; a point reflection\n"
+    " -1  0  0 -1  0 10 .55\n"
+    " .5  0  0 .5  0  0 .15\n"
+    " .5  0  0 .5  0  5 .15\n"
+    " .5  0  0 .5  5  0 .15\n"
+    "}\n";
+
+TEST(load_ifs, a_fractint_entry_contracting_on_average_loads_with_one_warning) {
+  const TempDir dir;
+  const std::string path = dir.write("designer.ifs", kReflection);
+  const IfsPreset p = load_ifs(path);
+  EXPECT_EQ(p.ifs.size(), 4u);
+  ASSERT_EQ(p.warnings.size(), 1u);
+  EXPECT_EQ(p.warnings[0], path +
+                               ":reflect: map 1 does not contract (factor 1); accepted as Fractint "
+                               "renders it, since the IFS contracts on average (mean log factor "
+                               "-0.312)");
+  // Accepted by the caller: nothing to say. Contractive entries: nothing either.
+  EXPECT_TRUE(load_ifs(path, {.allow_expansive = true}).warnings.empty());
+  EXPECT_TRUE(load_ifs("coral").warnings.empty());
+}
+
+TEST(load_ifs, a_fractint_entry_that_does_not_contract_on_average_is_refused) {
+  const TempDir dir;
+  const std::string path = dir.write("grow.ifs", "grow { 2.5 0 0 2.5 0 0 .5  .5 0 0 .5 1 0 .5 }\n");
+  try {
+    load_ifs(path);
+    ADD_FAILURE() << "accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::invalid_ifs);
+    const std::string start = path + ":grow: the IFS must contract on average: the mean";
+    EXPECT_EQ(std::string(e.what()).substr(0, start.size()), start);
+  }
+}
+
+TEST(load_ifs, a_toml_preset_stays_strict_unless_it_opts_in) {
+  const TempDir dir;
+  const std::string maps =
+      "maps = [[-1, 0, 0, -1, 0, 10], [0.5, 0, 0, 0.5, 0, 0], [0.5, 0, 0, 0.5, 0, 5],\n"
+      "        [0.5, 0, 0, 0.5, 5, 0]]\nprobabilities = [0.55, 0.15, 0.15, 0.15]\n";
+  const std::string strict = dir.write("strict.toml", maps);
+  expect_error(strict, ErrorKind::invalid_ifs,
+               strict +
+                   ": map 1: contraction factor must be < 1 (got 1); "
+                   "allow_expansive accepts it if the IFS contracts on average");
+  const IfsPreset opted = load_ifs(dir.write("opted.toml", "allow_expansive = true\n" + maps));
+  EXPECT_TRUE(opted.allow_expansive);
+  EXPECT_TRUE(opted.warnings.empty());
+  const std::string bad = dir.write("bad.toml", "allow_expansive = \"yes\"\n" + maps);
+  expect_error(bad, ErrorKind::parse,
+               bad + ":1: allow_expansive: must be true or false (got a string)");
+}
+
 TEST(load_ifs, a_toml_file_is_read_and_validated_under_its_path) {
   const TempDir dir;
   const std::string text = "name = \"half\"\nmaps = [[0.5, 0, 0, 0.5, 0, 0]]\n";
@@ -293,7 +349,7 @@ TEST(load_ifs, a_toml_file_is_read_and_validated_under_its_path) {
   expect_error(grow, ErrorKind::invalid_ifs,
                grow +
                    ": map 1: contraction factor must be < 1 (got 1.5); "
-                   "--allow-expansive accepts it if the IFS contracts on average");
+                   "allow_expansive accepts it if the IFS contracts on average");
   const std::string typo = dir.write("typo.toml", "maps = [[0.5, 0, 0, 0.5, 0]]\n");
   expect_error(typo, ErrorKind::parse, typo + ":1: map 1: needs 6 numbers a b c d e f (got 5)");
 }

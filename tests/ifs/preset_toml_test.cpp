@@ -78,7 +78,7 @@ probabilites = [1]
 )",
                ErrorKind::parse,
                "fern.toml:3: unknown key 'probabilites' "
-               "(known: name, description, maps, probabilities, colours)");
+               "(known: name, description, maps, probabilities, colours, allow_expansive)");
 }
 
 TEST(parse_ifs_toml, a_toml_syntax_error_is_reported_with_its_line) {
@@ -134,13 +134,13 @@ TEST(parse_ifs_toml, the_deepest_text_allowed_parses_safely) {
   deep.append("1").append(31, '}').append("\n");
   expect_error(deep, ErrorKind::parse,
                "fern.toml:1: unknown key 'x' (known: name, description, maps, probabilities, "
-               "colours)");
+               "colours, allow_expansive)");
   const std::string dots = dotted(5000, "b");
   expect_error("description = \"" + dots + "\"  # " + dots + "\nname = '" + dots +
                    "'\nnotes = \"\"\"\n" + dots + "\n\"\"\"\n",
                ErrorKind::parse,
                "fern.toml:3: unknown key 'notes' (known: name, description, maps, probabilities, "
-               "colours)");
+               "colours, allow_expansive)");
 }
 
 TEST(parse_ifs_toml, values_of_the_wrong_type_are_reported_with_their_line) {

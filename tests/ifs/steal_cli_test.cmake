@@ -50,7 +50,7 @@ elseif(CHECK STREQUAL "tops_modes")
   expect_file(tops.jpg)
 
 elseif(CHECK STREQUAL "colouring_count")
-  run(2 "ifsfx: --colouring sierpinski-triangle: must have as many maps as barnsley-fern (got 3 for 4)\n"
+  run(2 "ifsfx: --colouring: sierpinski-triangle must have as many maps as barnsley-fern (got 3 for 4)\n"
       render barnsley-fern --mode steal --source ${photo} --colouring sierpinski-triangle
       --size 64x64 -o out.png)
   expect_no_file(out.png)

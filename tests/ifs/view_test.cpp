@@ -50,7 +50,7 @@ TEST(parse_size, reads_w_x_h_and_rejects_the_rest) {
     parse_size("12by7");
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::parse);
-    EXPECT_STREQ(e.what(), "--size: expected WxH (got '12by7')");
+    EXPECT_STREQ(e.what(), "size: expected WxH (got '12by7')");
   }
 }
 
@@ -63,7 +63,7 @@ TEST(parse_box, reads_four_numbers_and_rejects_empty_rectangles) {
     parse_box("1,0,0,1");
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
-    EXPECT_STREQ(e.what(), "--view: needs x1 > x0 and y1 > y0 (got '1,0,0,1')");
+    EXPECT_STREQ(e.what(), "view: needs x1 > x0 and y1 > y0 (got '1,0,0,1')");
   }
 }
 

@@ -122,7 +122,7 @@ TEST(superifs_file, rejects_bad_contents_with_the_line) {
   expect_error("[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0],\n  [1.5, 0, 0, 0.5, 0.5, 0]]\n",
                ErrorKind::invalid_ifs,
                "bad.super.toml:1: IFS 1: map 2: contraction factor must be < 1 (got 1.5); "
-               "--allow-expansive accepts it if the IFS contracts on average");
+               "allow_expansive accepts it if the IFS contracts on average");
   expect_error("[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0],\n  [0.5, 0, 0, 0.5, 0.5]]\n",
                ErrorKind::parse,
                "bad.super.toml:3: IFS 1 map 2: needs 6 numbers a b c d e f (got 5)");

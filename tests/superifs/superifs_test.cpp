@@ -38,7 +38,7 @@ TEST(superifs, validation_names_the_culprit) {
   s.ifs[0].maps[2].a = 1.2;
   expect_invalid(s,
                  "test: IFS 1: map 3: contraction factor must be < 1 (got 1.2); "
-                 "--allow-expansive accepts it if the IFS contracts on average");
+                 "allow_expansive accepts it if the IFS contracts on average");
   s = paper_fig4();
   s.ifs[1].maps[0] = {0.3, 0.3, 0.3, 0.3, 0, 0};
   expect_invalid(s,

@@ -11,6 +11,8 @@
 #include "ifs/error.h"
 #include "ifs/rng.h"
 #include "interrupted.h"
+#include "same_bytes.h"
+#include "superifs/superifs_file.h"
 #include "superifs_fixtures.h"
 
 namespace ifsfx {
@@ -129,20 +131,32 @@ TEST(texture, one_ifs_one_buffer_steals_like_exact_arithmetic) {
   EXPECT_LT(far, 1e-5);
 }
 
-TEST(texture, thread_count_does_not_change_bytes) {
-  const SuperIfs s = paper_fig4();
+// Every texture mode, superIFSs of M = 3 to 8 maps, several sizes and seeds: 1, 2, 3 and 5 threads
+// give the same bytes.
+TEST(texture, every_mode_gives_the_same_bytes_for_any_thread_count) {
+  struct Case {
+    const char* preset;
+    cv::Size size;
+    std::uint64_t seed;
+  };
+  const Case cases[] = {{"paper-fig4", {150, 130}, 8},       // M = 3
+                        {"quadrant-shuffle", {97, 131}, 3},  // M = 4
+                        {"vicsek-weave", {128, 96}, 5},      // M = 5
+                        {"carpet-lace", {120, 120}, 2}};     // M = 8
   const cv::Mat source = noise_image({90, 70}, 3);
-  std::vector<cv::Mat> steal, tops;
-  for (int threads : {1, 2, 4}) {
-    TextureOptions o{
-        .count = 3, .mode = TextureMode::steal, .source = source, .seed = 8, .threads = threads};
-    steal.push_back(render_texture(s, {150, 130}, o));
-    o.mode = TextureMode::tops;
-    tops.push_back(render_texture(s, {150, 130}, o));
-  }
-  for (std::size_t t = 1; t < steal.size(); ++t) {
-    EXPECT_EQ(cv::norm(steal[0], steal[t], cv::NORM_INF), 0);
-    EXPECT_EQ(cv::norm(tops[0], tops[t], cv::NORM_INF), 0);
+  for (const Case& c : cases) {
+    const SuperIfs s = load_superifs(c.preset).super;
+    for (TextureMode mode :
+         {TextureMode::attractor, TextureMode::tops, TextureMode::steal, TextureMode::measure}) {
+      TextureOptions o{.count = 3, .mode = mode, .source = source, .seed = c.seed, .threads = 1};
+      const cv::Mat one = render_texture(s, c.size, o);
+      ASSERT_FALSE(one.empty());
+      for (int threads : {2, 3, 5}) {
+        o.threads = threads;
+        EXPECT_TRUE(testing::same_bytes(one, render_texture(s, c.size, o)))
+            << c.preset << " in mode " << to_string(mode) << ": 1 thread vs " << threads;
+      }
+    }
   }
 }
 
@@ -230,15 +244,15 @@ TEST(texture, rejects_bad_options_with_the_option_named) {
       EXPECT_NE(std::string(e.what()).find(text), std::string::npos) << e.what();
     }
   };
-  kind_and_text({.count = 2, .buffer = 2}, "--buffer: must be 1..2 for V = 2 (got 3)");
-  kind_and_text({.mode = TextureMode::steal}, "--source");
-  kind_and_text({.count = 0}, "-V");
+  kind_and_text({.count = 2, .buffer = 2}, "buffer: must be 0..1 for count = 2 (got 2)");
+  kind_and_text({.mode = TextureMode::steal}, "source: steal mode needs a source image");
+  kind_and_text({.count = 0}, "count: the number of buffers must be ≥ 1 (got 0)");
   try {
     parse_texture_mode("stealing");
     ADD_FAILURE();
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::parse);
-    EXPECT_STREQ(e.what(), "--mode: must be attractor, tops, steal or measure (got 'stealing')");
+    EXPECT_STREQ(e.what(), "mode: must be attractor, tops, steal or measure (got 'stealing')");
   }
   EXPECT_EQ(parse_texture_mode("measure"), TextureMode::measure);
 }

@@ -224,7 +224,9 @@ case "$ACCEL" in
 esac
 ACCEL_ARGS=(-accel tcg,thread=multi)
 [ "$ACCEL" = kvm ] && ACCEL_ARGS=(-accel kvm -cpu host)
-# TCG: a CPU model with the instruction set of -march=native builds (AVX2, FMA, BMI2).
+# TCG: any CPU model runs the default (portable) build, which picks its kernels from CPUID (scalar
+# or AVX2 under QEMU, whatever the host has, AVX-512 included). A -DIFSFX_NATIVE=ON build carries
+# the host's instruction set and fails here when TCG cannot emulate it (AVX-512).
 [ "$ACCEL" = tcg ] && ACCEL_ARGS+=(-cpu "${CPU:-max}")
 LOG=$WORKDIR/serial.log
 stamp "booting QEMU ($ACCEL, $SMP cpu, $MEM MiB), log in $LOG"

@@ -89,9 +89,8 @@ TEST(file_sink, unknown_codec_and_container_are_refused) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::unsupported);
-    EXPECT_STREQ(
-        e.what(),
-        "--codec: unknown video encoder (got 'nosuchcodec'; `ffmpeg -encoders` lists them)");
+    EXPECT_STREQ(e.what(),
+                 "codec: unknown video encoder (got 'nosuchcodec'; `ffmpeg -encoders` lists them)");
   }
   try {
     resolve_encoder("x.qqq", "");
@@ -349,8 +348,8 @@ TEST(file_sink, timing_follows_what_the_container_can_store) {
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::unsupported);
     EXPECT_STREQ(e.what(),
-                 "x.avi: the avi container cannot keep each frame's time (--fps-mode vfr); use "
-                 ".mkv or .mp4, or --fps-mode cfr");
+                 "x.avi: the avi container cannot keep each frame's time (timing keep); use "
+                 ".mkv or .mp4, or timing constant");
   }
 }
 

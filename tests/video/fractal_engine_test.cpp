@@ -1,5 +1,8 @@
 #include "video/fractal_engine.h"
 
+#include <filesystem>
+#include <fstream>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -99,12 +102,31 @@ TEST(fractal_engine, bad_settings_fail_before_any_frame) {
     FAIL() << "a 3-map colouring of a 4-map IFS was accepted";
   } catch (const Error& e) {
     EXPECT_STREQ(e.what(),
-                 "--colouring sierpinski-triangle: must have as many maps as barnsley-fern (got 3 "
+                 "colouring: sierpinski-triangle must have as many maps as barnsley-fern (got 3 "
                  "for 4)");
   }
   s.colouring.clear();
   s.mix = -1;
   EXPECT_THROW(FractalEngine{s}, Error);
+}
+
+// A Fractint entry that contracts only on average (a point reflection, factor 1) is drawn as
+// Fractint draws it; the engine hands load_ifs's one warning line to its caller, which prints it.
+TEST(fractal_engine, keeps_the_warning_of_a_fractint_entry_contracting_on_average) {
+  const std::filesystem::path file =
+      std::filesystem::temp_directory_path() / "fractal_engine_test_reflect.ifs";
+  std::ofstream(file) << "reflect {\n -1 0 0 -1 0 10 .55\n .5 0 0 .5 0 0 .15\n"
+                         " .5 0 0 .5 0 5 .15\n .5 0 0 .5 5 0 .15\n}\n";
+  FractalSettings s;
+  s.preset = file.string() + ":reflect";
+  const FractalEngine engine(s);
+  std::filesystem::remove(file);
+  ASSERT_EQ(engine.warnings().size(), 1u);
+  EXPECT_NE(engine.warnings()[0].find(":reflect: map 1 does not contract (factor 1); accepted as "
+                                      "Fractint renders it"),
+            std::string::npos)
+      << engine.warnings()[0];
+  EXPECT_TRUE(FractalEngine(FractalSettings{}).warnings().empty());
 }
 
 }  // namespace

@@ -174,7 +174,7 @@ TEST(fractal_filter, parse_background_reads_names_and_colours) {
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::parse);
     EXPECT_STREQ(e.what(),
-                 "--background: expected black, white, original, #rrggbb or R,G,B (got 'purple')");
+                 "background: expected black, white, original, #rrggbb or R,G,B (got 'purple')");
   }
   EXPECT_THROW(parse_background("1,2,300"), Error);
 }

@@ -95,7 +95,7 @@ TEST(image_sequence, gap_is_an_error_naming_the_missing_file) {
     EXPECT_EQ(e.kind(), ErrorKind::not_found);
     EXPECT_EQ(std::string(e.what()),
               (dir / "frame_0003.png").string() + ": missing from the sequence " + pattern +
-                  " (1 file missing between frame_0001.png and frame_0005.png; --skip-gaps goes "
+                  " (1 file missing between frame_0001.png and frame_0005.png; skip_gaps goes "
                   "on without it)");
   }
   write_numbers(dir, {9});  // 6, 7, 8 missing too
@@ -106,7 +106,7 @@ TEST(image_sequence, gap_is_an_error_naming_the_missing_file) {
     EXPECT_NE(std::string(e.what()).find("frame_0003.png: missing from the sequence"),
               std::string::npos);
     EXPECT_NE(std::string(e.what()).find("(4 files missing between frame_0001.png and "
-                                         "frame_0009.png; --skip-gaps goes on without them)"),
+                                         "frame_0009.png; skip_gaps goes on without them)"),
               std::string::npos)
         << e.what();
   }

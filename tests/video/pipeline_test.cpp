@@ -180,7 +180,7 @@ TEST(pipeline, parse_frame_range_reads_both_ends) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
-    EXPECT_STREQ(e.what(), "--frames: END must not be before START (got '20:10')");
+    EXPECT_STREQ(e.what(), "frames: END must not be before START (got '20:10')");
   }
   EXPECT_THROW(parse_frame_range("10"), Error);
   EXPECT_THROW(parse_frame_range("a:b"), Error);
