@@ -1,15 +1,18 @@
 #include "video/fractal_engine.h"
 
+#include <atomic>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "ifs/error.h"
+#include "interrupted.h"
 #include "tests/video/test_frames.h"
 
 namespace ifsfx::video {
 namespace {
 
+using ifsfx::testing::interrupted;
 using testing::test_frame;
 
 FractalSettings drifting() {
@@ -105,6 +108,42 @@ TEST(fractal_engine, bad_settings_fail_before_any_frame) {
   s.colouring.clear();
   s.mix = -1;
   EXPECT_THROW(FractalEngine{s}, Error);
+}
+
+// Every map the engine builds — the fixed map (chaos game or exact descent), the drift's framing
+// and keyframes, the superIFS burn-in — polls settings.cancel, so that `ifsfx filter` and `cam`
+// stop within a fraction of a second on Ctrl-C (issue 12). The flag is set before the call: the
+// test proves the polling without timing anything.
+TEST(fractal_engine, a_stop_request_ends_every_map_build) {
+  std::atomic<bool> stop{true};
+  const cv::Size size{64, 48};
+  FractalSettings fixed;
+  fixed.preset = "maple-leaf";
+  fixed.cancel = CancelToken(&stop);
+  EXPECT_TRUE(interrupted([&] { FractalEngine engine(fixed, size); }));
+  FractalSettings exact = fixed;
+  exact.exact = true;
+  EXPECT_TRUE(interrupted([&] { FractalEngine engine(exact, size); }));
+  FractalSettings framed = drifting();  // the drift's framing from the attractor's bounds
+  framed.cancel = fixed.cancel;
+  EXPECT_TRUE(interrupted([&] { FractalEngine engine(framed, size); }));
+  FractalSettings viewed = framed;  // a given view: the keyframes, built on worker threads
+  viewed.view = Box{-1, -1, 1, 1};
+  EXPECT_TRUE(interrupted([&] {
+    FractalEngine engine(viewed, size);
+    engine.filter(test_frame(size, 0), 0);
+  }));
+  FractalSettings super;
+  super.animate = Animate::superifs;
+  super.buffers = 2;
+  super.cancel = fixed.cancel;
+  EXPECT_TRUE(interrupted([&] { FractalEngine engine(super, size); }));
+  // Without a request the same settings make frames.
+  stop = false;
+  for (const FractalSettings& s : {fixed, exact, viewed, super}) {
+    FractalEngine engine(s, size);
+    EXPECT_EQ(engine.filter(test_frame(size, 0), 0).size(), size);
+  }
 }
 
 }  // namespace
