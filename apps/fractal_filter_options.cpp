@@ -46,7 +46,7 @@ void add_fractal_filter_options(CLI::App& cmd, FractalFilterArgs& args) {
       ->group(kFractal);
   cmd.add_option("--margin", args.margin, "Auto-framing margin, fraction of the larger side")
       ->capture_default_str()
-      ->check(number_in(0, 10))
+      ->check(number_in(0, kMaxMargin))
       ->group(kFractal);
   cmd.add_option("--quality", args.quality, "Chaos-game points per output pixel")
       ->capture_default_str()

@@ -189,7 +189,7 @@ void add_render_command(CLI::App& app) {
                   "Plane rectangle x0,y0,x1,y1 shown (default: the attractor, auto-framed)");
   cmd->add_option("--margin", args->margin, "Auto-framing margin, fraction of the larger side")
       ->capture_default_str()
-      ->check(number_in(0, 10));
+      ->check(number_in(0, kMaxMargin));
   cmd->add_option("--quality", args->quality, "Chaos-game points per output pixel")
       ->capture_default_str()
       ->check(number_in(0, kMaxQuality, true));

@@ -118,6 +118,9 @@ Box attractor_bounds(const Ifs& ifs, std::uint64_t seed, const CancelToken& canc
 }
 
 Box fit_view(const Box& bounds, cv::Size size, double margin) {
+  if (!(margin >= 0 && margin <= kMaxMargin))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("margin: must be a number in [0, {:g}] (got {})", kMaxMargin, margin));
   double w = bounds.width(), h = bounds.height();
   const double largest = std::max(w, h);
   // A line or a point still shows; and the view is never narrower than its pixels can resolve in

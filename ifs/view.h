@@ -17,6 +17,10 @@ namespace ifsfx {
 // still tells apart (2^-52 relative spacing, 32768 pixels a side, a margin of 100).
 inline constexpr double kMinRelativeExtent = 1e-9;
 
+// The largest auto-framing margin, a fraction of the attractor's larger side: ten sides of empty
+// plane around the attractor is far past any use.
+inline constexpr double kMaxMargin = 10;
+
 // An axis-aligned rectangle [x0, x1] × [y0, y1] of a plane.
 struct Box {
   double x0 = 0, y0 = 0, x1 = 1, y1 = 1;
@@ -53,7 +57,8 @@ Box attractor_bounds(const Ifs& ifs, std::uint64_t seed = 1, const CancelToken& 
 
 // The smallest view with the aspect of `size` that holds `bounds` plus `margin` (a fraction of
 // the larger side) on every side, centred. A degenerate box (a line or a point) gets a minimum
-// extent so that the view is never empty.
+// extent so that the view is never empty. Throws Error{invalid_argument} "margin: ..." for a
+// margin outside [0, kMaxMargin] or not a number (a NaN would frame nothing: a black picture).
 Box fit_view(const Box& bounds, cv::Size size, double margin = 0.05);
 
 // Parses "x0,y0,x1,y1" (a view); throws Error{parse} naming `what`.

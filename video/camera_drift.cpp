@@ -10,8 +10,8 @@ LiveDrift::LiveDrift(const Ifs& base, const Ifs& colouring, cv::Size size,
                      const LiveDriftOptions& options)
     : base_(base), colouring_(colouring), size_(size), options_(options) {
   if (!options_.map.view) {
-    options_.map.view =
-        fit_view(attractor_bounds(base_, options_.map.seed), size_, options_.map.margin);
+    options_.map.view = fit_view(attractor_bounds(base_, options_.map.seed, options_.map.cancel),
+                                 size_, options_.map.margin);
   }
   if (options_.fade_frames < 1) options_.fade_frames = 1;
   current_ = std::make_shared<const RemapTable>(build(0));

@@ -199,6 +199,10 @@ case "$check" in
     stop_during TERM 143 1.5 filter in.avi --size 8000x8000 --quality 2000 -o out.mp4
     # The exact steal map of `filter`.
     stop_during INT 130 1.5 filter in.avi --size 8000x8000 --exact -o out.mp4
+    # The filter's animations, through the one fractal engine: a drift keyframe built on a worker
+    # thread while the first frame waits for it, and the superIFS burn-in before any frame.
+    stop_during INT 130 1.5 filter in.avi --size 3000x3000 --quality 20000 --animate drift --view -3,-1,3,11 -q -o out.mp4
+    stop_during TERM 143 1.5 filter in.avi --size 4096x4096 --animate superifs --buffers 6 -q -o out.mp4
     # SuperIFS burn-in, and the texture steps.
     stop_during INT 130 1.5 texture paper-fig4 --size 4096x4096 -V 6 --steps 10000 -o out.png
     stop_during TERM 143 1.5 texture carpet-lace --mode steal --source P.png --size 2048x2048 --frames 400 -o 'out_%03d.png'

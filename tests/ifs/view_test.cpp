@@ -1,5 +1,8 @@
 #include "ifs/view.h"
 
+#include <cmath>
+#include <string>
+
 #include <gtest/gtest.h>
 
 #include "ifs/error.h"
@@ -30,6 +33,23 @@ TEST(fit_view, keeps_the_aspect_and_holds_the_box_with_its_margin) {
   EXPECT_NEAR(v.height(), 2.2, 1e-12);   // 2 + 2·0.05·2
   EXPECT_NEAR(v.x0 + v.x1, 1.0, 1e-12);  // centred
   EXPECT_NEAR(v.y0, -0.1, 1e-12);
+}
+
+// A margin that is no number, negative or absurd frames nothing useful (a NaN view draws a black
+// picture): every caller of the library — the command line, the plugins — gets the same refusal.
+TEST(fit_view, refuses_a_margin_that_is_not_a_sane_number) {
+  for (const double margin : {std::nan(""), -0.01, 10.5, 1e300, HUGE_VAL}) {
+    try {
+      fit_view({0, 0, 1, 1}, {64, 64}, margin);
+      ADD_FAILURE() << "margin " << margin << " was accepted";
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
+      EXPECT_TRUE(std::string(e.what()).starts_with("margin: must be a number in [0, 10]"))
+          << e.what();
+    }
+  }
+  EXPECT_NO_THROW(fit_view({0, 0, 1, 1}, {64, 64}, 0));
+  EXPECT_NO_THROW(fit_view({0, 0, 1, 1}, {64, 64}, kMaxMargin));
 }
 
 TEST(viewport, pixel_centres_and_pixels_agree) {

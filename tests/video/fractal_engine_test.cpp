@@ -1,5 +1,6 @@
 #include "video/fractal_engine.h"
 
+#include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -8,11 +9,13 @@
 #include <gtest/gtest.h>
 
 #include "ifs/error.h"
+#include "interrupted.h"
 #include "tests/video/test_frames.h"
 
 namespace ifsfx::video {
 namespace {
 
+using ifsfx::testing::interrupted;
 using testing::test_frame;
 
 FractalSettings drifting() {
@@ -127,6 +130,42 @@ TEST(fractal_engine, keeps_the_warning_of_a_fractint_entry_contracting_on_averag
             std::string::npos)
       << engine.warnings()[0];
   EXPECT_TRUE(FractalEngine(FractalSettings{}).warnings().empty());
+}
+
+// Every map the engine builds — the fixed map (chaos game or exact descent), the drift's framing
+// and keyframes, the superIFS burn-in — polls settings.cancel, so that `ifsfx filter` and `cam`
+// stop within a fraction of a second on Ctrl-C (issue 12). The flag is set before the call: the
+// test proves the polling without timing anything.
+TEST(fractal_engine, a_stop_request_ends_every_map_build) {
+  std::atomic<bool> stop{true};
+  const cv::Size size{64, 48};
+  FractalSettings fixed;
+  fixed.preset = "maple-leaf";
+  fixed.cancel = CancelToken(&stop);
+  EXPECT_TRUE(interrupted([&] { FractalEngine engine(fixed, size); }));
+  FractalSettings exact = fixed;
+  exact.exact = true;
+  EXPECT_TRUE(interrupted([&] { FractalEngine engine(exact, size); }));
+  FractalSettings framed = drifting();  // the drift's framing from the attractor's bounds
+  framed.cancel = fixed.cancel;
+  EXPECT_TRUE(interrupted([&] { FractalEngine engine(framed, size); }));
+  FractalSettings viewed = framed;  // a given view: the keyframes, built on worker threads
+  viewed.view = Box{-1, -1, 1, 1};
+  EXPECT_TRUE(interrupted([&] {
+    FractalEngine engine(viewed, size);
+    engine.filter(test_frame(size, 0), 0);
+  }));
+  FractalSettings super;
+  super.animate = Animate::superifs;
+  super.buffers = 2;
+  super.cancel = fixed.cancel;
+  EXPECT_TRUE(interrupted([&] { FractalEngine engine(super, size); }));
+  // Without a request the same settings make frames.
+  stop = false;
+  for (const FractalSettings& s : {fixed, exact, viewed, super}) {
+    FractalEngine engine(s, size);
+    EXPECT_EQ(engine.filter(test_frame(size, 0), 0).size(), size);
+  }
 }
 
 }  // namespace
