@@ -10,13 +10,24 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
 #include "collage/collage.h"
+#include "collage/search.h"
+#include "ifs/cancel.h"
 #include "ifs/ifs.h"
 
 namespace ifsfx::collage {
+
+// How much of one connected component (8-connected) of L the attractor covers: a part of a
+// multi-part shape too small for a map of its own may be left out.
+struct PartCoverage {
+  int area = 0;        // pixels of the working raster
+  Point centre;        // its centroid, IFS plane
+  double covered = 0;  // fraction of its pixels that A hits
+};
 
 // What the collage theorem says about an IFS against a target, and what its attractor does.
 struct CollageReport {
@@ -31,6 +42,7 @@ struct CollageReport {
   bool clipped = false;  // A reaches beyond the measuring canvas (the square grown by 1 each way)
   cv::Mat collage;       // W(L) on the working raster, CV_8UC1 0/255
   cv::Mat attractor;     // A on the working raster, CV_8UC1 0/255
+  std::vector<PartCoverage> parts;  // L's components, largest first
 };
 
 struct AssessOptions {
@@ -45,31 +57,63 @@ struct AssessOptions {
 //   auto r = assess(raster, sierpinski);  // r.collage_distance ≈ √3/12 for a filled triangle
 CollageReport assess(const cv::Mat& target, const Ifs& ifs, const AssessOptions& options = {});
 
+// Where the starting maps come from.
+enum class Initialisation {
+  // Issue 14's: split L along principal axes (restarts: k-means++ splits) and match each part's
+  // first and second moments with one of 16 orthogonal turns (initialise.h).
+  moments,
+  // The range/domain search of fractal image compression (search.h) on several partitions of L
+  // (one part per connected component at least), the per-piece winners combined, the next-best
+  // combinations and partitions tried while the budget lasts.
+  search,
+};
+
+enum class FitPhase {
+  partition,  // splitting L into the N ranges
+  search,     // searching maps L → range and combining them
+  refine,     // CMA-ES on the collage objective, ICP, rendering the attractors
+};
+const char* to_string(FitPhase phase) noexcept;
+
 struct FitProgress {
-  int run = 0;           // 0: from the principal-axes split; 1..: restarts from k-means++
-  int runs = 0;          // runs planned
+  FitPhase phase = FitPhase::partition;
+  int run = 0;           // 0-based
+  int runs = 0;          // runs planned at most
   long evaluations = 0;  // objective evaluations so far, all runs
   double objective = 0;  // best value of this run so far
   double best = 0;       // best value of all runs so far
+  double best_iou = 0;   // IoU(L, A) of the best IFS so far; 0 until the first is rendered
   double seconds = 0;    // since the fit started
 };
 
 struct FitOptions {
   int maps = 4;  // N, 1..32
   std::uint64_t seed = 1;
-  int restarts = 5;              // CMA-ES runs after the first, each from a seeded k-means++ split
+  Initialisation init = Initialisation::search;
+  int restarts = 5;              // runs after the first (each from the next start)
   long max_evaluations = 60000;  // objective evaluations over all runs (what makes it reproducible)
-  double max_seconds = 30;       // wall-clock cap over all runs; 0 = none (then the same seed gives
-                                 // the same maps on any machine and thread count)
-  int threads = 0;               // 0 = all cores
-  double quality = 256;          // chaos-game points per pixel for the attractors
-  std::string name = "fitted";   // the IFS's name
+  // Wall-clock cap over the whole fit, rendering included; 0 = none (then the same seed gives the
+  // same maps on any machine and thread count). Work is cut only between units whose result does
+  // not depend on the thread count (a CMA-ES generation, an ICP round, a searched piece), so a
+  // slow machine gets fewer units, never different ones.
+  double max_seconds = 30;
+  int threads = 0;              // 0 = all cores
+  double quality = 256;         // chaos-game points per pixel for the attractors
+  std::string name = "fitted";  // the IFS's name
   ObjectiveOptions objective;
   // ICP rounds (refine.h) after each run's search; the refined maps replace the searched ones
   // when their attractor matches L better. 0 = no refinement.
   int refine_iterations = 30;
-  // Called after every CMA-ES generation on the calling thread (the library never prints).
+  // Initialisation::search: partitions of L whose searched maps make the pool the runs choose
+  // from (the first is always searched; the others while the time allows), and the search
+  // itself (its threads and cancel are the fit's).
+  int partitions = 4;
+  SearchOptions search;
+  // Called after every CMA-ES generation and at every change of phase, on the calling thread
+  // (the library never prints).
   std::function<void(const FitProgress&)> progress;
+  // Polled between candidates and refinement steps; a stop request throws Error{interrupted}.
+  CancelToken cancel;
 };
 
 struct FitResult {
@@ -82,9 +126,10 @@ struct FitResult {
   bool time_capped = false;  // max_seconds cut the search short
 };
 
-// Fits N maps to `target` (a working raster): every run starts from an initial_maps() split,
-// minimises the CollageObjective by CMA-ES, then refines the maps to sub-pixel precision by ICP;
-// of all these candidates, the one whose rendered attractor overlaps L best (IoU) wins.
+// Fits N maps to `target` (a working raster): every run starts from maps found by the chosen
+// initialisation, minimises the CollageObjective by CMA-ES, then refines the maps to sub-pixel
+// precision by ICP; of all these candidates, the one whose rendered attractor overlaps L best
+// (IoU) wins.
 // Throws Error{invalid_argument} for N outside 1..32 or above the number of pixels of L.
 FitResult fit(const cv::Mat& target, const FitOptions& options = {});
 

@@ -139,6 +139,7 @@ CmaesResult minimise_cmaes(const std::function<double(std::span<const double>)>&
 
   for (int g = 0;; ++g) {
     if (result.evaluations + lambda > options.max_evaluations) break;
+    options.cancel.check("fit");
     if (std::chrono::steady_clock::now() >= options.deadline) {
       result.deadline_reached = true;
       break;
