@@ -110,8 +110,7 @@ Row fit_one(const Args& args, const Shape& shape, collage::Initialisation init) 
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   const std::filesystem::path path = args.shapes / shape.file;
-  const cv::Mat raster =
-      collage::working_raster(collage::load_target(path), {.size = args.size});
+  const cv::Mat raster = collage::working_raster(collage::load_target(path), {.size = args.size});
   collage::FitOptions options;
   options.maps = shape.maps;
   options.init = init;
@@ -124,7 +123,7 @@ Row fit_one(const Args& args, const Shape& shape, collage::Initialisation init) 
   row.iou = r.iou;
   row.hausdorff = r.hausdorff;
   row.bound = r.upper_bound;
-  row.holds = r.hausdorff <= r.upper_bound;
+  row.holds = r.bound_holds();
   for (const auto& part : r.parts)
     if (part.covered < 0.5)
       row.left_out += fmt::format(" {}px@({:.2f},{:.2f})", part.area, part.centre.x, part.centre.y);
@@ -154,13 +153,14 @@ int main(int argc, char** argv) try {
       const auto stem = std::filesystem::path(s.file).stem().string();
       return std::find(args.only.begin(), args.only.end(), stem) == args.only.end();
     });
-  std::printf("collage_bench: %zu shapes from %s; working raster %d, --max-seconds %g, threads %d\n",
-              shapes.size(), args.shapes.c_str(), args.size, args.max_seconds, args.threads);
+  std::printf(
+      "collage_bench: %zu shapes from %s; working raster %d, --max-seconds %g, threads %d\n",
+      shapes.size(), args.shapes.c_str(), args.size, args.max_seconds, args.threads);
   std::printf("%-12s %2s", "shape", "N");
   for (const auto init : args.inits)
-    std::printf(" | %-7s %6s %6s %6s %5s", init == collage::Initialisation::moments ? "moments"
-                                                                                   : "search",
-                "IoU", "h", "bound", "sec");
+    std::printf(" | %-7s %6s %6s %6s %5s",
+                init == collage::Initialisation::moments ? "moments" : "search", "IoU", "h",
+                "bound", "sec");
   std::printf(" | parts left out (search)\n");
 
   std::vector<std::vector<double>> ious(args.inits.size()), seconds(args.inits.size());
@@ -188,8 +188,7 @@ int main(int argc, char** argv) try {
   for (std::size_t k = 0; k < args.inits.size(); ++k)
     std::printf(" | %7s %6.3f %6s %6s %5.1f", "",
                 ious[k].empty() ? 0.0 : *std::min_element(ious[k].begin(), ious[k].end()), "", "",
-                seconds[k].empty() ? 0.0
-                                   : *std::max_element(seconds[k].begin(), seconds[k].end()));
+                seconds[k].empty() ? 0.0 : *std::max_element(seconds[k].begin(), seconds[k].end()));
   std::printf("\n");
   if (!all_hold) std::printf("collage_bench: a collage bound FAILED\n");
   return all_hold ? 0 : 1;

@@ -133,6 +133,13 @@ CollageObjective::CollageObjective(const cv::Mat& target, const ObjectiveOptions
   target_ = target.clone();
   distance_ = distance_to(target_);
   points_ = centres_of(target_);
+  deep_.assign(static_cast<std::size_t>(size_ - 1) * static_cast<std::size_t>(size_ - 1), 0);
+  for (int r = 0; r + 1 < size_; ++r)
+    for (int c = 0; c + 1 < size_; ++c)
+      deep_[static_cast<std::size_t>(r) * static_cast<std::size_t>(size_ - 1) +
+            static_cast<std::size_t>(c)] =
+          target_.at<std::uint8_t>(r, c) && target_.at<std::uint8_t>(r, c + 1) &&
+          target_.at<std::uint8_t>(r + 1, c) && target_.at<std::uint8_t>(r + 1, c + 1);
   inside_.assign((static_cast<std::size_t>(size_) * size_ + 63) / 64, 0);
   for (const auto& p : points_) {
     const std::size_t bit = static_cast<std::size_t>(p.y) * size_ + static_cast<std::size_t>(p.x);
@@ -166,17 +173,23 @@ Footprint CollageObjective::footprint(const AffineMap& f) const {
     const double x = qx - 0.5, y = qy - 0.5;
     if (x >= 0 && y >= 0 && x < last && y < last) {
       const auto c = static_cast<std::size_t>(x), r = static_cast<std::size_t>(y);
+      const std::size_t bit =
+          (r + (y - static_cast<double>(r) >= 0.5)) * static_cast<std::size_t>(n) + c +
+          (x - static_cast<double>(c) >= 0.5);
+      out.hits[bit / 64] |= std::uint64_t{1} << (bit % 64);
+      if (deep_[r * static_cast<std::size_t>(n - 1) + c]) continue;  // inside L: no spill
       const double u = x - static_cast<double>(c), v = y - static_cast<double>(r);
       const float* row0 = d + r * stride + c;
       const float* row1 = row0 + stride;
-      out.spill += (1 - v) * ((1 - u) * row0[0] + u * row0[1]) + v * ((1 - u) * row1[0] + u * row1[1]);
-    } else {
-      out.spill += interpolated_distance(distance_, qx, qy);
+      out.spill +=
+          (1 - v) * ((1 - u) * row0[0] + u * row0[1]) + v * ((1 - u) * row1[0] + u * row1[1]);
+      continue;
     }
+    out.spill += interpolated_distance(distance_, qx, qy);
     const double c = std::floor(qx), r = std::floor(qy);
     if (c >= 0 && r >= 0 && c < n && r < n) {
-      const auto bit = static_cast<std::size_t>(r) * static_cast<std::size_t>(n) +
-                       static_cast<std::size_t>(c);
+      const auto bit =
+          static_cast<std::size_t>(r) * static_cast<std::size_t>(n) + static_cast<std::size_t>(c);
       out.hits[bit / 64] |= std::uint64_t{1} << (bit % 64);
     }
   }
@@ -261,8 +274,8 @@ ObjectiveTerms CollageObjective::terms(std::span<const Footprint* const> parts) 
     either += std::popcount(hit | inside_[w]);
   }
   t.collage_iou = either == 0 ? 1.0 : static_cast<double>(both) / static_cast<double>(either);
-  t.spill = spill / (static_cast<double>(points_.size()) * static_cast<double>(parts.size())) /
-            size_;
+  t.spill =
+      spill / (static_cast<double>(points_.size()) * static_cast<double>(parts.size())) / size_;
   t.overlap = std::max(0.0, dets - 1);
 
   t.value = (1 - t.collage_iou) + options_.spill * t.spill + options_.overlap * t.overlap +

@@ -88,9 +88,12 @@ class CollageObjective {
   double contraction_penalty(double factor) const;
 
   int size_ = 0;
-  cv::Mat target_;                   // CV_8UC1, 0/255
-  cv::Mat distance_;                 // CV_32FC1, distance (pixels) to the nearest centre of L
-  std::vector<cv::Point2f> points_;  // centres of L's pixels, pixel coordinates
+  cv::Mat target_;    // CV_8UC1, 0/255
+  cv::Mat distance_;  // CV_32FC1, distance (pixels) to the nearest centre of L
+  // Per cell between four pixel centres (row-major, (S − 1)²): 1 when all four are in L, so that
+  // the interpolated distance is 0 anywhere in the cell.
+  std::vector<std::uint8_t> deep_;
+  std::vector<cv::Point2f> points_;    // centres of L's pixels, pixel coordinates
   std::vector<std::uint64_t> inside_;  // L as S² bits, row-major
   Point centroid_;
   ObjectiveOptions options_;

@@ -45,9 +45,9 @@ std::vector<std::size_t> select_maps(const CollageObjective& objective,
     std::sort(additions.begin(), additions.end());
     const auto choices =
         std::min<std::size_t>(additions.size(), static_cast<std::size_t>(options.spread) + 1);
-    const std::size_t pick =
-        choices > 1 ? additions[rng.below(static_cast<std::uint32_t>(choices))].second
-                    : additions.front().second;
+    const std::size_t pick = choices > 1
+                                 ? additions[rng.below(static_cast<std::uint32_t>(choices))].second
+                                 : additions.front().second;
     chosen.push_back(pick);
     taken[pick] = 1;
   }
@@ -89,15 +89,20 @@ DescentResult compass(std::vector<AffineMap> maps, double value, Point mu, doubl
   DescentResult result;
   std::array<AffineMap, 12> moves;
   std::array<double, 12> move_values;
-  for (int sweep = 0; sweep < options.sweeps && !result.deadline_reached; ++sweep) {
+  bool stop = false;  // the deadline came or the evaluations are spent
+  for (int sweep = 0; sweep < options.sweeps && !stop; ++sweep) {
     for (std::size_t k = 0; k < maps.size(); ++k) {
-      std::array<double, 6> step = {options.linear_step, options.linear_step,
-                                    options.linear_step, options.linear_step,
+      std::array<double, 6> step = {options.linear_step,        options.linear_step,
+                                    options.linear_step,        options.linear_step,
                                     options.pixel_step * pixel, options.pixel_step * pixel};
       for (int halvings = 0, moved = 0; halvings <= options.halvings && moved < kMaxMoves;) {
         options.cancel.check("fit");
+        if (options.max_evaluations > 0 && result.evaluations + 12 > options.max_evaluations) {
+          stop = true;
+          break;
+        }
         if (std::chrono::steady_clock::now() >= options.deadline) {
-          result.deadline_reached = true;
+          result.deadline_reached = stop = true;
           break;
         }
         // Moves about L's centroid μ: the linear part changes with f(μ) kept, so that turning
@@ -130,7 +135,7 @@ DescentResult compass(std::vector<AffineMap> maps, double value, Point mu, doubl
           ++halvings;
         }
       }
-      if (result.deadline_reached) break;
+      if (stop) break;
     }
   }
   result.maps = std::move(maps);

@@ -34,11 +34,12 @@ struct DescentOptions {
   // k > 1 = CollageObjective::iterated(maps, k), the IoU of W^k(L), nearer the attractor (a
   // move maps W^k(L) again, k·N footprints' worth).
   int iterations = 1;
-  int sweeps = 4;              // passes over all maps
-  double linear_step = 0.04;   // first step on a, b, c, d (halved when no move helps)
-  double pixel_step = 2;       // first step on e, f, in pixels of the working raster
-  int halvings = 5;            // steps are halved this often per map and sweep before moving on
-  int threads = 0;             // the 12 moves of a step are scored in parallel; 0 = all cores
+  int sweeps = 4;             // passes over all maps
+  double linear_step = 0.04;  // first step on a, b, c, d (halved when no move helps)
+  double pixel_step = 2;      // first step on e, f, in pixels of the working raster
+  int halvings = 5;           // steps are halved this often per map and sweep before moving on
+  long max_evaluations = 0;   // moves scored at most (checked per step of 12); 0 = no cap
+  int threads = 0;            // the 12 moves of a step are scored in parallel; 0 = all cores
   // No step starts at or after this time. The default never comes.
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
   CancelToken cancel;  // polled before every step; a stop request throws Error{interrupted}
@@ -46,9 +47,9 @@ struct DescentOptions {
 
 struct DescentResult {
   std::vector<AffineMap> maps;
-  double value = 0;       // the criterion's value for `maps`
-  long evaluations = 0;   // moves scored
-  bool deadline_reached = false;
+  double value = 0;               // the criterion's value for `maps`
+  long evaluations = 0;           // moves scored
+  bool deadline_reached = false;  // stopped by the deadline (not by max_evaluations)
 };
 
 // Coordinate descent one map at a time: a compass search moves the map's linear part (about L's

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <cstdio>
+#include <limits>
 
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
@@ -53,10 +53,10 @@ std::vector<PartCoverage> part_coverage(const cv::Mat& target, const cv::Mat& at
   std::vector<PartCoverage> parts;
   for (int k = 1; k < count; ++k) {
     const int area = stats.at<int>(k, cv::CC_STAT_AREA);
-    parts.push_back({area,
-                     {(centroids.at<double>(k, 0) + 0.5) / size,
-                      1 - (centroids.at<double>(k, 1) + 0.5) / size},
-                     static_cast<double>(hit[static_cast<std::size_t>(k)]) / area});
+    parts.push_back(
+        {area,
+         {(centroids.at<double>(k, 0) + 0.5) / size, 1 - (centroids.at<double>(k, 1) + 0.5) / size},
+         static_cast<double>(hit[static_cast<std::size_t>(k)]) / area});
   }
   std::stable_sort(parts.begin(), parts.end(),
                    [](const PartCoverage& a, const PartCoverage& b) { return a.area > b.area; });
@@ -85,6 +85,7 @@ CollageReport assess(const cv::Mat& target, const Ifs& ifs, const AssessOptions&
   const int size = target.cols;
   CollageReport r;
   r.pixel = 1.0 / size;
+  r.raster_error = std::sqrt(0.5) * r.pixel;
   r.contraction = ifs.contraction();
   r.collage_distance = collage_distance(target, ifs.maps);
   r.lower_bound = r.collage_distance / (1 + r.contraction);
@@ -206,7 +207,9 @@ class Chooser {
   }
 
   // Seconds to keep free before the deadline for the renderings that judge a last candidate.
-  double reserve() const { return 1.5 * assess_seconds_; }
+  double reserve() const {
+    return 1.5 * assess_seconds_;
+  }
 
   FitResult result;
   double best_iou = -1;
@@ -282,9 +285,8 @@ struct Fitting {
                           std::min(best_objective, p.best), std::max(chooser.best_iou, 0.0),
                           budget.seconds()});
       };
-    const auto found =
-        minimise_cmaes([&](std::span<const double> x) { return objective(to_maps(x)); },
-                       to_vector(start), cmaes);
+    const auto found = minimise_cmaes(
+        [&](std::span<const double> x) { return objective(to_maps(x)); }, to_vector(start), cmaes);
     budget.evaluations += found.evaluations;
     if (found.deadline_reached) budget.capped = true;
     best_objective = std::min(best_objective, found.value);
@@ -333,14 +335,25 @@ void fit_from_moments(Fitting& fitting) {
 
 // The partition `index`: principal axes first, then k-means++ seeds; one part per component at
 // least.
-cv::Mat partition_of(const Fitting& fitting, int index) {
+cv::Mat partition_of(const cv::Mat& target, const FitOptions& options, int index) {
   InitOptions init;
   init.by_component = true;
   if (index > 0) {
     init.split = Split::kmeans_plus_plus;
-    init.seed = stream_seed(fitting.options.seed, static_cast<std::uint64_t>(index));
+    init.seed = stream_seed(options.seed, static_cast<std::uint64_t>(index));
   }
-  return partition(fitting.target, fitting.options.maps, init);
+  return partition(target, options.maps, init);
+}
+
+// L on a raster of half the side, a pixel kept where L covers a quarter of it (so that thin parts
+// survive): the search runs there, four times cheaper per candidate (the maps it finds live on
+// the plane, not on a raster). Rasters below 96 pixels are kept as they are.
+cv::Mat coarse_raster(const cv::Mat& target) {
+  if (target.cols < 96) return target;
+  cv::Mat half, mask;
+  cv::resize(target, half, {target.cols / 2, target.rows / 2}, 0, 0, cv::INTER_AREA);
+  cv::threshold(half, mask, 63, 255, cv::THRESH_BINARY);
+  return cv::countNonZero(mask) >= 4 ? mask : target;
 }
 
 // The maps every run chooses from, with their footprints.
@@ -349,27 +362,27 @@ struct Pool {
   std::vector<Footprint> footprints;
 };
 
-// Searches the partitions (the first always, the next ones while less than a quarter of the
-// time is spent) and pools the maps kept for every piece, with the moment-matched start maps.
-Pool search_pool(Fitting& fitting) {
+// Searches the partitions of `target` (the first always, the next ones while less than a
+// quarter of the time is spent) and pools the maps kept for every piece, with the
+// moment-matched start maps; their footprints are taken on `objective`'s raster.
+Pool search_pool(Fitting& fitting, const cv::Mat& target, const CollageObjective& objective) {
   const FitOptions& options = fitting.options;
   SearchOptions search = options.search;
   search.threads = options.threads;
   search.cancel = options.cancel;
   Pool pool;
-  pool.maps = initial_maps(fitting.target, options.maps);
+  pool.maps = initial_maps(target, options.maps);
   for (int p = 0; p < options.partitions; ++p) {
     if (p > 0 && Clock::now() >= fitting.budget.at(0.25)) break;
     fitting.report(FitPhase::partition, 0, fitting.best_objective);
-    const cv::Mat labels = partition_of(fitting, p);
+    const cv::Mat labels = partition_of(target, options, p);
     fitting.report(FitPhase::search, 0, fitting.best_objective);
-    for (const auto& piece : search_pieces(fitting.target, labels, options.maps, search))
+    for (const auto& piece : search_pieces(target, labels, options.maps, search))
       for (const auto& c : piece) pool.maps.push_back(c.map);
   }
   pool.footprints.resize(pool.maps.size());
-  parallel_for(pool.maps.size(), options.threads, [&](std::size_t i, int) {
-    pool.footprints[i] = fitting.objective.footprint(pool.maps[i]);
-  });
+  parallel_for(pool.maps.size(), options.threads,
+               [&](std::size_t i, int) { pool.footprints[i] = objective.footprint(pool.maps[i]); });
   fitting.budget.evaluations += std::ssize(pool.maps) / options.maps;
   return pool;
 }
@@ -398,7 +411,8 @@ constexpr int kPolishIterations = 5;
 void fit_from_search(Fitting& fitting) {
   const FitOptions& options = fitting.options;
   Budget& budget = fitting.budget;
-  const Pool pool = search_pool(fitting);
+  const CollageObjective& coarse = fitting.objective;
+  const Pool pool = search_pool(fitting, coarse_raster(fitting.target), fitting.objective);
   std::vector<std::vector<std::size_t>> tried;
   std::vector<AffineMap> best;
   double best_value = std::numeric_limits<double>::infinity();
@@ -408,7 +422,9 @@ void fit_from_search(Fitting& fitting) {
   descent.deadline = budget.at(0.45);
   int run = 0;
   for (;; ++run) {
-    if (budget.evaluations >= budget.evaluations_at(0.45) || Clock::now() >= descent.deadline)
+    // The first run always happens, so that a fit has an answer however small its budget.
+    if (run > 0 &&
+        (budget.evaluations >= budget.evaluations_at(0.45) || Clock::now() >= descent.deadline))
       break;
     std::vector<AffineMap> start;
     if (run <= options.restarts) {
@@ -417,7 +433,7 @@ void fit_from_search(Fitting& fitting) {
       SelectOptions select;
       select.spread = run == 0 ? 0 : 2;
       select.seed = stream_seed(options.seed, static_cast<std::uint64_t>(run));
-      auto chosen = select_maps(fitting.objective, pool.footprints, options.maps, select);
+      auto chosen = select_maps(coarse, pool.footprints, options.maps, select);
       std::sort(chosen.begin(), chosen.end());
       if (std::find(tried.begin(), tried.end(), chosen) != tried.end()) continue;
       tried.push_back(chosen);
@@ -426,7 +442,10 @@ void fit_from_search(Fitting& fitting) {
       start = kicked(best, pool, options.seed, run);
     }
     fitting.report(FitPhase::refine, run, fitting.best_objective);
-    const DescentResult descended = descend_each_map(fitting.objective, start, descent);
+    // A move costs one map's image: N of them make one evaluation.
+    descent.max_evaluations =
+        std::max(12L, (budget.evaluations_at(0.45) - budget.evaluations) * options.maps);
+    const DescentResult descended = descend_each_map(coarse, start, descent);
     budget.evaluations += descended.evaluations / options.maps;
     fitting.best_objective = std::min(fitting.best_objective, descended.value);
     // Render only what may beat the best attractor: objective and IoU go together closely.
@@ -442,8 +461,8 @@ void fit_from_search(Fitting& fitting) {
   // All maps at once: CMA-ES on the collage objective, then ICP (each kept only if its
   // attractor is better).
   if (!budget.expired())
-    fitting.refine(run, best, 0.005,
-                   std::max(2L, budget.evaluations_at(0.5) - budget.evaluations), budget.at(0.5));
+    fitting.refine(run, best, 0.005, std::max(2L, budget.evaluations_at(0.5) - budget.evaluations),
+                   budget.at(0.5));
 
   // The attractor itself: descend on 1 − IoU(L, W^k(L)) from the best attractor so far; while
   // time is left, kick the polished maps (as above), descend on the collage and polish again,
@@ -463,12 +482,15 @@ void fit_from_search(Fitting& fitting) {
     fitting.report(FitPhase::refine, run, fitting.best_objective);
     std::vector<AffineMap> start = current;
     if (kick > 0) {
+      descent.max_evaluations = std::max(12L, budget.evaluations_left() * options.maps);
       const DescentResult moved =
-          descend_each_map(fitting.objective, kicked(current, pool, options.seed, run), descent);
+          descend_each_map(coarse, kicked(current, pool, options.seed, run), descent);
       budget.evaluations += moved.evaluations / options.maps;
       start = moved.maps;
       polish.sweeps = 2;
     }
+    // A move maps W^k(L) again: k evaluations.
+    polish.max_evaluations = std::max(12L, budget.evaluations_left() / kPolishIterations);
     const DescentResult polished = descend_each_map(fitting.objective, start, polish);
     budget.evaluations += polished.evaluations * kPolishIterations;
 #ifdef IFSFX_COLLAGE_TRACE

@@ -36,13 +36,20 @@ struct CollageReport {
   double lower_bound = 0;       // h(L, W(L)) / (1 + s) ≤ h(L, A)
   double upper_bound = 0;       // h(L, A) ≤ h(L, W(L)) / (1 − s); +inf when s ≥ 1
   double hausdorff = 0;         // h(L, A) measured on the raster: L against the pixels A hits
-  double iou = 0;               // |L ∩ A| / |L ∪ A| on the raster (A outside the square counts)
-  double collage_iou = 0;       // |L ∩ W(L)| / |L ∪ W(L)| on the raster
-  double pixel = 0;             // the raster's pixel size in plane units, 1/S
-  bool clipped = false;  // A reaches beyond the measuring canvas (the square grown by 1 each way)
-  cv::Mat collage;       // W(L) on the working raster, CV_8UC1 0/255
-  cv::Mat attractor;     // A on the working raster, CV_8UC1 0/255
+  // How far the measured h(L, A) may lie from the true one: the centre of a pixel that A hits is
+  // within half a pixel diagonal (√2 / 2S) of A, and a fully rendered A is within that of the
+  // centres; so the collage theorem promises hausdorff ≤ upper_bound + raster_error.
+  double raster_error = 0;
+  double iou = 0;          // |L ∩ A| / |L ∪ A| on the raster (A outside the square counts)
+  double collage_iou = 0;  // |L ∩ W(L)| / |L ∪ W(L)| on the raster
+  double pixel = 0;        // the raster's pixel size in plane units, 1/S
+  bool clipped = false;    // A reaches beyond the measuring canvas (the square grown by 1 each way)
+  cv::Mat collage;         // W(L) on the working raster, CV_8UC1 0/255
+  cv::Mat attractor;       // A on the working raster, CV_8UC1 0/255
   std::vector<PartCoverage> parts;  // L's components, largest first
+
+  // The collage theorem's bound holds for what was measured (within the raster's error).
+  bool bound_holds() const { return hausdorff <= upper_bound + raster_error; }
 };
 
 struct AssessOptions {

@@ -12,8 +12,8 @@
 namespace ifsfx::collage {
 
 struct PreviewOptions {
-  int scale = 2;          // each working-raster pixel drawn as scale × scale pixels (1..16)
-  double quality = 256;   // chaos-game points per pixel for A's pieces (fractal tops)
+  int scale = 2;         // each working-raster pixel drawn as scale × scale pixels (1..16)
+  double quality = 256;  // chaos-game points per pixel for A's pieces (fractal tops)
   std::uint64_t seed = 1;
   int threads = 0;  // 0 = all cores
 };

@@ -63,10 +63,12 @@ class PieceScorer {
         l_area_(static_cast<double>(l_points.size())),
         p_area_(static_cast<double>(p_points.size())),
         weight_(weight) {
-    l_points_.assign(l_points.begin(),
-                     l_points.begin() + std::min<std::ptrdiff_t>(polish_samples, std::ssize(l_points)));
-    p_points_.assign(p_points.begin(),
-                     p_points.begin() + std::min<std::ptrdiff_t>(polish_samples, std::ssize(p_points)));
+    l_points_.assign(
+        l_points.begin(),
+        l_points.begin() + std::min<std::ptrdiff_t>(polish_samples, std::ssize(l_points)));
+    p_points_.assign(
+        p_points.begin(),
+        p_points.begin() + std::min<std::ptrdiff_t>(polish_samples, std::ssize(p_points)));
     coarse_l_ = std::min<std::size_t>(static_cast<std::size_t>(samples), l_points_.size());
     coarse_p_ = std::min<std::size_t>(static_cast<std::size_t>(samples), p_points_.size());
   }
@@ -248,8 +250,8 @@ void check(const cv::Mat& target, const cv::Mat& labels, int n, const SearchOpti
   if (n < 1)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("search: the number of pieces must be ≥ 1 (got {})", n));
-  if (o.angles < 1 || o.scale_steps < 0 || o.shears < 1 || o.samples < 1 ||
-      o.polish_samples < 1 || o.polished < 1 || o.keep < 1 || !(o.max_factor > 0))
+  if (o.angles < 1 || o.scale_steps < 0 || o.shears < 1 || o.samples < 1 || o.polish_samples < 1 ||
+      o.polished < 1 || o.keep < 1 || !(o.max_factor > 0))
     throw Error(ErrorKind::invalid_argument,
                 "search: angles, shears, samples, polished and keep must be ≥ 1, scale_steps ≥ 0 "
                 "and max_factor > 0");

@@ -27,8 +27,8 @@ struct SearchOptions {
   int angles = 32;            // rotations θ tried per piece, evenly spaced over 360° (≥ 1)
   int scale_steps = 5;        // sx, sy from √(|P| / |L|) · 2^(i/2), i = −steps..steps
   int shears = 3;             // shear factors evenly spaced in [−0.5, 0.5] (1: none)
-  int samples = 128;         // points of L and of P that score a coarse candidate
-  int polish_samples = 600;  // ... and a polished one
+  int samples = 128;          // points of L and of P that score a coarse candidate
+  int polish_samples = 600;   // ... and a polished one
   int polished = 8;           // coarse winners polished per piece
   int keep = 4;               // distinct polished candidates kept per piece
   double piece_weight = 0.5;  // w: spilling onto other pieces, relative to leaving L

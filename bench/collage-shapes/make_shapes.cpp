@@ -1,7 +1,8 @@
 // Makes the silhouettes of bench/collage-shapes/ (issue 15): some traced from the photographs and
 // drawings that Debian's opencv-doc package ships, some drawn here by hand, stroke by stroke.
 // Every shape is written as an 8-bit grey PNG, black shape on white, at most 320 pixels a side.
-//   build/release/bench/make_collage_shapes /usr/share/doc/opencv-doc/examples/data bench/collage-shapes
+//   build/release/bench/make_collage_shapes /usr/share/doc/opencv-doc/examples/data
+//   bench/collage-shapes
 // The PNGs are checked in: the benchmark does not need this program or opencv-doc to run.
 #include <algorithm>
 #include <cstdio>
@@ -185,8 +186,8 @@ void stroke(cv::Mat& m, cv::Point a, cv::Point b, int width) {
 // slants, a thumb bent at its joint.
 cv::Mat hand() {
   cv::Mat m(340, 260, CV_8UC1, cv::Scalar(0));
-  const std::vector<cv::Point> palm = {{84, 300}, {166, 300}, {182, 238}, {186, 168},
-                                       {160, 150}, {96, 152}, {74, 170},  {70, 222}};
+  const std::vector<cv::Point> palm = {{84, 300},  {166, 300}, {182, 238}, {186, 168},
+                                       {160, 150}, {96, 152},  {74, 170},  {70, 222}};
   cv::fillPoly(m, std::vector<std::vector<cv::Point>>{palm}, cv::Scalar(255), cv::LINE_AA);
   cv::rectangle(m, {92, 290}, {160, 336}, cv::Scalar(255), cv::FILLED);
   stroke(m, {92, 168}, {80, 96}, 25);     // index
@@ -203,8 +204,8 @@ cv::Mat hand() {
 // cluster of leafy lobes with sky between the clusters.
 cv::Mat tree() {
   cv::Mat m(320, 300, CV_8UC1, cv::Scalar(0));
-  const std::vector<cv::Point> trunk = {{118, 312}, {136, 290}, {140, 200}, {160, 200},
-                                        {164, 290}, {186, 312}};
+  const std::vector<cv::Point> trunk = {{118, 312}, {136, 290}, {140, 200},
+                                        {160, 200}, {164, 290}, {186, 312}};
   cv::fillPoly(m, std::vector<std::vector<cv::Point>>{trunk}, cv::Scalar(255), cv::LINE_AA);
   stroke(m, {148, 210}, {86, 132}, 16);   // left limb
   stroke(m, {152, 210}, {218, 122}, 15);  // right limb
@@ -232,9 +233,9 @@ cv::Mat key() {
   const cv::Scalar on(255), off(0);
   cv::circle(m, {70, 100}, 52, on, cv::FILLED, cv::LINE_AA);
   cv::circle(m, {70, 100}, 26, off, cv::FILLED, cv::LINE_AA);  // the hole
-  cv::rectangle(m, {112, 88}, {310, 112}, on, cv::FILLED);      // shaft
-  cv::rectangle(m, {250, 112}, {306, 166}, on, cv::FILLED);     // bit
-  cv::rectangle(m, {264, 134}, {274, 166}, off, cv::FILLED);    // wards
+  cv::rectangle(m, {112, 88}, {310, 112}, on, cv::FILLED);     // shaft
+  cv::rectangle(m, {250, 112}, {306, 166}, on, cv::FILLED);    // bit
+  cv::rectangle(m, {264, 134}, {274, 166}, off, cv::FILLED);   // wards
   cv::rectangle(m, {286, 112}, {294, 148}, off, cv::FILLED);
   cv::Mat tilted;
   const cv::Mat turn = cv::getRotationMatrix2D({170, 100}, 18, 1.0);
