@@ -39,7 +39,7 @@ struct FitArgs {
   bool json = false;
   bool progress = false;
   double max_seconds = 30;
-  long max_evaluations = 60000;
+  long max_evaluations = 250000;
   std::string preview;
   std::string size = "128";
   int threads = 0;

@@ -3,8 +3,9 @@
 // the range/domain search, in one run. Per shape and start it prints IoU(L, A), the measured
 // Hausdorff distance h(L, A) and the collage theorem's bound h(L, W(L)) / (1 − s) (plane units:
 // the working square's side is 1), the wall seconds of the whole fit (reading the image
-// included), and the components of L that the attractor leaves out; then the medians. It exits
-// non-zero when a bound fails.
+// included) and the CPU seconds it got (all threads: 2 × wall on an idle 2-core machine, less
+// on a shared one), and the components of L that the attractor leaves out; then the medians and
+// the worst. It exits non-zero when a bound fails.
 //   build/release/bench/collage_bench [--only fish,hand] [--init search] [--previews DIR]
 // Targets of issue 15: median IoU ≥ 0.85, none below 0.7, each fit ≤ 30 s on 2 cores.
 #include <algorithm>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <sys/resource.h>
 
 #include "collage/fit.h"
 #include "collage/preview.h"
@@ -100,8 +102,16 @@ Args parse(int argc, char** argv) {
   return a;
 }
 
+// CPU seconds (user + system, all threads) this process has used so far.
+double cpu_seconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto seconds = [](const timeval& t) { return t.tv_sec + t.tv_usec * 1e-6; };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
 struct Row {
-  double iou = 0, hausdorff = 0, bound = 0, seconds = 0;
+  double iou = 0, hausdorff = 0, bound = 0, seconds = 0, cpu = 0;
   bool holds = true;
   std::string left_out;  // components A covers less than half of
 };
@@ -109,6 +119,7 @@ struct Row {
 Row fit_one(const Args& args, const Shape& shape, collage::Initialisation init) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
+  const double cpu_start = cpu_seconds();
   const std::filesystem::path path = args.shapes / shape.file;
   const cv::Mat raster = collage::working_raster(collage::load_target(path), {.size = args.size});
   collage::FitOptions options;
@@ -119,6 +130,7 @@ Row fit_one(const Args& args, const Shape& shape, collage::Initialisation init) 
   const collage::FitResult result = collage::fit(raster, options);
   Row row;
   row.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  row.cpu = cpu_seconds() - cpu_start;
   const auto& r = result.report;
   row.iou = r.iou;
   row.hausdorff = r.hausdorff;
@@ -174,8 +186,8 @@ int main(int argc, char** argv) try {
       ious[k].push_back(row.iou);
       seconds[k].push_back(row.seconds);
       all_hold = all_hold && row.holds;
-      std::printf(" | %7s %6.3f %6.3f %6.3f %5.1f", row.holds ? "" : "FAILS", row.iou,
-                  row.hausdorff, row.bound, row.seconds);
+      std::printf(" | %7s %6.3f %6.3f %6.3f %5.1f %5.1f", row.holds ? "" : "FAILS", row.iou,
+                  row.hausdorff, row.bound, row.seconds, row.cpu);
       std::fflush(stdout);
       left_out = row.left_out;
     }
@@ -183,7 +195,8 @@ int main(int argc, char** argv) try {
   }
   std::printf("%-15s", "median");
   for (std::size_t k = 0; k < args.inits.size(); ++k)
-    std::printf(" | %7s %6.3f %6s %6s %5.1f", "", median(ious[k]), "", "", median(seconds[k]));
+    std::printf(" | %7s %6.3f %6s %6s %5.1f %5s", "", median(ious[k]), "", "", median(seconds[k]),
+                "");
   std::printf("\n%-15s", "worst");
   for (std::size_t k = 0; k < args.inits.size(); ++k)
     std::printf(" | %7s %6.3f %6s %6s %5.1f", "",

@@ -206,6 +206,20 @@ ObjectiveTerms CollageObjective::terms(std::span<const AffineMap> maps) const {
   return terms(std::span<const Footprint* const>(pointers));
 }
 
+Footprint merge(std::span<const Footprint* const> parts) {
+  if (parts.empty())
+    throw Error(ErrorKind::invalid_argument, "collage: nothing to merge (no footprint)");
+  Footprint out = *parts.front();
+  for (const Footprint* p : parts.subspan(1)) {
+    for (std::size_t w = 0; w < out.hits.size(); ++w) out.hits[w] |= p->hits[w];
+    out.spill += p->spill;
+    out.det += p->det;
+    out.factor = std::max(out.factor, p->factor);
+    out.maps += p->maps;
+  }
+  return out;
+}
+
 double CollageObjective::iterated(std::span<const AffineMap> maps, int iterations) const {
   check_maps(maps);
   if (iterations < 1)
@@ -260,10 +274,12 @@ ObjectiveTerms CollageObjective::terms(std::span<const Footprint* const> parts) 
     throw Error(ErrorKind::invalid_argument, "collage: at least one map is needed (got 0)");
   ObjectiveTerms t;
   double dets = 0, spill = 0;
+  int count = 0;
   for (const Footprint* p : parts) {
     t.contraction = std::max(t.contraction, p->factor);
     dets += p->det;
     spill += p->spill;
+    count += p->maps;
   }
   // IoU(L, W(L)) from the bits: |L ∩ W| / |L ∪ W|.
   long both = 0, either = 0;
@@ -274,8 +290,7 @@ ObjectiveTerms CollageObjective::terms(std::span<const Footprint* const> parts) 
     either += std::popcount(hit | inside_[w]);
   }
   t.collage_iou = either == 0 ? 1.0 : static_cast<double>(both) / static_cast<double>(either);
-  t.spill =
-      spill / (static_cast<double>(points_.size()) * static_cast<double>(parts.size())) / size_;
+  t.spill = spill / (static_cast<double>(points_.size()) * count) / size_;
   t.overlap = std::max(0.0, dets - 1);
 
   t.value = (1 - t.collage_iou) + options_.spill * t.spill + options_.overlap * t.overlap +

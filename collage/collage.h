@@ -57,7 +57,13 @@ struct Footprint {
   double spill = 0;                 // Σ_p d(f(p), L) over L's pixel centres p, pixels
   double det = 0;                   // |det f|
   double factor = 0;                // f's contraction
+  int maps = 1;                     // how many maps it stands for (see merge)
 };
+
+// The footprint of several maps together: hits OR-ed, spills and determinants added, the largest
+// factor. A combination that keeps most of its maps fixed is then scored against one merged
+// footprint instead of all of them. Throws Error{invalid_argument} for no parts.
+Footprint merge(std::span<const Footprint* const> parts);
 
 // The collage objective for one target: (1 − IoU(L, W(L))) + spill + overlap + contraction
 // penalties. Build once per target; evaluation is const and thread-safe (no

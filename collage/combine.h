@@ -20,6 +20,9 @@ struct SelectOptions {
   int spread = 0;
   std::uint64_t seed = 1;
   int swap_sweeps = 4;  // sweeps of single swaps (a chosen map for an unchosen one) after it
+  // No further swap is tried at or after this time (the greedy choice is always completed).
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  CancelToken cancel;  // polled before every swap; a stop request throws Error{interrupted}
 };
 
 // Indices of `n` maps of `pool` (their footprints, from `objective`): greedy additions, each the

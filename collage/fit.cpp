@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <limits>
 
 #include <fmt/format.h>
@@ -194,10 +193,6 @@ class Chooser {
     CollageReport report =
         assess(target_, ifs, {options_.quality, options_.seed, options_.threads});
     assess_seconds_ = std::max(assess_seconds_, budget_.seconds() - before);
-#ifdef IFSFX_COLLAGE_TRACE
-    std::fprintf(stderr, "  [%.2fs] consider: objective %.4f collage IoU %.3f IoU %.3f\n",
-                 budget_.seconds(), objective_(ifs.maps), report.collage_iou, report.iou);
-#endif
     if (report.iou > best_iou) {
       best_iou = report.iou;
       result.ifs = std::move(ifs);
@@ -207,9 +202,7 @@ class Chooser {
   }
 
   // Seconds to keep free before the deadline for the renderings that judge a last candidate.
-  double reserve() const {
-    return 1.5 * assess_seconds_;
-  }
+  double reserve() const { return 1.5 * assess_seconds_; }
 
   FitResult result;
   double best_iou = -1;
@@ -370,6 +363,7 @@ Pool search_pool(Fitting& fitting, const cv::Mat& target, const CollageObjective
   SearchOptions search = options.search;
   search.threads = options.threads;
   search.cancel = options.cancel;
+  search.deadline = fitting.budget.at(0.25);
   Pool pool;
   pool.maps = initial_maps(target, options.maps);
   for (int p = 0; p < options.partitions; ++p) {
@@ -493,10 +487,6 @@ void fit_from_search(Fitting& fitting) {
     polish.max_evaluations = std::max(12L, budget.evaluations_left() / kPolishIterations);
     const DescentResult polished = descend_each_map(fitting.objective, start, polish);
     budget.evaluations += polished.evaluations * kPolishIterations;
-#ifdef IFSFX_COLLAGE_TRACE
-    std::fprintf(stderr, "  polish %d: %ld moves, W^k value %.4f (best %.4f)\n", kick,
-                 polished.evaluations, polished.value, current_value);
-#endif
     if (polished.value < current_value) {
       current_value = polished.value;
       current = polished.maps;

@@ -85,7 +85,7 @@ const char* to_string(FitPhase phase) noexcept;
 struct FitProgress {
   FitPhase phase = FitPhase::partition;
   int run = 0;           // 0-based
-  int runs = 0;          // runs planned at most
+  int runs = 0;          // moments: runs planned; search: restarts + 1 (kicks run on after them)
   long evaluations = 0;  // objective evaluations so far, all runs
   double objective = 0;  // best value of this run so far
   double best = 0;       // best value of all runs so far
@@ -97,12 +97,20 @@ struct FitOptions {
   int maps = 4;  // N, 1..32
   std::uint64_t seed = 1;
   Initialisation init = Initialisation::search;
-  int restarts = 5;              // runs after the first (each from the next start)
-  long max_evaluations = 60000;  // objective evaluations over all runs (what makes it reproducible)
-  // Wall-clock cap over the whole fit, rendering included; 0 = none (then the same seed gives the
-  // same maps on any machine and thread count). Work is cut only between units whose result does
-  // not depend on the thread count (a CMA-ES generation, an ICP round, a searched piece), so a
-  // slow machine gets fewer units, never different ones.
+  // moments: CMA-ES runs after the first, each from a seeded k-means++ split. search: runs
+  // after the first that start from the next-best choice of maps from the pool; later runs
+  // kick the best maps so far, for as long as the budget lasts.
+  int restarts = 5;
+  // Objective evaluations over the whole fit: what ends it reproducibly. A move of one map in
+  // a descent counts 1/N, a move on W^k(L) counts k.
+  long max_evaluations = 250000;
+  // Wall-clock cap over the whole fit, rendering included (seconds); 0 = none (then the same
+  // seed gives the same maps on any machine and thread count). The stages have shares of it (and
+  // of max_evaluations); work is cut only between units whose result does not depend on the
+  // thread count (a CMA-ES generation, a descent step, an ICP round, a searched partition), and
+  // a rendering that would not end in time is not started, so the fit ends on time by design:
+  // a slow or loaded machine does fewer units, never different ones, and its fit is worse, not
+  // longer.
   double max_seconds = 30;
   int threads = 0;              // 0 = all cores
   double quality = 256;         // chaos-game points per pixel for the attractors

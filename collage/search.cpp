@@ -152,6 +152,7 @@ std::vector<Candidate> search_piece(const PieceScorer& scorer, Point mu_l, Point
   std::vector<Scored> coarse;
   for (int t = 0; t < o.angles; ++t) {
     o.cancel.check("fit");
+    if (t > 0 && std::chrono::steady_clock::now() >= o.deadline) break;
     const double theta = 2 * std::numbers::pi * t / o.angles;
     for (int mirror = 0; mirror < 2; ++mirror)
       for (int i = -o.scale_steps; i <= o.scale_steps; ++i)
@@ -193,6 +194,7 @@ std::vector<Candidate> search_piece(const PieceScorer& scorer, Point mu_l, Point
   // Compass search from each winner over (θ, ln sx, ln sy, k, tx, ty), on the smooth score.
   const double angle_step = std::numbers::pi / std::max(o.angles, 1);
   for (auto& w : winners) {
+    if (std::chrono::steady_clock::now() >= o.deadline) break;  // the rest keep coarse scores
     std::array<double, 6> step = {angle_step, half_log2 / 2, half_log2 / 2, 0.125, 1.0, 1.0};
     w.score = scorer(w.pose.map(mu_l, mu_p), false);
     for (int halvings = 0, evaluations = 0; halvings < 5 && evaluations < 240;) {

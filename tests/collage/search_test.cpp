@@ -2,6 +2,7 @@
 
 #include <array>
 #include <atomic>
+#include <chrono>
 
 #include <gtest/gtest.h>
 
@@ -92,6 +93,15 @@ TEST(search, result_does_not_depend_on_the_thread_count) {
       EXPECT_EQ(a[k][i].score, b[k][i].score);
     }
   }
+}
+
+TEST(search, deadline_cuts_the_scan_but_every_piece_keeps_a_candidate) {
+  SearchOptions late;
+  late.deadline = std::chrono::steady_clock::now();
+  const cv::Mat square = framed_square();
+  const auto found = search_pieces(square, partition(square, 4), 4, late);
+  ASSERT_EQ(found.size(), 4u);
+  for (const auto& piece : found) EXPECT_FALSE(piece.empty());
 }
 
 TEST(search, stop_request_interrupts_it) {
