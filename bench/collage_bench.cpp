@@ -170,12 +170,13 @@ int main(int argc, char** argv) try {
       shapes.size(), args.shapes.c_str(), args.size, args.max_seconds, args.threads);
   std::printf("%-12s %2s", "shape", "N");
   for (const auto init : args.inits)
-    std::printf(" | %-7s %6s %6s %6s %5s",
+    std::printf(" | %-7s %6s %6s %6s %5s %5s",
                 init == collage::Initialisation::moments ? "moments" : "search", "IoU", "h",
-                "bound", "sec");
+                "bound", "sec", "cpu");
   std::printf(" | parts left out (search)\n");
 
-  std::vector<std::vector<double>> ious(args.inits.size()), seconds(args.inits.size());
+  std::vector<std::vector<double>> ious(args.inits.size()), seconds(args.inits.size()),
+      cpus(args.inits.size());
   bool all_hold = true;
   for (const auto& shape : shapes) {
     std::printf("%-12s %2d", std::filesystem::path(shape.file).stem().c_str(), shape.maps);
@@ -185,6 +186,7 @@ int main(int argc, char** argv) try {
       const Row row = fit_one(args, shape, args.inits[k]);
       ious[k].push_back(row.iou);
       seconds[k].push_back(row.seconds);
+      cpus[k].push_back(row.cpu);
       all_hold = all_hold && row.holds;
       std::printf(" | %7s %6.3f %6.3f %6.3f %5.1f %5.1f", row.holds ? "" : "FAILS", row.iou,
                   row.hausdorff, row.bound, row.seconds, row.cpu);
@@ -195,13 +197,14 @@ int main(int argc, char** argv) try {
   }
   std::printf("%-15s", "median");
   for (std::size_t k = 0; k < args.inits.size(); ++k)
-    std::printf(" | %7s %6.3f %6s %6s %5.1f %5s", "", median(ious[k]), "", "", median(seconds[k]),
-                "");
+    std::printf(" | %7s %6.3f %6s %6s %5.1f %5.1f", "", median(ious[k]), "", "", median(seconds[k]),
+                median(cpus[k]));
   std::printf("\n%-15s", "worst");
   for (std::size_t k = 0; k < args.inits.size(); ++k)
-    std::printf(" | %7s %6.3f %6s %6s %5.1f", "",
+    std::printf(" | %7s %6.3f %6s %6s %5.1f %5s", "",
                 ious[k].empty() ? 0.0 : *std::min_element(ious[k].begin(), ious[k].end()), "", "",
-                seconds[k].empty() ? 0.0 : *std::max_element(seconds[k].begin(), seconds[k].end()));
+                seconds[k].empty() ? 0.0 : *std::max_element(seconds[k].begin(), seconds[k].end()),
+                "");
   std::printf("\n");
   if (!all_hold) std::printf("collage_bench: a collage bound FAILED\n");
   return all_hold ? 0 : 1;

@@ -254,11 +254,6 @@ struct Fitting {
                       budget.seconds()});
   }
 
-  double evaluate(const std::vector<AffineMap>& maps) {
-    ++budget.evaluations;
-    return objective(maps);
-  }
-
   // One run from `start`: CMA-ES on the collage objective with `evaluations` and until
   // `deadline`, then ICP; both results are rendered and judged.
   void refine(int run, const std::vector<AffineMap>& start, double sigma, long evaluations,
@@ -405,8 +400,8 @@ constexpr int kPolishIterations = 5;
 void fit_from_search(Fitting& fitting) {
   const FitOptions& options = fitting.options;
   Budget& budget = fitting.budget;
-  const CollageObjective& coarse = fitting.objective;
-  const Pool pool = search_pool(fitting, coarse_raster(fitting.target), fitting.objective);
+  const CollageObjective& objective = fitting.objective;
+  const Pool pool = search_pool(fitting, coarse_raster(fitting.target), objective);
   std::vector<std::vector<std::size_t>> tried;
   std::vector<AffineMap> best;
   double best_value = std::numeric_limits<double>::infinity();
@@ -427,7 +422,9 @@ void fit_from_search(Fitting& fitting) {
       SelectOptions select;
       select.spread = run == 0 ? 0 : 2;
       select.seed = stream_seed(options.seed, static_cast<std::uint64_t>(run));
-      auto chosen = select_maps(coarse, pool.footprints, options.maps, select);
+      select.deadline = descent.deadline;
+      select.cancel = options.cancel;
+      auto chosen = select_maps(objective, pool.footprints, options.maps, select);
       std::sort(chosen.begin(), chosen.end());
       if (std::find(tried.begin(), tried.end(), chosen) != tried.end()) continue;
       tried.push_back(chosen);
@@ -439,7 +436,7 @@ void fit_from_search(Fitting& fitting) {
     // A move costs one map's image: N of them make one evaluation.
     descent.max_evaluations =
         std::max(12L, (budget.evaluations_at(0.45) - budget.evaluations) * options.maps);
-    const DescentResult descended = descend_each_map(coarse, start, descent);
+    const DescentResult descended = descend_each_map(objective, start, descent);
     budget.evaluations += descended.evaluations / options.maps;
     fitting.best_objective = std::min(fitting.best_objective, descended.value);
     // Render only what may beat the best attractor: objective and IoU go together closely.
@@ -478,14 +475,14 @@ void fit_from_search(Fitting& fitting) {
     if (kick > 0) {
       descent.max_evaluations = std::max(12L, budget.evaluations_left() * options.maps);
       const DescentResult moved =
-          descend_each_map(coarse, kicked(current, pool, options.seed, run), descent);
+          descend_each_map(objective, kicked(current, pool, options.seed, run), descent);
       budget.evaluations += moved.evaluations / options.maps;
       start = moved.maps;
       polish.sweeps = 2;
     }
     // A move maps W^k(L) again: k evaluations.
     polish.max_evaluations = std::max(12L, budget.evaluations_left() / kPolishIterations);
-    const DescentResult polished = descend_each_map(fitting.objective, start, polish);
+    const DescentResult polished = descend_each_map(objective, start, polish);
     budget.evaluations += polished.evaluations * kPolishIterations;
     if (polished.value < current_value) {
       current_value = polished.value;
