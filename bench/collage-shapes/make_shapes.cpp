@@ -88,14 +88,19 @@ void write_shape(const fs::path& folder, const std::string& name, const cv::Mat&
 
 // --- Traced from photographs and drawings -------------------------------------------------
 
+// Hue (0..179), saturation and value of a colour image, one 8-bit channel each.
+std::vector<cv::Mat> hsv_channels(const fs::path& path) {
+  cv::Mat hsv;
+  cv::cvtColor(read(path), hsv, cv::COLOR_BGR2HSV);
+  std::vector<cv::Mat> channels;
+  cv::split(hsv, channels);
+  return channels;
+}
+
 // HappyFish.jpg, a cartoon fish: every pixel that is coloured or dark (not the white ground), the
 // largest component (the bubbles go), holes filled (the eye).
 cv::Mat fish(const fs::path& data) {
-  const cv::Mat bgr = read(data / "HappyFish.jpg");
-  cv::Mat hsv;
-  cv::cvtColor(bgr, hsv, cv::COLOR_BGR2HSV);
-  std::vector<cv::Mat> c;
-  cv::split(hsv, c);
+  const auto c = hsv_channels(data / "HappyFish.jpg");
   const cv::Mat ink = (c[1] > 60) | (c[2] < 200);
   return fill_holes(morph(largest_component(morph(ink, cv::MORPH_OPEN, 1)), cv::MORPH_CLOSE, 2));
 }
@@ -104,11 +109,7 @@ cv::Mat fish(const fs::path& data) {
 // unsaturated), the largest component; the white spots of the wings stay as holes, except those
 // of a few pixels.
 cv::Mat butterfly(const fs::path& data) {
-  const cv::Mat bgr = read(data / "butterfly.jpg");
-  cv::Mat hsv;
-  cv::cvtColor(bgr, hsv, cv::COLOR_BGR2HSV);
-  std::vector<cv::Mat> c;
-  cv::split(hsv, c);
+  const auto c = hsv_channels(data / "butterfly.jpg");
   cv::Mat dark = c[2] < 80;
   dark = morph(dark, cv::MORPH_CLOSE, 2);
   return fill_holes(morph(largest_component(dark), cv::MORPH_OPEN, 1), 60);
@@ -150,11 +151,7 @@ cv::Mat logo_letters(const fs::path& data, int first) {
 // smarties.png, sweets on a white sheet: the saturated pixels of the upper-right part, where five
 // sweets lie whole.
 cv::Mat sweets(const fs::path& data) {
-  const cv::Mat bgr = read(data / "smarties.png");
-  cv::Mat hsv;
-  cv::cvtColor(bgr, hsv, cv::COLOR_BGR2HSV);
-  std::vector<cv::Mat> c;
-  cv::split(hsv, c);
+  const auto c = hsv_channels(data / "smarties.png");
   cv::Mat mask = (c[1] > 90) | (c[2] < 90);
   mask = fill_holes(morph(mask, cv::MORPH_OPEN, 2));
   cv::Mat crop(mask.size(), CV_8UC1, cv::Scalar(0));
@@ -166,11 +163,7 @@ cv::Mat sweets(const fs::path& data) {
 // apple.jpg: the red, saturated pixels; the largest component with its stem's dark neighbour
 // closed in, holes (the highlights) filled, the pencil under it opened away.
 cv::Mat apple(const fs::path& data) {
-  const cv::Mat bgr = read(data / "apple.jpg");
-  cv::Mat hsv;
-  cv::cvtColor(bgr, hsv, cv::COLOR_BGR2HSV);
-  std::vector<cv::Mat> c;
-  cv::split(hsv, c);
+  const auto c = hsv_channels(data / "apple.jpg");
   cv::Mat red = ((c[0] < 15) | (c[0] > 165)) & (c[1] > 80) & (c[2] > 40);
   red = morph(morph(red, cv::MORPH_CLOSE, 6), cv::MORPH_OPEN, 4);
   return fill_holes(largest_component(red));
