@@ -70,15 +70,15 @@ enum class Initialisation {
   // first and second moments with one of 16 orthogonal turns (initialise.h).
   moments,
   // The range/domain search of fractal image compression (search.h) on several partitions of L
-  // (one part per connected component at least), the per-piece winners combined, the next-best
-  // combinations and partitions tried while the budget lasts.
+  // (one part per connected component at least); N of the maps found are chosen (combine.h),
+  // the next-best choices and kicks of the best tried while the budget lasts.
   search,
 };
 
 enum class FitPhase {
   partition,  // splitting L into the N ranges
-  search,     // searching maps L → range and combining them
-  refine,     // CMA-ES on the collage objective, ICP, rendering the attractors
+  search,     // searching maps L → range and choosing N of them
+  refine,     // descents, CMA-ES and ICP on the collage objective, the polish on W^k(L)
 };
 const char* to_string(FitPhase phase) noexcept;
 
@@ -141,10 +141,14 @@ struct FitResult {
   bool time_capped = false;  // max_seconds cut the search short
 };
 
-// Fits N maps to `target` (a working raster): every run starts from maps found by the chosen
-// initialisation, minimises the CollageObjective by CMA-ES, then refines the maps to sub-pixel
-// precision by ICP; of all these candidates, the one whose rendered attractor overlaps L best
-// (IoU) wins.
+// Fits N maps to `target` (a working raster). Initialisation::moments: every run starts from a
+// moment-matched split, minimises the CollageObjective by CMA-ES, then refines the maps to
+// sub-pixel precision by ICP. Initialisation::search: the searched maps are pooled; runs choose
+// N of them and move one map at a time on the collage objective (combine.h), the best run is
+// refined by CMA-ES and ICP, and last the maps are moved on the attractor's picture W^k(L)
+// (CollageObjective::iterated). Of all candidates, the one whose rendered attractor overlaps L
+// best (IoU) wins.
+//   auto result = fit(working_raster(load_target("hand.png")), {.maps = 10});
 // Throws Error{invalid_argument} for N outside 1..32 or above the number of pixels of L.
 FitResult fit(const cv::Mat& target, const FitOptions& options = {});
 
