@@ -121,8 +121,7 @@ void run_cam(const CamArgs& args) {
   // Fail on a bad output path, pattern or display before the camera is opened and the map
   // computed (but say "no camera" first when there is none).
   if (!args.record.empty()) video::resolve_encoder(args.record, args.codec);
-  args.fractal.map_options();     // --view
-  args.fractal.filter_options();  // --mix, --background
+  video::check_filter_options({.mix = args.fractal.settings().mix});  // --view, --background, --mix
   try {
     video::sequence_path(args.snapshot, 1);
   } catch (const Error& e) {

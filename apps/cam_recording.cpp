@@ -24,9 +24,7 @@ void CamRecording::start() {
   o.codec = codec_;
   o.size = size_;
   // A camera's rate is usually whole (30) or NTSC-like (29.97): keep it exact either way.
-  o.frame_rate = std::abs(fps_ - std::round(fps_)) < 1e-6
-                     ? video::Rational{static_cast<int>(std::lround(fps_)), 1}
-                     : video::Rational{static_cast<int>(std::lround(fps_ * 1000)), 1000};
+  o.frame_rate = video::rate_from_fps(fps_);
   file_ = std::make_unique<video::FileSink>(p, o);
   path_ = p;
   frames_ = 0;

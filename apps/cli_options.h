@@ -58,18 +58,10 @@ inline std::optional<Box> view_option(const std::string& text, const std::string
   return parse_box(text, what);
 }
 
-// The colouring IFS G for a drawing IFS F (the --colouring option): default_colouring(N) for an
-// empty spec, else the named preset fitted to the unit square. Tilings that contract only over
-// two steps (square-tiling-2/3) are accepted; a map count other than F's is refused.
+// The colouring IFS G for a drawing IFS F (the --colouring option): see load_colouring.
 inline Ifs colouring_option(const std::string& spec, const Ifs& F,
                             const std::string& what = "--colouring") {
-  if (spec.empty()) return default_colouring(F.size());
-  Ifs G = fit_to_unit_square(load_ifs(spec, {.allow_expansive = true}).ifs);
-  if (G.size() != F.size())
-    throw Error(ErrorKind::invalid_ifs,
-                fmt::format("{} {}: must have as many maps as {} (got {} for {})", what, spec,
-                            F.name, G.size(), F.size()));
-  return G;
+  return load_colouring(spec, F, what);
 }
 
 }  // namespace ifsfx::app

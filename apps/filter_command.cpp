@@ -17,23 +17,17 @@
 #include "apps/fractal_filter_options.h"
 #include "apps/stop_signals.h"
 #include "ifs/error.h"
-#include "ifs/preset.h"
-#include "ifs/steal_map.h"
-#include "superifs/superifs_file.h"
-#include "superifs/texture.h"
-#include "video/drift.h"
 #include "video/file_sink.h"
 #include "video/file_source.h"
-#include "video/fractal_filter.h"
+#include "video/fractal_engine.h"
 #include "video/image_sequence.h"
-#include "video/map_schedule.h"
 #include "video/pipeline.h"
 #include "video/window_sink.h"
 
 namespace ifsfx::app {
 namespace {
 
-enum class Animate { none, drift, superifs };
+using video::Animate;
 
 struct FilterArgs {
   std::string input;
@@ -45,6 +39,9 @@ struct FilterArgs {
   std::string codec;
   std::string frames;
   double fps = 25;
+  bool skip_gaps = false;
+  video::FrameTiming timing = video::FrameTiming::automatic;
+  bool timing_given = false;
   Animate animate = Animate::none;
   int keyframe_interval = 12;
   std::string superifs = "paper-fig4";
@@ -96,17 +93,10 @@ class ProgressPrinter {
 
 std::unique_ptr<video::FrameSource> open_source(const FilterArgs& args) {
   if (video::is_sequence_pattern(args.input))
-    return std::make_unique<video::ImageSequenceSource>(args.input,
-                                                        video::ImageSequenceOptions{args.fps});
+    return std::make_unique<video::ImageSequenceSource>(
+        args.input, video::ImageSequenceOptions{.fps = args.fps, .skip_gaps = args.skip_gaps});
   return std::make_unique<video::FileSource>(
       args.input, video::FileSourceOptions{.threads = args.fractal.threads});
-}
-
-video::Rational rate_of(const video::FrameSource& source) {
-  if (const auto* file = dynamic_cast<const video::FileSource*>(&source)) return file->frame_rate();
-  const double fps = source.fps();
-  if (std::abs(fps - std::round(fps)) < 1e-9) return {static_cast<int>(std::lround(fps)), 1};
-  return {static_cast<int>(std::lround(fps * 1001)), 1001};
 }
 
 void check_distinct(const std::string& input, const std::string& output) {
@@ -123,23 +113,45 @@ void run_filter(const FilterArgs& args) {
   if (args.preview) video::require_display("--preview", "write a file with -o instead");
   const video::FrameRange range =
       args.frames.empty() ? video::FrameRange{} : video::parse_frame_range(args.frames);
-  video::FilterOptions filter_options = args.fractal.filter_options();
-  filter_options.interpolation = args.interpolation;
   // Cheap checks of the output first: an unusable output fails before any decoding.
-  if (!args.output.empty() && !video::is_sequence_pattern(args.output))
-    video::resolve_encoder(args.output, args.codec);
+  const bool movie_output = !args.output.empty() && !video::is_sequence_pattern(args.output);
+  if (movie_output) video::resolve_timing(args.output, args.codec, args.timing);
+  if (args.timing_given && !movie_output)
+    throw Error(ErrorKind::invalid_argument,
+                "--fps-mode: only a movie output has frame times (got an image sequence or "
+                "--preview)");
 
-  const IfsPreset F = load_ifs(args.fractal.preset);
-  const Ifs G = colouring_option(args.fractal.colouring, F.ifs);
+  // The fractal is loaded and checked before any decoding; its maps wait for the frame size.
+  video::FractalSettings settings = args.fractal.settings();
+  settings.interpolation = args.interpolation;
+  settings.animate = args.animate;
+  settings.keyframe_interval = args.keyframe_interval;
+  settings.superifs = args.superifs;
+  settings.buffers = args.buffers;
+  video::FractalEngine engine(settings);
 
   video::silence_libav_log();
   std::unique_ptr<video::FrameSource> source = open_source(args);
   const cv::Size frame_size = source->size();
-  const cv::Size size = args.size.empty() ? frame_size : size_option(args.size);
-  const video::Rational rate = rate_of(*source);
+  cv::Size size = args.size.empty() ? frame_size : size_option(args.size);
+  if (movie_output) {
+    // 4:2:0 encoders need even sides: the map is made at the nearest size that fits, so the whole
+    // picture is still shown, one pixel narrower or lower.
+    const cv::Size fit = video::encodable_size(args.output, args.codec, size);
+    if (fit != size)
+      std::fputs(fmt::format("ifsfx: note: {}: writing {}x{}, not {}x{}: {} codes colour at half "
+                             "resolution and needs even sides\n",
+                             args.output, fit.width, fit.height, size.width, size.height,
+                             video::resolve_encoder(args.output, args.codec))
+                     .c_str(),
+                 stderr);
+    size = fit;
+  }
+  const video::Rational rate = source->frame_rate();
 
   StopSignals signals;
   std::unique_ptr<video::FrameSink> sink;
+  video::FileSink* movie = nullptr;
   if (args.preview) {
     sink = std::make_unique<video::WindowSink>(
         fmt::format("ifsfx filter: {}", args.input),
@@ -153,68 +165,24 @@ void run_filter(const FilterArgs& args) {
       o.codec = args.codec;
       o.size = size;
       o.frame_rate = rate;
+      o.time_base = source->time_base();
+      o.timing = args.timing;
       o.threads = args.fractal.threads;
       if (const auto* file = dynamic_cast<const video::FileSource*>(source.get());
           file != nullptr && file->has_audio()) {
         o.audio_from = file->path();
         o.audio_origin = file->start_time();
       }
-      sink = std::make_unique<video::FileSink>(args.output, o);
+      auto file = std::make_unique<video::FileSink>(args.output, o);
+      movie = file.get();
+      sink = std::move(file);
     }
   }
 
-  StealMapOptions map_options = args.fractal.map_options();
-
-  video::FrameFilter filter;
-  std::unique_ptr<video::MapSchedule> schedule;
-  std::shared_ptr<TextureSequence> sequence;
-  const int interval = args.keyframe_interval;
-  if (args.animate == Animate::none) {
-    auto table = std::make_shared<const video::RemapTable>(
-        video::make_remap_table(compute_steal_map(F.ifs, G, size, map_options), frame_size,
-                                args.interpolation, args.fractal.threads));
-    filter = [table, filter_options](const video::Frame& frame) {
-      return video::filter_frame(frame.image, *table, filter_options);
-    };
-  } else if (args.animate == Animate::drift) {
-    // Drift: keyframe k shows the IFS drifted to time k·K/fps, in a view fixed from the base IFS
-    // so that the frame does not jump as the attractor moves.
-    if (!map_options.view)
-      map_options.view =
-          fit_view(attractor_bounds(F.ifs, args.fractal.seed), size, args.fractal.margin);
-    const video::DriftOptions drift = args.fractal.drift_options();
-    video::drift(F.ifs, 0, drift);  // checks the drift options before any work
-    const double fps = rate.value();
-    schedule = std::make_unique<video::MapSchedule>(
-        [=, base = F.ifs](std::int64_t k) {
-          const Ifs now = video::drift(base, static_cast<double>(k) * interval / fps, drift);
-          return video::make_remap_table(compute_steal_map(now, G, size, map_options), frame_size,
-                                         args.interpolation, args.fractal.threads);
-        },
-        interval);
-  } else {
-    // superIFS: keyframe k is texture k of the V-variable sequence (paper §5, eq. 14), one step
-    // per keyframe after the burn-in — a pure function of k and the seed.
-    TextureOptions t;
-    t.count = args.buffers;
-    t.mode = TextureMode::steal;
-    t.source = cv::Mat(frame_size, CV_8UC3);  // only its size: it sets the descent depth
-    t.seed = args.fractal.seed;
-    t.threads = args.fractal.threads;
-    sequence = std::make_shared<TextureSequence>(load_superifs(args.superifs).super, size, t);
-    schedule = std::make_unique<video::MapSchedule>(
-        [=, seq = sequence](std::int64_t k) {
-          return video::make_remap_table(seq->map_at(k), frame_size, args.interpolation,
-                                         args.fractal.threads);
-        },
-        interval);
-  }
-  if (schedule) {
-    filter = [s = schedule.get(), filter_options](const video::Frame& frame) {
-      const video::MapSchedule::Blend b = s->at(frame.index);
-      return video::filter_frame(frame.image, *b.from, *b.to, b.t, filter_options);
-    };
-  }
+  engine.prepare(frame_size, size, rate.value());
+  const video::FrameFilter filter = [&engine](const video::Frame& frame) {
+    return engine.filter(frame.image, frame.index);
+  };
 
   video::PipelineOptions options;
   options.range = range;
@@ -232,14 +200,22 @@ void run_filter(const FilterArgs& args) {
   if (result.interrupted && !args.preview)
     throw Error(ErrorKind::interrupted,
                 fmt::format("interrupted: {} frames written to {}", result.frames_written, where));
+  // A constant-rate output repeats and drops frames by their times: say how many, as ffmpeg does.
+  std::string retimed;
+  if (movie != nullptr && movie->timing() == video::FrameTiming::constant &&
+      (movie->frames_repeated() > 0 || movie->frames_dropped() > 0))
+    retimed = fmt::format(" (constant {}/{} fps: {} repeated, {} dropped)", rate.num, rate.den,
+                          movie->frames_repeated(), movie->frames_dropped());
   if (!args.quiet)
     std::printf(
         "%s\n",
-        fmt::format("{}: {} frames {}x{} in {:.2f} s ({:.1f} fps){} -> {}",
-                    args.animate == Animate::superifs ? args.superifs : F.ifs.name,
-                    result.frames_written, size.width, size.height, result.seconds,
-                    result.frames_written / std::max(result.seconds, 1e-9),
-                    schedule ? fmt::format(", {} map stalls", schedule->stalls()) : "", where)
+        fmt::format(
+            "{}: {} frames {}x{} in {:.2f} s ({:.1f} fps){}{} -> {}",
+            args.animate == Animate::superifs ? args.superifs : engine.name(),
+            result.frames_written, size.width, size.height, result.seconds,
+            result.frames_written / std::max(result.seconds, 1e-9),
+            args.animate != Animate::none ? fmt::format(", {} map stalls", engine.stalls()) : "",
+            retimed, where)
             .c_str());
 }
 
@@ -250,7 +226,10 @@ void add_filter_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "filter", "Filter a movie (or image sequence) through a fractal: colour stealing per frame");
   cmd->add_option("input", args->input,
-                  "Input movie (any file FFmpeg reads) or image sequence pattern (frame_%04d.png)")
+                  "Input movie (any file FFmpeg reads) or image sequence pattern (frame_%04d.png). "
+                  "A phone clip's rotation (display matrix or rotate tag) is applied: frames are "
+                  "turned upright before the filter, and the output is upright with no rotation "
+                  "of its own")
       ->required();
   cmd->add_option("-o,--output", args->output,
                   "Output movie (.mp4, .mkv, .avi, ...) or image sequence pattern; written as "
@@ -265,19 +244,43 @@ void add_filter_command(CLI::App& app) {
       ->transform(choice(interpolations))
       ->default_str("bilinear")
       ->option_text(choices_text(interpolations, "bilinear"));
-  cmd->add_option("--size", args->size, "Output size WxH (default: the input's)");
+  cmd->add_option("--size", args->size,
+                  "Output size WxH (default: the input's, upright). Encoders that code colour at "
+                  "half resolution (H.264 in yuv420p, MPEG-4, ...) need even sides: an odd side "
+                  "is made one pixel smaller, with a note on stderr");
   cmd->add_option("--codec", args->codec,
                   "Video encoder (libx264, h264, mpeg4, ffv1, ...; default by container: "
                   ".mp4/.mkv H.264 CRF 23, .avi MPEG-4 part 2)");
   cmd->add_option("--frames", args->frames,
-                  "Source frames START:END to filter, both included, from 0 (START: or :END too)");
+                  "Source frames START:END to filter, both included, from 0 (START: or :END too); "
+                  "frames are counted as the input gives them (the Nth picture, also in a "
+                  "variable-rate movie), not by time");
   cmd->add_option("--fps", args->fps, "Frame rate of an image sequence input")
       ->capture_default_str();
+  cmd->add_flag("--skip-gaps", args->skip_gaps,
+                "Image sequence input: go on past missing numbers (frame_0003 between 0002 and "
+                "0004), holding the frame before for the missing time; without it a gap is an "
+                "error naming the missing file");
+  const std::map<std::string, video::FrameTiming> timings{{"auto", video::FrameTiming::automatic},
+                                                          {"vfr", video::FrameTiming::keep},
+                                                          {"cfr", video::FrameTiming::constant}};
+  cmd->add_option("--fps-mode", args->timing,
+                  "Frame times of a movie output. vfr: every frame keeps its input time, a "
+                  "variable-rate input (phone, screen recording, dropped frames) stays in sync "
+                  "with its audio; cfr: the input's nominal rate, each frame shown at its time, "
+                  "repeated over gaps and dropped where two fall in one frame slot (ffmpeg "
+                  "-fps_mode cfr); auto: vfr, or cfr where the container cannot keep times (.avi)")
+      ->transform(choice(timings))
+      ->default_str("auto")
+      ->option_text(choices_text(timings, "auto"))
+      ->each([args](const std::string&) { args->timing_given = true; });
   const std::map<std::string, Animate> animations{
       {"none", Animate::none}, {"drift", Animate::drift}, {"superifs", Animate::superifs}};
   cmd->add_option("--animate", args->animate,
                   "none: one fixed map; drift: map coefficients wander by fBm noise; superifs: a "
-                  "V-variable step of --superifs per keyframe")
+                  "V-variable step of --superifs per keyframe. Keyframes count input frames "
+                  "(keyframe k at frame k·K), so a variable-rate input animates per frame, not "
+                  "per second")
       ->transform(choice(animations))
       ->default_str("none")
       ->option_text(choices_text(animations, "none"))

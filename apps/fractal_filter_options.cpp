@@ -7,29 +7,21 @@
 
 namespace ifsfx::app {
 
-StealMapOptions FractalFilterArgs::map_options() const {
-  StealMapOptions o;
-  o.view = view_option(view);
-  o.margin = margin;
-  o.exact = exact;
-  o.quality = quality;
-  o.seed = seed;
-  o.threads = threads;
-  return o;
-}
-
-video::FilterOptions FractalFilterArgs::filter_options() const {
-  if (!(mix >= 0 && mix <= 1))
-    throw Error(ErrorKind::invalid_argument, fmt::format("--mix: must be in [0, 1] (got {})", mix));
-  video::FilterOptions o;
-  o.mix = mix;
-  o.background = video::parse_background(background);
-  o.threads = threads;
-  return o;
-}
-
-video::DriftOptions FractalFilterArgs::drift_options() const {
-  return {.amount = drift_amount, .speed = drift_speed, .seed = seed};
+video::FractalSettings FractalFilterArgs::settings() const {
+  video::FractalSettings s;
+  s.preset = preset;
+  s.colouring = colouring;
+  s.exact = exact;
+  s.view = view_option(view);
+  s.margin = margin;
+  s.quality = quality;
+  s.mix = mix;
+  s.background = video::parse_background(background);
+  s.drift_amount = drift_amount;
+  s.drift_speed = drift_speed;
+  s.seed = seed;
+  s.threads = threads;
+  return s;
 }
 
 void add_fractal_filter_options(CLI::App& cmd, FractalFilterArgs& args) {
@@ -61,7 +53,7 @@ void add_fractal_filter_options(CLI::App& cmd, FractalFilterArgs& args) {
       ->capture_default_str()
       ->group(kFractal);
   cmd.add_option("--background", args.background,
-                 "Where the attractor does not cover: black, original, #rrggbb or R,G,B")
+                 "Where the attractor does not cover: black, white, original, #rrggbb or R,G,B")
       ->capture_default_str()
       ->group(kFractal);
   constexpr const char* kAnimation = "Animation";

@@ -8,9 +8,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "ifs/steal_map.h"
-#include "video/drift.h"
-#include "video/fractal_filter.h"
+#include "video/fractal_engine.h"
 
 namespace ifsfx::app {
 
@@ -28,12 +26,9 @@ struct FractalFilterArgs {
   std::uint64_t seed = 1;
   int threads = 0;
 
-  // The steal-map options: view (parsed), margin, exact, quality, seed, threads.
-  StealMapOptions map_options() const;
-  // The frame options: mix (checked to lie in [0, 1]), background (parsed), threads.
-  video::FilterOptions filter_options() const;
-  // The drift of `--animate drift`: amount, speed, seed.
-  video::DriftOptions drift_options() const;
+  // The fractal engine's settings of these options, view and background parsed (errors name the
+  // flags); the command adds its own (animation, interpolation). The engine checks the rest.
+  video::FractalSettings settings() const;
 };
 
 // Registers --preset, --colouring, --exact, --view, --margin, --quality, --mix and --background

@@ -1,21 +1,13 @@
 #include "apps/live_filter.h"
 
-#include "apps/cli_options.h"
-#include "ifs/preset.h"
-
 namespace ifsfx::app {
 
 LiveFilter::LiveFilter(const FractalFilterArgs& args, int fade_frames, const std::string& preset,
                        cv::Size size, bool animate)
-    : args_(args), fade_frames_(fade_frames), size_(size) {
-  const IfsPreset F = load_ifs(preset);
-  F_ = F.ifs;
-  name_ = F.ifs.name.empty() ? preset : F.ifs.name;
-  G_ = colouring_option(args.colouring, F_);
-  map_options_ = args.map_options();
-  options_ = args.filter_options();
-  fixed_ = video::make_remap_table(compute_steal_map(F_, G_, size, map_options_), size,
-                                   Interpolation::bilinear, args.threads);
+    : fade_frames_(fade_frames), size_(size) {
+  video::FractalSettings settings = args.settings();
+  settings.preset = preset;
+  engine_ = std::make_unique<video::FractalEngine>(settings, size);
   set_animate(animate);
 }
 
@@ -25,16 +17,18 @@ void LiveFilter::set_animate(bool on) {
     return;
   }
   if (drift_) return;
+  // A camera's frames do not wait for maps: the live drift (video/camera_drift.h) rather than the
+  // engine's keyframe schedule, on the engine's F, G and map options.
   video::LiveDriftOptions o;
-  o.drift = args_.drift_options();
-  o.map = map_options_;
+  o.drift = engine_->drift_options();
+  o.map = engine_->map_options();
   o.fade_frames = fade_frames_;
-  drift_ = std::make_unique<video::LiveDrift>(F_, G_, size_, o);
+  drift_ = std::make_unique<video::LiveDrift>(engine_->drawing(), engine_->colouring(), size_, o);
 }
 
 cv::Mat LiveFilter::operator()(const video::Frame& frame) {
-  if (!drift_) return video::filter_frame(frame.image, fixed_, options_);
-  return drift_->filter(frame.image, frame.timestamp, options_);
+  if (!drift_) return engine_->filter(frame.image, frame.index);
+  return drift_->filter(frame.image, frame.timestamp, engine_->filter_options());
 }
 
 }  // namespace ifsfx::app

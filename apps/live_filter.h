@@ -10,10 +10,8 @@
 #include <opencv2/core.hpp>
 
 #include "apps/fractal_filter_options.h"
-#include "ifs/ifs.h"
-#include "ifs/steal_map.h"
 #include "video/camera_drift.h"
-#include "video/fractal_filter.h"
+#include "video/fractal_engine.h"
 #include "video/frame_io.h"
 
 namespace ifsfx::app {
@@ -21,11 +19,11 @@ namespace ifsfx::app {
 class LiveFilter {
  public:
   // Computes the steal map of `preset` (a shipped name, a path, FILE.ifs:NAME) for frames of
-  // `size`, with the colouring, view and map options of `args` (which must outlive the filter).
+  // `size`, with the colouring, view and map options of `args`.
   LiveFilter(const FractalFilterArgs& args, int fade_frames, const std::string& preset,
              cv::Size size, bool animate);
 
-  const std::string& name() const { return name_; }
+  const std::string& name() const { return engine_->name(); }
   bool animated() const { return drift_ != nullptr; }
   // Starts or stops the drift animation (stopping waits for a map being built).
   void set_animate(bool on);
@@ -35,14 +33,9 @@ class LiveFilter {
   cv::Mat operator()(const video::Frame& frame);
 
  private:
-  const FractalFilterArgs& args_;
   int fade_frames_;
   cv::Size size_;
-  Ifs F_, G_;
-  std::string name_;
-  StealMapOptions map_options_;
-  video::FilterOptions options_;
-  video::RemapTable fixed_;
+  std::unique_ptr<video::FractalEngine> engine_;  // the fixed map, and F, G for the drift
   std::unique_ptr<video::LiveDrift> drift_;
 };
 

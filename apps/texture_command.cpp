@@ -102,24 +102,10 @@ void run_texture(const TextureArgs& args) {
   };
 
   // Frame j shows step s = j / K of the sequence crossfaded towards step s + 1 by (j mod K) / K.
-  cv::Mat current = textures.frame(), next;
-  const auto advance = [&] {
-    textures.step();
-    next = textures.frame();
-  };
   for (int frame = 0; frame < args.frames; ++frame) {
-    const int step = frame / args.crossfade, phase = frame % args.crossfade;
-    if (phase == 0 && frame > 0) {
-      if (next.empty()) advance();
-      current = std::move(next);
-      next = cv::Mat();
-    }
-    cv::Mat image = current;
-    if (phase != 0) {
-      if (next.empty()) advance();
-      image = crossfade(current, next, static_cast<double>(phase) / args.crossfade);
-    }
-    write_image(path_of(frame), image, metadata(textures.burn_in() + step));
+    const StepPosition position = position_of_frame(frame, args.crossfade);
+    write_image(path_of(frame), textures.frame_at(position),
+                metadata(textures.burn_in() + static_cast<int>(position.step)));
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1,5 +1,6 @@
 // Still images through OpenImageIO. Images in the libraries are cv::Mat in OpenCV's channel order
-// (BGR, BGRA, or one grey channel) of depth CV_8U, CV_16U or CV_32F (floats in [0, 1]).
+// (BGR, BGRA, or one grey channel) of depth CV_8U, CV_16U or CV_32F (floats in [0, 1]). Alpha is
+// straight: the colour of a half-transparent pixel is its full colour, not multiplied by alpha.
 #pragma once
 
 #include <filesystem>
@@ -34,7 +35,9 @@ struct ImageFile {
   std::vector<std::pair<std::string, std::string>> metadata;  // string attributes
 };
 
-// Reads any image OpenImageIO reads. Throws Error{not_found} or Error{io} naming the path.
+// Reads any image OpenImageIO reads, alpha straight whatever the file stores. Throws
+// Error{not_found} or Error{io} naming the path — Error{io} "corrupt or truncated image" also for
+// a file the reader could only partly decode (a JPEG or PNG cut short), never a half-grey picture.
 ImageFile read_image(const std::filesystem::path& path);
 
 }  // namespace ifsfx

@@ -15,6 +15,7 @@
 #include "ifs/error.h"
 #include "ifs/fractint.h"
 #include "ifs/preset.h"
+#include "ifs/steal_map.h"
 
 namespace ifsfx {
 namespace {
@@ -213,6 +214,16 @@ IfsPreset load_ifs(const std::string& spec, const ValidateOptions& options) {
   IfsPreset preset = resolve(spec);
   validate(preset.ifs, preset.origin, options);
   return preset;
+}
+
+Ifs load_colouring(const std::string& spec, const Ifs& F, const std::string& what) {
+  if (spec.empty()) return default_colouring(F.size());
+  Ifs G = fit_to_unit_square(load_ifs(spec, {.allow_expansive = true}).ifs);
+  if (G.size() != F.size())
+    throw Error(ErrorKind::invalid_ifs,
+                fmt::format("{} {}: must have as many maps as {} (got {} for {})", what, spec,
+                            F.name, G.size(), F.size()));
+  return G;
 }
 
 }  // namespace ifsfx

@@ -17,7 +17,77 @@ void TomlReader::fail(ErrorKind kind, const toml::source_region& where,
   throw Error(kind, fmt::format("{}: {}", at(where), what));
 }
 
+namespace {
+
+// toml++ builds a dotted key's tables by recursion, one level per part: a key of tens of
+// thousands of parts overflows the stack before any error can be raised. Presets need a few parts
+// and levels; these bounds are far above that and far below what the stack holds.
+constexpr int kMaxKeyParts = 32;
+constexpr int kMaxNesting = 32;  // arrays and inline tables inside each other
+constexpr std::size_t kMaxBytes = 16u << 20;
+
+bool bare_key_char(char c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
+         c == '-';
+}
+
+}  // namespace
+
+void TomlReader::check_shape(std::string_view text) const {
+  if (text.size() > kMaxBytes)
+    throw Error(ErrorKind::parse,
+                fmt::format("{}: larger than any preset (got {} bytes; at most {} MiB)", filename_,
+                            text.size(), kMaxBytes >> 20));
+  // One pass over the text: strings and comments skipped, runs of key parts joined by dots
+  // counted ("a.b.c" and "1.5" alike: only keys make long runs), brackets and braces nested.
+  int line = 1, parts = 0, nesting = 0;
+  bool dot = false;  // a dot ended the last run: the next part continues it
+  auto part = [&] {
+    parts = dot ? parts + 1 : 1;
+    dot = false;
+    if (parts > kMaxKeyParts)
+      throw Error(ErrorKind::parse, fmt::format("{}:{}: a dotted key of more than {} parts "
+                                                "(a preset needs a few)",
+                                                filename_, line, kMaxKeyParts));
+  };
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n') ++line;
+    if (c == '#') {  // a comment, to the end of the line
+      while (i + 1 < text.size() && text[i + 1] != '\n') ++i;
+      parts = 0, dot = false;
+    } else if (c == '"' || c == '\'') {  // a string or a quoted key part
+      const bool multi = text.substr(i, 3) == std::string(3, c);
+      const std::string_view close = multi ? text.substr(i, 3) : text.substr(i, 1);
+      i += close.size();
+      while (i < text.size() && text.substr(i, close.size()) != close) {
+        if (text[i] == '\n') ++line;
+        if (c == '"' && text[i] == '\\') ++i;  // an escape in a basic string
+        ++i;
+      }
+      i += close.size() - 1;
+      part();
+    } else if (bare_key_char(c)) {
+      while (i + 1 < text.size() && bare_key_char(text[i + 1])) ++i;
+      part();
+    } else if (c == '.') {
+      dot = parts > 0;
+    } else if (c != ' ' && c != '\t') {
+      parts = 0, dot = false;
+      if (c == '[' || c == '{') {
+        if (++nesting > kMaxNesting)
+          throw Error(ErrorKind::parse, fmt::format("{}:{}: arrays and tables nested more than {} "
+                                                    "deep (a preset needs a few)",
+                                                    filename_, line, kMaxNesting));
+      } else if (c == ']' || c == '}') {
+        nesting = std::max(0, nesting - 1);
+      }
+    }
+  }
+}
+
 toml::table TomlReader::parse(std::string_view text) const {
+  check_shape(text);
   try {
     return toml::parse(text, filename_);
   } catch (const toml::parse_error& e) {

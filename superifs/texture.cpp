@@ -336,22 +336,70 @@ StealMap TextureSequence::next_map() {
   return steal_map();
 }
 
-StealMap TextureSequence::map_at(std::int64_t k) {
-  constexpr std::size_t keep = 4;
-  std::lock_guard lock(mutex_);
-  if (const auto it = kept_.find(k); it != kept_.end()) return it->second;
-  const std::int64_t now = buffers_.steps_done() - burn_in_;
-  if (k < now)
+namespace {
+
+constexpr std::size_t kept_steps = 4;
+
+void check_step(std::int64_t k) {
+  if (k < 0)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("texture sequence: step {} has been passed (now at {}, last {} kept)",
-                            k, now, keep));
+                fmt::format("texture sequence: step must be 0 or more (got {})", k));
+}
+
+// Keeps step k's value, dropping the step farthest from k when more than kept_steps are kept.
+template <class T>
+void keep(std::map<std::int64_t, T>& kept, std::int64_t k, T value) {
+  kept.emplace(k, std::move(value));
+  while (kept.size() > kept_steps) {
+    if (k - kept.begin()->first >= std::prev(kept.end())->first - k)
+      kept.erase(kept.begin());
+    else
+      kept.erase(std::prev(kept.end()));
+  }
+}
+
+}  // namespace
+
+void TextureSequence::seek(std::int64_t k) {
+  if (k < buffers_.steps_done() - burn_in_) {
+    // Each step's choices come from stream_seed(seed, step): the same steps again give the same
+    // buffers.
+    const SuperIfs super = buffers_.super();
+    const cv::Size size = buffers_.size();
+    buffers_ = Buffers(super, size, buffer_options(super, size, options_));
+    buffers_.run(burn_in_);
+  }
+  while (buffers_.steps_done() - burn_in_ < k) buffers_.step();
+}
+
+StealMap TextureSequence::map_at(std::int64_t k) {
+  check_step(k);
+  std::lock_guard lock(mutex_);
+  if (const auto it = kept_maps_.find(k); it != kept_maps_.end()) return it->second;
+  if (k < buffers_.steps_done() - burn_in_) seek(k);
   // Every map on the way is kept too: a schedule that asks for k + 2 before k + 1 finds it.
-  for (std::int64_t at = now;; ++at) {
-    if (!kept_.contains(at)) kept_.emplace(at, steal_map());
-    while (kept_.size() > keep) kept_.erase(kept_.begin());
-    if (at == k) return kept_.at(k);
+  for (;;) {
+    const std::int64_t at = buffers_.steps_done() - burn_in_;
+    if (!kept_maps_.contains(at)) keep(kept_maps_, at, steal_map());
+    if (at == k) return kept_maps_.at(k);
     buffers_.step();
   }
+}
+
+cv::Mat TextureSequence::frame_at(std::int64_t k) {
+  check_step(k);
+  std::lock_guard lock(mutex_);
+  if (const auto it = kept_frames_.find(k); it != kept_frames_.end()) return it->second;
+  seek(k);
+  cv::Mat image = frame();
+  keep(kept_frames_, k, image);
+  return image;
+}
+
+cv::Mat TextureSequence::frame_at(StepPosition position) {
+  cv::Mat image = frame_at(position.step);
+  if (position.phase <= 0) return image;
+  return crossfade(image, frame_at(position.step + 1), position.phase);
 }
 
 cv::Mat crossfade(const cv::Mat& a, const cv::Mat& b, double t) {

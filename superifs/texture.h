@@ -19,6 +19,7 @@
 #include <opencv2/core.hpp>
 
 #include "ifs/steal_map.h"
+#include "ifs/timeline.h"
 #include "superifs/buffers.h"
 #include "superifs/superifs.h"
 
@@ -89,23 +90,36 @@ class TextureSequence {
   // step(), then the steal map of the new texture.
   StealMap next_map();
 
-  // The steal map of texture k of the sequence (k = 0: the burnt-in one), a pure function of k
-  // for a given superIFS, size and options. Safe to call from several threads (calls are
-  // serialised): the sequence steps forward to k keeping the maps of the last 4 steps, so keyframes
-  // asked for in about increasing order (a lookahead) are cheap. Throws Error{invalid_argument} for
-  // a k that has been stepped past and is no longer kept.
+  // The steal map of texture k ≥ 0 of the sequence (k = 0: the burnt-in one), a pure function of
+  // k for a given superIFS, size and options, whatever order steps are asked for in: the sequence
+  // steps forward to k keeping the maps of the last 4 steps, so keyframes asked for in about
+  // increasing order (a lookahead) are cheap; a step already passed and no longer kept is made
+  // again from the burn-in (k steps' work). Safe to call from several threads (calls are
+  // serialised). Throws Error{invalid_argument} for a negative k.
   StealMap map_at(std::int64_t k);
+
+  // Texture k ≥ 0 rendered in options.mode, a pure function of k like map_at (the last 4 kept;
+  // the image shares its pixels with the kept one: copy it before writing to it).
+  cv::Mat frame_at(std::int64_t k);
+  // The frame of an animation at `position`: texture position.step crossfaded towards the next
+  // one by position.phase (crossfade() below).
+  //   for (int j = 0; j < frames; ++j) write(seq.frame_at(position_of_frame(j, 4)));
+  cv::Mat frame_at(StepPosition position);
 
   int steps_done() const { return buffers_.steps_done(); }
   int burn_in() const { return burn_in_; }
   const Buffers& buffers() const { return buffers_; }
 
  private:
+  // Moves the buffers to step k (from the burn-in again when k is behind them).
+  void seek(std::int64_t k);
+
   TextureOptions options_;
   Buffers buffers_;
   int burn_in_ = 0;
-  std::mutex mutex_;                       // serialises map_at
-  std::map<std::int64_t, StealMap> kept_;  // the last maps map_at made, by k
+  std::mutex mutex_;                             // serialises map_at and frame_at
+  std::map<std::int64_t, StealMap> kept_maps_;   // the last maps map_at made, by k
+  std::map<std::int64_t, cv::Mat> kept_frames_;  // the last frames frame_at made, by k
 };
 
 // Linear crossfade (1 − t)·a + t·b of two images of one size and type, t in [0, 1]: the frames

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Configures and builds ifsfx: tools/build.sh [release|asan]  (default release) → build/<kind>/
+# Configures and builds ifsfx: tools/build.sh [release|asan|deb]  (default release) → build/<kind>/
+# deb: what the Debian packages hold (tools/build-deb.sh), installed under /usr, without the tests.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 kind=${1:-release}
@@ -8,7 +9,9 @@ case "$kind" in
   # -O1 -g1: sanitizer builds compile faster and still give file:line stack traces.
   asan) flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1"
               -DIFSFX_SANITIZE=ON -DIFSFX_BUILD_BENCH=OFF) ;;
-  *) echo "build.sh: unknown build kind '$kind' (release or asan)" >&2; exit 2 ;;
+  deb) flags=(-DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX=/usr -DIFSFX_BUILD_TESTS=OFF
+             -DIFSFX_BUILD_BENCH=OFF) ;;
+  *) echo "build.sh: unknown build kind '$kind' (release, asan or deb)" >&2; exit 2 ;;
 esac
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)

@@ -4,16 +4,22 @@
 set -euo pipefail
 
 packages=(
-  # toolchain
-  g++ cmake ninja-build pkg-config ccache clang-format
+  # toolchain; dpkg-dev (dpkg-shlibdeps) and file: the Debian packages' Depends, made by cpack;
+  # clang and its runtime libraries (libFuzzer, sanitizers) for tools/run-fuzz.sh
+  g++ cmake ninja-build pkg-config ccache clang-format dpkg-dev file clang libclang-rt-14-dev
   # libraries
   libopencv-dev libopenimageio-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  # runtime tools and data: ffmpeg/ffprobe (audio remux, tests), OpenCV's sample clips and images
-  ffmpeg opencv-doc openimageio-tools
+  # runtime tools and data: ffmpeg/ffprobe (audio remux, tests), OpenCV's sample clips and images;
+  # groff-base checks the man page
+  ffmpeg opencv-doc openimageio-tools groff-base
   # the window of `ifsfx cam` tested under a virtual X server: Xvfb, xdotool (keys), xwd + netpbm
   xvfb xdotool x11-apps netpbm
+  # the frei0r plugins: frei0r.h, and the hosts they are tested in (melt; GStreamer with the
+  # frei0r wrapper in -bad, Matroska in -good, FFV1 in -libav)
+  frei0r-plugins-dev melt gstreamer1.0-tools gstreamer1.0-plugins-base gstreamer1.0-plugins-good
+  gstreamer1.0-plugins-bad gstreamer1.0-libav
 )
 
 missing=()

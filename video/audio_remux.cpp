@@ -72,7 +72,12 @@ void AudioCopy::copy_until(double until) {
     // A packet that ends before time 0 is not heard; one that reaches it is kept with its negative
     // time (the muxer trims it: an edit list in MP4): an AAC priming packet, or the one before a
     // --frames cut, which the decoder needs for its overlap.
-    const double length = static_cast<double>(packet_->duration) * av_q2d(in->time_base);
+    // A packet without a duration (Matroska's first, the priming one) lasts its frame's samples.
+    std::int64_t duration = packet_->duration;
+    if (duration <= 0 && in->codecpar->sample_rate > 0)
+      duration = av_rescale_q(av_get_audio_frame_duration2(in->codecpar, packet_->size),
+                              AVRational{1, in->codecpar->sample_rate}, in->time_base);
+    const double length = static_cast<double>(duration) * av_q2d(in->time_base);
     if (t + length < -1e-6) {
       av_packet_unref(packet_.get());
       continue;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <string_view>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -94,10 +96,71 @@ std::filesystem::path part_path(const std::filesystem::path& path) {
   return p;
 }
 
+// The chroma block of a pixel format: 2×2 for 4:2:0, 2×1 for 4:2:2, 1×1 for 4:4:4 and RGB.
+cv::Size chroma_block(AVPixelFormat format) {
+  int w_shift = 0, h_shift = 0;
+  if (av_pix_fmt_get_chroma_sub_sample(format, &w_shift, &h_shift) < 0) return {1, 1};
+  return {1 << w_shift, 1 << h_shift};
+}
+
+FrameTiming timing_for(const std::filesystem::path& path, const AVOutputFormat* container,
+                       const AVCodec* encoder, FrameTiming requested) {
+  // AVI counts frames instead of storing times, raw streams store none, and MPEG-1/2 video knows
+  // only a list of rates: none of them can place a frame at an arbitrary time.
+  const bool no_times = std::string_view(container->name) == "avi" ||
+                        (container->flags & AVFMT_NOTIMESTAMPS) ||
+                        encoder->supported_framerates != nullptr;
+  if (requested == FrameTiming::keep && no_times)
+    throw Error(ErrorKind::unsupported,
+                fmt::format("{}: {} cannot keep each frame's time (--fps-mode vfr); use .mkv or "
+                            ".mp4, or --fps-mode cfr",
+                            path.string(),
+                            encoder->supported_framerates != nullptr
+                                ? fmt::format("{} video", encoder->name)
+                                : fmt::format("the {} container", container->name)));
+  if (requested != FrameTiming::automatic) return requested;
+  return no_times ? FrameTiming::constant : FrameTiming::keep;
+}
+
+// The clock kept timestamps are written on: the source's own, where the encoder takes it.
+AVRational keep_time_base(const AVCodec* encoder, Rational source, Rational rate) {
+  if (!source.positive()) return AVRational{rate.den, rate.num};  // cameras: the rate's grid
+  AVRational tb{source.num, source.den};
+  // MPEG-4 part 2 codes the clock in 16 bits: a coarser tick of the same clock (1/90000 becomes
+  // 1/45000), at most 1/65535 s off.
+  if (encoder->id == AV_CODEC_ID_MPEG4 && tb.den > 65535) {
+    const int divide = (tb.den + 65534) / 65535;
+    tb.den = std::max(1, tb.den / divide);
+  }
+  return tb;
+}
+
+// The nearest rate an encoder bound to a list of rates (MPEG-1/2) offers; `rate` otherwise.
+Rational supported_rate(const AVCodec* encoder, Rational rate) {
+  if (encoder->supported_framerates == nullptr) return rate;
+  const int i =
+      av_find_nearest_q_idx(AVRational{rate.num, rate.den}, encoder->supported_framerates);
+  return {encoder->supported_framerates[i].num, encoder->supported_framerates[i].den};
+}
+
 }  // namespace
 
 std::string resolve_encoder(const std::filesystem::path& path, const std::string& codec) {
   return find_encoder(path, guess_container(path), codec)->name;
+}
+
+cv::Size encodable_size(const std::filesystem::path& path, const std::string& codec,
+                        cv::Size size) {
+  const cv::Size block =
+      chroma_block(pick_pixel_format(find_encoder(path, guess_container(path), codec)));
+  return {std::max(block.width, size.width / block.width * block.width),
+          std::max(block.height, size.height / block.height * block.height)};
+}
+
+FrameTiming resolve_timing(const std::filesystem::path& path, const std::string& codec,
+                           FrameTiming requested) {
+  const AVOutputFormat* container = guess_container(path);
+  return timing_for(path, container, find_encoder(path, container, codec), requested);
 }
 
 struct FileSink::Impl {
@@ -111,20 +174,35 @@ struct FileSink::Impl {
   std::unique_ptr<detail::AudioCopy> audio;
   AVStream* stream = nullptr;
   double audio_origin = 0;
-  std::int64_t written = 0;
-  double first_timestamp = 0;
-  std::int64_t last_pts = -1;
+  FrameTiming timing = FrameTiming::keep;
+  Rational rate;              // the nominal rate: one frame's length where a frame has none
+  std::int64_t received = 0;  // frames given to write()
+  std::int64_t written = 0;   // frames encoded
+  std::int64_t repeated = 0;
+  std::int64_t dropped = 0;
+  Frame first;                 // the first frame's time (no image): output time 0
+  std::int64_t last_pts = -1;  // the last frame encoded, on the codec's clock
+  std::int64_t end_pts = 0;    // where the last frame encoded ends, on the codec's clock
+  std::map<std::int64_t, std::int64_t> durations;  // frames in the encoder: pts → duration
+  // Constant timing: the frame held back until the next one says how long it lasts.
+  cv::Mat pending;
+  std::int64_t pending_slot = 0, pending_end = 0;
   bool closed = false;
 
   std::string what() const { return path.string(); }
 
-  // Sends one frame (nullptr: flush) and writes every packet the encoder has ready.
+  // Sends one frame (nullptr: flush) and writes every packet the encoder has ready, each with the
+  // duration of its frame (so the last frame lasts as long as the source's did).
   void encode(AVFrame* f) {
     check_av(avcodec_send_frame(codec.get(), f), ErrorKind::io, what(), "encoder refused a frame");
     for (;;) {
       const int r = avcodec_receive_packet(codec.get(), packet.get());
       if (r == AVERROR(EAGAIN) || r == AVERROR_EOF) return;
       check_av(r, ErrorKind::io, what(), "encoding failed");
+      if (const auto d = durations.find(packet->pts); d != durations.end()) {
+        packet->duration = d->second;
+        durations.erase(d);
+      }
       av_packet_rescale_ts(packet.get(), codec->time_base, stream->time_base);
       packet->stream_index = stream->index;
       check_av(av_interleaved_write_frame(format.get(), packet.get()), ErrorKind::io, what(),
@@ -132,8 +210,58 @@ struct FileSink::Impl {
     }
   }
 
-  double seconds(std::int64_t frames) const {
-    return static_cast<double>(frames) * av_q2d(codec->time_base);
+  double seconds(std::int64_t ticks) const {
+    return static_cast<double>(ticks) * av_q2d(codec->time_base);
+  }
+
+  // The time of frame `f` after the first frame, on the codec's clock: exact (from pts) where
+  // the frame has a clock, else from its timestamp in seconds.
+  std::int64_t ticks(const Frame& f) const {
+    if (f.time_base.positive() && f.time_base.num == first.time_base.num &&
+        f.time_base.den == first.time_base.den)
+      return av_rescale_q(f.pts - first.pts, {f.time_base.num, f.time_base.den}, codec->time_base);
+    return std::llround((f.timestamp - first.timestamp) / av_q2d(codec->time_base));
+  }
+
+  // How long frame `f` lasts on the codec's clock: its own duration, else one nominal frame.
+  std::int64_t length(const Frame& f) const {
+    std::int64_t d = 0;
+    if (f.duration > 0 && f.time_base.positive())
+      d = av_rescale_q(f.duration, {f.time_base.num, f.time_base.den}, codec->time_base);
+    else
+      d = av_rescale_q(1, AVRational{rate.den, rate.num}, codec->time_base);
+    return std::max<std::int64_t>(1, d);
+  }
+
+  // Converts and encodes one picture at `pts`, lasting `duration`; the audio follows up to its end.
+  void emit(const cv::Mat& image, std::int64_t pts, std::int64_t duration) {
+    check_av(av_frame_make_writable(frame.get()), ErrorKind::io, what(), "out of memory");
+    const std::uint8_t* src[4] = {image.data, nullptr, nullptr, nullptr};
+    const int src_stride[4] = {static_cast<int>(image.step), 0, 0, 0};
+    sws_scale(sws.get(), src, src_stride, 0, image.rows, frame->data, frame->linesize);
+    frame->pts = pts;
+    durations[pts] = duration;
+    // The audio before this frame goes first: an AAC priming packet (before time 0) must reach
+    // the muxer before any video, or the shift it makes for it moves the video already written.
+    if (audio) audio->copy_until(seconds(pts));
+    encode(frame.get());
+    ++written;
+    last_pts = pts;
+    end_pts = pts + duration;
+    // Audio up to the end of this frame: the muxer interleaves it, and a file closed after this
+    // frame has its sound up to there.
+    if (audio) audio->copy_until(seconds(end_pts));
+  }
+
+  // Constant timing: the held-back frame fills the slots from where the output stands up to
+  // `until`; none when a later frame took its slot (dropped).
+  void flush_pending(std::int64_t until) {
+    if (pending.empty()) return;
+    const std::int64_t from = std::max(pending_slot, end_pts);
+    if (until <= from) ++dropped;
+    for (std::int64_t slot = from; slot < until; ++slot) emit(pending, slot, 1);
+    if (until - from > 1) repeated += until - from - 1;
+    pending.release();
   }
 
   void discard_temp() noexcept {
@@ -166,15 +294,31 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
   check_av(avformat_alloc_output_context2(&raw, container, nullptr, path.c_str()),
            ErrorKind::unsupported, s.what(), "cannot create the container");
   s.format.reset(raw);
+  // AVI places frames by count, not time: shifting every stream to make an AAC priming packet's
+  // negative time non-negative would move the video by a whole frame after its first one.
+  if (std::string_view(container->name) == "avi")
+    raw->avoid_negative_ts = AVFMT_AVOID_NEG_TS_DISABLED;
 
   s.codec.reset(avcodec_alloc_context3(encoder));
   AVCodecContext* c = s.codec.get();
   c->width = options.size.width;
   c->height = options.size.height;
-  c->time_base = AVRational{options.frame_rate.den, options.frame_rate.num};
-  c->framerate = AVRational{options.frame_rate.num, options.frame_rate.den};
+  s.timing = timing_for(path, container, encoder, options.timing);
+  s.rate = supported_rate(encoder, options.frame_rate);
+  c->time_base = s.timing == FrameTiming::constant
+                     ? AVRational{s.rate.den, s.rate.num}
+                     : keep_time_base(encoder, options.time_base, s.rate);
+  c->framerate = AVRational{s.rate.num, s.rate.den};
   c->sample_aspect_ratio = AVRational{1, 1};
   c->pix_fmt = pick_pixel_format(encoder);
+  if (const cv::Size fit = encodable_size(path, options.codec, options.size); fit != options.size) {
+    const cv::Size block = chroma_block(c->pix_fmt);
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: {} in {} needs a width that is a multiple of {} and a height that "
+                            "is a multiple of {} (got {}x{}; {}x{} would do)",
+                            s.what(), encoder->name, av_get_pix_fmt_name(c->pix_fmt), block.width,
+                            block.height, c->width, c->height, fit.width, fit.height));
+  }
   if (c->pix_fmt == AV_PIX_FMT_YUVJ420P) c->color_range = AVCOL_RANGE_JPEG;
   c->thread_count = options.threads;
   if (encoder->id == AV_CODEC_ID_MPEG4) {
@@ -237,25 +381,23 @@ void FileSink::write(const Frame& frame) {
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("{}: frames must be {}x{} 8-bit BGR (got {}x{}, type {})", s.what(),
                             s.codec->width, s.codec->height, image.cols, image.rows, image.type()));
-  if (s.written == 0) {
-    s.first_timestamp = frame.timestamp;
+  if (s.received == 0) {
+    s.first = frame;
+    s.first.image.release();
     if (s.audio) s.audio->set_origin(s.audio_origin + frame.timestamp);
   }
-  check_av(av_frame_make_writable(s.frame.get()), ErrorKind::io, s.what(), "out of memory");
-  const std::uint8_t* src[4] = {image.data, nullptr, nullptr, nullptr};
-  const int src_stride[4] = {static_cast<int>(image.step), 0, 0, 0};
-  sws_scale(s.sws.get(), src, src_stride, 0, image.rows, s.frame->data, s.frame->linesize);
-  // Timestamps are kept (on the grid of the frame rate), so a source with gaps in time keeps its
-  // timing and its sync with the audio; they only ever move forward.
-  const std::int64_t pts =
-      std::llround((frame.timestamp - s.first_timestamp) / av_q2d(s.codec->time_base));
-  s.last_pts = std::max(pts, s.last_pts + 1);
-  s.frame->pts = s.last_pts;
-  s.encode(s.frame.get());
-  ++s.written;
-  // Audio up to the end of this frame: the muxer interleaves it, and a file closed after this frame
-  // has its sound up to there.
-  if (s.audio) s.audio->copy_until(s.seconds(s.last_pts + 1));
+  ++s.received;
+  const std::int64_t t = s.ticks(frame);
+  if (s.timing == FrameTiming::keep) {
+    // Its own time; only ever forward (a damaged file's repeated timestamp moves one tick on).
+    s.emit(image, std::max(t, s.last_pts + 1), s.length(frame));
+    return;
+  }
+  // Constant rate: the frame before this one covers the slots up to this one's.
+  s.flush_pending(t);
+  s.pending = image.clone();  // the caller may reuse its buffer (a camera's) for the next frame
+  s.pending_slot = t;
+  s.pending_end = t + s.length(frame);
 }
 
 void FileSink::close() {
@@ -263,10 +405,12 @@ void FileSink::close() {
   if (s.closed) return;
   s.closed = true;
   try {
-    if (s.written == 0)
+    if (s.received == 0)
       throw Error(ErrorKind::io, fmt::format("{}: no frame to write; nothing was saved", s.what()));
+    // The last frame of a constant-rate output lasts as long as it did in the source.
+    s.flush_pending(std::max(s.pending_end, std::max(s.pending_slot, s.end_pts) + 1));
     s.encode(nullptr);
-    if (s.audio) s.audio->copy_until(s.seconds(s.last_pts + 1));
+    if (s.audio) s.audio->copy_until(s.seconds(s.end_pts));
     check_av(av_write_trailer(s.format.get()), ErrorKind::io, s.what(), "cannot finish the file");
     check_av(avio_closep(&s.format->pb), ErrorKind::io, s.what(), "cannot finish the file");
     s.format.reset();
@@ -287,6 +431,18 @@ std::string FileSink::name() const {
 
 std::int64_t FileSink::frames_written() const {
   return impl_->written;
+}
+
+std::int64_t FileSink::frames_repeated() const {
+  return impl_->repeated;
+}
+
+std::int64_t FileSink::frames_dropped() const {
+  return impl_->dropped;
+}
+
+FrameTiming FileSink::timing() const {
+  return impl_->timing;
 }
 
 std::string FileSink::codec_name() const {

@@ -14,14 +14,29 @@
 
 namespace ifsfx::video {
 
+// How output frames are placed in time (`ifsfx filter --fps-mode`).
+enum class FrameTiming {
+  automatic,  // keep, where the container stores each frame's time; constant where it cannot (AVI)
+  keep,       // every frame at its own timestamp: a variable-rate input stays variable-rate
+  constant,   // frame_rate exactly, by timestamp: each output slot n shows the last frame whose
+              // time rounds to slot n or before — frames repeated over gaps, and of several
+              // frames within one slot only the last kept (ffmpeg -fps_mode cfr)
+};
+
 struct FileSinkOptions {
   // Encoder name as ffmpeg knows it ("libx264", "h264", "mpeg4", "ffv1", "mjpeg", ...); empty =
   // the container's default, as ffmpeg chooses it: .mp4/.mkv → H.264 (libx264), .avi → MPEG-4
   // part 2. Encoder settings are ffmpeg's defaults (libx264: preset medium, CRF 23), except
   // MPEG-4 part 2, encoded at constant quality q 3 instead of ffmpeg's 200 kb/s.
   std::string codec;
-  cv::Size size;  // frame size; every frame written must have it
-  Rational frame_rate{25, 1};
+  // Frame size; every frame written must have it. Sides must suit the encoder's pixel format
+  // (even for 4:2:0 H.264): encodable_size() gives the nearest that does.
+  cv::Size size;
+  Rational frame_rate{25, 1};  // the nominal rate, and the rate of a constant-rate output
+  // The clock of the frames' exact times (Frame::pts; FileSource::time_base()): kept timestamps
+  // are written on it. 0/1 (cameras): Frame::timestamp, on the grid of frame_rate.
+  Rational time_base{0, 1};
+  FrameTiming timing = FrameTiming::automatic;
   int threads = 0;  // encoder threads; 0 = all cores
   // Copy the audio streams of this file unchanged into the output, in sync with the frames.
   std::optional<std::filesystem::path> audio_from;
@@ -42,9 +57,11 @@ class FileSink final : public FrameSink {
   FileSink(const FileSink&) = delete;
   FileSink& operator=(const FileSink&) = delete;
 
-  // Each frame is stamped with its Frame::timestamp relative to the first frame written, on the
-  // grid of options.frame_rate (moved one step on where two would collide): a constant-rate
-  // source gives a constant-rate file, a source with gaps keeps its gaps.
+  // Times are relative to the first frame written, which is output time 0. FrameTiming::keep
+  // stamps each frame with its own time (exact on options.time_base; moved one tick on where two
+  // would collide) and duration, so a variable-rate source keeps its timing and its sync with the
+  // audio. FrameTiming::constant holds one frame back until the next one says how many slots it
+  // covers.
   void write(const Frame& frame) override;
   // Flushes the encoder, writes the audio up to the end of the last frame, the trailer, and
   // renames the file into place. Without any frame written, removes the temporary file and throws
@@ -52,8 +69,11 @@ class FileSink final : public FrameSink {
   void close() override;
   std::string name() const override;
 
-  std::int64_t frames_written() const;
-  std::string codec_name() const;  // the encoder in use, e.g. "libx264"
+  std::int64_t frames_written() const;   // frames encoded so far (repeats included)
+  std::int64_t frames_repeated() const;  // constant timing: extra copies written over gaps
+  std::int64_t frames_dropped() const;   // constant timing: frames that fell in a full slot
+  FrameTiming timing() const;            // keep or constant, as resolved for this file
+  std::string codec_name() const;        // the encoder in use, e.g. "libx264"
 
  private:
   struct Impl;
@@ -63,5 +83,17 @@ class FileSink final : public FrameSink {
 // The encoder `codec` names (or the default of the container `path` names), checked as close() of
 // a FileSink would check it; for --help and for errors before work. Throws as FileSink does.
 std::string resolve_encoder(const std::filesystem::path& path, const std::string& codec);
+
+// The frame size nearest `size` that the encoder takes in the pixel format a FileSink picks:
+// each side rounded down to a multiple of its chroma block (2 for 4:2:0, e.g. H.264 in yuv420p),
+// and never below one block. `size` itself when it already fits.
+//   const cv::Size out = encodable_size("out.mp4", "", {641, 481});  // 640x480
+cv::Size encodable_size(const std::filesystem::path& path, const std::string& codec, cv::Size size);
+
+// What FrameTiming::automatic means for `path` and `codec`: constant for containers that store no
+// per-frame times (AVI counts frames) and encoders bound to a list of rates (MPEG-1/2), keep
+// otherwise. Throws Error{unsupported} when `requested` is keep and the file cannot keep times.
+FrameTiming resolve_timing(const std::filesystem::path& path, const std::string& codec,
+                           FrameTiming requested);
 
 }  // namespace ifsfx::video

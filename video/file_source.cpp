@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <system_error>
 
 #include <fmt/format.h>
@@ -28,6 +29,20 @@ double matroska_duration(const AVStream* stream) {
   return h * 3600.0 + m * 60.0 + s;
 }
 
+// The display matrix a phone writes, else the older `rotate` tag; upright without either.
+Orientation orientation_of(const AVStream* stream, const std::string& what) {
+  std::size_t size = 0;
+  const std::uint8_t* matrix = av_stream_get_side_data(stream, AV_PKT_DATA_DISPLAYMATRIX, &size);
+  if (matrix != nullptr && size >= 9 * sizeof(std::int32_t)) {
+    std::int32_t m[9];
+    std::memcpy(m, matrix, sizeof m);
+    return orientation_from_matrix(m, what);
+  }
+  if (const AVDictionaryEntry* tag = av_dict_get(stream->metadata, "rotate", nullptr, 0))
+    return orientation_from_rotate_tag(tag->value, what);
+  return {};
+}
+
 }  // namespace
 
 struct FileSource::Impl {
@@ -38,12 +53,16 @@ struct FileSource::Impl {
   std::unique_ptr<AVFrame, detail::FrameDeleter> frame{av_frame_alloc()};
   std::unique_ptr<SwsContext, detail::SwsDeleter> sws;
   AVStream* stream = nullptr;
-  Rational rate{25, 1};
+  Rational rate{25, 1};          // nominal: the rate the frames' clock ticks at
+  Rational average_rate{25, 1};  // frames per second on average (what a frame count needs)
+  Orientation orientation;
   std::int64_t announced_frames = -1;  // from the container, for the truncation check
   double announced_seconds = -1;       // the video stream's own length, when stored
   std::int64_t start_pts = AV_NOPTS_VALUE;
   std::int64_t decoded = 0;
+  std::int64_t next_pts = 0;  // where a frame without a timestamp goes: after the last one
   double last_timestamp = -1;
+  double last_duration = 0;  // seconds the last frame is shown, 0 when not known
   int corrupt_packets = 0;
   bool draining = false;  // the demuxer is exhausted; the decoder is being flushed
   bool finished = false;
@@ -100,15 +119,22 @@ struct FileSource::Impl {
                               codec->width, codec->height, f->width, f->height));
     Frame out;
     out.index = decoded;
+    // The frame's own time, exact on the stream's clock: a variable-rate movie keeps its timing.
+    const AVRational tb = stream->time_base;
+    out.time_base = {tb.num, tb.den};
     const std::int64_t pts = f->best_effort_timestamp;
     if (pts != AV_NOPTS_VALUE) {
       if (start_pts == AV_NOPTS_VALUE) {
         start_pts = stream->start_time != AV_NOPTS_VALUE ? std::min(stream->start_time, pts) : pts;
       }
-      out.timestamp = static_cast<double>(pts - start_pts) * av_q2d(stream->time_base);
+      out.pts = pts - start_pts;
     } else {
-      out.timestamp = static_cast<double>(decoded) / rate.value();
+      out.pts = next_pts;  // no timestamp: right after the previous frame
     }
+    out.duration = std::max<std::int64_t>(0, f->pkt_duration);
+    const std::int64_t period = av_rescale_q(1, av_inv_q(AVRational{rate.num, rate.den}), tb);
+    next_pts = out.pts + (out.duration > 0 ? out.duration : std::max<std::int64_t>(1, period));
+    out.timestamp = static_cast<double>(out.pts) * av_q2d(tb);
     if (convert) {
       out.image.create(f->height, f->width, CV_8UC3);
       sws.reset(sws_getCachedContext(sws.release(), f->width, f->height,
@@ -121,21 +147,24 @@ struct FileSource::Impl {
       std::uint8_t* dst[4] = {out.image.data, nullptr, nullptr, nullptr};
       const int dst_stride[4] = {static_cast<int>(out.image.step), 0, 0, 0};
       sws_scale(sws.get(), f->data, f->linesize, 0, f->height, dst, dst_stride);
+      out.image = orientation.apply(out.image);
     }
     av_frame_unref(f);
     ++decoded;
     last_timestamp = out.timestamp;
+    last_duration = static_cast<double>(out.duration) * av_q2d(tb);
     return out;
   }
 
   void check_complete() const {
-    const double period = 1.0 / rate.value();
+    const double period = 1.0 / average_rate.value();
     // A stream with gaps in its timestamps (an AVI index that skips frames) holds fewer frames
-    // than its length at its rate: judge by time where the length is known.
+    // than its length at its rate: judge by time where the length is known. The last frame lasts
+    // its own duration where the file says (a screen recording's still end), else a frame period.
     const bool short_count =
         announced_seconds <= 0 && announced_frames > 0 && decoded < announced_frames - 1;
-    const bool short_time =
-        announced_seconds > 0 && last_timestamp + period < announced_seconds - 1.5 * period;
+    const double end = last_timestamp + std::max(period, last_duration);
+    const bool short_time = announced_seconds > 0 && end < announced_seconds - 1.5 * period;
     if (!short_count && !short_time && corrupt_packets == 0) return;
     if (decoded == 0)
       throw Error(ErrorKind::io,
@@ -145,8 +174,8 @@ struct FileSource::Impl {
                                              what(), decoded, announced_frames));
     if (short_time)
       throw Error(ErrorKind::io,
-                  fmt::format("{}: truncated or corrupt: decoded {:.2f} s of {:.2f} s", what(),
-                              last_timestamp + period, announced_seconds));
+                  fmt::format("{}: truncated or corrupt: decoded {:.2f} s of {:.2f} s", what(), end,
+                              announced_seconds));
     throw Error(ErrorKind::io, fmt::format("{}: corrupt: {} damaged packets ({} frames decoded)",
                                            what(), corrupt_packets, decoded));
   }
@@ -189,9 +218,14 @@ FileSource::FileSource(const std::filesystem::path& path, const FileSourceOption
     throw Error(ErrorKind::unsupported,
                 fmt::format("{}: video stream has no frame size", s.what()));
 
-  AVRational r = s.stream->avg_frame_rate;
-  if (r.num <= 0 || r.den <= 0) r = s.stream->r_frame_rate;
-  if (r.num > 0 && r.den > 0) s.rate = {r.num, r.den};
+  // The nominal rate as ffmpeg guesses it (the stream's base rate, so that a clip with dropped
+  // frames keeps its 30 fps rather than its average); the average for counting frames.
+  const AVRational guessed = av_guess_frame_rate(raw, s.stream, nullptr);
+  AVRational average = s.stream->avg_frame_rate;
+  if (average.num <= 0 || average.den <= 0) average = guessed;
+  if (guessed.num > 0 && guessed.den > 0) s.rate = {guessed.num, guessed.den};
+  if (average.num > 0 && average.den > 0) s.average_rate = {average.num, average.den};
+  s.orientation = orientation_of(s.stream, s.what());
   if (s.stream->nb_frames > 0) s.announced_frames = s.stream->nb_frames;
   if (s.stream->duration != AV_NOPTS_VALUE && s.stream->duration > 0)
     s.announced_seconds = static_cast<double>(s.stream->duration) * av_q2d(s.stream->time_base);
@@ -210,7 +244,7 @@ bool FileSource::skip() {
 }
 
 cv::Size FileSource::size() const {
-  return {impl_->codec->width, impl_->codec->height};
+  return impl_->orientation.displayed({impl_->codec->width, impl_->codec->height});
 }
 
 double FileSource::fps() const {
@@ -220,10 +254,10 @@ double FileSource::fps() const {
 std::int64_t FileSource::frame_count() const {
   if (impl_->announced_frames > 0) return impl_->announced_frames;
   if (impl_->announced_seconds > 0)
-    return std::llround(impl_->announced_seconds * impl_->rate.value());
+    return std::llround(impl_->announced_seconds * impl_->average_rate.value());
   if (impl_->format->duration > 0)
     return std::llround(static_cast<double>(impl_->format->duration) / AV_TIME_BASE *
-                        impl_->rate.value());
+                        impl_->average_rate.value());
   return -1;
 }
 
@@ -233,6 +267,14 @@ std::string FileSource::name() const {
 
 Rational FileSource::frame_rate() const {
   return impl_->rate;
+}
+
+Rational FileSource::time_base() const {
+  return {impl_->stream->time_base.num, impl_->stream->time_base.den};
+}
+
+const Orientation& FileSource::orientation() const {
+  return impl_->orientation;
 }
 
 bool FileSource::has_audio() const {

@@ -9,15 +9,9 @@
 #include <string>
 
 #include "video/frame_io.h"
+#include "video/orientation.h"
 
 namespace ifsfx::video {
-
-// A frame rate as an exact fraction (30000/1001 for NTSC), as containers store it.
-struct Rational {
-  int num = 0;
-  int den = 1;
-  double value() const { return den == 0 ? 0.0 : static_cast<double>(num) / den; }
-};
 
 struct FileSourceOptions {
   int threads = 0;  // decoder threads; 0 = all cores
@@ -25,6 +19,10 @@ struct FileSourceOptions {
 
 // Opens `path` and its first video stream. Throws Error{not_found} for a missing file,
 // Error{unsupported} for a file FFmpeg cannot read or one without a video stream.
+//
+// Frames carry their exact timestamps (Frame::pts on the stream's clock, time_base()), so a
+// variable-rate movie keeps its timing. A file whose display matrix (or `rotate` tag) turns the
+// picture gives its frames turned upright: a phone's portrait clip comes out portrait.
 //
 // A corrupt or truncated file is read as far as it decodes; then read() throws Error{io} saying
 // how many frames were decoded of how many the container announced, so that a caller writing
@@ -46,8 +44,15 @@ class FileSource final : public FrameSource {
   std::int64_t frame_count() const override;
   std::string name() const override;
 
-  Rational frame_rate() const;  // exact average frame rate; 25/1 when the file gives none
-  bool has_audio() const;       // whether the file carries at least one audio stream
+  // The nominal frame rate as ffmpeg guesses it (av_guess_frame_rate: the stream's base rate, so
+  // a clip with dropped frames keeps its 30/1, not its average); 25/1 when the file gives none.
+  // A variable-rate movie's frames come at their own times (Frame::pts), not on this grid.
+  Rational frame_rate() const override;
+  Rational time_base() const override;  // the clock of Frame::pts: the video stream's time base
+  // How the file says its pictures are to be shown (display matrix or `rotate` tag). Frames come
+  // turned upright already, and size() is the upright size.
+  const Orientation& orientation() const;
+  bool has_audio() const;  // whether the file carries at least one audio stream
   // Where Frame::timestamp 0 lies on the file's own clock, in seconds (for audio sync). Known
   // once the first frame has been read; the stream's start time before that.
   double start_time() const;

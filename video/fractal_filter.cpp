@@ -29,11 +29,28 @@ cv::Range band(std::size_t chunk, int rows) {
 }
 
 void check_frame(const cv::Mat& frame, const RemapTable& table) {
-  if (frame.type() != CV_8UC3 || frame.size() != table.source_size)
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("fractal filter: frame must be {}x{} 8-bit BGR (got {}x{}, type {})",
-                            table.source_size.width, table.source_size.height, frame.cols,
-                            frame.rows, frame.type()));
+  if ((frame.type() != CV_8UC3 && frame.type() != CV_8UC4) || frame.size() != table.source_size)
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("fractal filter: frame must be {}x{} 8-bit BGR or BGRA (got {}x{}, type {})",
+                    table.source_size.width, table.source_size.height, frame.cols, frame.rows,
+                    frame.type()));
+}
+
+// The original frame is needed at the output size for the mix, the original background and the
+// alpha channel passed through.
+bool needs_original(const cv::Mat& frame, const FilterOptions& options) {
+  return options.mix > 0 || options.background.kind == BackgroundKind::original ||
+         frame.channels() == 4;
+}
+
+// Alpha is not stolen: the output's fourth channel is the original's, pixel for pixel.
+void pass_alpha(const cv::Mat& original, cv::Mat& out, cv::Range rows) {
+  if (out.channels() != 4) return;
+  const cv::Mat src = original.rowRange(rows);
+  cv::Mat dst = out.rowRange(rows);
+  const int from_to[] = {3, 3};
+  cv::mixChannels(&src, 1, &dst, 1, from_to, 1);
 }
 
 // The background and the original frame at the output size, as each band needs them.
@@ -63,15 +80,17 @@ void fill_background(const cv::Mat& original, const FilterOptions& options, cv::
     dst.setTo(options.background.colour);
 }
 
-void check_mix(double mix) {
-  if (!(mix >= 0 && mix <= 1))
-    throw Error(ErrorKind::invalid_argument, fmt::format("--mix: must be in [0, 1] (got {})", mix));
-}
-
 }  // namespace
+
+void check_filter_options(const FilterOptions& options) {
+  if (!(options.mix >= 0 && options.mix <= 1))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--mix: must be in [0, 1] (got {})", options.mix));
+}
 
 Background parse_background(const std::string& text, const std::string& what) {
   if (text == "black") return {BackgroundKind::colour, cv::Scalar::all(0)};
+  if (text == "white") return {BackgroundKind::colour, cv::Scalar::all(255)};
   if (text == "original") return {BackgroundKind::original, cv::Scalar::all(0)};
   unsigned r = 0, g = 0, b = 0;
   char tail = 0;
@@ -81,8 +100,9 @@ Background parse_background(const std::string& text, const std::string& what) {
   if (std::sscanf(text.c_str(), "%u,%u,%u%c", &r, &g, &b, &tail) == 3 && r < 256 && g < 256 &&
       b < 256)
     return {BackgroundKind::colour, cv::Scalar(b, g, r)};
-  throw Error(ErrorKind::parse,
-              fmt::format("{}: expected black, original, #rrggbb or R,G,B (got '{}')", what, text));
+  throw Error(
+      ErrorKind::parse,
+      fmt::format("{}: expected black, white, original, #rrggbb or R,G,B (got '{}')", what, text));
 }
 
 RemapTable make_remap_table(const StealMap& map, cv::Size source_size, Interpolation interpolation,
@@ -130,12 +150,19 @@ RemapTable make_remap_table(const StealMap& map, cv::Size source_size, Interpola
 }
 
 cv::Mat filter_frame(const cv::Mat& frame, const RemapTable& table, const FilterOptions& options) {
-  check_frame(frame, table);
-  check_mix(options.mix);
+  cv::Mat out;
+  filter_frame(frame, table, options, out);
+  return out;
+}
+
+void filter_frame(const cv::Mat& input, const RemapTable& table, const FilterOptions& options,
+                  cv::Mat& out) {
+  check_frame(input, table);
+  const cv::Mat frame = input.data == out.data ? input.clone() : input;  // in place
+  check_filter_options(options);
   const cv::Size size = table.size();
-  const bool need_original = options.mix > 0 || options.background.kind == BackgroundKind::original;
-  const cv::Mat original = need_original ? original_at(frame, size) : cv::Mat();
-  cv::Mat out(size, CV_8UC3);
+  const cv::Mat original = needs_original(frame, options) ? original_at(frame, size) : cv::Mat();
+  out.create(size, frame.type());
   parallel_for(bands(size.height), options.threads, [&](std::size_t chunk, int) {
     const cv::Range rows = band(chunk, size.height);
     fill_background(original, options, out, rows);
@@ -144,24 +171,31 @@ cv::Mat filter_frame(const cv::Mat& frame, const RemapTable& table, const Filter
       cv::Mat dst = out.rowRange(rows);
       cv::addWeighted(dst, 1 - options.mix, original.rowRange(rows), options.mix, 0, dst);
     }
+    pass_alpha(original, out, rows);
   });
-  return out;
 }
 
 cv::Mat filter_frame(const cv::Mat& frame, const RemapTable& from, const RemapTable& to, double t,
                      const FilterOptions& options) {
-  check_frame(frame, from);
-  check_frame(frame, to);
-  check_mix(options.mix);
+  cv::Mat out;
+  filter_frame(frame, from, to, t, options, out);
+  return out;
+}
+
+void filter_frame(const cv::Mat& input, const RemapTable& from, const RemapTable& to, double t,
+                  const FilterOptions& options, cv::Mat& out) {
+  check_frame(input, from);
+  check_frame(input, to);
+  const cv::Mat frame = input.data == out.data ? input.clone() : input;  // in place
+  check_filter_options(options);
   if (from.size() != to.size())
     throw Error(ErrorKind::invalid_argument, "fractal filter: cross-faded maps differ in size");
-  if (t <= 0) return filter_frame(frame, from, options);
-  if (t >= 1) return filter_frame(frame, to, options);
+  if (t <= 0) return filter_frame(frame, from, options, out);
+  if (t >= 1) return filter_frame(frame, to, options, out);
   const cv::Size size = from.size();
-  const bool need_original = options.mix > 0 || options.background.kind == BackgroundKind::original;
-  const cv::Mat original = need_original ? original_at(frame, size) : cv::Mat();
-  cv::Mat out(size, CV_8UC3);
-  cv::Mat second(size, CV_8UC3);
+  const cv::Mat original = needs_original(frame, options) ? original_at(frame, size) : cv::Mat();
+  out.create(size, frame.type());
+  cv::Mat second(size, frame.type());
   parallel_for(bands(size.height), options.threads, [&](std::size_t chunk, int) {
     const cv::Range rows = band(chunk, size.height);
     fill_background(original, options, out, rows);
@@ -172,8 +206,8 @@ cv::Mat filter_frame(const cv::Mat& frame, const RemapTable& from, const RemapTa
     cv::addWeighted(dst, 1 - t, second.rowRange(rows), t, 0, dst);
     if (options.mix > 0)
       cv::addWeighted(dst, 1 - options.mix, original.rowRange(rows), options.mix, 0, dst);
+    pass_alpha(original, out, rows);
   });
-  return out;
 }
 
 }  // namespace ifsfx::video

@@ -15,10 +15,13 @@ enum class BackgroundKind { colour, original };
 
 struct Background {
   BackgroundKind kind = BackgroundKind::colour;
-  cv::Scalar colour = cv::Scalar::all(0);  // BGR, 0..255 (kind == colour)
+  cv::Scalar colour = cv::Scalar::all(0);  // BGR, 0..255 (kind == colour): the frame's channel
+                                           // order, so swap it for RGBA frames
+
+  friend bool operator==(const Background&, const Background&) = default;
 };
 
-// Parses --background: "black", "original", "#rrggbb" or "R,G,B" (0..255 each); throws
+// Parses --background: "black", "white", "original", "#rrggbb" or "R,G,B" (0..255 each); throws
 // Error{parse} naming `what`.
 Background parse_background(const std::string& text, const std::string& what = "--background");
 
@@ -30,6 +33,9 @@ struct FilterOptions {
   Background background;
   int threads = 0;  // 0 = all cores
 };
+
+// Checks the options: mix in [0, 1]; throws Error{invalid_argument} naming --mix.
+void check_filter_options(const FilterOptions& options);
 
 // A steal map as a remap table for sources of one size: fixed-point pixel coordinates
 // (cv::convertMaps), with uncovered pixels pointing outside the source so that one remap with a
@@ -48,16 +54,23 @@ struct RemapTable {
 RemapTable make_remap_table(const StealMap& map, cv::Size source_size,
                             Interpolation interpolation = Interpolation::bilinear, int threads = 0);
 
-// The filtered frame: `frame` (CV_8UC3, of table.source_size) coloured through the table, of the
-// table's size.
+// The filtered frame: `frame` (of table.source_size) coloured through the table, of the table's
+// size and the frame's type. Frames are CV_8UC3 (BGR) or CV_8UC4, whose fourth channel (alpha) is
+// not stolen but passed through from the same place of the original frame.
 //   auto table = make_remap_table(T, frame.size());
 //   cv::Mat out = filter_frame(frame, table);
 cv::Mat filter_frame(const cv::Mat& frame, const RemapTable& table,
                      const FilterOptions& options = {});
+// The same into `out`, reallocated only when its size or type differ: a host's frame buffer
+// wrapped in a cv::Mat is written in place.
+void filter_frame(const cv::Mat& frame, const RemapTable& table, const FilterOptions& options,
+                  cv::Mat& out);
 
 // A cross-fade between two tables of the same size: (1 − t)·through `from` + t·through `to`, for
 // animations that change the map (a superIFS step, drift keyframes).
 cv::Mat filter_frame(const cv::Mat& frame, const RemapTable& from, const RemapTable& to, double t,
                      const FilterOptions& options = {});
+void filter_frame(const cv::Mat& frame, const RemapTable& from, const RemapTable& to, double t,
+                  const FilterOptions& options, cv::Mat& out);
 
 }  // namespace ifsfx::video

@@ -10,11 +10,35 @@
 
 namespace ifsfx::video {
 
+// A time base or a frame rate as an exact fraction (1/15360, 30000/1001), as containers store it.
+struct Rational {
+  int num = 0;
+  int den = 1;
+  double value() const { return den == 0 ? 0.0 : static_cast<double>(num) / den; }
+  bool positive() const { return num > 0 && den > 0; }
+};
+
+// A rate given in frames per second as an exact fraction: whole rates as N/1, NTSC-like ones
+// (29.97, 59.94, 23.976) as N·1000/1001, others to the nearest 1/1000000. 0/1 for a rate that is
+// not positive and finite.
+Rational rate_from_fps(double fps);
+
 // One decoded frame: 8-bit BGR (CV_8UC3), as OpenCV decodes.
+//
+// `index` counts the frames as the source delivers them (presentation order, from 0), whatever
+// their timestamps: a variable-rate movie's frame 100 is its 101st picture, not the picture at
+// 100 / fps seconds. Frame ranges (--frames) and animations (--animate keyframes) count in it.
+// Time is `timestamp`, exact as `pts` × `time_base` where the source has a clock.
 struct Frame {
   cv::Mat image;
   std::int64_t index = 0;  // position in the source, from 0
   double timestamp = 0;    // seconds since the start of the source (capture time for cameras)
+  // The exact time on the source's own clock, for sources that have one (movie files, image
+  // sequences): timestamp = pts × time_base, and the frame is shown for duration × time_base
+  // seconds (0: not known). time_base 0/1 (cameras): timestamp is all there is.
+  std::int64_t pts = 0;
+  std::int64_t duration = 0;
+  Rational time_base{0, 1};
 };
 
 class FrameSource {
@@ -27,7 +51,11 @@ class FrameSource {
   // the end of the stream. Sources override it to skip the work of making the image.
   virtual bool skip() { return read().has_value(); }
   virtual cv::Size size() const = 0;
-  virtual double fps() const = 0;                          // frames per second; 0 when unknown
+  virtual double fps() const = 0;  // frames per second; 0 when unknown
+  // The nominal rate, exact: a movie file's own fraction, rate_from_fps(fps()) by default.
+  virtual Rational frame_rate() const { return rate_from_fps(fps()); }
+  // The clock of Frame::pts; 0/1 for a source without one (cameras: Frame::timestamp only).
+  virtual Rational time_base() const { return {0, 1}; }
   virtual std::int64_t frame_count() const { return -1; }  // -1 when unknown (cameras)
   virtual std::string name() const = 0;                    // path or device, for messages
 };

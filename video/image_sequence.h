@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "video/frame_io.h"
 
@@ -19,12 +20,20 @@ std::filesystem::path sequence_path(const std::string& pattern, std::int64_t ind
 
 struct ImageSequenceOptions {
   double fps = 25;  // the sequence's frame rate (images carry none)
+  // A number missing between the first and the last file (frame_0001, frame_0002, frame_0004)
+  // is an error unless this is set; then the sequence goes on with the next file, and the frame
+  // before the gap is held for the missing time (Frame::duration).
+  bool skip_gaps = false;
 };
 
-// Reads frames from the first number of 0..4 that exists (as ffmpeg does) up to the first gap.
-// Images are converted to 8-bit BGR (grey expanded, alpha dropped, 16-bit and float scaled).
-// Throws Error{not_found} when no frame of the pattern exists, Error{unsupported} for frames of
+// Reads frames from the first number of 0..4 that exists (as ffmpeg does) to the highest number
+// in the folder. File N is shown at (N − first) / fps seconds (Frame::pts = N − first on a clock
+// of 1/fps); Frame::index counts the files read. Images are converted to 8-bit BGR (grey
+// expanded, alpha dropped with the colour kept, 16-bit and float scaled).
+// Throws Error{not_found} when no frame of the pattern exists, or naming the first missing file
+// when the numbers have a gap (unless options.skip_gaps); Error{unsupported} for frames of
 // differing sizes.
+//   ImageSequenceSource in("shots/frame_%04d.png", {.fps = 24});
 class ImageSequenceSource final : public FrameSource {
  public:
   explicit ImageSequenceSource(const std::string& pattern,
@@ -33,15 +42,17 @@ class ImageSequenceSource final : public FrameSource {
   bool skip() override;  // the image is not read
   cv::Size size() const override { return size_; }
   double fps() const override { return fps_; }
-  std::int64_t frame_count() const override { return count_; }
+  Rational frame_rate() const override { return rate_; }
+  Rational time_base() const override { return {rate_.den, rate_.num}; }
+  std::int64_t frame_count() const override { return static_cast<std::int64_t>(numbers_.size()); }
   std::string name() const override { return pattern_; }
 
  private:
   std::string pattern_;
   double fps_;
-  std::int64_t first_ = 0;
-  std::int64_t count_ = 0;
-  std::int64_t next_ = 0;  // frames read so far
+  Rational rate_;
+  std::vector<std::int64_t> numbers_;  // the files' numbers, ascending
+  std::size_t next_ = 0;               // files read (or skipped) so far
   cv::Size size_;
 };
 

@@ -1,6 +1,7 @@
 #include "video/map_schedule.h"
 
 #include <chrono>
+#include <iterator>
 
 #include <fmt/format.h>
 
@@ -32,11 +33,20 @@ std::shared_future<MapSchedule::Table>& MapSchedule::keyframe(std::int64_t k) {
 }
 
 MapSchedule::Blend MapSchedule::at(std::int64_t frame) {
-  const std::int64_t k = frame / interval_;
-  // Forget keyframes behind the one shown; start the ones ahead.
+  return at(position_of_frame(frame, interval_));
+}
+
+MapSchedule::Blend MapSchedule::at(StepPosition position) {
+  const std::int64_t k = position.step;
+  // Forget keyframes behind the one shown and beyond the lookahead (a caller going backwards, an
+  // editor scrubbing); start the ones ahead.
   while (!keyframes_.empty() && keyframes_.begin()->first < k) {
     keyframes_.begin()->second.wait();
     keyframes_.erase(keyframes_.begin());
+  }
+  while (!keyframes_.empty() && std::prev(keyframes_.end())->first > k + lookahead_) {
+    std::prev(keyframes_.end())->second.wait();
+    keyframes_.erase(std::prev(keyframes_.end()));
   }
   for (std::int64_t j = k; j <= k + lookahead_; ++j) keyframe(j);
   auto& from = keyframe(k);
@@ -49,7 +59,7 @@ MapSchedule::Blend MapSchedule::at(std::int64_t frame) {
   Blend blend;
   blend.from = from.get();
   blend.to = to.get();
-  blend.t = static_cast<double>(frame % interval_) / interval_;
+  blend.t = position.phase;
   return blend;
 }
 

@@ -14,6 +14,7 @@
 #include <map>
 #include <memory>
 
+#include "ifs/timeline.h"
 #include "video/fractal_filter.h"
 
 namespace ifsfx::video {
@@ -35,6 +36,9 @@ class MapSchedule {
   };
   // The maps of source frame `frame`. Rethrows a builder's error.
   Blend at(std::int64_t frame);
+  // The maps at a position between keyframes (position.step, its phase towards the next), for
+  // callers that know a time rather than a frame number.
+  Blend at(StepPosition position);
 
   // Frames that had to wait for their map, after the first (which always waits for the start).
   std::int64_t stalls() const { return stalls_; }

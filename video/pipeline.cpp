@@ -109,10 +109,9 @@ PipelineResult run_pipeline(FrameSource& source, FrameSink& sink, const FrameFil
   std::jthread filterer([&] {
     try {
       while (std::optional<Frame> frame = decoded.pop()) {
-        Frame out;
-        out.index = frame->index;
-        out.timestamp = frame->timestamp;
-        out.image = filter(*frame);
+        cv::Mat image = filter(*frame);
+        Frame out = std::move(*frame);  // index and time as the source gave them
+        out.image = std::move(image);
         if (!filtered.push(std::move(out))) break;
       }
     } catch (...) {

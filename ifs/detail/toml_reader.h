@@ -24,8 +24,13 @@ class TomlReader {
   [[noreturn]] void fail(ErrorKind kind, const toml::source_region& where,
                          const std::string& what) const;
 
-  // The whole file; a syntax error is Error{parse} at its line.
+  // The whole file; a syntax error is Error{parse} at its line. The text's shape is checked
+  // first (check_shape): toml++ must never see what would exhaust the stack.
   toml::table parse(std::string_view text) const;
+
+  // Error{parse} "FILE:LINE: ..." for a text no preset has and toml++ cannot take safely: a
+  // dotted key of more than 32 parts, arrays and tables nested more than 32 deep, more than 16 MiB.
+  void check_shape(std::string_view text) const;
 
   // Keys other than `allowed` are typos that would silently change the result: Error{parse}
   // "CONTEXTunknown key 'K' (known: A, B, ...)".

@@ -3,7 +3,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
 
 #include "ifs/error.h"
 
@@ -107,6 +109,103 @@ TEST_F(image_io, unreadable_files_name_the_path) {
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::io);
   }
+}
+
+// The first `fraction` of a file, as a cut download or a full disk leaves it.
+fs::path cut(const fs::path& from, const fs::path& to, double fraction = 0.5) {
+  const auto keep = static_cast<std::streamsize>(fs::file_size(from) * fraction);
+  std::ifstream in(from, std::ios::binary);
+  std::string bytes(static_cast<std::size_t>(keep), '\0');
+  in.read(bytes.data(), keep);
+  std::ofstream(to, std::ios::binary).write(bytes.data(), keep);
+  return to;
+}
+
+TEST_F(image_io, cut_jpeg_is_refused_not_filled_with_grey) {
+  const fs::path photo = "/usr/share/doc/opencv-doc/examples/data/fruits.jpg";
+  if (!fs::exists(photo)) GTEST_SKIP() << "opencv-doc sample images not installed";
+  EXPECT_NO_THROW(read_image(photo));
+  const fs::path half = cut(photo, dir_ / "half.jpg");
+  try {
+    read_image(half);
+    FAIL() << "a cut JPEG was read";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::io);
+    EXPECT_EQ(std::string(e.what()), half.string() +
+                                         ": corrupt or truncated image (JPEG error: Premature end "
+                                         "of JPEG file)");
+  }
+  // Cut a few bytes from the end only (the end-of-image marker): refused too.
+  EXPECT_THROW(read_image(cut(photo, dir_ / "nearly.jpg", 0.999)), Error);
+}
+
+TEST_F(image_io, cut_png_is_refused_in_one_line) {
+  write_image(dir_ / "whole.png", gradient());
+  EXPECT_NO_THROW(read_image(dir_ / "whole.png"));
+  const fs::path half = cut(dir_ / "whole.png", dir_ / "half.png");
+  try {
+    read_image(half);
+    FAIL() << "a cut PNG was read";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::io);
+    EXPECT_EQ(std::string(e.what()), half.string() + ": corrupt or truncated image (cut short: " +
+                                         std::to_string(fs::file_size(half)) +
+                                         " bytes, ending inside its IDAT chunk)");
+  }
+  // Only the IEND chunk missing: the pixels may all be there, but the file is not whole.
+  const auto whole = fs::file_size(dir_ / "whole.png");
+  try {
+    read_image(cut(dir_ / "whole.png", dir_ / "noend.png", (whole - 12.0) / whole));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("cut short: " + std::to_string(whole - 12) +
+                                         " bytes, ending before its IEND chunk"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// Half-transparent orange, straight: R 200, G 100, B 50, alpha 128.
+cv::Mat half_transparent_orange() {
+  return cv::Mat(12, 16, CV_8UC4, cv::Scalar(50, 100, 200, 128));  // BGRA
+}
+
+// A file written by OpenImageIO itself with the alpha association given.
+void write_with_oiio(const fs::path& path, const cv::Mat& bgra, bool associated) {
+  cv::Mat rgba;
+  cv::cvtColor(bgra, rgba, cv::COLOR_BGRA2RGBA);
+  if (associated) {
+    rgba.forEach<cv::Vec4b>([](cv::Vec4b& p, const int*) {
+      for (int k = 0; k < 3; ++k)
+        p[k] = static_cast<std::uint8_t>(std::lround(p[k] * p[3] / 255.0));
+    });
+  }
+  OIIO::ImageSpec spec(rgba.cols, rgba.rows, 4, OIIO::TypeDesc::UINT8);
+  spec.alpha_channel = 3;
+  if (!associated) spec.attribute("oiio:UnassociatedAlpha", 1);
+  auto out = OIIO::ImageOutput::create(path.string());
+  ASSERT_TRUE(out && out->open(path.string(), spec));
+  ASSERT_TRUE(out->write_image(OIIO::TypeDesc::UINT8, rgba.data));
+  ASSERT_TRUE(out->close());
+}
+
+TEST_F(image_io, semi_transparent_pixels_keep_their_colour) {
+  const cv::Mat orange = half_transparent_orange();
+  // A PNG stores straight colour: read as it is, not multiplied by alpha (darkened).
+  write_with_oiio(dir_ / "straight.png", orange, false);
+  EXPECT_EQ(cv::norm(read_image(dir_ / "straight.png").pixels, orange, cv::NORM_INF), 0);
+  // A TIFF with associated alpha: divided back.
+  write_with_oiio(dir_ / "associated.tif", orange, true);
+  EXPECT_LE(cv::norm(read_image(dir_ / "associated.tif").pixels, orange, cv::NORM_INF), 1);
+  // Written and read back: PNG and TIFF exactly, OpenEXR (stored associated) to float precision.
+  for (const char* name : {"out.png", "out.tif"}) {
+    write_image(dir_ / name, orange);
+    EXPECT_EQ(cv::norm(read_image(dir_ / name).pixels, orange, cv::NORM_INF), 0) << name;
+  }
+  cv::Mat orange_float;
+  orange.convertTo(orange_float, CV_32F, 1 / 255.0);
+  write_image(dir_ / "out.exr", orange_float);
+  EXPECT_LT(cv::norm(read_image(dir_ / "out.exr").pixels, orange_float, cv::NORM_INF), 1e-3);
 }
 
 }  // namespace

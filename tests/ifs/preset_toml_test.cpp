@@ -99,6 +99,50 @@ TEST(parse_ifs_toml, a_toml_syntax_error_is_reported_with_its_line) {
   }
 }
 
+// "a.a.a...": a dotted key of `parts` parts.
+std::string dotted(int parts, const std::string& part = "a") {
+  std::string key = part;
+  for (int i = 1; i < parts; ++i) key.append(".").append(part);
+  return key;
+}
+
+// A key of tens of thousands of parts overflowed the stack inside toml++ (a segfault): the text's
+// shape is checked before toml++ sees it, with one message naming the file and line.
+TEST(parse_ifs_toml, keys_of_absurd_depth_are_refused_before_parsing) {
+  const std::string parts_message =
+      "fern.toml:2: a dotted key of more than 32 parts (a preset "
+      "needs a few)";
+  expect_error("name = \"x\"\n" + dotted(50000) + " = 1\n", ErrorKind::parse, parts_message);
+  expect_error("name = \"x\"\n[" + dotted(50000) + "]\n", ErrorKind::parse, parts_message);
+  expect_error("name = \"x\"\n[[" + dotted(40000, "\"q\"") + "]]\n", ErrorKind::parse,
+               parts_message);
+  expect_error("name = \"x\"\n" + dotted(33) + " = 1\n", ErrorKind::parse, parts_message);
+  expect_error("name = \"x\"\nmaps = " + std::string(100000, '[') + std::string(100000, ']'),
+               ErrorKind::parse,
+               "fern.toml:2: arrays and tables nested more than 32 deep (a preset needs a few)");
+  expect_error("x = " + std::string(33, '{') + "a = 1" + std::string(33, '}'), ErrorKind::parse,
+               "fern.toml:1: arrays and tables nested more than 32 deep (a preset needs a few)");
+  expect_error(std::string(17u << 20, ' '), ErrorKind::parse,
+               "fern.toml: larger than any preset (got 17825792 bytes; at most 16 MiB)");
+}
+
+// The deepest text the check lets through is parsed by toml++ without harm (the sanitizer build
+// runs this with its larger stack frames), and dots in strings and comments are not key parts.
+TEST(parse_ifs_toml, the_deepest_text_allowed_parses_safely) {
+  std::string deep = "x = ";
+  for (int i = 0; i < 31; ++i) deep.append("{").append(dotted(32)).append(" = ");
+  deep.append("1").append(31, '}').append("\n");
+  expect_error(deep, ErrorKind::parse,
+               "fern.toml:1: unknown key 'x' (known: name, description, maps, probabilities, "
+               "colours)");
+  const std::string dots = dotted(5000, "b");
+  expect_error("description = \"" + dots + "\"  # " + dots + "\nname = '" + dots +
+                   "'\nnotes = \"\"\"\n" + dots + "\n\"\"\"\n",
+               ErrorKind::parse,
+               "fern.toml:3: unknown key 'notes' (known: name, description, maps, probabilities, "
+               "colours)");
+}
+
 TEST(parse_ifs_toml, values_of_the_wrong_type_are_reported_with_their_line) {
   expect_error("maps = [[0.5, 0, 0, \"half\", 0, 0]]\n", ErrorKind::parse,
                "fern.toml:1: map 1: must be a number (got a string)");

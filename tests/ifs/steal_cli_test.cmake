@@ -67,6 +67,65 @@ elseif(CHECK STREQUAL "unreadable_source")
       render barnsley-fern --mode steal --source missing.png --size 64x64 -o out.png)
   expect_no_file(out.png)
 
+elseif(CHECK STREQUAL "truncated_source")
+  # Real pictures cut in half: libjpeg would paint the rest grey, libpng would complain on stderr.
+  set(data /usr/share/doc/opencv-doc/examples/data)
+  foreach(picture fruits.jpg pic1.png)
+    file(SIZE ${data}/${picture} bytes)
+    math(EXPR half "${bytes} / 2")
+    execute_process(COMMAND head -c ${half} ${data}/${picture} OUTPUT_FILE ${WORK}/cut-${picture})
+  endforeach()
+  run(0 "" render square-tiling-4 --mode steal --source ${photo} --size 32x32 -o t.png
+      --save-map t.map -q)
+  set(jpeg_error "ifsfx: cut-fruits.jpg: corrupt or truncated image (JPEG error: Premature end of JPEG file)
+")
+  set(png_error "ifsfx: cut-pic1.png: corrupt or truncated image (cut short: ${half} bytes, ending inside its IDAT chunk)
+")
+  run(1 "${jpeg_error}" render barnsley-fern --mode steal --source cut-fruits.jpg --size 64x64
+      -o out.png)
+  run(1 "${png_error}" render barnsley-fern --mode steal --exact --source cut-pic1.png
+      --size 64x64 -o out.png)
+  run(1 "${jpeg_error}" apply t.map cut-fruits.jpg -o out.png)
+  run(1 "${png_error}" apply t.map cut-pic1.png -o out.png)
+  run(1 "${jpeg_error}" texture paper-fig4 --mode steal --source cut-fruits.jpg --size 64x64
+      -o out.png)
+  expect_no_file(out.png)
+
+elseif(CHECK STREQUAL "transparent_source")
+  # A half-transparent orange (200, 100, 50, alpha 127) through the identity pair: the colour
+  # stays orange (not darkened by alpha), the alpha is carried where the format has it.
+  execute_process(COMMAND ffmpeg -v error -y -f lavfi -i color=c=0xC86432@0.5:s=64x48,format=rgba
+                          -frames:v 1 alpha.png
+                  WORKING_DIRECTORY ${WORK} RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "ffmpeg could not make the test picture")
+  endif()
+  set(identity square-tiling-4 --colouring square-tiling-4 --view 0,0,1,1 --exact --size 64x48)
+  run(0 "" render ${identity} --mode steal --source alpha.png -o out.png --save-map id.map -q)
+  run(0 "" render ${identity} --mode steal --source alpha.png -o out.jpg -q)
+  run(0 "" apply id.map alpha.png -o applied.tif)
+  # pixel(file var): the centre pixel's channels as "R G B [A]" (ffmpeg decodes the file).
+  function(pixel file format var)
+    execute_process(COMMAND sh -c "ffmpeg -v error -i ${file} -vf format=${format},crop=1:1:32:24 -f rawvideo - | od -An -tu1 | xargs"
+                    WORKING_DIRECTORY ${WORK} OUTPUT_VARIABLE value OUTPUT_STRIP_TRAILING_WHITESPACE)
+    set(${var} "${value}" PARENT_SCOPE)
+  endfunction()
+  pixel(alpha.png rgba source)
+  pixel(out.png rgba png)
+  pixel(applied.tif rgba tif)
+  pixel(out.jpg rgb24 jpg)
+  if(NOT source STREQUAL "200 100 50 127" OR NOT png STREQUAL source OR NOT tif STREQUAL source)
+    message(FATAL_ERROR "source ${source}, PNG ${png}, TIFF ${tif} (want 200 100 50 127 each)")
+  endif()
+  string(REPLACE " " ";" rgb "${jpg}")
+  foreach(want 200 100 50)
+    list(POP_FRONT rgb got)
+    math(EXPR off "${got} - ${want}")
+    if(off GREATER 4 OR off LESS -4)
+      message(FATAL_ERROR "JPEG ${jpg}: want about 200 100 50 (darkened by alpha?)")
+    endif()
+  endforeach()
+
 elseif(CHECK STREQUAL "truncated_map")
   run(0 "" render square-tiling-4 --mode steal --source ${photo} --size 32x32 -o t.png
       --save-map t.map -q)

@@ -92,6 +92,19 @@ void expect_prefix(const std::string& text, ErrorKind kind, const std::string& p
   }
 }
 
+TEST(superifs_file, a_key_of_absurd_depth_is_refused_before_parsing) {
+  std::string key = "ifs";
+  for (int i = 0; i < 30000; ++i) key += ".maps";
+  try {
+    parse_superifs_toml("name = \"deep\"\n\n[[" + key + "]]\n", "deep.super.toml");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::parse);
+    EXPECT_STREQ(e.what(),
+                 "deep.super.toml:3: a dotted key of more than 32 parts (a preset needs a few)");
+  }
+}
+
 TEST(superifs_file, rejects_syntax_errors_with_the_line) {
   expect_prefix("name = \"x\"\n[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0]\n", ErrorKind::parse,
                 "bad.super.toml:3");

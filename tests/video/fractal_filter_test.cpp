@@ -25,6 +25,34 @@ TEST(fractal_filter, identity_map_returns_the_frame) {
   }
 }
 
+TEST(fractal_filter, four_channel_frames_pass_their_alpha_through) {
+  // A mirror with half the output uncovered: colours are stolen across the frame, alpha stays
+  // where it was, pixel for pixel, and the three colour channels are what a BGR frame gives.
+  const cv::Size size{41, 31};
+  StealMap map = identity_map(size);
+  for (int r = 0; r < size.height; ++r)
+    for (int c = 0; c < size.width; ++c)
+      map.source_uv.at<cv::Vec2f>(r, c)[0] = (size.width - c - 0.5f) / size.width;
+  map.coverage(cv::Rect(0, 0, 10, size.height)).setTo(0);
+  const cv::Mat bgr = test_frame(size, 4);
+  cv::Mat alpha(size, CV_8UC1);
+  cv::randu(alpha, 0, 256);
+  cv::Mat bgra;
+  cv::merge(std::vector<cv::Mat>{bgr, alpha}, bgra);
+  const RemapTable table = make_remap_table(map, size, Interpolation::nearest);
+  const FilterOptions options{.mix = 0.25, .background = {BackgroundKind::colour, {10, 20, 30}}};
+  cv::Mat out(size, CV_8UC4, cv::Scalar::all(7));  // written in place
+  const std::uint8_t* buffer = out.data;
+  filter_frame(bgra, table, options, out);
+  EXPECT_EQ(out.data, buffer);
+  std::vector<cv::Mat> channels;
+  cv::split(out, channels);
+  EXPECT_EQ(cv::norm(channels[3], alpha, cv::NORM_INF), 0.0);
+  cv::Mat colour;
+  cv::merge(std::vector<cv::Mat>(channels.begin(), channels.begin() + 3), colour);
+  EXPECT_EQ(cv::norm(colour, filter_frame(bgr, table, options), cv::NORM_INF), 0.0);
+}
+
 TEST(fractal_filter, mirror_map_flips_the_frame) {
   const cv::Size size{40, 30};
   StealMap map = identity_map(size);
@@ -129,7 +157,8 @@ TEST(fractal_filter, frame_of_the_wrong_size_is_refused) {
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
-    EXPECT_STREQ(e.what(), "fractal filter: frame must be 16x16 8-bit BGR (got 17x16, type 16)");
+    EXPECT_STREQ(e.what(),
+                 "fractal filter: frame must be 16x16 8-bit BGR or BGRA (got 17x16, type 16)");
   }
 }
 
@@ -145,7 +174,7 @@ TEST(fractal_filter, parse_background_reads_names_and_colours) {
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::parse);
     EXPECT_STREQ(e.what(),
-                 "--background: expected black, original, #rrggbb or R,G,B (got 'purple')");
+                 "--background: expected black, white, original, #rrggbb or R,G,B (got 'purple')");
   }
   EXPECT_THROW(parse_background("1,2,300"), Error);
 }

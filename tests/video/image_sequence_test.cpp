@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "ifs/error.h"
+#include "ifs/image_io.h"
 #include "tests/video/test_frames.h"
 
 namespace ifsfx::video {
@@ -71,6 +72,65 @@ TEST(image_sequence, missing_sequence_is_not_found) {
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::not_found);
   }
+}
+
+// frame_0001, frame_0002, frame_0004: the third file is lost, not the end of the sequence.
+void write_numbers(const std::filesystem::path& dir, std::initializer_list<int> numbers) {
+  for (int n : numbers)
+    write_image(sequence_path((dir / "frame_%04d.png").string(), n), test_frame({20, 10}, n));
+}
+
+TEST(image_sequence, gap_is_an_error_naming_the_missing_file) {
+  const auto dir = temp_folder("gap");
+  write_numbers(dir, {1, 2, 4, 5});
+  const std::string pattern = (dir / "frame_%04d.png").string();
+  try {
+    ImageSequenceSource source(pattern);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::not_found);
+    EXPECT_EQ(std::string(e.what()),
+              (dir / "frame_0003.png").string() + ": missing from the sequence " + pattern +
+                  " (1 file missing between frame_0001.png and frame_0005.png; --skip-gaps goes "
+                  "on without it)");
+  }
+  write_numbers(dir, {9});  // 6, 7, 8 missing too
+  try {
+    ImageSequenceSource source(pattern);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("frame_0003.png: missing from the sequence"),
+              std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("(4 files missing between frame_0001.png and "
+                                         "frame_0009.png; --skip-gaps goes on without them)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(image_sequence, skipping_gaps_keeps_each_file_at_its_time) {
+  const auto dir = temp_folder("skipgap");
+  write_numbers(dir, {1, 2, 4, 7});
+  // Files that only look alike are not frames: another width, another name.
+  write_image(dir / "frame_003.png", test_frame({20, 10}, 3));
+  std::filesystem::copy_file(dir / "frame_003.png", dir / "frame_0003.png.bak");
+  ImageSequenceSource source((dir / "frame_%04d.png").string(), {.fps = 10, .skip_gaps = true});
+  EXPECT_EQ(source.frame_count(), 4);
+  EXPECT_EQ(source.time_base().num, 1);
+  EXPECT_EQ(source.time_base().den, 10);
+  const std::int64_t numbers[] = {1, 2, 4, 7};
+  const std::int64_t durations[] = {1, 2, 3, 1};
+  int n = 0;
+  while (auto f = source.read()) {
+    ASSERT_LT(n, 4);
+    EXPECT_EQ(f->index, n);
+    EXPECT_EQ(f->pts, numbers[n] - 1);
+    EXPECT_EQ(f->duration, durations[n]);
+    EXPECT_DOUBLE_EQ(f->timestamp, (numbers[n] - 1) / 10.0);
+    EXPECT_EQ(cv::norm(f->image, test_frame({20, 10}, numbers[n]), cv::NORM_INF), 0.0);
+    ++n;
+  }
+  EXPECT_EQ(n, 4);
 }
 
 TEST(image_sequence, unwritable_folder_fails_before_any_frame) {

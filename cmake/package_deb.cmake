@@ -1,0 +1,47 @@
+# The Debian packages, made by `cpack -G DEB` in a build tree (tools/build-deb.sh):
+#   ifsfx_<version>_amd64.deb      component runtime: the command, man page, completion, presets
+#   ifsfx-dev_<version>_amd64.deb  component dev: headers, static libraries, CMake package, ifsfx.pc
+# Two packages, as Debian splits a tool from its development files: whoever wants the command
+# gets only the shared libraries it runs on (OpenCV, OpenImageIO, FFmpeg's, ...), its Depends read
+# from the binary by dpkg-shlibdeps; whoever builds against the libraries gets the -dev packages
+# their headers and link lines need. Those are written here: static archives have no NEEDED
+# entries for dpkg-shlibdeps to read. The list follows find_dependency() in ifsfxConfig.cmake.in
+# and Requires in ifsfx.pc.in. What goes into which package: cmake/install.cmake.
+set(CPACK_GENERATOR DEB)
+set(CPACK_PACKAGE_NAME ifsfx)
+set(CPACK_PACKAGE_VENDOR "ifsfx developers")
+set(CPACK_PACKAGE_CONTACT "ifsfx developers <dev@ifsfx.local>")
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_STRIP_FILES ON)  # the command; static archives are never stripped by install()
+set(CPACK_DEB_COMPONENT_INSTALL ON)
+set(CPACK_COMPONENTS_ALL runtime dev)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # NAME_VERSION_ARCH.deb
+set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
+
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME ifsfx)
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_SECTION graphics)
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_SHLIBDEPS ON)
+# A description's first line is the package's summary (CPACK_PACKAGE_DESCRIPTION_SUMMARY is
+# left unset: CPack would put it before both).
+set(CPACK_COMPONENT_RUNTIME_DESCRIPTION
+    "turn images and video into fractals
+ifsfx renders iterated function systems (IFS) by the chaos game, their
+invariant measures and fractal tops, colours them by colour stealing (each
+pixel takes its colour from an image through a second IFS), and builds
+V-variable superfractals: stills, texture sequences, a movie filter and a
+live webcam filter (V4L2, virtual webcams through v4l2loopback).")
+
+set(CPACK_DEBIAN_DEV_PACKAGE_NAME ifsfx-dev)
+set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
+set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS
+    "libopencv-dev, libopenimageio-dev, libfmt-dev, libtomlplusplus-dev, libavformat-dev, \
+libavcodec-dev, libswscale-dev, libavutil-dev, pkg-config")
+set(CPACK_COMPONENT_DEV_DESCRIPTION
+    "static libraries and headers of ifsfx (fractals from images and video)
+The C++20 libraries of ifsfx: IFS and colour stealing (ifs), V-variable
+superfractals (superifs), collage fitting (collage) and the video filter
+(video), as static libraries with their headers, a CMake package
+(find_package(ifsfx CONFIG): targets ifsfx::ifs, ...) and a pkg-config
+file (ifsfx).")
+
+include(CPack)

@@ -1,0 +1,104 @@
+// What the fuzz harnesses check for one input, shared by the libFuzzer programs (fuzz/*_fuzz.cpp,
+// built by tools/run-fuzz.sh) and by the GoogleTest suites that replay the seed corpus and every
+// input a fuzzer once broke (tests/fuzz/corpus, tests/fuzz/regressions) in the normal builds.
+//
+// A reader may refuse any input with ifsfx::Error: that is the contract. Anything else — another
+// exception (an "internal error" for the user), a crash, a sanitizer report, a hang — is a bug,
+// and so is a broken property (check() throws std::logic_error naming it).
+#pragma once
+
+#include <unistd.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include <opencv2/core.hpp>
+
+#include "ifs/error.h"
+#include "ifs/ifs.h"
+#include "ifs/preset.h"
+#include "ifs/steal_map.h"
+
+namespace ifsfx::fuzz {
+
+inline void check(bool property, const char* what) {
+  if (!property) throw std::logic_error(std::string("fuzz property broken: ") + what);
+}
+
+// A validated IFS is usable: finite maps, probabilities that sum to 1, one per map.
+inline void check_usable(const Ifs& ifs) {
+  ValidateOptions options;
+  options.allow_expansive = true;
+  try {
+    validate(ifs, "fuzz", options);
+  } catch (const Error&) {
+    return;
+  }
+  check(!ifs.maps.empty(), "a validated IFS has maps");
+  check(ifs.probabilities.empty() || ifs.probabilities.size() == ifs.maps.size(),
+        "one probability per map");
+}
+
+// The native TOML reader; what it reads, to_toml writes back so that it reads the same.
+inline void preset_toml(std::string_view text) {
+  IfsPreset preset;
+  try {
+    preset = parse_ifs_toml(text, "fuzz.toml");
+  } catch (const Error&) {
+    return;
+  }
+  check_usable(preset.ifs);
+  IfsPreset again;
+  try {
+    again = parse_ifs_toml(to_toml(preset.ifs, preset.description), "again.toml");
+  } catch (const Error& e) {
+    throw std::logic_error(std::string("to_toml wrote what parse_ifs_toml refuses: ") + e.what());
+  }
+  check(again.ifs.name == preset.ifs.name, "to_toml keeps the name");
+  check(again.description == preset.description, "to_toml keeps the description");
+  check(again.ifs.maps == preset.ifs.maps, "to_toml keeps every coefficient exactly");
+  check(again.ifs.probabilities == preset.ifs.probabilities, "to_toml keeps the probabilities");
+  check(again.ifs.colours == preset.ifs.colours, "to_toml keeps the colours exactly");
+}
+
+// The Fractint .ifs reader: every entry, usable or refused with its reason.
+inline void fractint(std::string_view text) {
+  try {
+    for (const IfsPreset& preset : parse_fractint(text, "fuzz.ifs")) check_usable(preset.ifs);
+  } catch (const Error&) {
+  }
+}
+
+// The steal map file reader (a path: the bytes go to a scratch file first). A map it loads can be
+// applied; small ones are, to a small frame.
+inline void steal_map_file(std::string_view bytes, const std::filesystem::path& scratch) {
+  {
+    std::ofstream out(scratch, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  }
+  StealMap map;
+  try {
+    map = load_steal_map(scratch);
+  } catch (const Error&) {
+    return;
+  }
+  check(!map.empty() && map.source_uv.size() == map.coverage.size(), "a loaded map is whole");
+  if (map.size().area() > 4096) return;
+  const cv::Mat frame(6, 8, CV_8UC3, cv::Scalar(10, 20, 30));
+  ApplyOptions options;
+  options.threads = 1;
+  const cv::Mat out = apply(map, frame, options);
+  check(out.size() == map.size() && out.type() == frame.type(), "apply gives the map's size");
+}
+
+// A scratch file of this process for steal_map_file.
+inline std::filesystem::path scratch_file(const std::string& name) {
+  return std::filesystem::temp_directory_path() /
+         ("ifsfx-fuzz-" + name + "-" + std::to_string(getpid()));
+}
+
+}  // namespace ifsfx::fuzz

@@ -1,0 +1,111 @@
+#include "video/fractal_engine.h"
+
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "ifs/error.h"
+#include "tests/video/test_frames.h"
+
+namespace ifsfx::video {
+namespace {
+
+using testing::test_frame;
+
+FractalSettings drifting() {
+  FractalSettings s;
+  s.preset = "sierpinski-triangle";
+  s.quality = 4;
+  s.animate = Animate::drift;
+  s.drift_amount = 0.3;
+  s.drift_speed = 2;
+  s.keyframe_interval = 3;
+  s.seed = 5;
+  s.threads = 2;
+  return s;
+}
+
+TEST(fractal_engine, drifting_frames_asked_for_backwards_or_from_the_middle_are_the_same) {
+  const cv::Size size{64, 48};
+  const int n = 10;
+  FractalEngine forward(drifting(), size), backward(drifting(), size), middle(drifting(), size);
+  std::vector<cv::Mat> frames;
+  for (int i = 0; i < n; ++i) frames.push_back(forward.filter(test_frame(size, i), i));
+  for (int i = n - 1; i >= 0; --i)
+    EXPECT_EQ(cv::norm(backward.filter(test_frame(size, i), i), frames[i], cv::NORM_INF), 0) << i;
+  for (int i : {7, 2, 9, 0})  // a shard starting mid-clip, a scrubbing editor
+    EXPECT_EQ(cv::norm(middle.filter(test_frame(size, i), i), frames[i], cv::NORM_INF), 0) << i;
+  // It moves: keyframes 0 and 3 differ.
+  EXPECT_GT(cv::norm(frames[0], forward.filter(test_frame(size, 0), 9), cv::NORM_INF), 0);
+}
+
+TEST(fractal_engine, a_time_on_the_frame_grid_is_that_frame_and_between_frames_a_blend) {
+  const cv::Size size{48, 40};
+  FractalEngine engine(drifting(), size, size, 25);
+  const cv::Mat frame = test_frame(size, 1);
+  cv::Mat at_time, between;
+  // Frame 7 at 25 fps, as a host with rounding errors in its clock hands it over.
+  engine.filter_at(frame, 7 * 0.04 * 1000 * 0.001, at_time);
+  EXPECT_EQ(cv::norm(at_time, engine.filter(frame, 7), cv::NORM_INF), 0);
+  // Halfway between frames 7 and 8 is neither.
+  engine.filter_at(frame, 7.5 / 25, between);
+  EXPECT_GT(cv::norm(between, at_time, cv::NORM_INF), 0);
+  EXPECT_GT(cv::norm(between, engine.filter(frame, 8), cv::NORM_INF), 0);
+}
+
+TEST(fractal_engine, superifs_keyframes_are_a_function_of_the_frame_number) {
+  FractalSettings s;
+  s.animate = Animate::superifs;
+  s.keyframe_interval = 2;
+  s.buffers = 2;
+  s.seed = 3;
+  const cv::Size size{40, 40};
+  FractalEngine forward(s, size), backward(s, size);
+  std::vector<cv::Mat> frames;
+  for (int i = 0; i < 12; ++i) frames.push_back(forward.filter(test_frame(size, i), i));
+  for (int i = 11; i >= 0; --i)
+    EXPECT_EQ(cv::norm(backward.filter(test_frame(size, i), i), frames[i], cv::NORM_INF), 0) << i;
+  EXPECT_EQ(forward.name(), "paper-fig4");
+}
+
+TEST(fractal_engine, mix_and_background_change_without_new_maps) {
+  FractalSettings a;
+  a.preset = "maple-leaf";
+  FractalSettings b = a;
+  b.mix = 0.5;
+  b.background = parse_background("original");
+  EXPECT_TRUE(same_maps(a, b));
+  b.seed = 2;
+  EXPECT_FALSE(same_maps(a, b));
+
+  const cv::Size size{50, 30};
+  const cv::Mat frame = test_frame(size, 0);
+  FractalEngine engine(a, size);
+  engine.set_look(0.5, parse_background("original"));
+  b.seed = 1;
+  EXPECT_EQ(
+      cv::norm(engine.filter(frame, 0), FractalEngine(b, size).filter(frame, 0), cv::NORM_INF), 0);
+  EXPECT_THROW(engine.set_look(1.5, {}), Error);
+}
+
+TEST(fractal_engine, bad_settings_fail_before_any_frame) {
+  FractalSettings s;
+  s.preset = "no-such-preset";
+  EXPECT_THROW(FractalEngine{s}, Error);
+  s.preset = "barnsley-fern";
+  s.colouring = "sierpinski-triangle";
+  try {
+    FractalEngine engine(s);
+    FAIL() << "a 3-map colouring of a 4-map IFS was accepted";
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "--colouring sierpinski-triangle: must have as many maps as barnsley-fern (got 3 "
+                 "for 4)");
+  }
+  s.colouring.clear();
+  s.mix = -1;
+  EXPECT_THROW(FractalEngine{s}, Error);
+}
+
+}  // namespace
+}  // namespace ifsfx::video

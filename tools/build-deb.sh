@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds ifsfx for /usr (Release, tools/build.sh deb) and packs it with
+# CPack into build/deb/:
+#   ifsfx_VERSION_ARCH.deb      the command, its man page, bash completion and the presets
+#   ifsfx-dev_VERSION_ARCH.deb  headers, static libraries, CMake package and pkg-config file
+# Then, as root:  apt install ./build/deb/ifsfx_*.deb   (and ./build/deb/ifsfx-dev_*.deb)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash tools/install-deps.sh
+bash tools/build.sh deb
+rm -f build/deb/*.deb
+(cd build/deb && cpack -G DEB >/dev/null)
+ls build/deb/*.deb

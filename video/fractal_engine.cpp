@@ -1,0 +1,162 @@
+#include "video/fractal_engine.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "ifs/error.h"
+#include "ifs/preset.h"
+#include "superifs/superifs_file.h"
+#include "superifs/texture.h"
+#include "video/drift.h"
+#include "video/map_schedule.h"
+
+namespace ifsfx::video {
+
+bool same_maps(const FractalSettings& a, const FractalSettings& b) {
+  FractalSettings looks_like_b = a;
+  looks_like_b.mix = b.mix;
+  looks_like_b.background = b.background;
+  return looks_like_b == b;
+}
+
+FractalEngine::FractalEngine(const FractalSettings& settings) : settings_(settings) {
+  if (settings.keyframe_interval < 1)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--keyframe-interval: must be 1 or more frames (got {})",
+                            settings.keyframe_interval));
+  options_.interpolation = settings.interpolation;
+  options_.mix = settings.mix;
+  options_.background = settings.background;
+  options_.threads = settings.threads;
+  check_filter_options(options_);
+  if (settings.animate == Animate::superifs) {
+    super_ = load_superifs(settings.superifs).super;
+    name_ = super_.name.empty() ? settings.superifs : super_.name;
+    return;
+  }
+  F_ = load_ifs(settings.preset).ifs;
+  G_ = load_colouring(settings.colouring, F_);
+  name_ = F_.name.empty() ? settings.preset : F_.name;
+  if (settings.animate == Animate::drift) drift(F_, 0, drift_options());  // checks them
+}
+
+FractalEngine::FractalEngine(const FractalSettings& settings, cv::Size frame_size,
+                             cv::Size output_size, double frame_rate)
+    : FractalEngine(settings) {
+  prepare(frame_size, output_size, frame_rate);
+}
+
+FractalEngine::~FractalEngine() = default;
+
+DriftOptions FractalEngine::drift_options() const {
+  return {.amount = settings_.drift_amount, .speed = settings_.drift_speed, .seed = settings_.seed};
+}
+
+StealMapOptions FractalEngine::map_options() const {
+  StealMapOptions o;
+  o.view = settings_.view;
+  o.margin = settings_.margin;
+  o.exact = settings_.exact;
+  o.quality = settings_.quality;
+  o.seed = settings_.seed;
+  o.threads = settings_.threads;
+  return o;
+}
+
+void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double frame_rate) {
+  if (table_ || schedule_)
+    throw Error(ErrorKind::invalid_argument, "fractal engine: already prepared");
+  if (!(frame_rate > 0) || !std::isfinite(frame_rate))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("frame rate: must be a positive number (got {})", frame_rate));
+  frame_rate_ = frame_rate;
+  const cv::Size size = output_size.empty() ? frame_size : output_size;
+  const FractalSettings& s = settings_;
+  StealMapOptions map_options = this->map_options();
+  const int threads = s.threads;
+  const Interpolation interpolation = s.interpolation;
+  switch (s.animate) {
+    case Animate::none:
+      table_ = std::make_shared<const RemapTable>(make_remap_table(
+          compute_steal_map(F_, G_, size, map_options), frame_size, interpolation, threads));
+      return;
+    case Animate::drift: {
+      // Keyframe k shows F drifted to time k·K/fps, in a view fixed from F itself so that the
+      // frame does not jump as the attractor moves.
+      if (!map_options.view)
+        map_options.view = fit_view(attractor_bounds(F_, s.seed), size, s.margin);
+      schedule_ = std::make_unique<MapSchedule>(
+          [=, F = F_, G = G_, drift_options = drift_options(), interval = s.keyframe_interval,
+           fps = frame_rate](std::int64_t k) {
+            const Ifs now = drift(F, static_cast<double>(k) * interval / fps, drift_options);
+            return make_remap_table(compute_steal_map(now, G, size, map_options), frame_size,
+                                    interpolation, threads);
+          },
+          s.keyframe_interval);
+      return;
+    }
+    case Animate::superifs: {
+      // Keyframe k is texture k of the V-variable sequence (paper §5, eq. 14), one step per
+      // keyframe after the burn-in — a pure function of k and the seed.
+      TextureOptions t;
+      t.count = s.buffers;
+      t.mode = TextureMode::steal;
+      t.source = cv::Mat(frame_size, CV_8UC3);  // only its size: it sets the descent depth
+      t.seed = s.seed;
+      t.threads = threads;
+      sequence_ = std::make_shared<TextureSequence>(super_, size, t);
+      schedule_ = std::make_unique<MapSchedule>(
+          [=, sequence = sequence_](std::int64_t k) {
+            return make_remap_table(sequence->map_at(std::max<std::int64_t>(k, 0)), frame_size,
+                                    interpolation, threads);
+          },
+          s.keyframe_interval);
+      return;
+    }
+  }
+}
+
+void FractalEngine::set_look(double mix, const Background& background) {
+  FilterOptions options = options_;
+  options.mix = mix;
+  options.background = background;
+  check_filter_options(options);
+  options_ = options;
+  settings_.mix = mix;
+  settings_.background = background;
+}
+
+cv::Mat FractalEngine::filter(const cv::Mat& frame, std::int64_t index) {
+  cv::Mat out;
+  filter(frame, index, out);
+  return out;
+}
+
+void FractalEngine::filter(const cv::Mat& frame, std::int64_t index, cv::Mat& out) {
+  filter_at(frame, position_of_frame(index, settings_.keyframe_interval), out);
+}
+
+void FractalEngine::filter_at(const cv::Mat& frame, double seconds, cv::Mat& out) {
+  // A time on the frame grid is that frame, exactly: the picture `ifsfx filter` gives for it.
+  const double frames = seconds * frame_rate_;
+  const double nearest = std::round(frames);
+  if (std::abs(frames - nearest) <= 1e-6 * std::max(1.0, std::abs(frames)))
+    return filter(frame, static_cast<std::int64_t>(nearest), out);
+  filter_at(frame, position_of_steps(frames / settings_.keyframe_interval), out);
+}
+
+void FractalEngine::filter_at(const cv::Mat& frame, StepPosition position, cv::Mat& out) {
+  if (table_) return filter_frame(frame, *table_, options_, out);
+  if (!schedule_)
+    throw Error(ErrorKind::invalid_argument, "fractal engine: prepare() before filtering");
+  const MapSchedule::Blend b = schedule_->at(position);
+  filter_frame(frame, *b.from, *b.to, b.t, options_, out);
+}
+
+std::int64_t FractalEngine::stalls() const {
+  return schedule_ ? schedule_->stalls() : 0;
+}
+
+}  // namespace ifsfx::video

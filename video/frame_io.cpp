@@ -1,0 +1,22 @@
+#include "video/frame_io.h"
+
+#include <cmath>
+
+extern "C" {
+#include <libavutil/rational.h>
+}
+
+namespace ifsfx::video {
+
+Rational rate_from_fps(double fps) {
+  if (!(fps > 0) || !std::isfinite(fps) || fps > 1e6) return {0, 1};
+  if (std::abs(fps - std::round(fps)) < 1e-6) return {static_cast<int>(std::lround(fps)), 1};
+  // 30000/1001 and its kin, as written to two or three decimals (29.97, 23.976).
+  const double ntsc = fps * 1.001;
+  if (std::abs(ntsc - std::round(ntsc)) < 1e-4 * fps)
+    return {static_cast<int>(std::lround(ntsc)) * 1000, 1001};
+  const AVRational q = av_d2q(fps, 1000000);
+  return {q.num, q.den};
+}
+
+}  // namespace ifsfx::video
