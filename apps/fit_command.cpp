@@ -17,9 +17,11 @@
 
 #include "apps/cli_options.h"
 #include "apps/commands.h"
+#include "apps/stop_signals.h"
 #include "collage/fit.h"
 #include "collage/preview.h"
 #include "collage/target.h"
+#include "ifs/cancel.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/preset.h"
@@ -150,6 +152,10 @@ void run_fit(const FitArgs& args) {
   options.max_evaluations = args.max_evaluations;
   options.threads = args.threads;
   options.name = std::filesystem::path(args.target).stem().string();
+  // Ctrl-C or SIGTERM stops the fit between units of work (Error{interrupted}, exit 130); no
+  // half-fitted preset is written.
+  StopSignals signals;
+  options.cancel = CancelToken(&StopSignals::stop_flag());
   auto last_print = std::chrono::steady_clock::now() - std::chrono::seconds(1);
   std::optional<collage::FitPhase> last_phase;
   if (args.progress)
