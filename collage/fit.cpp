@@ -463,7 +463,7 @@ void fit_from_search(Fitting& fitting) {
   polish.linear_step = 0.01;
   polish.pixel_step = 0.5;
   polish.halvings = 3;
-  polish.sweeps = 8;
+  polish.sweeps = 1;  // one at a time, below
   polish.deadline = budget.at(1.0, 2 * fitting.chooser.reserve());
   descent.deadline = polish.deadline;
   std::vector<AffineMap> current = fitting.chooser.result.ifs.maps;
@@ -478,12 +478,20 @@ void fit_from_search(Fitting& fitting) {
           descend_each_map(objective, kicked(current, pool, options.seed, run), descent);
       budget.evaluations += moved.evaluations / options.maps;
       start = moved.maps;
-      polish.sweeps = 2;
     }
-    // A move maps W^k(L) again: k evaluations.
-    polish.max_evaluations = std::max(12L, budget.evaluations_left() / kPolishIterations);
-    const DescentResult polished = descend_each_map(objective, start, polish);
-    budget.evaluations += polished.evaluations * kPolishIterations;
+    // A move maps W^k(L) again: k evaluations. Sweep by sweep (8 for the first polish, 2 after
+    // a kick), so that the progress goes on; a sweep that moves no map ends it, as the next one
+    // would repeat it exactly.
+    DescentResult polished{start};
+    for (int sweep = 0; sweep < (kick == 0 ? 8 : 2); ++sweep) {
+      polish.max_evaluations = std::max(12L, budget.evaluations_left() / kPolishIterations);
+      DescentResult step = descend_each_map(objective, polished.maps, polish);
+      budget.evaluations += step.evaluations * kPolishIterations;
+      const bool moved = step.maps != polished.maps;
+      polished = std::move(step);
+      fitting.report(FitPhase::refine, run, fitting.best_objective);
+      if (!moved || polished.deadline_reached || budget.evaluations_left() < 2) break;
+    }
     if (polished.value < current_value) {
       current_value = polished.value;
       current = polished.maps;
