@@ -57,14 +57,18 @@ void expect_bound_holds(const CollageReport& r) {
 }
 
 TEST(fit, sierpinski_target_with_three_maps_gives_its_attractor_back) {
-  const auto result = fit(sierpinski_target(), quick(3));
+  FitOptions o = quick(3);
+  o.max_evaluations = 4000;
+  const auto result = fit(sierpinski_target(), o);
   ASSERT_EQ(result.ifs.maps.size(), 3u);
-  EXPECT_GE(result.report.iou, 0.9) << "collage IoU " << result.report.collage_iou;
+  EXPECT_GE(result.report.iou, 0.97) << "collage IoU " << result.report.collage_iou;
   expect_bound_holds(result.report);
 }
 
 TEST(fit, filled_square_with_four_maps_is_tiled) {
-  const auto result = fit(filled_square(), quick(4));
+  FitOptions o = quick(4);
+  o.max_evaluations = 3000;
+  const auto result = fit(filled_square(), o);
   EXPECT_GE(result.report.iou, 0.95) << "collage IoU " << result.report.collage_iou;
   expect_bound_holds(result.report);
 }
