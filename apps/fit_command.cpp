@@ -175,7 +175,14 @@ void run_fit(const FitArgs& args) {
                      .c_str(),
                  stderr);
     };
-  const collage::FitResult result = collage::fit(raster, options);
+  const collage::FitResult result = [&] {
+    try {
+      return collage::fit(raster, options);
+    } catch (...) {
+      if (args.progress) std::fputs("\n", stderr);  // the error goes on a line of its own
+      throw;
+    }
+  }();
   if (args.progress) std::fputs("\n", stderr);
   const collage::CollageReport& r = result.report;
 
