@@ -76,37 +76,6 @@ elseif(CHECK STREQUAL "bad_output_extension")
   make_square()
   ifsfx(fit square.png --invert -o out.txt)
   expect_failure("-o out.txt" nonzero "\\.toml")
-elseif(CHECK STREQUAL "interrupted")
-  # Ctrl-C once a 60-second fit is running (its first progress line is out): it stops within
-  # seconds, exit 130, one error line after the progress line, no preset written.
-  make_square()
-  execute_process(
-    COMMAND bash -c [=[
-      "$0" fit square.png --invert -n 4 -o out.toml --max-seconds 60 --progress 2>err.txt &
-      pid=$!
-      for _ in $(seq 1200); do grep -q partition err.txt 2>/dev/null && break; sleep 0.05; done
-      sleep 0.5
-      start=$(date +%s%N)
-      kill -INT $pid
-      wait $pid
-      status=$?
-      echo $(( ($(date +%s%N) - start) / 1000000 )) > stop-ms.txt
-      exit $status
-    ]=] ${IFSFX}
-    RESULT_VARIABLE rc WORKING_DIRECTORY ${WORK})
-  file(READ ${WORK}/err.txt err)
-  file(READ ${WORK}/stop-ms.txt took)
-  string(STRIP "${took}" took)
-  if(NOT rc EQUAL 130 OR NOT err MATCHES "\nifsfx: fit: interrupted\n$")
-    message(FATAL_ERROR "SIGINT: expected exit 130 and 'ifsfx: fit: interrupted' on a line of "
-                        "its own, got exit ${rc} and:\n${err}")
-  endif()
-  if(took GREATER 5000)
-    message(FATAL_ERROR "fit took ${took} ms to stop after SIGINT")
-  endif()
-  if(EXISTS ${WORK}/out.toml)
-    message(FATAL_ERROR "an interrupted fit left a preset behind")
-  endif()
 else()
   message(FATAL_ERROR "unknown check ${CHECK}")
 endif()
