@@ -6,18 +6,19 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
-#include <opencv2/imgproc.hpp>
 
 #include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "apps/stop_signals.h"
 #include "collage/fit.h"
+#include "collage/preview.h"
 #include "collage/target.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
@@ -34,12 +35,13 @@ struct FitArgs {
   std::string output;
   int maps = 4;
   std::uint64_t seed = 1;
+  collage::Initialisation init = collage::Initialisation::search;
   std::optional<double> threshold;
   bool invert = false;
   bool json = false;
   bool progress = false;
   double max_seconds = 30;
-  long max_evaluations = 60000;
+  long max_evaluations = 250000;
   std::string preview;
   std::string size = "128";
   int threads = 0;
@@ -94,25 +96,6 @@ std::string to_fractint(const Ifs& ifs, const std::string& comment) {
   return out + "}\n";
 }
 
-// Target, collage W(L) and attractor A side by side. In the last two, grey is L alone, white
-// is the set shown where it covers L, and mid-grey where it spills outside L.
-cv::Mat preview_image(const cv::Mat& target, const collage::CollageReport& r) {
-  const int n = target.cols, gap = std::max(2, n / 32);
-  cv::Mat out(n, 3 * n + 2 * gap, CV_8UC1, cv::Scalar(32));
-  target.copyTo(out(cv::Rect(0, 0, n, n)));
-  const cv::Mat* sets[] = {&r.collage, &r.attractor};
-  for (int k = 0; k < 2; ++k) {
-    cv::Mat panel(n, n, CV_8UC1, cv::Scalar(0));
-    panel.setTo(70, target);
-    panel.setTo(150, *sets[k]);
-    cv::Mat both;
-    cv::bitwise_and(*sets[k], target, both);
-    panel.setTo(255, both);
-    panel.copyTo(out(cv::Rect((k + 1) * (n + gap), 0, n, n)));
-  }
-  return out;
-}
-
 double finite_or_nan(double x) {
   return std::isfinite(x) ? x : std::numeric_limits<double>::quiet_NaN();
 }
@@ -145,24 +128,39 @@ void run_fit(const FitArgs& args) {
   collage::FitOptions options;
   options.maps = args.maps;
   options.seed = args.seed;
+  options.init = args.init;
   options.max_seconds = args.max_seconds;
   options.max_evaluations = args.max_evaluations;
   options.threads = args.threads;
   options.cancel = policy.cancel;
   options.name = valid_utf8(std::filesystem::path(args.target).stem().string());
   auto last_print = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+  std::optional<collage::FitPhase> last_phase;
   if (args.progress)
     options.progress = [&](const collage::FitProgress& p) {
+      // Every change of phase is shown; within a phase, five lines a second at most.
       const auto now = std::chrono::steady_clock::now();
-      if (now - last_print < std::chrono::milliseconds(200)) return;
+      if (p.phase == last_phase && now - last_print < std::chrono::milliseconds(200)) return;
       last_print = now;
-      std::fputs(fmt::format("\rrun {}/{}  evaluations {:>7}  objective {:.5f}  best {:.5f}  "
-                             "{:.1f} s ",
-                             p.run + 1, p.runs, p.evaluations, p.objective, p.best, p.seconds)
+      last_phase = p.phase;
+      const auto number = [](double x, int digits) {
+        return std::isfinite(x) && x > 0 ? fmt::format("{:.{}f}", x, digits) : std::string("-");
+      };
+      std::fputs(fmt::format("\r{:<9}  run {:>3}  evaluations {:>8}  objective {:>7}  "
+                             "best IoU {:>5}  {:.1f} s ",
+                             to_string(p.phase), p.run + 1, p.evaluations, number(p.best, 5),
+                             number(p.best_iou, 3), p.seconds)
                      .c_str(),
                  stderr);
     };
-  const collage::FitResult result = collage::fit(raster, options);
+  const collage::FitResult result = [&] {
+    try {
+      return collage::fit(raster, options);
+    } catch (...) {
+      if (args.progress) std::fputs("\n", stderr);  // the error goes on a line of its own
+      throw;
+    }
+  }();
   if (args.progress) std::fputs("\n", stderr);
   const collage::CollageReport& r = result.report;
 
@@ -173,12 +171,20 @@ void run_fit(const FitArgs& args) {
                                           : to_fractint(result.ifs, summary),
              policy);
   if (!args.preview.empty())
-    write_image(args.preview, preview_image(raster, r), {.output = policy});
+    write_image(args.preview,
+                collage::fit_preview(raster, result.ifs,
+                                     {.quality = 256, .seed = args.seed, .threads = args.threads}),
+                {.output = policy});
 
-  const bool holds = r.hausdorff <= r.upper_bound;
+  const bool holds = r.bound_holds();
   if (args.json) {
     nlohmann::json maps = nlohmann::json::array();
     for (const auto& m : result.ifs.maps) maps.push_back(m.coefficients());
+    nlohmann::json parts = nlohmann::json::array();
+    for (const auto& part : r.parts)
+      parts.push_back({{"area", part.area},
+                       {"centre", {part.centre.x, part.centre.y}},
+                       {"covered", part.covered}});
     const nlohmann::json report = {
         {"target", valid_utf8(args.target)},
         {"output", valid_utf8(args.output)},
@@ -194,11 +200,14 @@ void run_fit(const FitArgs& args) {
         {"lower_bound", r.lower_bound},
         {"upper_bound", finite_or_nan(r.upper_bound)},
         {"hausdorff", finite_or_nan(r.hausdorff)},
+        {"raster_error", r.raster_error},
         {"bound_holds", holds},
         {"iou", r.iou},
         {"collage_iou", r.collage_iou},
         {"pixel", r.pixel},
         {"clipped", r.clipped},
+        {"init", args.init == collage::Initialisation::moments ? "moments" : "search"},
+        {"parts", parts},
         {"ifs",
          {{"name", result.ifs.name}, {"maps", maps}, {"probabilities", result.ifs.probabilities}}},
     };
@@ -214,15 +223,23 @@ void run_fit(const FitArgs& args) {
                 "  collage distance h(L, W(L))   {:.4f}  ({:.1f} px)\n"
                 "  contraction s                 {:.4f}\n"
                 "  collage theorem               {:.4f} <= h(L, A) <= {:.4f}\n"
-                "  measured h(L, A)              {:.4f}  ({:.1f} px){}\n"
+                "  measured h(L, A)              {:.4f}  ({:.1f} px, +-{:.1f} px raster){}\n"
                 "  IoU(L, A)                     {:.3f}  (collage IoU(L, W(L)) {:.3f})\n",
                 args.target, args.output, args.maps, raster.cols, raster.rows, result.runs,
                 result.evaluations, result.seconds,
                 result.time_capped ? " (stopped by --max-seconds)" : "", r.pixel,
                 r.collage_distance, r.collage_distance * px, r.contraction, r.lower_bound,
-                r.upper_bound, r.hausdorff, r.hausdorff * px,
+                r.upper_bound, r.hausdorff, r.hausdorff * px, r.raster_error * px,
                 holds ? "" : "  ABOVE THE BOUND: please report this as a bug", r.iou, r.collage_iou)
                 .c_str());
+  // Components of L the attractor leaves (mostly) out: too small for a map of their own, and
+  // not reached by a neighbour's.
+  for (const auto& part : r.parts)
+    if (part.covered < 0.5)
+      std::printf("%s", fmt::format("  part not covered: {} px around ({:.3f}, {:.3f}), {:.0f}% "
+                                    "of it in A\n",
+                                    part.area, part.centre.x, part.centre.y, 100 * part.covered)
+                            .c_str());
   if (r.clipped)
     std::printf(
         "  note: the attractor reaches beyond the measuring canvas; h(L, A) is a lower "
@@ -245,6 +262,16 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "Random seed: the same seed gives the same maps")
       ->capture_default_str()
       ->check(not_negative());
+  const std::map<std::string, collage::Initialisation> inits{
+      {"moments", collage::Initialisation::moments}, {"search", collage::Initialisation::search}};
+  cmd->add_option("--init", args->init,
+                  "Starting maps. search: fractal-compression range/domain search over several "
+                  "partitions of the shape (one part per component at least), combined and "
+                  "refined; moments: split the shape and match each part's moments (faster, "
+                  "for convex, nearly self-similar shapes)")
+      ->transform(choice(inits))
+      ->default_str("search")
+      ->option_text(choices_text(inits, "search"));
   cmd->add_option("--threshold", args->threshold,
                   "Grey (or alpha) level in [0, 1] between shape and background; default: Otsu "
                   "(alpha: 0.5)")
@@ -261,9 +288,12 @@ void add_fit_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::Range(2L, 100000000L));
   cmd->add_option("--preview", args->preview,
-                  "Write target, collage and attractor side by side to this image");
+                  "Write target, collage and attractor side by side to this image, each of the "
+                  "N pieces in its own colour (missed pixels dark grey, spill dimmed)");
   cmd->add_flag("--json", args->json, "Print the report as a JSON object on stdout");
-  cmd->add_flag("--progress", args->progress, "Show the objective as it falls (stderr)");
+  cmd->add_flag("--progress", args->progress,
+                "Show the phase (partition, search, refine), the objective and the best IoU so "
+                "far (stderr)");
   add_threads_option(*cmd, args->threads);
   cmd->callback([args] { run_fit(*args); });
 }

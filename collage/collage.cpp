@@ -1,6 +1,7 @@
 #include "collage/collage.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -48,15 +49,6 @@ std::vector<cv::Point2f> centres_of(const cv::Mat& mask) {
       if (row[c]) points.emplace_back(static_cast<float>(c) + 0.5f, static_cast<float>(r) + 0.5f);
   }
   return points;
-}
-
-// Upper bound of d(q, L) from the distance transform of L: the distance at the pixel nearest to
-// q (clamped into the raster) plus the way from q to that pixel's centre.
-double distance_bound(const cv::Mat& distance, double qx, double qy) {
-  const int n = distance.cols;
-  const int c = std::clamp(static_cast<int>(std::floor(qx)), 0, n - 1);
-  const int r = std::clamp(static_cast<int>(std::floor(qy)), 0, n - 1);
-  return distance.at<float>(r, c) + std::hypot(qx - (c + 0.5), qy - (r + 0.5));
 }
 
 }  // namespace
@@ -141,74 +133,168 @@ CollageObjective::CollageObjective(const cv::Mat& target, const ObjectiveOptions
   target_ = target.clone();
   distance_ = distance_to(target_);
   points_ = centres_of(target_);
+  deep_.assign(static_cast<std::size_t>(size_ - 1) * static_cast<std::size_t>(size_ - 1), 0);
+  for (int r = 0; r + 1 < size_; ++r)
+    for (int c = 0; c + 1 < size_; ++c)
+      deep_[static_cast<std::size_t>(r) * static_cast<std::size_t>(size_ - 1) +
+            static_cast<std::size_t>(c)] =
+          target_.at<std::uint8_t>(r, c) && target_.at<std::uint8_t>(r, c + 1) &&
+          target_.at<std::uint8_t>(r + 1, c) && target_.at<std::uint8_t>(r + 1, c + 1);
+  inside_.assign((static_cast<std::size_t>(size_) * size_ + 63) / 64, 0);
+  for (const auto& p : points_) {
+    const std::size_t bit = static_cast<std::size_t>(p.y) * size_ + static_cast<std::size_t>(p.x);
+    inside_[bit / 64] |= std::uint64_t{1} << (bit % 64);
+    centroid_.x += p.x;
+    centroid_.y += p.y;
+  }
+  const auto count = static_cast<double>(points_.size());
+  centroid_ = {centroid_.x / count / size_, 1 - centroid_.y / count / size_};
 }
 
-namespace {
-
-// d(q, L) interpolated bilinearly between pixel centres (pixels): continuous in q, so the
-// optimiser feels sub-pixel moves; outside the raster, the exact bound of distance_bound.
-double interpolated_distance(const cv::Mat& distance, double qx, double qy) {
-  const int n = distance.cols;
-  const double x = qx - 0.5, y = qy - 0.5;  // centre-based coordinates
-  if (!(x >= 0 && y >= 0 && x <= n - 1 && y <= n - 1)) return distance_bound(distance, qx, qy);
-  const int c = std::min(static_cast<int>(x), n - 2), r = std::min(static_cast<int>(y), n - 2);
-  const double u = x - c, v = y - r;
-  const float* row0 = distance.ptr<float>(r);
-  const float* row1 = distance.ptr<float>(r + 1);
-  return (1 - v) * ((1 - u) * row0[c] + u * row0[c + 1]) +
-         v * ((1 - u) * row1[c] + u * row1[c + 1]);
-}
-
-// IoU of the target with the raster `w` (0/1 bytes).
-double raster_iou(const cv::Mat& target, const std::vector<std::uint8_t>& w) {
-  const int n = target.cols;
-  long both = 0, either = 0;
-  for (int r = 0; r < n; ++r) {
-    const auto* in = target.ptr<std::uint8_t>(r);
-    const std::uint8_t* out = w.data() + static_cast<std::size_t>(r) * n;
-    for (int c = 0; c < n; ++c) {
-      both += (in[c] != 0) & (out[c] != 0);
-      either += (in[c] != 0) | (out[c] != 0);
+Footprint CollageObjective::footprint(const AffineMap& f) const {
+  if (!f.finite())
+    throw Error(ErrorKind::invalid_argument,
+                "collage: coefficients must be finite (got NaN or inf)");
+  const int n = size_;
+  const AffineMap m = pixel_map(f, n);
+  Footprint out;
+  out.hits.assign(inside_.size(), 0);
+  out.det = std::abs(f.det());
+  out.factor = f.contraction();
+  // W(L) from L's exact pixel centres, with the spill of every image point: the distance
+  // interpolated between pixel centres (interpolated_distance, inlined here for the points
+  // inside the centres' square, which is nearly all of them).
+  const float* d = distance_.ptr<float>(0);
+  const auto stride = static_cast<std::size_t>(distance_.step1());
+  const double last = n - 1;
+  for (const auto& p : points_) {
+    const double qx = m.a * p.x + m.b * p.y + m.e;
+    const double qy = m.c * p.x + m.d * p.y + m.f;
+    const double x = qx - 0.5, y = qy - 0.5;
+    if (x >= 0 && y >= 0 && x < last && y < last) {
+      const auto c = static_cast<std::size_t>(x), r = static_cast<std::size_t>(y);
+      const std::size_t bit =
+          (r + (y - static_cast<double>(r) >= 0.5)) * static_cast<std::size_t>(n) + c +
+          (x - static_cast<double>(c) >= 0.5);
+      out.hits[bit / 64] |= std::uint64_t{1} << (bit % 64);
+      if (deep_[r * static_cast<std::size_t>(n - 1) + c]) continue;  // inside L: no spill
+      const double u = x - static_cast<double>(c), v = y - static_cast<double>(r);
+      const float* row0 = d + r * stride + c;
+      const float* row1 = row0 + stride;
+      out.spill +=
+          (1 - v) * ((1 - u) * row0[0] + u * row0[1]) + v * ((1 - u) * row1[0] + u * row1[1]);
+      continue;
+    }
+    out.spill += interpolated_distance(distance_, qx, qy);
+    const double c = std::floor(qx), r = std::floor(qy);
+    if (c >= 0 && r >= 0 && c < n && r < n) {
+      const auto bit =
+          static_cast<std::size_t>(r) * static_cast<std::size_t>(n) + static_cast<std::size_t>(c);
+      out.hits[bit / 64] |= std::uint64_t{1} << (bit % 64);
     }
   }
-  return either == 0 ? 1.0 : static_cast<double>(both) / static_cast<double>(either);
+  return out;
 }
-
-}  // namespace
 
 ObjectiveTerms CollageObjective::terms(std::span<const AffineMap> maps) const {
   check_maps(maps);
-  ObjectiveTerms t;
+  std::vector<Footprint> parts;
+  parts.reserve(maps.size());
+  for (const auto& f : maps) parts.push_back(footprint(f));
+  std::vector<const Footprint*> pointers;
+  for (const auto& p : parts) pointers.push_back(&p);
+  return terms(std::span<const Footprint* const>(pointers));
+}
+
+Footprint merge(std::span<const Footprint* const> parts) {
+  if (parts.empty())
+    throw Error(ErrorKind::invalid_argument, "collage: nothing to merge (no footprint)");
+  Footprint out = *parts.front();
+  for (const Footprint* p : parts.subspan(1)) {
+    for (std::size_t w = 0; w < out.hits.size(); ++w) out.hits[w] |= p->hits[w];
+    out.spill += p->spill;
+    out.det += p->det;
+    out.factor = std::max(out.factor, p->factor);
+    out.maps += p->maps;
+  }
+  return out;
+}
+
+double CollageObjective::iterated(std::span<const AffineMap> maps, int iterations) const {
+  check_maps(maps);
+  if (iterations < 1)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("collage: iterations must be ≥ 1 (got {})", iterations));
   const int n = size_;
   std::vector<AffineMap> pixel_maps;
-  double dets = 0;
+  double factor = 0;
   for (const auto& f : maps) {
-    t.contraction = std::max(t.contraction, f.contraction());
-    dets += std::abs(f.det());
     pixel_maps.push_back(pixel_map(f, n));
+    factor = std::max(factor, f.contraction());
   }
+  std::vector<std::uint64_t> current = inside_, next(inside_.size());
+  for (int it = 0; it < iterations; ++it) {
+    std::fill(next.begin(), next.end(), 0);
+    for (std::size_t w = 0; w < current.size(); ++w)
+      for (std::uint64_t bits = current[w]; bits != 0; bits &= bits - 1) {
+        const std::size_t bit = w * 64 + static_cast<std::size_t>(std::countr_zero(bits));
+        const double px = static_cast<double>(bit % static_cast<std::size_t>(n)) + 0.5;
+        const double py = static_cast<double>(bit / static_cast<std::size_t>(n)) + 0.5;
+        for (const auto& m : pixel_maps) {
+          const double c = std::floor(m.a * px + m.b * py + m.e);
+          const double r = std::floor(m.c * px + m.d * py + m.f);
+          if (c >= 0 && r >= 0 && c < n && r < n) {
+            const auto b = static_cast<std::size_t>(r) * static_cast<std::size_t>(n) +
+                           static_cast<std::size_t>(c);
+            next[b / 64] |= std::uint64_t{1} << (b % 64);
+          }
+        }
+      }
+    current.swap(next);
+  }
+  long both = 0, either = 0;
+  for (std::size_t w = 0; w < current.size(); ++w) {
+    both += std::popcount(current[w] & inside_[w]);
+    either += std::popcount(current[w] | inside_[w]);
+  }
+  const double iou = either == 0 ? 1.0 : static_cast<double>(both) / static_cast<double>(either);
+  return (1 - iou) + contraction_penalty(factor);
+}
 
-  // Level 1: W(L) from L's exact pixel centres, with the spill of every image point.
-  std::vector<std::uint8_t> w(static_cast<std::size_t>(n) * n, 0);
-  double spill = 0;
-  for (const auto& m : pixel_maps)
-    for (const auto& p : points_) {
-      const double qx = m.a * p.x + m.b * p.y + m.e;
-      const double qy = m.c * p.x + m.d * p.y + m.f;
-      spill += interpolated_distance(distance_, qx, qy);
-      const double c = std::floor(qx), r = std::floor(qy);
-      if (c >= 0 && r >= 0 && c < n && r < n)
-        w[static_cast<std::size_t>(r) * n + static_cast<std::size_t>(c)] = 1;
-    }
-  t.collage_iou = raster_iou(target_, w);
-  t.spill = spill / (static_cast<double>(points_.size()) * static_cast<double>(maps.size())) / n;
+double CollageObjective::contraction_penalty(double factor) const {
+  const ObjectiveOptions& k = options_;
+  const double soft = std::max(0.0, factor - k.soft_factor);
+  double penalty = k.contraction * soft * soft;
+  if (factor >= k.max_factor) penalty += 1 + 10 * (factor - k.max_factor);
+  return penalty;
+}
+
+ObjectiveTerms CollageObjective::terms(std::span<const Footprint* const> parts) const {
+  if (parts.empty())
+    throw Error(ErrorKind::invalid_argument, "collage: at least one map is needed (got 0)");
+  ObjectiveTerms t;
+  double dets = 0, spill = 0;
+  int count = 0;
+  for (const Footprint* p : parts) {
+    t.contraction = std::max(t.contraction, p->factor);
+    dets += p->det;
+    spill += p->spill;
+    count += p->maps;
+  }
+  // IoU(L, W(L)) from the bits: |L ∩ W| / |L ∪ W|.
+  long both = 0, either = 0;
+  for (std::size_t w = 0; w < inside_.size(); ++w) {
+    std::uint64_t hit = 0;
+    for (const Footprint* p : parts) hit |= p->hits[w];
+    both += std::popcount(hit & inside_[w]);
+    either += std::popcount(hit | inside_[w]);
+  }
+  t.collage_iou = either == 0 ? 1.0 : static_cast<double>(both) / static_cast<double>(either);
+  t.spill = spill / (static_cast<double>(points_.size()) * count) / size_;
   t.overlap = std::max(0.0, dets - 1);
 
-  const ObjectiveOptions& k = options_;
-  const double soft = std::max(0.0, t.contraction - k.soft_factor);
-  t.value =
-      (1 - t.collage_iou) + k.spill * t.spill + k.overlap * t.overlap + k.contraction * soft * soft;
-  if (t.contraction >= k.max_factor) t.value += 1 + 10 * (t.contraction - k.max_factor);
+  t.value = (1 - t.collage_iou) + options_.spill * t.spill + options_.overlap * t.overlap +
+            contraction_penalty(t.contraction);
   return t;
 }
 

@@ -5,6 +5,7 @@
 // y up; L is the finite set of the centres of its pixels. Maps act on the IFS plane.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -47,6 +48,23 @@ struct ObjectiveOptions {
   double max_factor = 0.97;  // hard wall: beyond it the value jumps by 1 + 10 (s − max_factor)
 };
 
+// What one map f contributes to the collage objective: the pixels that f(L) hits and how far its
+// points spill out of L. Every term of the objective is a union or a sum over the maps, so the
+// objective of any set of maps follows from their footprints alone — which is what lets the fit
+// try thousands of combinations of searched maps, and move one map at a time, cheaply.
+struct Footprint {
+  std::vector<std::uint64_t> hits;  // S² bits, row-major: pixels that hold some f(p), p ∈ L
+  double spill = 0;                 // Σ_p d(f(p), L) over L's pixel centres p, pixels
+  double det = 0;                   // |det f|
+  double factor = 0;                // f's contraction
+  int maps = 1;                     // how many maps it stands for (see merge)
+};
+
+// The footprint of several maps together: hits OR-ed, spills and determinants added, the largest
+// factor. A combination that keeps most of its maps fixed is then scored against one merged
+// footprint instead of all of them. Throws Error{invalid_argument} for no parts.
+Footprint merge(std::span<const Footprint* const> parts);
+
 // The collage objective for one target: (1 − IoU(L, W(L))) + spill + overlap + contraction
 // penalties. Build once per target; evaluation is const and thread-safe (no
 // shared scratch).
@@ -57,14 +75,33 @@ class CollageObjective {
   double operator()(std::span<const AffineMap> maps) const { return terms(maps).value; }
   ObjectiveTerms terms(std::span<const AffineMap> maps) const;
 
+  // 1 − IoU(L, W^k(L)) plus the contraction penalties of the objective: how well the k-th
+  // iterate of the collage operator from L matches L. W^k(L) tends to the attractor A as k grows
+  // (A is W's fixed point, paper eq. 2; the distance shrinks by s per step), so this judges what
+  // the user will see, where the objective above judges one step of it. W is applied to pixel
+  // centres on the raster, as for W(L) above; points leaving the raster are dropped.
+  double iterated(std::span<const AffineMap> maps, int iterations) const;
+
+  Footprint footprint(const AffineMap& f) const;
+  // The terms of the maps whose footprints are `parts`: terms(maps) without recomputing them.
+  ObjectiveTerms terms(std::span<const Footprint* const> parts) const;
+
   int size() const { return size_; }
   const cv::Mat& target() const { return target_; }
+  Point centroid() const { return centroid_; }  // of L's pixel centres, IFS plane
 
  private:
+  double contraction_penalty(double factor) const;
+
   int size_ = 0;
-  cv::Mat target_;                   // CV_8UC1, 0/255
-  cv::Mat distance_;                 // CV_32FC1, distance (pixels) to the nearest centre of L
-  std::vector<cv::Point2f> points_;  // centres of L's pixels, pixel coordinates
+  cv::Mat target_;    // CV_8UC1, 0/255
+  cv::Mat distance_;  // CV_32FC1, distance (pixels) to the nearest centre of L
+  // Per cell between four pixel centres (row-major, (S − 1)²): 1 when all four are in L, so that
+  // the interpolated distance is 0 anywhere in the cell.
+  std::vector<std::uint8_t> deep_;
+  std::vector<cv::Point2f> points_;    // centres of L's pixels, pixel coordinates
+  std::vector<std::uint64_t> inside_;  // L as S² bits, row-major
+  Point centroid_;
   ObjectiveOptions options_;
 };
 

@@ -1,5 +1,8 @@
 #include "collage/distance.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
@@ -50,6 +53,25 @@ cv::Mat distance_to(const cv::Mat& mask) {
   cv::Mat d;
   cv::distanceTransform(outside, d, cv::DIST_L2, cv::DIST_MASK_PRECISE, CV_32F);
   return d;
+}
+
+double distance_bound(const cv::Mat& distance, double qx, double qy) {
+  const int n = distance.cols, m = distance.rows;
+  const int c = std::clamp(static_cast<int>(std::floor(qx)), 0, n - 1);
+  const int r = std::clamp(static_cast<int>(std::floor(qy)), 0, m - 1);
+  return distance.at<float>(r, c) + std::hypot(qx - (c + 0.5), qy - (r + 0.5));
+}
+
+double interpolated_distance(const cv::Mat& distance, double qx, double qy) {
+  const int n = distance.cols, m = distance.rows;
+  const double x = qx - 0.5, y = qy - 0.5;  // centre-based coordinates
+  if (!(x >= 0 && y >= 0 && x <= n - 1 && y <= m - 1)) return distance_bound(distance, qx, qy);
+  const int c = std::min(static_cast<int>(x), n - 2), r = std::min(static_cast<int>(y), m - 2);
+  const double u = x - c, v = y - r;
+  const float* row0 = distance.ptr<float>(r);
+  const float* row1 = distance.ptr<float>(r + 1);
+  return (1 - v) * ((1 - u) * row0[c] + u * row0[c + 1]) +
+         v * ((1 - u) * row1[c] + u * row1[c + 1]);
 }
 
 double directed_hausdorff(const cv::Mat& a, const cv::Mat& b) {

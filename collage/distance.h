@@ -14,6 +14,16 @@ namespace ifsfx::collage {
 // Error{invalid_argument} for an empty mask (the distance to nothing is undefined).
 cv::Mat distance_to(const cv::Mat& mask);
 
+// An upper bound of the distance (pixels) from the continuous pixel point (qx, qy) — pixel
+// (col, row) covers [col, col+1) × [row, row+1) — to the set whose distance_to() is `distance`:
+// the distance at the pixel nearest to q (clamped into the raster) plus the way from q to that
+// pixel's centre. Exact at pixel centres inside the raster.
+double distance_bound(const cv::Mat& distance, double qx, double qy);
+
+// The distance from (qx, qy) interpolated bilinearly between pixel centres (pixels): continuous
+// in q, so that an optimiser feels sub-pixel moves; outside the centres' square, distance_bound.
+double interpolated_distance(const cv::Mat& distance, double qx, double qy);
+
 // max over a of the distance from a to b (the directed Hausdorff distance), pixels. Both masks
 // the same size and non-empty.
 double directed_hausdorff(const cv::Mat& a, const cv::Mat& b);

@@ -10,14 +10,24 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
 #include "collage/collage.h"
+#include "collage/search.h"
 #include "ifs/cancel.h"
 #include "ifs/ifs.h"
 
 namespace ifsfx::collage {
+
+// How much of one connected component (8-connected) of L the attractor covers: a part of a
+// multi-part shape too small for a map of its own may be left out.
+struct PartCoverage {
+  int area = 0;        // pixels of the working raster
+  Point centre;        // its centroid, IFS plane
+  double covered = 0;  // fraction of its pixels that A hits
+};
 
 // What the collage theorem says about an IFS against a target, and what its attractor does.
 struct CollageReport {
@@ -26,12 +36,20 @@ struct CollageReport {
   double lower_bound = 0;       // h(L, W(L)) / (1 + s) ≤ h(L, A)
   double upper_bound = 0;       // h(L, A) ≤ h(L, W(L)) / (1 − s); +inf when s ≥ 1
   double hausdorff = 0;         // h(L, A) measured on the raster: L against the pixels A hits
-  double iou = 0;               // |L ∩ A| / |L ∪ A| on the raster (A outside the square counts)
-  double collage_iou = 0;       // |L ∩ W(L)| / |L ∪ W(L)| on the raster
-  double pixel = 0;             // the raster's pixel size in plane units, 1/S
-  bool clipped = false;  // A reaches beyond the measuring canvas (the square grown by 1 each way)
-  cv::Mat collage;       // W(L) on the working raster, CV_8UC1 0/255
-  cv::Mat attractor;     // A on the working raster, CV_8UC1 0/255
+  // How far the measured h(L, A) may lie from the true one: the centre of a pixel that A hits is
+  // within half a pixel diagonal (√2 / 2S) of A, and a fully rendered A is within that of the
+  // centres; so the collage theorem promises hausdorff ≤ upper_bound + raster_error.
+  double raster_error = 0;
+  double iou = 0;          // |L ∩ A| / |L ∪ A| on the raster (A outside the square counts)
+  double collage_iou = 0;  // |L ∩ W(L)| / |L ∪ W(L)| on the raster
+  double pixel = 0;        // the raster's pixel size in plane units, 1/S
+  bool clipped = false;    // A reaches beyond the measuring canvas (the square grown by 1 each way)
+  cv::Mat collage;         // W(L) on the working raster, CV_8UC1 0/255
+  cv::Mat attractor;       // A on the working raster, CV_8UC1 0/255
+  std::vector<PartCoverage> parts;  // L's components, largest first
+
+  // The collage theorem's bound holds for what was measured (within the raster's error).
+  bool bound_holds() const { return hausdorff <= upper_bound + raster_error; }
 };
 
 struct AssessOptions {
@@ -46,32 +64,71 @@ struct AssessOptions {
 //   auto r = assess(raster, sierpinski);  // r.collage_distance ≈ √3/12 for a filled triangle
 CollageReport assess(const cv::Mat& target, const Ifs& ifs, const AssessOptions& options = {});
 
+// Where the starting maps come from.
+enum class Initialisation {
+  // Issue 14's: split L along principal axes (restarts: k-means++ splits) and match each part's
+  // first and second moments with one of 16 orthogonal turns (initialise.h).
+  moments,
+  // The range/domain search of fractal image compression (search.h) on several partitions of L
+  // (one part per connected component at least); N of the maps found are chosen (combine.h),
+  // the next-best choices and kicks of the best tried while the budget lasts.
+  search,
+};
+
+enum class FitPhase {
+  partition,  // splitting L into the N ranges
+  search,     // searching maps L → range and choosing N of them
+  refine,     // descents, CMA-ES and ICP on the collage objective, the polish on W^k(L)
+};
+const char* to_string(FitPhase phase) noexcept;
+
 struct FitProgress {
-  int run = 0;           // 0: from the principal-axes split; 1..: restarts from k-means++
-  int runs = 0;          // runs planned
+  FitPhase phase = FitPhase::partition;
+  int run = 0;           // 0-based
+  int runs = 0;          // moments: runs planned; search: restarts + 1 (kicks run on after them)
   long evaluations = 0;  // objective evaluations so far, all runs
   double objective = 0;  // best value of this run so far
   double best = 0;       // best value of all runs so far
+  double best_iou = 0;   // IoU(L, A) of the best IFS so far; 0 until the first is rendered
   double seconds = 0;    // since the fit started
 };
 
 struct FitOptions {
   int maps = 4;  // N, 1..32
   std::uint64_t seed = 1;
-  int restarts = 5;              // CMA-ES runs after the first, each from a seeded k-means++ split
-  long max_evaluations = 60000;  // objective evaluations over all runs (what makes it reproducible)
-  double max_seconds = 30;       // wall-clock cap over all runs; 0 = none (then the same seed gives
-                                 // the same maps on any machine and thread count)
-  int threads = 0;               // 0 = all cores
-  double quality = 256;          // chaos-game points per pixel for the attractors
-  std::string name = "fitted";   // the IFS's name
+  Initialisation init = Initialisation::search;
+  // moments: CMA-ES runs after the first, each from a seeded k-means++ split. search: runs
+  // after the first that start from the next-best choice of maps from the pool; later runs
+  // kick the best maps so far, for as long as the budget lasts.
+  int restarts = 5;
+  // Objective evaluations over the whole fit: what ends it reproducibly. A move of one map in
+  // a descent counts 1/N, a move on W^k(L) counts k.
+  long max_evaluations = 250000;
+  // Wall-clock cap over the whole fit, rendering included (seconds); 0 = none (then the same
+  // seed gives the same maps on any machine and thread count). The stages have shares of it (and
+  // of max_evaluations); work is cut only between units whose result does not depend on the
+  // thread count (a CMA-ES generation, a descent step, an ICP round, a searched partition), and
+  // a rendering that would not end in time is not started, so the fit ends on time by design:
+  // a slow or loaded machine does fewer units, never different ones, and its fit is worse, not
+  // longer.
+  double max_seconds = 30;
+  int threads = 0;              // 0 = all cores
+  double quality = 256;         // chaos-game points per pixel for the attractors
+  std::string name = "fitted";  // the IFS's name
   ObjectiveOptions objective;
   // ICP rounds (refine.h) after each run's search; the refined maps replace the searched ones
   // when their attractor matches L better. 0 = no refinement.
   int refine_iterations = 30;
-  // Called after every CMA-ES generation on the calling thread (the library never prints).
+  // Initialisation::search: partitions of L whose searched maps make the pool the runs choose
+  // from (the first is always searched; the others while the time allows), and the search
+  // itself (its threads and cancel are the fit's).
+  int partitions = 4;
+  SearchOptions search;
+  // Called after every CMA-ES generation and at every change of phase, on the calling thread
+  // (the library never prints).
   std::function<void(const FitProgress&)> progress;
-  CancelToken cancel;  // polled per generation and per run: Error{interrupted} on a stop request
+  // Polled between candidates and refinement steps; a stop request throws Error{interrupted}.
+  CancelToken cancel;
 };
 
 struct FitResult {
@@ -84,9 +141,14 @@ struct FitResult {
   bool time_capped = false;  // max_seconds cut the search short
 };
 
-// Fits N maps to `target` (a working raster): every run starts from an initial_maps() split,
-// minimises the CollageObjective by CMA-ES, then refines the maps to sub-pixel precision by ICP;
-// of all these candidates, the one whose rendered attractor overlaps L best (IoU) wins.
+// Fits N maps to `target` (a working raster). Initialisation::moments: every run starts from a
+// moment-matched split, minimises the CollageObjective by CMA-ES, then refines the maps to
+// sub-pixel precision by ICP. Initialisation::search: the searched maps are pooled; runs choose
+// N of them and move one map at a time on the collage objective (combine.h), the best run is
+// refined by CMA-ES and ICP, and last the maps are moved on the attractor's picture W^k(L)
+// (CollageObjective::iterated). Of all candidates, the one whose rendered attractor overlaps L
+// best (IoU) wins.
+//   auto result = fit(working_raster(load_target("hand.png")), {.maps = 10});
 // Throws Error{invalid_argument} for N outside 1..32 or above the number of pixels of L.
 FitResult fit(const cv::Mat& target, const FitOptions& options = {});
 

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <fmt/format.h>
+#include <opencv2/imgproc.hpp>
 
 #include "collage/collage.h"
 #include "collage/distance.h"
@@ -150,16 +152,16 @@ void assign(const std::vector<Point>& pts, const std::vector<Point>& centres,
   }
 }
 
-std::vector<int> labels_of(const cv::Mat& target, const std::vector<Point>& pts, int n,
-                           const InitOptions& options) {
-  const int size = target.cols;
+// Labels 0..n−1 of `pts` by the split and Lloyd's iterations.
+std::vector<int> split_points(const std::vector<Point>& pts, int n, int size,
+                              const InitOptions& options, std::uint64_t seed) {
   std::vector<int> label(pts.size(), 0);
   std::vector<Point> centres;
   if (options.split == Split::principal_axes) {
     split_principal_axes(pts, n, size, label);
     for (int k = 0; k < n; ++k) centres.push_back(moments(pts, label, k, size).mean);
   } else {
-    centres = kmeans_plus_plus_seeds(pts, n, options.seed);
+    centres = kmeans_plus_plus_seeds(pts, n, seed);
     assign(pts, centres, label);
   }
   for (int it = 0; it < options.lloyd_iterations; ++it) {
@@ -171,6 +173,90 @@ std::vector<int> labels_of(const cv::Mat& target, const std::vector<Point>& pts,
     assign(pts, centres, label);
   }
   return label;
+}
+
+// Component (8-connected, 0-based, in order of first pixel) of each pixel of L, in the order of
+// plane_points.
+std::vector<int> component_of(const cv::Mat& target, int& count) {
+  cv::Mat labels;
+  count = cv::connectedComponents(target, labels, 8, CV_32S) - 1;
+  std::vector<int> first_seen(static_cast<std::size_t>(count) + 1, -1);
+  std::vector<int> out;
+  int next = 0;
+  for (int r = 0; r < target.rows; ++r)
+    for (int c = 0; c < target.cols; ++c)
+      if (target.at<std::uint8_t>(r, c)) {
+        int& id = first_seen[static_cast<std::size_t>(labels.at<int>(r, c))];
+        if (id < 0) id = next++;
+        out.push_back(id);
+      }
+  return out;
+}
+
+// Parts per component: one for each component that can carry one (the largest first, at most
+// n), the rest by D'Hondt's rule on the areas.
+std::vector<int> allot_parts(const std::vector<long>& area, long total, int n) {
+  std::vector<std::size_t> order(area.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t i, std::size_t j) { return area[i] > area[j]; });
+  std::vector<int> parts(area.size(), 0);
+  int given = 0;
+  for (std::size_t i : order)
+    if (given < n && area[i] * 4 * n >= total) parts[i] = 1, ++given;
+  if (given == 0) parts[order.front()] = 1, given = 1;  // one component holds all the parts
+  for (; given < n; ++given) {
+    std::size_t best = order.front();
+    double quota = -1;
+    for (std::size_t i : order)
+      if (parts[i] > 0 && static_cast<double>(area[i]) / (parts[i] + 1) > quota)
+        quota = static_cast<double>(area[i]) / (parts[i] + 1), best = i;
+    ++parts[best];
+  }
+  return parts;
+}
+
+std::vector<int> split_by_component(const cv::Mat& target, const std::vector<Point>& pts, int n,
+                                    const InitOptions& options) {
+  const int size = target.cols;
+  int count = 0;
+  const std::vector<int> component = component_of(target, count);
+  std::vector<long> area(static_cast<std::size_t>(count), 0);
+  for (int c : component) ++area[static_cast<std::size_t>(c)];
+  const std::vector<int> parts = allot_parts(area, static_cast<long>(pts.size()), n);
+
+  std::vector<int> label(pts.size(), -1);
+  std::vector<Point> centres;
+  int first_label = 0;
+  for (int c = 0; c < count; ++c) {
+    std::vector<Point> own;
+    std::vector<std::size_t> index;
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      if (component[i] == c) own.push_back(pts[i]), index.push_back(i);
+    const int k = std::min(parts[static_cast<std::size_t>(c)], static_cast<int>(own.size()));
+    if (k == 0) continue;
+    const auto sub = split_points(own, k, size, options,
+                                  stream_seed(options.seed, static_cast<std::uint64_t>(c)));
+    for (std::size_t j = 0; j < own.size(); ++j) label[index[j]] = first_label + sub[j];
+    for (int m = 0; m < k; ++m) centres.push_back(moments(own, sub, m, size).mean);
+    first_label += k;
+  }
+  // Components without a part of their own join the part whose centre is nearest.
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    if (label[i] < 0) {
+      double best = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < centres.size(); ++k) {
+        const double d = std::hypot(pts[i].x - centres[k].x, pts[i].y - centres[k].y);
+        if (d < best) best = d, label[i] = static_cast<int>(k);
+      }
+    }
+  return label;
+}
+
+std::vector<int> labels_of(const cv::Mat& target, const std::vector<Point>& pts, int n,
+                           const InitOptions& options) {
+  if (options.by_component) return split_by_component(target, pts, n, options);
+  return split_points(pts, n, target.cols, options, options.seed);
 }
 
 void check(const cv::Mat& target, int n) {

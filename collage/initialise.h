@@ -22,10 +22,16 @@ struct InitOptions {
   Split split = Split::principal_axes;
   std::uint64_t seed = 1;    // k-means++ only
   int lloyd_iterations = 8;  // k-means refinement of the parts after the split
+  // Multi-part shapes: give each connected component (8-connected) of L its own parts — one
+  // each, the rest in proportion to their areas (D'Hondt) — and split each component on its own,
+  // so that no part straddles a gap. A component below |L| / (4 N) pixels, or beyond the N
+  // largest, is too small to carry a part of its own: its pixels join the nearest part (that
+  // part's map has to cover it). Off: L is split as one set of pixels.
+  bool by_component = false;
 };
 
 // Labels 0..N−1 of L's pixels (CV_32SC1 of the target's size, −1 outside L): the split, then
-// Lloyd's k-means iterations on pixel coordinates.
+// Lloyd's k-means iterations on pixel coordinates (within each component when by_component).
 cv::Mat partition(const cv::Mat& target, int n, const InitOptions& options = {});
 
 // N maps of the IFS plane (working raster convention, target.h), one per part: f_n(x) =

@@ -34,7 +34,8 @@ struct CmaesOptions {
   int threads = 0;  // candidates of a generation are evaluated in parallel; 0 = all cores
   // Called after every generation (on the calling thread).
   std::function<void(const CmaesProgress&)> progress;
-  CancelToken cancel;  // polled per generation: Error{interrupted} on a stop request
+  // Polled before every generation; a stop request throws Error{interrupted}.
+  CancelToken cancel;
 };
 
 struct CmaesResult {

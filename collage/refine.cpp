@@ -72,6 +72,8 @@ std::vector<AffineMap> refine_icp(const cv::Mat& target, std::vector<AffineMap> 
   cv::findNonZero(target, l_pixels);
 
   for (int round = 0; round < options.iterations; ++round) {
+    options.cancel.check("fit");
+    if (std::chrono::steady_clock::now() >= options.deadline) break;
     std::vector<Pairs> pairs(maps.size());
     // Image points binned by pixel: the one nearest the pixel's centre stands for the pixel.
     cv::Mat occupied(n, n, CV_8UC1, cv::Scalar(0));

@@ -4,17 +4,23 @@
 // that. Least squares over thousands of point pairs finds each map to a small fraction of a pixel.
 #pragma once
 
+#include <chrono>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
 #include "ifs/affine_map.h"
+#include "ifs/cancel.h"
 
 namespace ifsfx::collage {
 
 struct RefineOptions {
   int iterations = 30;       // ICP rounds (each: pair the points, then solve per map)
   double max_factor = 0.97;  // a map whose solution reaches this contraction keeps its old value
+  // No round starts at or after this time (the rounds done are kept). The default never comes.
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  // Polled before every round; a stop request throws Error{interrupted}.
+  CancelToken cancel;
 };
 
 // Refines `maps` against `target` (a working raster, target.h). Each round pairs points both

@@ -9,10 +9,14 @@
 #include "collage/distance.h"
 #include "collage/fit.h"
 #include "ifs/error.h"
+#include "tests/collage/test_shapes.h"
 #include "tests/common/known_ifs.h"
 
 namespace ifsfx::collage {
 namespace {
+
+using testing::framed_square;
+using testing::quadrant_maps;
 
 // The filled equilateral triangle of side 1, base on y = 0 (the Sierpinski triangle's hull), as a
 // working raster: the pixels whose centres lie inside it.
@@ -70,6 +74,8 @@ TEST(collage, report_brackets_the_hausdorff_distance_to_the_attractor) {
   EXPECT_NEAR(r.upper_bound, 0.2887, 2 * tolerance);
   EXPECT_GE(r.hausdorff, r.lower_bound);
   EXPECT_LE(r.hausdorff, r.upper_bound);
+  EXPECT_TRUE(r.bound_holds());
+  EXPECT_DOUBLE_EQ(r.raster_error, std::sqrt(0.5) / 128);
   EXPECT_NEAR(r.hausdorff, std::sqrt(3.0) / 12, tolerance);
 }
 
@@ -110,20 +116,6 @@ TEST(collage, quadrant_maps_tile_the_square) {
   EXPECT_NEAR(t.overlap, 0, 1e-12);
 }
 
-// The maps of [1/8, 7/8]² onto its four quadrants, and that square as a 64×64 raster.
-cv::Mat framed_square() {
-  cv::Mat square(64, 64, CV_8UC1, cv::Scalar(0));
-  square(cv::Rect(8, 8, 48, 48)).setTo(255);
-  return square;
-}
-std::vector<AffineMap> quadrant_maps() {
-  std::vector<AffineMap> maps;
-  for (double y : {0.125, 0.5})
-    for (double x : {0.125, 0.5})
-      maps.push_back(rectangle_map(0.125, 0.125, 0.875, 0.875, x, y, x + 0.375, y + 0.375));
-  return maps;
-}
-
 TEST(collage, objective_prefers_the_tiling_to_perturbed_maps) {
   const CollageObjective objective(framed_square());
   const auto quadrants = quadrant_maps();
@@ -138,6 +130,48 @@ TEST(collage, objective_prefers_the_tiling_to_perturbed_maps) {
   EXPECT_GT(objective(expansive), 1.0) << "a map with factor ≥ 0.97 hits the wall";
 }
 
+TEST(collage, footprints_match_a_plain_reference) {
+  // W(L) and the spill of the objective, by the definitions, one image point at a time.
+  const cv::Mat l = filled_triangle(48);
+  const std::vector<AffineMap> maps = {{0.5, 0.1, -0.05, 0.45, 0.02, 0.01},
+                                       {-0.4, 0, 0, 0.5, 0.9, 0.3},
+                                       {0.3, -0.3, 0.3, 0.3, 0.6, -0.2}};  // partly off L
+  const CollageObjective objective(l);
+  const cv::Mat d = distance_to(l);
+  cv::Mat w(48, 48, CV_8UC1, cv::Scalar(0));
+  double spill = 0;
+  long points = 0;
+  for (const auto& f : maps) {
+    const AffineMap m = plane_to_pixel(48).compose(f.compose(*plane_to_pixel(48).inverse()));
+    for (int r = 0; r < 48; ++r)
+      for (int c = 0; c < 48; ++c) {
+        if (!l.at<std::uint8_t>(r, c)) continue;
+        const Point q = m({c + 0.5, r + 0.5});
+        spill += interpolated_distance(d, q.x, q.y);
+        ++points;
+        const int qc = static_cast<int>(std::floor(q.x)), qr = static_cast<int>(std::floor(q.y));
+        if (qc >= 0 && qr >= 0 && qc < 48 && qr < 48) w.at<std::uint8_t>(qr, qc) = 255;
+      }
+  }
+  const ObjectiveTerms t = objective.terms(maps);
+  EXPECT_DOUBLE_EQ(t.collage_iou, iou(w, l));
+  EXPECT_NEAR(t.spill, spill / static_cast<double>(points) / 48, 1e-12);
+}
+
+TEST(collage, iterating_a_tiling_keeps_the_tile) {
+  const CollageObjective objective(framed_square());
+  for (int k : {1, 2, 5}) EXPECT_EQ(objective.iterated(quadrant_maps(), k), 0) << k;
+}
+
+TEST(collage, iterating_the_sierpinski_maps_on_the_triangle_empties_it_by_quarters) {
+  // W^k(L) of the filled triangle keeps 3^k of its 4^k sub-triangles: IoU(L, W^k(L)) = (3/4)^k,
+  // up to the raster (whose rounding fattens the small triangles of later steps a little).
+  const CollageObjective objective(filled_triangle(128));
+  const auto maps = testing::sierpinski_triangle().maps;
+  for (int k : {1, 2}) EXPECT_NEAR(1 - objective.iterated(maps, k), std::pow(0.75, k), 0.03) << k;
+  EXPECT_LT(objective.iterated(maps, 2), objective.iterated(maps, 3));
+}
+
 TEST(collage, bad_inputs_are_errors) {
   const cv::Mat empty(16, 16, CV_8UC1, cv::Scalar(0));
   const std::vector<AffineMap> one = {{0.5, 0, 0, 0.5, 0, 0}};
@@ -147,6 +181,8 @@ TEST(collage, bad_inputs_are_errors) {
   const std::vector<AffineMap> nan = {{std::nan(""), 0, 0, 0.5, 0, 0}};
   EXPECT_THROW(collage_distance(l, nan), Error);
   EXPECT_THROW(CollageObjective(cv::Mat(16, 20, CV_8UC1, cv::Scalar(255))), Error);
+  EXPECT_THROW(CollageObjective(l).iterated(one, 0), Error);
+  EXPECT_THROW(CollageObjective(l).footprint(nan[0]), Error);
 }
 
 }  // namespace
