@@ -13,5 +13,6 @@ void add_fit_command(CLI::App& app);      // fit an IFS to a shape (collage theo
 void add_texture_command(CLI::App& app);  // render a superIFS texture or texture sequence
 void add_cam_command(CLI::App& app);      // live camera kaleidoscope over V4L2
 void add_filter_command(CLI::App& app);   // fractal video filter on movie files
+void add_farm_command(CLI::App& app);     // shard filter/texture over a Slurm cluster
 
 }  // namespace ifsfx::app

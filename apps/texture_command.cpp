@@ -14,6 +14,7 @@
 #include "ifs/image_io.h"
 #include "superifs/superifs_file.h"
 #include "superifs/texture.h"
+#include "video/pipeline.h"
 
 namespace ifsfx::app {
 namespace {
@@ -30,6 +31,7 @@ struct TextureArgs {
   std::uint64_t seed = 1;
   int threads = 0;
   int frames = 1;
+  std::string frame_range;  // farm shards: write only frames START:END of the sequence
   int crossfade = 1;
   int bits = 8;
   bool quiet = false;
@@ -101,8 +103,15 @@ void run_texture(const TextureArgs& args) {
     return write;
   };
 
+  // A farm shard writes its own frames; each is a pure function of its index (map_at).
+  int first = 0, last = args.frames - 1;
+  if (!args.frame_range.empty()) {
+    const video::FrameRange range = video::parse_frame_range(args.frame_range, "--frame-range");
+    first = static_cast<int>(std::min<std::int64_t>(range.first, args.frames));
+    if (range.last >= 0) last = static_cast<int>(std::min<std::int64_t>(range.last, last));
+  }
   // Frame j shows step s = j / K of the sequence crossfaded towards step s + 1 by (j mod K) / K.
-  for (int frame = 0; frame < args.frames; ++frame) {
+  for (int frame = first; frame <= last; ++frame) {
     const StepPosition position = position_of_frame(frame, args.crossfade);
     write_image(path_of(frame), textures.frame_at(position),
                 metadata(textures.burn_in() + static_cast<int>(position.step)));
@@ -166,6 +175,10 @@ void add_texture_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({8, 16}));
   cmd->add_flag("-q,--quiet", args->quiet, "Do not print the summary line");
+  // Written by `ifsfx farm texture` into its shards' scripts.
+  cmd->add_option("--frame-range", args->frame_range,
+                  "Write only frames START:END (from 0) of the --frames sequence")
+      ->group("");
   cmd->callback([args] { run_texture(*args); });
 }
 
