@@ -411,7 +411,7 @@ void add_farm_command(CLI::App& app) {
                   "and a join job (afterok) that concatenates their segments by stream copy, "
                   "with the input's audio, into OUTPUT. The job folder is OUTPUT.farm/. Every "
                   "other option is `ifsfx filter`'s, handed on to each shard (same settings and "
-                  "seed: the frames equal one run's). {}",
+                  "seed: the frames equal one run's; `ifsfx filter --help` lists them). {}",
                   shared_paths_note));
   filter->add_option("input", filter_args->input, "Input movie or image sequence (absolute)")
       ->required();
