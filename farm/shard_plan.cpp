@@ -53,6 +53,10 @@ std::filesystem::path join_log(const std::filesystem::path& folder) {
 
 void write_plan(const FarmPlan& plan) {
   std::error_code ec;
+  // A new plan starts clean: an earlier job's done markers, segments and logs would be taken for
+  // this one's (a stale segment joined into the output).
+  for (const char* stale : {"logs", "segments", "done", "jobs.txt"})
+    std::filesystem::remove_all(plan.folder / stale, ec);
   for (const char* sub : {"logs", "segments", "done"}) {
     std::filesystem::create_directories(plan.folder / sub, ec);
     if (ec)

@@ -41,7 +41,8 @@ std::filesystem::path shard_log(const std::filesystem::path& folder, std::size_t
 std::filesystem::path join_log(const std::filesystem::path& folder);
 
 // Writes plan.txt (one "key value" line each; a shard as "shard FIRST LAST") and creates the
-// folder's subfolders. Throws Error{io} naming the file.
+// folder's subfolders, removing what an earlier job in the folder left (done markers, segments,
+// logs, job ids). Throws Error{io} naming the file.
 void write_plan(const FarmPlan& plan);
 // Reads `folder`/plan.txt. Throws Error{not_found} when it is missing, Error{parse} naming the
 // file and line for anything else.

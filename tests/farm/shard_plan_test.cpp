@@ -74,6 +74,11 @@ TEST(farm_plan, written_plan_reads_back_with_its_segments_in_the_outputs_contain
   EXPECT_EQ(shards_done(back), std::vector<bool>(4, false));
   std::ofstream(done_marker(back.folder, 1)).put('\n');
   EXPECT_EQ(shards_done(back), (std::vector<bool>{false, true, false, false}));
+  // A new plan in the folder forgets the old job's shards: no stale segment gets joined.
+  std::ofstream(segment_file(back, 1)).put('\n');
+  write_plan(plan);
+  EXPECT_EQ(shards_done(read_plan(plan.folder)), std::vector<bool>(4, false));
+  EXPECT_FALSE(std::filesystem::exists(segment_file(back, 1)));
 }
 
 TEST(farm_plan, bad_line_names_file_and_line) {
