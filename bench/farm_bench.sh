@@ -6,12 +6,14 @@
 # beyond the slowest shard and the join). Starts Slurm with tests/farm/start-local-slurm.sh and stops
 # it at the end. Run as root.
 #
-#   bench/farm_bench.sh [IFSFX] [FRAMES] [SIZE]     defaults: build/release/apps/ifsfx 200 1920x1080
+#   bench/farm_bench.sh [IFSFX] [FRAMES] [SIZE] [LOOPS]
+#     defaults: build/release/apps/ifsfx 200 1920x1080 50 (the large input: the clip LOOPS times)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 ifsfx=$(realpath "${1:-build/release/apps/ifsfx}")
 frames=${2:-200}
 size=${3:-1920x1080}
+loops=${4:-50}
 work=$(mktemp -d /tmp/ifsfx-farm-bench.XXXXXX)
 trap '"$here/../tests/farm/stop-local-slurm.sh" >/dev/null 2>&1; rm -rf "$work"' EXIT
 cd "$work"
@@ -57,10 +59,10 @@ slowest=$(echo "$shard_times" | tr ' ' '\n' | sort -g | tail -1)
 scheduler=$(echo "$farm - $plan - $slowest - $setup - $join" | bc)
 
 # Throughputs, from two sizes so that the fixed costs (process start, probing) drop out: the input
-# and the input ten times over (stream copy). Planning counts frames by demuxing the whole file;
+# and the input LOOPS times over (stream copy). Planning counts frames by demuxing the whole file;
 # seeking to the middle demuxes half of it; the join copies segments cut at a keyframe (timestamps
 # kept, as farm segments keep theirs) and the audio.
-ffmpeg -v error -stream_loop 9 -i in.mp4 -c copy big.mp4
+ffmpeg -v error -stream_loop $((loops - 1)) -i in.mp4 -c copy big.mp4
 join_of() {  # join_of NAME INPUT FRAMES: prints the seconds `ifsfx farm join` takes
   local dir="$work/$1.mp4.farm" half=$(($3 / 2))
   mkdir -p "$dir/segments" "$dir/done" "$dir/logs"
@@ -92,7 +94,7 @@ seek_of() {
   done
   echo "$best"
 }
-big_frames=$((frames * 10))
+big_frames=$((frames * loops))
 small_mb=$in_mb
 big_mb=$(mb "$work/big.mp4")
 join_small=$(join_of js "$work/in.mp4" "$frames")

@@ -9,7 +9,6 @@
 #include <array>
 #include <cerrno>
 #include <cstring>
-#include <regex>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -117,10 +116,12 @@ std::map<int, std::string> queued_array_tasks(const std::string& id) {
   if (r.exit_code != 0) return tasks;  // an id Slurm no longer knows: nothing queued
   std::istringstream lines(r.out);
   std::string job, state;
-  const std::regex task_id(R"((\d+)_(\d+))");
+  const std::string prefix = id + "_";  // "123_4": task 4 of array job 123
   while (lines >> job >> state) {
-    std::smatch m;
-    if (std::regex_match(job, m, task_id) && m[1] == id) tasks[std::stoi(m[2])] = state;
+    if (!job.starts_with(prefix)) continue;
+    const std::string task = job.substr(prefix.size());
+    if (!task.empty() && task.find_first_not_of("0123456789") == std::string::npos)
+      tasks[std::stoi(task)] = state;
   }
   return tasks;
 }
