@@ -6,8 +6,10 @@
 
 #include <fmt/format.h>
 
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "apps/steal_modes.h"
+#include "apps/stop_signals.h"
 #include "ifs/image_io.h"
 #include "ifs/steal_map.h"
 
@@ -26,7 +28,13 @@ struct ApplyArgs {
 
 void run_apply(const ApplyArgs& args) {
   const Rgb background = colour_option(args.background);
-  check_writable_image(args.output);
+  StopSignals signals;
+  WriteOptions write;
+  write.bits = args.bits;
+  write.output.cancel = StopSignals::token();
+  write.output.inputs.add(args.map);
+  write.output.inputs.add(args.image);
+  check_writable_image(args.output, write.output);
   const StealMap map = load_steal_map(args.map);
   const cv::Mat source = read_image(args.image).pixels;
   ApplyOptions options;
@@ -34,8 +42,6 @@ void run_apply(const ApplyArgs& args) {
   options.background = background_scalar(background, source.depth());
   options.threads = args.threads;
   const cv::Mat out = with_coverage_alpha(apply(map, source, options), map.coverage, args.output);
-  WriteOptions write;
-  write.bits = args.bits;
   write_image(args.output, out, write);
 }
 
@@ -55,8 +61,7 @@ void add_apply_command(CLI::App& app) {
                   "Colour off the attractor in formats without alpha (black, white, #rrggbb, "
                   "R,G,B); PNG/TIFF/EXR get a transparent background")
       ->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")
-      ->capture_default_str();
+  add_threads_option(*cmd, args->threads);
   cmd->add_option("--bits", args->bits, "Bits per channel of PNG/TIFF output: 8 or 16")
       ->capture_default_str()
       ->check(CLI::IsMember({8, 16}));

@@ -113,13 +113,11 @@ void run_cam(const CamArgs& args) {
     return;
   }
   const cv::Size size = size_option(args.size);
-  if (args.fps <= 0 || args.fps > 1000) {
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("--fps: must be in (0, 1000] (got {:g})", args.fps));
-  }
   const bool window = args.window || (args.output.empty() && args.record.empty());
   // Fail on a bad output path, pattern or display before the camera is opened and the map
   // computed (but say "no camera" first when there is none).
+  StopSignals signals;  // from here on, Ctrl-C and SIGTERM end the session
+  video::check_output_name(args.record, "--record");
   if (!args.record.empty()) video::resolve_encoder(args.record, args.codec);
   video::check_filter_options({.mix = args.fractal.settings().mix});  // --view, --background, --mix
   try {
@@ -146,9 +144,16 @@ void run_cam(const CamArgs& args) {
             .c_str());
   }
 
+  // The output policy: a recording never replaces an input (the devices, the presets).
+  OutputOptions output;
+  for (const std::string& input :
+       {device, args.output, args.fractal.preset, args.fractal.colouring})
+    add_preset_input(output.inputs, input);
+  if (!args.record.empty()) check_output(args.record, output);
+
   // The starting map first: a preset that does not load fails before any output is opened.
   CamRecording recording(args.record.empty() ? "cam-recording.mkv" : args.record,
-                         !args.record.empty(), args.codec, granted, fps);
+                         !args.record.empty(), args.codec, granted, fps, output);
   Notices notice(args.quiet);
   CamControls controls({.fractal = &args.fractal,
                         .fade_frames = args.fade_frames,
@@ -189,7 +194,6 @@ void run_cam(const CamArgs& args) {
     return true;
   };
 
-  StopSignals signals;
   std::atomic<bool>& stop = StopSignals::stop_flag();
   CameraStats stats;
   try {
@@ -197,9 +201,11 @@ void run_cam(const CamArgs& args) {
         camera, [&](const Frame& frame) { return controls.filter()(frame); }, sinks,
         {.max_frames = args.max_frames, .stop = &stop}, observer);
   } catch (const Error& e) {
-    if (recording.frames() > 0) {
-      throw Error(e.kind(), fmt::format("{}; recording kept: {} ({} frames)", e.what(),
-                                        recording.path().string(), recording.frames()));
+    // A fault ends the recording as a partial movie beside its target (left as it was).
+    if (!recording.partial().empty()) {
+      throw Error(e.kind(), fmt::format("{}; recording kept: {} ({} frames; {} left as it was)",
+                                        e.what(), recording.partial().string(), recording.frames(),
+                                        recording.path().string()));
     }
     throw;
   }
@@ -235,7 +241,9 @@ void add_cam_command(CLI::App& app) {
                   "Camera device node (default: the first V4L2 capture device)");
   cmd->add_option("--size", args->size, "Requested capture size WxH (the camera may grant another)")
       ->capture_default_str();
-  cmd->add_option("--fps", args->fps, "Requested frame rate")->capture_default_str();
+  cmd->add_option("--fps", args->fps, "Requested frame rate")
+      ->capture_default_str()
+      ->check(number_in(0, 1000, true));
   cmd->add_option("--format", args->format,
                   "Capture pixel format: yuyv, mjpeg, nv12, yuv420, uyvy, rgb24, bgr24 "
                   "(default: the best the camera offers at --size and --fps)");
@@ -244,7 +252,7 @@ void add_cam_command(CLI::App& app) {
       ->check(CLI::Range(2, 32));
   cmd->add_option("--max-frames", args->max_frames, "Stop after N frames (0 = until quit)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   cmd->add_option("-o,--output", args->output,
                   "V4L2 output device, e.g. a v4l2loopback node /dev/video10 (virtual webcam)");
   cmd->add_option("--output-format", args->output_format,

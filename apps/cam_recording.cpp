@@ -8,8 +8,13 @@
 namespace ifsfx::app {
 
 CamRecording::CamRecording(std::filesystem::path first, bool exact, std::string codec,
-                           cv::Size size, double fps)
-    : first_(std::move(first)), exact_(exact), codec_(std::move(codec)), size_(size), fps_(fps) {}
+                           cv::Size size, double fps, OutputOptions output)
+    : first_(std::move(first)),
+      exact_(exact),
+      codec_(std::move(codec)),
+      size_(size),
+      fps_(fps),
+      output_(std::move(output)) {}
 
 void CamRecording::start() {
   if (file_) return;
@@ -23,6 +28,7 @@ void CamRecording::start() {
   video::FileSinkOptions o;
   o.codec = codec_;
   o.size = size_;
+  o.output = output_;
   // A camera's rate is usually whole (30) or NTSC-like (29.97): keep it exact either way.
   o.frame_rate = video::rate_from_fps(fps_);
   file_ = std::make_unique<video::FileSink>(p, o);
@@ -36,6 +42,14 @@ void CamRecording::stop() {
   frames_ = file_->frames_written();
   auto file = std::move(file_);
   file->close();
+}
+
+std::filesystem::path CamRecording::abandon() noexcept {
+  if (!file_) return {};
+  frames_ = file_->frames_written();
+  partial_ = file_->abandon();
+  file_.reset();
+  return partial_;
 }
 
 void CamRecording::write(const video::Frame& frame) {

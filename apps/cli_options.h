@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cctype>
+#include <cmath>
 #include <optional>
 #include <string>
 
@@ -11,7 +12,10 @@
 
 #include <fmt/format.h>
 
+#include "ifs/chaos_game.h"
 #include "ifs/error.h"
+#include "ifs/output_file.h"
+#include "ifs/parallel.h"
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"
 #include "ifs/view.h"
@@ -45,6 +49,61 @@ CLI::Validator choice(const Map& names) {
         return {};
       },
       "");
+}
+
+// A check for a number option: a finite number in [low, high] (or (low, high] with
+// `above_low`), with a plain error naming the option: "--margin: must be a number in [0, 10]
+// (got nan)". CLI11's own Range lets NaN through.
+inline CLI::Validator number_in(double low, double high, bool above_low = false) {
+  return CLI::Validator(
+      [=](std::string& text) -> std::string {
+        double value = 0;
+        try {
+          std::size_t used = 0;
+          value = std::stod(text, &used);
+          if (used != text.size()) return "expected a number (got '" + text + "')";
+        } catch (const std::exception&) {
+          return "expected a number (got '" + text + "')";
+        }
+        const bool inside =
+            std::isfinite(value) && (above_low ? value > low : value >= low) && value <= high;
+        if (inside) return {};
+        return fmt::format("must be a number in {}{:g}, {:g}] (got {})", above_low ? "(" : "[", low,
+                           high, text);
+      },
+      "");
+}
+
+// A check for a whole-number option that must not be negative (a seed, a count): CLI11 would
+// wrap "-1" into an unsigned seed, and its own NonNegativeNumber prints the largest double.
+inline CLI::Validator not_negative() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        if (text.find_first_not_of(" \t") != std::string::npos &&
+            text[text.find_first_not_of(" \t")] == '-')
+          return "must be 0 or more (got " + text + ")";
+        return {};
+      },
+      "");
+}
+
+// --threads, the same for every command: 0 = all cores, at most kMaxThreads (more would only
+// multiply per-thread buffers and a codec's per-thread frames).
+inline CLI::Option* add_threads_option(CLI::App& cmd, int& threads) {
+  return cmd
+      .add_option("--threads", threads,
+                  fmt::format("Worker threads, 0 = all cores (at most {})", kMaxThreads))
+      ->capture_default_str()
+      ->check(CLI::Range(0, kMaxThreads));
+}
+
+// Adds the file a preset spec names, if any, to `inputs`: "my.toml", "classics.ifs:coral" (the
+// file before the last ':'); a shipped preset's name names no file.
+inline void add_preset_input(InputFiles& inputs, const std::string& spec) {
+  if (spec.empty()) return;
+  inputs.add(spec);
+  if (const auto colon = spec.rfind(':'); colon != std::string::npos)
+    inputs.add(spec.substr(0, colon));
 }
 
 // "WxH", checked (1..32768 a side).

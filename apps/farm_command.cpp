@@ -10,12 +10,15 @@
 
 #include <fmt/format.h>
 
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "apps/filter_options.h"
+#include "apps/stop_signals.h"
 #include "farm/farm_job.h"
 #include "farm/segment_join.h"
 #include "farm/shard_plan.h"
 #include "ifs/error.h"
+#include "ifs/output_file.h"
 #include "superifs/superifs_file.h"
 #include "video/file_sink.h"
 #include "video/file_source.h"
@@ -150,6 +153,11 @@ void run_farm_filter(const FarmArgs& args, const std::vector<std::string>& extra
     throw Error(ErrorKind::invalid_argument,
                 "farm filter: --preview, --segment and a second -o are not for farm jobs");
   const FilterArgs filter = parse_filter_options(extra);
+  StopSignals signals;  // Ctrl-C and SIGTERM: the checks and the count stop, nothing is submitted
+  // The output policy, checked before anything is planned (the join applies it again).
+  OutputOptions policy{.cancel = StopSignals::token()};
+  policy.inputs.add(args.input);
+  check_output(args.output, policy);
   // The output's encoder and frame timing, settled here so that every segment is encoded alike
   // (in Matroska) and the join can copy them into the output's container.
   const std::string encoder = video::resolve_encoder(args.output, filter.codec);
@@ -172,6 +180,7 @@ void run_farm_filter(const FarmArgs& args, const std::vector<std::string>& extra
   video::FrameRange range =
       args.frames.empty() ? video::FrameRange{} : video::parse_frame_range(args.frames);
   const std::int64_t last = range.last < 0 ? frames - 1 : std::min(range.last, frames - 1);
+  policy.cancel.check("farm filter");
   FarmPlan plan;
   plan.kind = JobKind::filter;
   plan.folder = farm::job_folder_for(args.output);
@@ -226,6 +235,11 @@ void run_farm_texture(const FarmArgs& args, const std::vector<std::string>& extr
   // A superIFS named by path must be seen by the nodes too; a shipped name is found anywhere.
   if (args.input.find('/') != std::string::npos) require_absolute(args.input, "SUPERPRESET");
   load_superifs(args.input);  // a bad one fails here
+  StopSignals signals;
+  OutputOptions policy{.cancel = StopSignals::token()};
+  add_preset_input(policy.inputs, args.input);
+  check_output(video::sequence_path(args.output, 1), policy);
+  policy.cancel.check("farm texture");
 
   FarmPlan plan;
   plan.kind = JobKind::texture;
@@ -255,7 +269,17 @@ void run_farm_texture(const FarmArgs& args, const std::vector<std::string>& extr
 // naming the shards that failed and their logs.
 void wait_and_report(const FarmPlan& plan, const farm::Submission& ids) {
   const std::string last = ids.join.empty() ? ids.array : ids.join;
-  const std::optional<farm::JobEnd> end = farm::wait_for_job(last);
+  std::optional<farm::JobEnd> end;
+  try {
+    end = farm::wait_for_job(last, 1.0, StopSignals::token());
+  } catch (const Error& e) {
+    if (e.kind() != ErrorKind::interrupted) throw;
+    throw Error(ErrorKind::interrupted,
+                fmt::format("farm: stopped waiting; the job goes on in Slurm (`ifsfx farm status "
+                            "{}`; scancel {}{}{} cancels it)",
+                            plan.folder.string(), ids.array,
+                            ids.array.empty() || ids.join.empty() ? "" : " ", ids.join));
+  }
   const farm::JobStatus status = farm::job_status(plan);
   std::string failed;
   for (std::size_t i = 0; i < status.shards.size(); ++i)
@@ -343,6 +367,7 @@ void run_status(const fs::path& folder) {
 }
 
 void run_resume(const fs::path& folder, const FarmArgs& args) {
+  StopSignals signals;  // for --wait
   const FarmPlan plan = farm::read_plan(fs::absolute(folder));
   const farm::JobStatus status = farm::job_status(plan);
   std::vector<std::size_t> missing;
@@ -380,6 +405,10 @@ void run_join(const fs::path& folder) {
     options.segments.push_back(farm::segment_file(plan, i));
   }
   options.output = plan.output;
+  StopSignals
+      signals;  // scancel sends SIGTERM: the temporary file is removed, OUTPUT kept as it was
+  options.policy.cancel = StopSignals::token();
+  options.policy.inputs.add(plan.input);
   video::silence_libav_log();
   // The audio a single run would carry: a movie input's, placed by its clock.
   if (!video::is_sequence_pattern(plan.input)) {

@@ -80,13 +80,6 @@ std::unique_ptr<video::FrameSource> open_source(const FilterArgs& args) {
       args.input, video::FileSourceOptions{.threads = args.fractal.threads});
 }
 
-void check_distinct(const std::string& input, const std::string& output) {
-  std::error_code ec;
-  if (std::filesystem::exists(output, ec) && std::filesystem::equivalent(input, output, ec))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("{}: the output would overwrite the input", output));
-}
-
 void run_filter(const FilterArgs& args) {
   if (args.preview == !args.output.empty())
     throw Error(ErrorKind::invalid_argument,
@@ -95,6 +88,7 @@ void run_filter(const FilterArgs& args) {
   const video::FrameRange range =
       args.frames.empty() ? video::FrameRange{} : video::parse_frame_range(args.frames);
   // Cheap checks of the output first: an unusable output fails before any decoding.
+  video::check_output_name(args.output);
   const bool movie_output = !args.output.empty() && !video::is_sequence_pattern(args.output);
   if (movie_output) video::resolve_timing(args.output, args.codec, args.timing);
   if (args.segment && !movie_output)
@@ -103,6 +97,7 @@ void run_filter(const FilterArgs& args) {
     throw Error(ErrorKind::invalid_argument,
                 "--fps-mode: only a movie output has frame times (got an image sequence or "
                 "--preview)");
+  StopSignals signals;  // from here on, Ctrl-C and SIGTERM stop the command within 0.5 s
 
   // The fractal is loaded and checked before any decoding; its maps wait for the frame size.
   video::FractalSettings settings = args.fractal.settings();
@@ -132,7 +127,16 @@ void run_filter(const FilterArgs& args) {
   }
   const video::Rational rate = source->frame_rate();
 
-  StopSignals signals;
+  // The output policy: no output file replaces an input (the movie, every file of an image
+  // sequence, the presets), whatever its spelling or links.
+  OutputOptions output;
+  if (const auto* sequence = dynamic_cast<const video::ImageSequenceSource*>(source.get()))
+    for (const auto& file : sequence->files()) output.inputs.add(file);
+  else
+    output.inputs.add(args.input);
+  add_preset_input(output.inputs, args.fractal.preset);
+  add_preset_input(output.inputs, args.fractal.colouring);
+  if (args.animate == Animate::superifs) add_preset_input(output.inputs, args.superifs);
   std::unique_ptr<video::FrameSink> sink;
   video::FileSink* movie = nullptr;
   if (args.preview) {
@@ -140,9 +144,15 @@ void run_filter(const FilterArgs& args) {
         fmt::format("ifsfx filter: {}", args.input),
         video::WindowSinkOptions{.fps = rate.value(), .stop = &StopSignals::stop_flag()});
   } else {
-    check_distinct(args.input, args.output);
     if (video::is_sequence_pattern(args.output)) {
-      sink = std::make_unique<video::ImageSequenceSink>(args.output);
+      const std::int64_t count = source->frame_count();
+      const std::int64_t expected =
+          count < 0
+              ? -1
+              : std::max<std::int64_t>(
+                    0, (range.last < 0 ? count : std::min(count, range.last + 1)) - range.first);
+      sink = std::make_unique<video::ImageSequenceSink>(
+          args.output, video::ImageSequenceSinkOptions{.expected = expected, .output = output});
     } else {
       video::FileSinkOptions o;
       o.codec = args.codec;
@@ -151,6 +161,7 @@ void run_filter(const FilterArgs& args) {
       o.time_base = source->time_base();
       o.timing = args.timing;
       o.threads = args.fractal.threads;
+      o.output = output;
       o.source_clock = args.segment;
       // A farm segment carries no audio: the join copies it once, from the input, as one run does.
       if (const auto* file = dynamic_cast<const video::FileSource*>(source.get());
@@ -177,14 +188,20 @@ void run_filter(const FilterArgs& args) {
     options.progress = ProgressPrinter(tty);
     options.progress_interval = tty ? 0.25 : 2.0;
   }
-  // Ctrl-C while the steal map was computed: nothing to keep (the sink removes its .part file).
+  // Ctrl-C while the steal map was computed is honoured by the map's own polling; one that came
+  // just after it ends here, before any frame (the sink removes its temporary file).
   if (StopSignals::stop_flag())
     throw Error(ErrorKind::interrupted, "interrupted before the first frame; nothing written");
   const video::PipelineResult result = video::run_pipeline(*source, *sink, filter, options);
   const std::string where = args.preview ? std::string("the preview") : args.output;
   if (result.interrupted && !args.preview)
-    throw Error(ErrorKind::interrupted,
-                fmt::format("interrupted: {} frames written to {}", result.frames_written, where));
+    throw Error(
+        ErrorKind::interrupted,
+        result.partial.empty()
+            ? fmt::format("interrupted after {} frames; nothing written ({} left as it was)",
+                          result.frames_written, where)
+            : fmt::format("interrupted: {} frames kept in {} ({} left as it was)",
+                          result.frames_written, result.partial.string(), where));
   // A constant-rate output repeats and drops frames by their times: say how many, as ffmpeg does.
   std::string retimed;
   if (movie != nullptr && movie->timing() == video::FrameTiming::constant &&
@@ -216,9 +233,11 @@ void add_filter_command(CLI::App& app) {
                   "turned upright before the filter, and the output is upright with no rotation "
                   "of its own")
       ->required();
-  cmd->add_option("-o,--output", args->output,
-                  "Output movie (.mp4, .mkv, .avi, ...) or image sequence pattern; written as "
-                  "OUTPUT.part and renamed at the end");
+  cmd->add_option(
+      "-o,--output", args->output,
+      "Output movie (.mp4, .mkv, .avi, ...) or image sequence pattern (frame_%04d.png); "
+      "put in place when complete, never over an input; a run that fails or is "
+      "stopped keeps its frames in OUTPUT-STEM.partial.EXT");
   cmd->add_flag("--preview", args->preview,
                 "Show the result in a window instead of writing a file");
   add_filter_options(*cmd, args);

@@ -24,7 +24,8 @@ void add_filter_options(CLI::App& cmd, const std::shared_ptr<FilterArgs>& args) 
                  "Video encoder (libx264, h264, mpeg4, ffv1, ...; default by container: "
                  ".mp4/.mkv H.264 CRF 23, .avi MPEG-4 part 2)");
   cmd.add_option("--fps", args->fps, "Frame rate of an image sequence input")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(number_in(0, 1000, true));
   cmd.add_flag("--skip-gaps", args->skip_gaps,
                "Image sequence input: go on past missing numbers (frame_0003 between 0002 and "
                "0004), holding the frame before for the missing time; without it a gap is an "

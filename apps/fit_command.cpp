@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -15,12 +14,16 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "apps/cli_options.h"
 #include "apps/commands.h"
+#include "apps/stop_signals.h"
 #include "collage/fit.h"
 #include "collage/target.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
+#include "ifs/output_file.h"
 #include "ifs/preset.h"
+#include "ifs/utf8.h"
 #include "ifs/view.h"
 
 namespace ifsfx::app {
@@ -81,7 +84,7 @@ std::string to_fractint(const Ifs& ifs, const std::string& comment) {
   for (char c : ifs.name)
     name += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
   if (name.empty()) name = "fitted";
-  std::string out = fmt::format("{} {{ ; {}\n", name, comment);
+  std::string out = fmt::format("{} {{ ; {}\n", name, valid_utf8(comment));
   const auto p = effective_probabilities(ifs);
   for (std::size_t i = 0; i < ifs.maps.size(); ++i) {
     const auto& m = ifs.maps[i];
@@ -89,35 +92,6 @@ std::string to_fractint(const Ifs& ifs, const std::string& comment) {
                        m.e, m.f, p[i]);
   }
   return out + "}\n";
-}
-
-// Writes `text` to `path` through a temporary file in the same folder and a rename, so that an
-// interrupted run never leaves half a preset.
-void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
-  std::filesystem::path tmp = path;
-  tmp += ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw Error(ErrorKind::io, fmt::format("{}: cannot open for writing", tmp.string()));
-    out << text;
-    out.close();
-    if (!out) throw Error(ErrorKind::io, fmt::format("{}: write failed", tmp.string()));
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::filesystem::remove(tmp, ec);
-    throw Error(ErrorKind::io, fmt::format("{}: cannot write: {}", path.string(), ec.message()));
-  }
-}
-
-// Checks up front that the preset can be written (before a fit of many seconds).
-void check_writable_text(const std::filesystem::path& path) {
-  const auto folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  std::error_code ec;
-  if (!std::filesystem::is_directory(folder, ec))
-    throw Error(ErrorKind::io,
-                fmt::format("{}: the folder {} does not exist", path.string(), folder.string()));
 }
 
 // Target, collage W(L) and attractor A side by side. In the last two, grey is L alone, white
@@ -146,8 +120,18 @@ double finite_or_nan(double x) {
 void run_fit(const FitArgs& args) {
   const std::filesystem::path output = args.output;
   const PresetFormat format = preset_format(output);
-  check_writable_text(output);
-  if (!args.preview.empty()) check_writable_image(args.preview);
+  // The output policy: neither output replaces the target image, and they differ.
+  StopSignals signals;
+  OutputOptions policy{.cancel = StopSignals::token()};
+  policy.inputs.add(args.target);
+  check_output(output, policy);
+  if (!args.preview.empty()) {
+    check_writable_image(args.preview, policy);
+    if (same_output(args.preview, output))
+      throw Error(
+          ErrorKind::invalid_argument,
+          fmt::format("--preview {}: must differ from -o (got the same file)", args.preview));
+  }
   if (args.maps < 1 || args.maps > 32)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("-n: the number of maps must be in 1..32 (got {})", args.maps));
@@ -164,7 +148,8 @@ void run_fit(const FitArgs& args) {
   options.max_seconds = args.max_seconds;
   options.max_evaluations = args.max_evaluations;
   options.threads = args.threads;
-  options.name = std::filesystem::path(args.target).stem().string();
+  options.cancel = policy.cancel;
+  options.name = valid_utf8(std::filesystem::path(args.target).stem().string());
   auto last_print = std::chrono::steady_clock::now() - std::chrono::seconds(1);
   if (args.progress)
     options.progress = [&](const collage::FitProgress& p) {
@@ -183,17 +168,20 @@ void run_fit(const FitArgs& args) {
 
   const std::string summary = fmt::format("fitted by ifsfx fit to {}: IoU {:.3f}, s {:.3f}",
                                           args.target, r.iou, r.contraction);
-  write_text_atomically(output, format == PresetFormat::toml ? to_toml(result.ifs, summary)
-                                                             : to_fractint(result.ifs, summary));
-  if (!args.preview.empty()) write_image(args.preview, preview_image(raster, r));
+  write_file(output,
+             format == PresetFormat::toml ? to_toml(result.ifs, summary)
+                                          : to_fractint(result.ifs, summary),
+             policy);
+  if (!args.preview.empty())
+    write_image(args.preview, preview_image(raster, r), {.output = policy});
 
   const bool holds = r.hausdorff <= r.upper_bound;
   if (args.json) {
     nlohmann::json maps = nlohmann::json::array();
     for (const auto& m : result.ifs.maps) maps.push_back(m.coefficients());
     const nlohmann::json report = {
-        {"target", args.target},
-        {"output", args.output},
+        {"target", valid_utf8(args.target)},
+        {"output", valid_utf8(args.output)},
         {"maps", args.maps},
         {"size", raster.cols},
         {"seed", args.seed},
@@ -214,7 +202,8 @@ void run_fit(const FitArgs& args) {
         {"ifs",
          {{"name", result.ifs.name}, {"maps", maps}, {"probabilities", result.ifs.probabilities}}},
     };
-    std::printf("%s\n", report.dump(2).c_str());
+    std::printf("%s\n",
+                report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
     return;
   }
   const double px = 1 / r.pixel;
@@ -254,17 +243,20 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("-n,--maps", args->maps, "Number of affine maps N (1..32)")
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Random seed: the same seed gives the same maps")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(not_negative());
   cmd->add_option("--threshold", args->threshold,
                   "Grey (or alpha) level in [0, 1] between shape and background; default: Otsu "
-                  "(alpha: 0.5)");
+                  "(alpha: 0.5)")
+      ->check(number_in(0, 1));
   cmd->add_flag("--invert", args->invert, "Swap shape and background (light shape, clear alpha)");
   cmd->add_option("--size", args->size, "Working raster S or SxS (pixels, square)")
       ->capture_default_str();
   cmd->add_option("--max-seconds", args->max_seconds,
                   "Stop the search after this many seconds (0: no cap; then the same seed gives "
                   "the same maps on any machine)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(number_in(0, 1e6));
   cmd->add_option("--max-evaluations", args->max_evaluations, "Objective evaluations over all runs")
       ->capture_default_str()
       ->check(CLI::Range(2L, 100000000L));
@@ -272,9 +264,7 @@ void add_fit_command(CLI::App& app) {
                   "Write target, collage and attractor side by side to this image");
   cmd->add_flag("--json", args->json, "Print the report as a JSON object on stdout");
   cmd->add_flag("--progress", args->progress, "Show the objective as it falls (stderr)");
-  cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")
-      ->capture_default_str()
-      ->check(CLI::Range(0, 1024));
+  add_threads_option(*cmd, args->threads);
   cmd->callback([args] { run_fit(*args); });
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "apps/cli_options.h"
+#include "apps/stop_signals.h"
 #include "ifs/error.h"
 
 namespace ifsfx::app {
@@ -21,6 +22,7 @@ video::FractalSettings FractalFilterArgs::settings() const {
   s.drift_speed = drift_speed;
   s.seed = seed;
   s.threads = threads;
+  s.cancel = StopSignals::token();  // Ctrl-C stops a map being computed
   return s;
 }
 
@@ -44,13 +46,15 @@ void add_fractal_filter_options(CLI::App& cmd, FractalFilterArgs& args) {
       ->group(kFractal);
   cmd.add_option("--margin", args.margin, "Auto-framing margin, fraction of the larger side")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 10.0))
+      ->check(number_in(0, 10))
       ->group(kFractal);
   cmd.add_option("--quality", args.quality, "Chaos-game points per output pixel")
       ->capture_default_str()
+      ->check(number_in(0, kMaxQuality, true))
       ->group(kFractal);
   cmd.add_option("--mix", args.mix, "Weight of the original frame blended over the fractal, 0..1")
       ->capture_default_str()
+      ->check(number_in(0, 1))
       ->group(kFractal);
   cmd.add_option("--background", args.background,
                  "Where the attractor does not cover: black, white, original, #rrggbb or R,G,B")
@@ -61,14 +65,17 @@ void add_fractal_filter_options(CLI::App& cmd, FractalFilterArgs& args) {
                  "--animate drift: largest excursion of a map coefficient (translations: "
                  "fraction of the attractor's size)")
       ->capture_default_str()
+      ->check(number_in(0, video::kMaxDriftAmount))
       ->group(kAnimation);
   cmd.add_option("--drift-speed", args.drift_speed,
                  "--animate drift: cycles per second of the slowest drift")
       ->capture_default_str()
+      ->check(number_in(0, video::kMaxDriftSpeed))
       ->group(kAnimation);
   cmd.add_option("--seed", args.seed, "Random seed: the same seed gives the same frames")
-      ->capture_default_str();
-  cmd.add_option("--threads", args.threads, "Worker threads, 0 = all cores")->capture_default_str();
+      ->capture_default_str()
+      ->check(not_negative());
+  add_threads_option(cmd, args.threads);
 }
 
 }  // namespace ifsfx::app

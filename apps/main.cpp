@@ -7,19 +7,24 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/commands.h"
+#include "apps/stop_signals.h"
 #include "ifs/error.h"
 
 namespace {
 
-// Exit codes: 0 success, 1 runtime failure, 2 bad command line or bad input file, 130 interrupted.
+// Exit codes: 0 success, 1 runtime failure, 2 bad command line or bad input file, and for a run
+// stopped by a signal 128 + its number, as a shell reports a process the signal killed: 130 for
+// SIGINT (Ctrl-C), 143 for SIGTERM.
 int exit_code(ifsfx::ErrorKind kind) {
   switch (kind) {
     case ifsfx::ErrorKind::parse:
     case ifsfx::ErrorKind::invalid_ifs:
     case ifsfx::ErrorKind::invalid_argument:
       return 2;
-    case ifsfx::ErrorKind::interrupted:
-      return 130;
+    case ifsfx::ErrorKind::interrupted: {
+      const int signal = ifsfx::app::StopSignals::signal_number();
+      return 128 + (signal > 0 ? signal : SIGINT);
+    }
     default:
       return 1;
   }

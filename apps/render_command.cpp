@@ -8,6 +8,7 @@
 #include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "apps/steal_modes.h"
+#include "apps/stop_signals.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/preset.h"
@@ -80,7 +81,21 @@ void run_render(const RenderArgs& args) {
   const cv::Size size = size_option(args.size);
   check_mode_options(args);
   const Rgb background = colour_option(args.background.empty() ? "black" : args.background);
-  check_writable_image(args.output);
+  // The output policy: no output replaces an input, the two outputs differ, and both are checked
+  // before the long work.
+  StopSignals signals;
+  OutputOptions output{.cancel = StopSignals::token()};
+  add_preset_input(output.inputs, args.preset);
+  add_preset_input(output.inputs, args.colouring);
+  output.inputs.add(args.source);
+  check_writable_image(args.output, output);
+  if (!args.save_map.empty()) {
+    check_output(args.save_map, output);
+    if (same_output(args.save_map, args.output))
+      throw Error(
+          ErrorKind::invalid_argument,
+          fmt::format("--save-map {}: must differ from -o (got the same file)", args.save_map));
+  }
   const IfsPreset preset = load_ifs(args.preset, {.allow_expansive = args.allow_expansive});
 
   RenderOptions options;
@@ -92,6 +107,7 @@ void run_render(const RenderArgs& args) {
   options.brightness = args.brightness;
   options.seed = args.seed;
   options.threads = args.threads;
+  options.cancel = output.cancel;
 
   RenderStats stats;
   cv::Mat image;
@@ -113,13 +129,15 @@ void run_render(const RenderArgs& args) {
                            .exact = args.exact,
                            .save_map = args.save_map,
                            .background = background,
-                           .quiet = args.quiet},
+                           .quiet = args.quiet,
+                           .output = output},
                           args.output, &stats);
       break;
   }
 
   WriteOptions write;
   write.bits = args.bits;
+  write.output = output;
   write.metadata = {
       {"ifsfx:preset", preset.text},
       {"ifsfx:preset_name", preset.ifs.name},
@@ -171,21 +189,25 @@ void add_render_command(CLI::App& app) {
                   "Plane rectangle x0,y0,x1,y1 shown (default: the attractor, auto-framed)");
   cmd->add_option("--margin", args->margin, "Auto-framing margin, fraction of the larger side")
       ->capture_default_str()
-      ->check(CLI::Range(0.0, 10.0));
+      ->check(number_in(0, 10));
   cmd->add_option("--quality", args->quality, "Chaos-game points per output pixel")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(number_in(0, kMaxQuality, true));
   cmd->add_option("--supersample", args->supersample,
                   "Render at K times the size and box-filter down (measure mode)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::Range(1, 16));
   cmd->add_option("--gamma", args->gamma, "Display gamma of the tone map (measure mode)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(number_in(0, 100, true));
   cmd->add_option("--brightness", args->brightness,
                   "k of the log-density tone map, relative to the mean density (measure mode)")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(number_in(0, 1e6, true));
   cmd->add_option("--seed", args->seed, "Random seed: the same seed gives the same image")
-      ->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(not_negative());
+  add_threads_option(*cmd, args->threads);
   cmd->add_option("--bits", args->bits, "Bits per channel of PNG/TIFF output: 8 or 16")
       ->capture_default_str()
       ->check(CLI::IsMember({8, 16}));

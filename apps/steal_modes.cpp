@@ -97,7 +97,9 @@ cv::Mat tops_image(const Ifs& F, cv::Size size, const RenderOptions& options, bo
   tops.quality = options.quality;
   tops.seed = options.seed;
   tops.threads = options.threads;
-  if (!tops.view) tops.view = fit_view(attractor_bounds(F, options.seed), size, options.margin);
+  tops.cancel = options.cancel;
+  if (!tops.view)
+    tops.view = fit_view(attractor_bounds(F, options.seed, options.cancel), size, options.margin);
   std::uint64_t points = 0;
   cv::Mat image = render_tops(F, size, tops, &points);  // BGRA float, alpha = coverage
   cv::Mat coverage;
@@ -131,9 +133,10 @@ cv::Mat steal_image(const Ifs& F, cv::Size size, const RenderOptions& options,
   so.quality = options.quality;
   so.seed = options.seed;
   so.threads = options.threads;
+  so.cancel = options.cancel;
   StealMapStats ss;
   const StealMap map = compute_steal_map(F, G, size, so, &ss);
-  if (!args.save_map.empty()) save(map, args.save_map);
+  if (!args.save_map.empty()) save(map, args.save_map, args.output);
   const cv::Mat coloured = apply(map, source,
                                  {.background = background_scalar(args.background, source.depth()),
                                   .threads = options.threads});

@@ -8,6 +8,7 @@
 #include <opencv2/core.hpp>
 
 #include "ifs/ifs.h"
+#include "ifs/output_file.h"
 #include "ifs/render.h"
 
 namespace ifsfx::app {
@@ -25,7 +26,8 @@ struct StealModeArgs {
   bool exact = false;
   std::string save_map;  // also write the steal map here
   Rgb background;
-  bool quiet = false;  // else print the coverage policy's figures on stdout
+  bool quiet = false;    // else print the coverage policy's figures on stdout
+  OutputOptions output;  // the output policy of the saved map
 };
 
 // `--mode tops`: render_tops, the background made transparent or `background` for `output`.

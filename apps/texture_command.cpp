@@ -5,15 +5,18 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "apps/cli_options.h"
 #include "apps/commands.h"
+#include "apps/stop_signals.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "superifs/superifs_file.h"
 #include "superifs/texture.h"
+#include "video/image_sequence.h"
 #include "video/pipeline.h"
 
 namespace ifsfx::app {
@@ -37,25 +40,6 @@ struct TextureArgs {
   bool quiet = false;
 };
 
-// The path of frame `index` from a printf-style pattern with one %d or %0Nd (as ffmpeg's image
-// sequences); throws Error{invalid_argument} naming -o when there is none.
-std::string frame_path(const std::string& pattern, int index) {
-  const auto percent = pattern.find('%');
-  std::size_t end = percent == std::string::npos ? percent : percent + 1;
-  while (end != std::string::npos && end < pattern.size() && pattern[end] >= '0' &&
-         pattern[end] <= '9')
-    ++end;
-  if (end == std::string::npos || end >= pattern.size() || pattern[end] != 'd' ||
-      pattern.find('%', end) != std::string::npos)
-    throw Error(
-        ErrorKind::invalid_argument,
-        fmt::format("-o: --frames needs a numbered pattern like tex_%04d.png (got {})", pattern));
-  const std::string digits = pattern.substr(percent + 1, end - percent - 1);
-  const int width = digits.empty() ? 0 : std::stoi(digits);
-  return pattern.substr(0, percent) + fmt::format("{:0{}d}", index, width) +
-         pattern.substr(end + 1);
-}
-
 void run_texture(const TextureArgs& args) {
   const cv::Size size = size_option(args.size);
   if (args.frames < 1)
@@ -67,11 +51,31 @@ void run_texture(const TextureArgs& args) {
   if (args.mode == TextureMode::steal && args.source.empty())
     throw Error(ErrorKind::invalid_argument,
                 "--source: steal mode needs a source image to steal colours from");
-  const bool sequence = args.frames > 1;
-  const auto path_of = [&](int frame) {
-    return sequence ? frame_path(args.output, frame + 1) : args.output;
+  // A numbered pattern (tex_%04d.png) numbers the frames from 1, also a single one.
+  video::check_output_name(args.output);
+  const bool numbered = video::is_sequence_pattern(args.output);
+  if (args.frames > 1 && !numbered)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("-o: --frames needs a numbered pattern like tex_%04d.png (got {})",
+                            args.output));
+  const auto path_of = [&](int frame) -> std::filesystem::path {
+    return numbered ? video::sequence_path(args.output, frame + 1)
+                    : std::filesystem::path(args.output);
   };
-  check_writable_image(path_of(0));
+  // A farm shard writes its own frames; each is a pure function of its index (map_at).
+  int first = 0, last = args.frames - 1;
+  if (!args.frame_range.empty()) {
+    const video::FrameRange range = video::parse_frame_range(args.frame_range, "--frame-range");
+    first = static_cast<int>(std::min<std::int64_t>(range.first, args.frames));
+    if (range.last >= 0) last = static_cast<int>(std::min<std::int64_t>(range.last, last));
+  }
+  // The output policy: no frame replaces an input; every name is checked before the burn-in.
+  StopSignals signals;
+  OutputOptions output{.cancel = StopSignals::token()};
+  add_preset_input(output.inputs, args.preset);
+  output.inputs.add(args.source);
+  if (first <= last) check_writable_image(path_of(first), output);
+  for (int frame = first + 1; frame <= last; ++frame) check_output(path_of(frame), output);
   const SuperIfsPreset preset = load_superifs(args.preset);
 
   TextureOptions options;
@@ -81,6 +85,7 @@ void run_texture(const TextureArgs& args) {
   options.mode = args.mode;
   options.seed = args.seed;
   options.threads = args.threads;
+  options.cancel = output.cancel;
   if (!args.source.empty()) options.source = read_image(args.source).pixels;
 
   const auto start = std::chrono::steady_clock::now();
@@ -103,19 +108,18 @@ void run_texture(const TextureArgs& args) {
     return write;
   };
 
-  // A farm shard writes its own frames; each is a pure function of its index (map_at).
-  int first = 0, last = args.frames - 1;
-  if (!args.frame_range.empty()) {
-    const video::FrameRange range = video::parse_frame_range(args.frame_range, "--frame-range");
-    first = static_cast<int>(std::min<std::int64_t>(range.first, args.frames));
-    if (range.last >= 0) last = static_cast<int>(std::min<std::int64_t>(range.last, last));
-  }
   // Frame j shows step s = j / K of the sequence crossfaded towards step s + 1 by (j mod K) / K.
+  // The frames are written to temporary files and put in place together at the end: a run that
+  // fails or is stopped leaves every existing frame file as it was.
+  std::vector<OutputFile> written;
   for (int frame = first; frame <= last; ++frame) {
     const StepPosition position = position_of_frame(frame, args.crossfade);
-    write_image(path_of(frame), textures.frame_at(position),
+    OutputFile file(path_of(frame), output);
+    write_image(file, textures.frame_at(position),
                 metadata(textures.burn_in() + static_cast<int>(position.step)));
+    written.push_back(std::move(file));
   }
+  for (OutputFile& file : written) file.commit();
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!args.quiet)
@@ -138,7 +142,7 @@ void add_texture_command(CLI::App& app) {
       ->required();
   cmd->add_option("-o,--output", args->output,
                   "Output image (.png, .tif, .exr, .jpg); with --frames a pattern like "
-                  "tex_%04d.png, numbered from 1")
+                  "tex_%04d.png (one %d or %0Nd), numbered from 1")
       ->required();
   cmd->add_option("--size", args->size, "Output size WxH in pixels")->capture_default_str();
   cmd->add_option("-V,--buffers", args->count, "V, the number of buffers (V-variability)")
@@ -148,7 +152,7 @@ void add_texture_command(CLI::App& app) {
                   "Burn-in steps; 0 = enough that s^steps x size < 1/8 pixel for the largest "
                   "contraction factor s")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
+      ->check(not_negative());
   cmd->add_option("--buffer", args->buffer, "The buffer shown, 1..V")->capture_default_str();
   const std::map<std::string, TextureMode> modes{{"attractor", TextureMode::attractor},
                                                  {"tops", TextureMode::tops},
@@ -162,9 +166,9 @@ void add_texture_command(CLI::App& app) {
       ->option_text(choices_text(modes, "attractor"));
   cmd->add_option("--source", args->source, "Image colours are stolen from (steal mode)");
   cmd->add_option("--seed", args->seed, "Random seed: the same seed gives the same texture")
-      ->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Worker threads, 0 = all cores")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(not_negative());
+  add_threads_option(*cmd, args->threads);
   cmd->add_option("--frames", args->frames,
                   "Frames to write: a sequence of textures, one per further step")
       ->capture_default_str();

@@ -121,6 +121,7 @@ FitResult fit(const cv::Mat& target, const FitOptions& options) {
   double best_objective = std::numeric_limits<double>::infinity();
   double best_iou = -1;
   for (int run = 0; run < runs; ++run) {
+    options.cancel.check("fit");
     const long evaluations_left = options.max_evaluations - result.evaluations;
     if (evaluations_left < 2) break;
     if (options.max_seconds > 0 && seconds_since_start() >= options.max_seconds) {
@@ -148,6 +149,7 @@ FitResult fit(const cv::Mat& target, const FitOptions& options) {
     cmaes.deadline = run_deadline;
     cmaes.seed = stream_seed(options.seed ^ 0x636f6c6c616765ULL, static_cast<std::uint64_t>(run));
     cmaes.threads = options.threads;
+    cmaes.cancel = options.cancel;
     const long evaluations_before = result.evaluations;
     if (options.progress)
       cmaes.progress = [&](const CmaesProgress& p) {
@@ -166,11 +168,13 @@ FitResult fit(const cv::Mat& target, const FitOptions& options) {
     // Candidates: the searched maps and their ICP refinement. Keep the one whose attractor
     // matches L best: the collage objective guides the search, the attractor is what the user
     // gets.
+    options.cancel.check("fit");
     std::vector<std::vector<AffineMap>> candidates{to_maps(found.x)};
     if (options.refine_iterations > 0)
       candidates.push_back(refine_icp(target, candidates.front(),
                                       {options.refine_iterations, options.objective.max_factor}));
     for (auto& maps : candidates) {
+      options.cancel.check("fit");
       Ifs ifs;
       ifs.name = options.name;
       ifs.maps = std::move(maps);

@@ -14,6 +14,7 @@
 #include <opencv2/core.hpp>
 
 #include "collage/collage.h"
+#include "ifs/cancel.h"
 #include "ifs/ifs.h"
 
 namespace ifsfx::collage {
@@ -70,6 +71,7 @@ struct FitOptions {
   int refine_iterations = 30;
   // Called after every CMA-ES generation on the calling thread (the library never prints).
   std::function<void(const FitProgress&)> progress;
+  CancelToken cancel;  // polled per generation and per run: Error{interrupted} on a stop request
 };
 
 struct FitResult {

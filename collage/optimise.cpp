@@ -138,6 +138,7 @@ CmaesResult minimise_cmaes(const std::function<double(std::span<const double>)>&
   std::vector<std::size_t> order(count);
 
   for (int g = 0;; ++g) {
+    options.cancel.check("fit");
     if (result.evaluations + lambda > options.max_evaluations) break;
     if (std::chrono::steady_clock::now() >= options.deadline) {
       result.deadline_reached = true;

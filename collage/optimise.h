@@ -10,6 +10,8 @@
 #include <span>
 #include <vector>
 
+#include "ifs/cancel.h"
+
 namespace ifsfx::collage {
 
 struct CmaesProgress {
@@ -32,6 +34,7 @@ struct CmaesOptions {
   int threads = 0;  // candidates of a generation are evaluated in parallel; 0 = all cores
   // Called after every generation (on the calling thread).
   std::function<void(const CmaesProgress&)> progress;
+  CancelToken cancel;  // polled per generation: Error{interrupted} on a stop request
 };
 
 struct CmaesResult {

@@ -1,5 +1,6 @@
 #include "farm/farm_job.h"
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <sstream>
@@ -212,12 +213,21 @@ JobStatus job_status(const FarmPlan& plan) {
   return status;
 }
 
-std::optional<JobEnd> wait_for_job(const std::string& id, double poll_seconds) {
+std::optional<JobEnd> wait_for_job(const std::string& id, double poll_seconds, CancelToken cancel) {
+  const std::string what = fmt::format("waiting for Slurm job {}", id);
   for (;;) {
+    cancel.check(what.c_str());
     const std::optional<JobInfo> info = job_info(id);
     if (!info) return std::nullopt;
     if (info->finished()) return JobEnd{info->state, info->exit_code, info->reason};
-    std::this_thread::sleep_for(std::chrono::duration<double>(poll_seconds));
+    // Slept in short slices, so that a stop request is seen soon.
+    const auto until =
+        std::chrono::steady_clock::now() + std::chrono::duration<double>(poll_seconds);
+    while (std::chrono::steady_clock::now() < until) {
+      cancel.check(what.c_str());
+      std::this_thread::sleep_for(std::min<std::chrono::duration<double>>(
+          until - std::chrono::steady_clock::now(), std::chrono::milliseconds(250)));
+    }
   }
 }
 

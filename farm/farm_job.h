@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "farm/shard_plan.h"
+#include "ifs/cancel.h"
 
 namespace ifsfx::farm {
 
@@ -62,13 +63,15 @@ struct JobStatus {
 JobStatus job_status(const FarmPlan& plan);
 
 // Waits (polling squeue/scontrol every `poll_seconds`) until job `id` has ended; its exit code,
-// or nothing when Slurm forgot it before it was seen ending.
+// or nothing when Slurm forgot it before it was seen ending. A stop request through `cancel`
+// ends the wait (Error{interrupted}) within a quarter of a second; the job itself goes on.
 struct JobEnd {
   std::string state;
   int exit_code = 0;
   std::string reason;
 };
-std::optional<JobEnd> wait_for_job(const std::string& id, double poll_seconds = 1.0);
+std::optional<JobEnd> wait_for_job(const std::string& id, double poll_seconds = 1.0,
+                                   CancelToken cancel = {});
 
 // A job folder's path from the output: OUTPUT.farm; for a pattern tex_%04d.png, tex_.farm.
 std::filesystem::path job_folder_for(const std::string& output);

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "ifs/error.h"
+#include "ifs/output_file.h"
 #include "video/audio_remux.h"
 #include "video/av_util.h"
 
@@ -55,26 +56,18 @@ void check_same_encoding(const AVCodecParameters* a, const AVCodecParameters* b,
                             extradata_equal ? "" : ", other codec headers"));
 }
 
-// The finished file takes OUTPUT's name in one step (a rename within its folder), so OUTPUT is
-// either absent or complete. The one place to switch to the shared output policy.
-void publish(const std::filesystem::path& temp, const std::filesystem::path& output) {
-  std::error_code ec;
-  std::filesystem::rename(temp, output, ec);
-  if (ec) {
-    std::filesystem::remove(temp, ec);
-    throw Error(ErrorKind::io, fmt::format("{}: cannot rename {} into place ({})", output.string(),
-                                           temp.string(), ec.message()));
-  }
-}
-
 }  // namespace
 
 JoinResult join_segments(const JoinOptions& options) {
   if (options.segments.empty())
     throw Error(ErrorKind::invalid_argument, "join: no segments to join");
   const std::string what = options.output.string();
-  std::filesystem::path temp = options.output;
-  temp += ".part";
+  // Under the output policy: never over an input (the movie, a segment), a temporary file of its
+  // own, put in place by one rename only when complete.
+  OutputOptions policy = options.policy;
+  for (const auto& segment : options.segments) policy.inputs.add(segment);
+  OutputFile file(options.output, policy);
+  const std::filesystem::path& temp = file.temporary();
 
   Segment first = open_segment(options.segments.front());
   AVFormatContext* raw = nullptr;
@@ -99,11 +92,6 @@ JoinResult join_segments(const JoinOptions& options) {
 
   check_av(avio_open(&raw->pb, temp.c_str(), AVIO_FLAG_WRITE), ErrorKind::io, what,
            fmt::format("cannot write {}", temp.string()));
-  const auto discard = [&] {
-    out.reset();
-    std::error_code ec;
-    std::filesystem::remove(temp, ec);
-  };
   JoinResult result;
   try {
     check_av(avformat_write_header(raw, nullptr), ErrorKind::io, what, "cannot write the header");
@@ -147,6 +135,7 @@ JoinResult join_segments(const JoinOptions& options) {
         check_av(av_interleaved_write_frame(raw, packet.get()), ErrorKind::io, what,
                  "cannot write");
         ++result.video_packets;
+        policy.cancel.check("farm join");
       }
       // Where the container keeps no packet durations (MP4 gives its stream's), the stream's
       // end: the last frame lasts as long as in the segment.
@@ -160,10 +149,10 @@ JoinResult join_segments(const JoinOptions& options) {
     check_av(avio_closep(&raw->pb), ErrorKind::io, what, "cannot finish the file");
     out.reset();
   } catch (...) {
-    discard();
+    out.reset();  // closes the temporary file; `file` removes it
     throw;
   }
-  publish(temp, options.output);
+  file.commit();
   std::error_code ec;
   result.bytes = static_cast<std::int64_t>(std::filesystem::file_size(options.output, ec));
   return result;

@@ -24,6 +24,9 @@ class CancelToken {
   // Throws Error{interrupted} "WHAT: interrupted" when a stop was requested.
   void check(const char* what) const;
 
+  // Two tokens are equal when they watch the same flag (settings compared for equality hold one).
+  friend bool operator==(const CancelToken&, const CancelToken&) = default;
+
  private:
   const std::atomic<bool>* flag_ = nullptr;
 };

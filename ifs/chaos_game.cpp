@@ -26,6 +26,7 @@ std::vector<Sample> chaos_game_samples(const Ifs& ifs, std::size_t count,
   const int burn_in = options.burn_in > 0 ? options.burn_in : default_burn_in(ifs);
   const std::uint64_t chunks = detail::chunk_count(count);
   parallel_for(chunks, options.threads, [&](std::size_t chunk, int) {
+    options.cancel.check("chaos game");
     const std::uint64_t n = detail::chunk_size(count, chunk);
     // Lanes interleave step by step, so point i of the chunk is lane i % kLanes.
     std::size_t next = chunk * detail::kChunkPoints;

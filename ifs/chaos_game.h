@@ -7,15 +7,21 @@
 #include <cstdint>
 #include <vector>
 
+#include "ifs/cancel.h"
 #include "ifs/ifs.h"
 
 namespace ifsfx {
+
+// The most chaos-game points per output pixel a renderer accepts (its `quality`): a 32768² raster
+// at this density is 10^15 points, hours of work, but a count that fits its integer.
+inline constexpr double kMaxQuality = 1e6;
 
 struct ChaosGameOptions {
   std::uint64_t seed = 1;
   int threads = 0;  // worker threads; 0 = all cores
   // Points discarded per walker before plotting; 0 = enough for s^burn_in < 1e-9 (at least 64).
   int burn_in = 0;
+  CancelToken cancel;  // polled once per chunk of points: Error{interrupted} on a stop request
 };
 
 // Burn-in iterations that bring any start within 1e-9 (relative) of the attractor.

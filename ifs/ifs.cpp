@@ -46,6 +46,10 @@ void validate(const Ifs& ifs, const std::string& where, const ValidateOptions& o
   for (std::size_t i = 0; i < ifs.maps.size(); ++i) {
     if (!ifs.maps[i].finite())
       fail(fmt::format("map {}: coefficients must be finite numbers (got NaN or inf)", i + 1));
+    for (const double k : ifs.maps[i].coefficients())
+      if (std::abs(k) > kMaxCoordinate)
+        fail(fmt::format("map {}: coefficients must lie within ±{:g} (got {:g})", i + 1,
+                         kMaxCoordinate, k));
   }
   if (!ifs.probabilities.empty()) {
     if (ifs.probabilities.size() != ifs.maps.size())
@@ -70,6 +74,25 @@ void validate(const Ifs& ifs, const std::string& where, const ValidateOptions& o
           fmt::format("map {}: contraction factor must be < 1 (got {:.4g}); "
                       "--allow-expansive accepts it if the IFS contracts on average",
                       i + 1, s));
+  }
+  // Where the attractor reaches: within max_n |f_n(c) − c| / (1 − s) of any point c (here the
+  // fixed point of the first map). Beyond ±kMaxCoordinate its framing and rasters overflow.
+  if (const double s = ifs.contraction(); s < 1) {
+    Point c{0, 0};
+    const AffineMap& f0 = ifs.maps[0];
+    if (auto inv = AffineMap{1 - f0.a, -f0.b, -f0.c, 1 - f0.d, 0, 0}.inverse())
+      c = (*inv)({f0.e, f0.f});
+    double reach = 0;
+    for (const auto& f : ifs.maps) {
+      const Point q = f(c);
+      reach = std::max(reach, std::hypot(q.x - c.x, q.y - c.y));
+    }
+    const double far = std::max(std::abs(c.x), std::abs(c.y)) + reach / (1 - s);
+    if (!(far <= kMaxCoordinate))
+      fail(
+          fmt::format("the attractor would reach {:.3g} from the origin, beyond ±{:g}: its "
+                      "translations are too large for its factors (scale the IFS down)",
+                      far, kMaxCoordinate));
   }
   if (options.allow_expansive) {
     const double rate = mean_log_contraction(ifs);

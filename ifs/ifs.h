@@ -9,6 +9,11 @@
 
 namespace ifsfx {
 
+// The largest plane coordinate the geometry works with: an attractor (and a view) must lie within
+// ±kMaxCoordinate, so that its extent, its squares and its pixel scale stay finite and exact
+// enough in double precision. validate() refuses IFSs whose attractor would reach beyond it.
+inline constexpr double kMaxCoordinate = 1e100;
+
 // An RGB colour, components in [0, 1].
 struct Rgb {
   double r = 0, g = 0, b = 0;
@@ -42,9 +47,11 @@ struct ValidateOptions {
 };
 
 // Checks an IFS before use and throws Error{invalid_ifs} naming the culprit: no maps, a NaN/inf
-// coefficient, a map with factor ≥ 1 (unless allowed), probabilities of the wrong count,
-// negative, non-finite or all zero, colours of the wrong count. `where` prefixes messages (a
-// file name, a preset name).
+// coefficient or one beyond ±kMaxCoordinate, an attractor that would reach beyond
+// ±kMaxCoordinate (a contractive IFS's lies within max_n |f_n(c) − c| / (1 − s) of the fixed
+// point c of its first map), a map with factor ≥ 1 (unless allowed), probabilities of the wrong
+// count, negative, non-finite or all zero, colours of the wrong count. `where` prefixes messages
+// (a file name, a preset name).
 void validate(const Ifs& ifs, const std::string& where, const ValidateOptions& options = {});
 
 // The mean log contraction of the IFS per step, min over word lengths k = 1..3 of

@@ -1,9 +1,7 @@
 #include "ifs/image_io.h"
 
-#include <unistd.h>
 #include <algorithm>
 #include <fstream>
-#include <random>
 #include <system_error>
 
 #include <OpenImageIO/imageio.h>
@@ -12,6 +10,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "ifs/error.h"
+#include "ifs/utf8.h"
 
 namespace ifsfx {
 namespace fs = std::filesystem;
@@ -134,7 +133,7 @@ bool harmless(const std::string& why) {
 
 }  // namespace
 
-void check_writable_image(const fs::path& path) {
+void check_writable_image(const fs::path& path, const OutputOptions& output) {
   if (path.empty()) throw Error(ErrorKind::invalid_argument, "output: no file name given");
   auto out = OIIO::ImageOutput::create(path.string());
   if (!out) {
@@ -143,18 +142,18 @@ void check_writable_image(const fs::path& path) {
                 fmt::format("{}: no image writer for extension '{}' (use .png, .tif, .exr, .jpg)",
                             path.string(), path.extension().string()));
   }
-  const fs::path folder = path.parent_path().empty() ? fs::path(".") : path.parent_path();
-  std::error_code ec;
-  if (!fs::is_directory(folder, ec))
-    throw Error(ErrorKind::io,
-                fmt::format("{}: folder '{}' does not exist", path.string(), folder.string()));
-  if (::access(folder.c_str(), W_OK) != 0)
-    throw Error(ErrorKind::io,
-                fmt::format("{}: folder '{}' is not writable", path.string(), folder.string()));
+  check_output(path, output);
 }
 
 void write_image(const fs::path& path, const cv::Mat& image, const WriteOptions& options) {
-  check_writable_image(path);
+  check_writable_image(path, options.output);
+  OutputFile out(path, options.output);
+  write_image(out, image, options);
+  out.commit();
+}
+
+void write_image(OutputFile& file, const cv::Mat& image, const WriteOptions& options) {
+  const fs::path& path = file.target();
   if (image.empty())
     throw Error(ErrorKind::invalid_argument, fmt::format("{}: empty image", path.string()));
   if (options.bits != 8 && options.bits != 16)
@@ -192,36 +191,28 @@ void write_image(const fs::path& path, const cv::Mat& image, const WriteOptions&
   }
   if (is_float_format) spec.attribute("compression", "zip");
   spec.attribute("Software", "ifsfx");
-  for (const auto& [key, value] : options.metadata) spec.attribute(key, value);
+  // Metadata is made valid UTF-8 first: a Latin-1 comment or file name must not fail the run.
+  std::vector<std::pair<std::string, std::string>> metadata;
+  for (const auto& [key, value] : options.metadata)
+    metadata.emplace_back(valid_utf8(key), valid_utf8(value));
+  for (const auto& [key, value] : metadata) spec.attribute(key, value);
   // Formats without free-form attributes (TIFF, JPEG) keep only standard tags: carry the whole
   // set as JSON in the image description too, which every format stores.
-  if (!options.metadata.empty()) {
+  if (!metadata.empty()) {
     nlohmann::json all = nlohmann::json::object();
-    for (const auto& [key, value] : options.metadata) all[key] = value;
+    for (const auto& [key, value] : metadata) all[key] = value;
     spec.attribute("ImageDescription", std::string(kMetadataTag) + all.dump());
   }
 
-  // Write beside the target and rename: an interrupted write never leaves a half file.
-  std::random_device entropy;
-  const fs::path temp = path.parent_path() /
-                        fmt::format(".{}.{:08x}.tmp{}", path.filename().string(), entropy(), ext);
+  // The format is the target's; the bytes go to the output's temporary file.
   auto out = OIIO::ImageOutput::create(path.string());
-  bool ok = out && out->open(temp.string(), spec);
+  bool ok = out && out->open(file.temporary().string(), spec);
   ok = ok && out->write_image(format, pixels.data);
   ok = out && out->close() && ok;
   if (!ok) {
     const std::string why = out ? out->geterror() : OIIO::geterror();
-    std::error_code ec;
-    fs::remove(temp, ec);
     throw Error(ErrorKind::io, fmt::format("{}: cannot write ({})", path.string(),
                                            why.empty() ? "unknown error" : why));
-  }
-  std::error_code ec;
-  fs::rename(temp, path, ec);
-  if (ec) {
-    fs::remove(temp, ec);
-    throw Error(ErrorKind::io,
-                fmt::format("{}: cannot rename into place ({})", path.string(), ec.message()));
   }
 }
 

@@ -10,25 +10,35 @@
 
 #include <opencv2/core.hpp>
 
+#include "ifs/output_file.h"
+
 namespace ifsfx {
 
 struct WriteOptions {
   // Bits per channel of integer formats: 8 or 16 (PNG, TIFF); ignored for OpenEXR (half float).
   int bits = 8;
   // String attributes stored in the image's metadata, e.g. {"ifsfx:preset", <preset text>}.
+  // Bytes that are not UTF-8 are read as Latin-1 (valid_utf8): metadata never fails a write.
   std::vector<std::pair<std::string, std::string>> metadata;
+  // The output policy: inputs refused as the output, the stop request (ifs/output_file.h).
+  OutputOptions output;
 };
 
 // Writes `image` to `path`, the format chosen by extension (.png, .tif/.tiff, .exr, .jpg, and
-// whatever else OpenImageIO writes). The file appears atomically: it is written to a temporary
-// name in the target folder and renamed, so an interrupted write never leaves a half file.
-// Throws Error{unsupported} for an unknown extension and Error{io} naming the path otherwise.
+// whatever else OpenImageIO writes), through the output policy (OutputFile): written to a fresh
+// temporary file beside the target and renamed over it only once complete. Throws
+// Error{unsupported} for an unknown extension, what OutputFile throws, and Error{io} naming the
+// path otherwise.
 void write_image(const std::filesystem::path& path, const cv::Mat& image,
                  const WriteOptions& options = {});
+// Writes `image` into the temporary file of `out` (the format by out.target()'s extension)
+// without committing it: for files that must appear together (an image sequence). options.output
+// is not used (the OutputFile has its own).
+void write_image(OutputFile& out, const cv::Mat& image, const WriteOptions& options = {});
 
-// Throws Error{unsupported} if no writer handles `path`'s extension, and Error{io} if its folder
-// is not writable — the checks write_image makes, for use before long work.
-void check_writable_image(const std::filesystem::path& path);
+// Throws Error{unsupported} if no writer handles `path`'s extension, and what check_output throws
+// — the checks write_image makes, for use before long work.
+void check_writable_image(const std::filesystem::path& path, const OutputOptions& output = {});
 
 struct ImageFile {
   cv::Mat pixels;  // BGR/BGRA/grey, CV_8U, CV_16U or CV_32F as stored (other depths to CV_32F)

@@ -14,11 +14,13 @@
 namespace ifsfx {
 
 int resolve_threads(int requested) {
-  if (requested < 0)
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("threads: must be 0 (all cores) or more (got {})", requested));
+  if (requested < 0 || requested > kMaxThreads)
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("threads: must be 0 (all cores) to {} (got {})", kMaxThreads, requested));
   if (requested > 0) return requested;
-  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return static_cast<int>(
+      std::clamp(std::thread::hardware_concurrency(), 1u, static_cast<unsigned>(kMaxThreads)));
 }
 
 int worker_count(std::size_t chunks, int threads) {

@@ -8,7 +8,13 @@
 
 namespace ifsfx {
 
-// Number of worker threads for a requested count: 0 means all hardware threads.
+// The most worker threads any computation is given (the command line's --threads cap): more than
+// any machine's cores, few enough that per-thread buffers and a codec's per-thread frames cannot
+// eat the memory.
+inline constexpr int kMaxThreads = 256;
+
+// Number of worker threads for a requested count: 0 means all hardware threads (at most
+// kMaxThreads). Throws Error{invalid_argument} "threads: ..." below 0 or above kMaxThreads.
 int resolve_threads(int requested);
 
 // Runs fn(chunk, worker) for chunk = 0..chunks-1 on `threads` workers (0 = all cores). Worker

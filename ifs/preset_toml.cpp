@@ -10,6 +10,7 @@
 #include "ifs/detail/toml_reader.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
+#include "ifs/utf8.h"
 
 namespace ifsfx {
 namespace {
@@ -97,7 +98,9 @@ std::string toml_number(double x) {
   return s;
 }
 
-std::string toml_string(std::string_view s) {
+// A TOML basic string; TOML text is UTF-8, so other bytes are read as Latin-1 (valid_utf8).
+std::string toml_string(std::string_view text) {
+  const std::string s = valid_utf8(text);
   std::string out = "\"";
   for (char c : s) {
     switch (c) {

@@ -30,6 +30,7 @@ std::vector<State> scatter(const Ifs& ifs, const Viewport& viewport, std::uint64
   states.reserve(static_cast<std::size_t>(workers));
   for (int w = 0; w < workers; ++w) states.push_back(make_state());
   parallel_for(chunks, workers, [&](std::size_t chunk, int worker) {
+    options.cancel.check("render");
     State& state = states[static_cast<std::size_t>(worker)];
     const std::uint64_t n = detail::chunk_size(points, chunk);
     state.begin_chunk(n);
@@ -47,10 +48,12 @@ void check_render_inputs(const Ifs& ifs, cv::Size size, const RenderOptions& opt
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("--supersample: must be 1 to 16 (got {})", options.supersample));
   check_size(size * options.supersample, "--size × --supersample");
-  if (!(options.quality > 0) || !std::isfinite(options.quality))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("--quality: must be a positive number of points per pixel (got {})",
-                            options.quality));
+  if (!(options.quality > 0 && options.quality <= kMaxQuality))
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("--quality: must be a positive number of points per pixel, at most {:g} "
+                    "(got {})",
+                    kMaxQuality, options.quality));
   if (!(options.gamma > 0) || !std::isfinite(options.gamma))
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("--gamma: must be positive (got {})", options.gamma));
@@ -60,9 +63,9 @@ void check_render_inputs(const Ifs& ifs, cv::Size size, const RenderOptions& opt
 }
 
 Viewport viewport_for(const Ifs& ifs, cv::Size size, const RenderOptions& options) {
-  const Box view = options.view
-                       ? *options.view
-                       : fit_view(attractor_bounds(ifs, options.seed), size, options.margin);
+  const Box view = options.view ? *options.view
+                                : fit_view(attractor_bounds(ifs, options.seed, options.cancel),
+                                           size, options.margin);
   return {view, size};
 }
 
@@ -230,9 +233,10 @@ cv::Mat render_attractor(const Ifs& ifs, cv::Size size, const RenderOptions& opt
   const Viewport viewport = viewport_for(ifs, size, options);
   const std::uint64_t points = point_budget(size, options.quality);
   const auto start = std::chrono::steady_clock::now();
-  auto states =
-      scatter<HitState>(ifs, viewport, points, {.seed = options.seed, .threads = options.threads},
-                        [&] { return HitState(viewport); });
+  auto states = scatter<HitState>(
+      ifs, viewport, points,
+      {.seed = options.seed, .threads = options.threads, .cancel = options.cancel},
+      [&] { return HitState(viewport); });
   cv::Mat mask = states[0].hits;
   for (std::size_t w = 1; w < states.size(); ++w) cv::bitwise_or(mask, states[w].hits, mask);
   if (stats) *stats = {points, seconds_since(start), coverage_of(mask), viewport.view};
@@ -259,9 +263,10 @@ cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& optio
   totals.colour.assign(area, 0);
 
   const auto start = std::chrono::steady_clock::now();
-  auto states = scatter<MeasureState>(ifs, viewport, points,
-                                      {.seed = options.seed, .threads = options.threads},
-                                      [&] { return MeasureState(viewport, map_colour, totals); });
+  auto states = scatter<MeasureState>(
+      ifs, viewport, points,
+      {.seed = options.seed, .threads = options.threads, .cancel = options.cancel},
+      [&] { return MeasureState(viewport, map_colour, totals); });
   for (auto& s : states) s.fold();
   const double seconds = seconds_since(start);
 

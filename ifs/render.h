@@ -8,6 +8,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "ifs/cancel.h"
 #include "ifs/chaos_game.h"
 #include "ifs/ifs.h"
 #include "ifs/view.h"
@@ -22,7 +23,8 @@ struct RenderOptions {
   double gamma = 2.2;       // measure mode: display gamma of the log-density tone map
   double brightness = 4;    // measure mode: k of v = log(1 + k·count/mean) / log(1 + k·max/mean)
   std::uint64_t seed = 1;
-  int threads = 0;  // 0 = all cores
+  int threads = 0;     // 0 = all cores
+  CancelToken cancel;  // polled once per chunk of points: Error{interrupted} on a stop request
 };
 
 struct RenderStats {

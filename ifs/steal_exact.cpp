@@ -71,13 +71,14 @@ Descent exact_descent(const Ifs& F, const Ifs* G, const Viewport& viewport,
   //    with nearest lookups, which this is not). Dilating it further would let a higher map take
   //    points whose preimage lies up to a pixel outside A and shift every piece boundary by that
   //    much: the identity oracle sees it at once.
-  const Viewport mvp = mask_viewport(attractor_bounds(F, options.seed), viewport);
+  const Viewport mvp = mask_viewport(attractor_bounds(F, options.seed, options.cancel), viewport);
   const cv::Mat attractor =
       chaos_tops(F, mvp,
                  {.quality = options.quality,
                   .seed = options.seed,
                   .threads = options.threads,
-                  .key_bits = 64},  // full keys: the Hutchinson passes need precise points
+                  .key_bits = 64,  // full keys: the Hutchinson passes need precise points
+                  .cancel = options.cancel},
                  mask_stats)
           .coverage();
   const cv::Mat& lookup = attractor;
@@ -122,7 +123,8 @@ Descent exact_descent(const Ifs& F, const Ifs* G, const Viewport& viewport,
   parallel_for(bands, options.threads, [&](std::size_t band, int) {
     std::array<std::uint32_t, kMaxLevels> sigma{};
     const int row_end = std::min(viewport.size.height, static_cast<int>(band + 1) * kBand);
-    for (int row = static_cast<int>(band) * kBand; row < row_end; ++row)
+    for (int row = static_cast<int>(band) * kBand; row < row_end; ++row) {
+      options.cancel.check("exact descent");  // a row is W·L·N lookups at most
       for (int col = 0; col < viewport.size.width; ++col) {
         // The pixel centre, exact, in mask pixel coordinates.
         Point x = out_to_mask(Point{col + 0.5, row + 0.5});
@@ -154,6 +156,12 @@ Descent exact_descent(const Ifs& F, const Ifs* G, const Viewport& viewport,
               const double dist = distance_outside(p);
               if (dist < best) best = dist, chosen = n, next = p;
             }
+            // Every preimage overflowed (maps that nearly collapse the plane expand it by 1e11
+            // and more a level): the address ends here, repeating its last symbol.
+            if (chosen < 0) {
+              chosen = level > 0 ? static_cast<int>(sigma[static_cast<std::size_t>(level - 1)]) : 0;
+              next = x;
+            }
           }
           sigma[static_cast<std::size_t>(level)] = static_cast<std::uint32_t>(chosen);
           x = next;
@@ -172,6 +180,7 @@ Descent exact_descent(const Ifs& F, const Ifs* G, const Viewport& viewport,
               cv::Vec2f(static_cast<float>(y.x), static_cast<float>(1 - y.y));
         }
       }
+    }
   });
   return out;
 }

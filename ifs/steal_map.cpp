@@ -125,23 +125,21 @@ StealMap compute_steal_map(const Ifs& F, const Ifs& G, cv::Size size,
                 fmt::format("colouring IFS: must have as many maps as the drawing IFS (got {} "
                             "for {})",
                             G.size(), F.size()));
-  if (!(options.quality > 0) || !std::isfinite(options.quality))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("quality: must be a positive number of points per pixel (got {})",
-                            options.quality));
-  const Viewport viewport{options.view
-                              ? *options.view
-                              : fit_view(attractor_bounds(F, options.seed), size, options.margin),
-                          size};
+  const Viewport viewport = detail::checked_viewport(F, size, options.view, options.margin,
+                                                     options.quality, options.seed, options.cancel);
   StealMap map;
   StealMapStats s;
   s.view = viewport.view;
   detail::ChaosTopsStats chaos;
   if (options.exact) {
     const int levels = detail::levels_for(detail::word_contraction(G));
-    auto descent = detail::exact_descent(
-        F, &G, viewport,
-        {.levels = levels, .quality = 4, .seed = options.seed, .threads = options.threads}, &chaos);
+    auto descent = detail::exact_descent(F, &G, viewport,
+                                         {.levels = levels,
+                                          .quality = 4,
+                                          .seed = options.seed,
+                                          .threads = options.threads,
+                                          .cancel = options.cancel},
+                                         &chaos);
     map.source_uv = std::move(descent.uv);
     map.coverage = descent.tops.coverage();
     s.levels = levels;
@@ -154,8 +152,10 @@ StealMap compute_steal_map(const Ifs& F, const Ifs& G, cv::Size size,
                                          {.quality = options.quality,
                                           .seed = options.seed,
                                           .threads = options.threads,
-                                          .key_bits = short_keys ? 32 : 64},
+                                          .key_bits = short_keys ? 32 : 64,
+                                          .cancel = options.cancel},
                                          &chaos);
+    options.cancel.check("steal map");
     map.source_uv = detail::uv_from_keys(tops, F, G, options.threads);
     map.coverage = tops.coverage();
     s.levels = tops.symbols();

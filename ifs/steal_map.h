@@ -11,7 +11,9 @@
 
 #include <opencv2/core.hpp>
 
+#include "ifs/cancel.h"
 #include "ifs/ifs.h"
+#include "ifs/output_file.h"
 #include "ifs/view.h"
 
 namespace ifsfx {
@@ -35,6 +37,9 @@ struct StealMapOptions {
                             // (the exact map's attractor mask uses 4 per pixel plus growth)
   std::uint64_t seed = 1;
   int threads = 0;  // 0 = all cores
+  // Polled between chunks of work (the attractor raster, the chaos game, the descent): a stop
+  // request ends the computation within a fraction of a second with Error{interrupted}.
+  CancelToken cancel;
 };
 
 // What compute_steal_map did. The chaos game's coverage policy: `quality` points per pixel,
@@ -101,7 +106,9 @@ void apply(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out);
 // save/load: a versioned binary file; load throws Error{io} or Error{unsupported} for a file that
 // is not a steal map, of another version, or truncated, naming the path.
 // With `expected_size`, a map of another size is refused (Error{invalid_argument}).
-void save(const StealMap& map, const std::filesystem::path& path);
+// save writes through the output policy (ifs/output_file.h): `output` names the inputs the map
+// must not replace.
+void save(const StealMap& map, const std::filesystem::path& path, const OutputOptions& output = {});
 StealMap load_steal_map(const std::filesystem::path& path,
                         std::optional<cv::Size> expected_size = std::nullopt);
 

@@ -33,21 +33,16 @@ std::uintmax_t payload_bytes(std::uint32_t w, std::uint32_t h) {
 
 }  // namespace
 
-void save(const StealMap& map, const std::filesystem::path& path) {
+void save(const StealMap& map, const std::filesystem::path& path, const OutputOptions& output) {
   if (map.empty() || map.source_uv.type() != CV_32FC2 || map.coverage.type() != CV_8UC1 ||
       map.source_uv.size() != map.coverage.size())
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("{}: only a non-empty steal map can be saved", path.string()));
   const auto w = static_cast<std::uint32_t>(map.size().width);
   const auto h = static_cast<std::uint32_t>(map.size().height);
-  // Written next to the target and renamed, so an interrupted save never leaves half a map.
-  std::filesystem::path tmp = path;
-  tmp += ".part";
+  OutputFile file(path, output);
   {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out)
-      throw Error(ErrorKind::io, fmt::format("{}: cannot write ({})", path.string(),
-                                             std::generic_category().message(errno)));
+    std::ofstream out(file.temporary(), std::ios::binary | std::ios::trunc);
     const std::array<std::uint32_t, 4> header{kVersion, w, h, 0};
     out.write(kMagic.data(), kMagic.size());
     out.write(reinterpret_cast<const char*>(header.data()), sizeof(header));
@@ -58,19 +53,11 @@ void save(const StealMap& map, const std::filesystem::path& path) {
       out.write(reinterpret_cast<const char*>(map.coverage.ptr(r)),
                 static_cast<std::streamsize>(w));
     out.close();
-    if (!out) {
-      std::error_code ignored;
-      std::filesystem::remove(tmp, ignored);
-      throw Error(ErrorKind::io, fmt::format("{}: write failed (disk full?)", path.string()));
-    }
+    if (!out)
+      throw Error(ErrorKind::io, fmt::format("{}: cannot write: {}", path.string(),
+                                             std::generic_category().message(errno ? errno : EIO)));
   }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    std::filesystem::remove(tmp, ignored);
-    throw Error(ErrorKind::io, fmt::format("{}: cannot write ({})", path.string(), ec.message()));
-  }
+  file.commit();
 }
 
 StealMap load_steal_map(const std::filesystem::path& path, std::optional<cv::Size> expected_size) {

@@ -13,25 +13,23 @@ namespace ifsfx {
 TopSymbols top_symbols(const Ifs& F, cv::Size size, const TopsOptions& options) {
   check_size(size);
   validate(F, F.name.empty() ? "IFS" : F.name, {.allow_expansive = true});
-  if (!(options.quality > 0) || !std::isfinite(options.quality))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("quality: must be a positive number of points per pixel (got {})",
-                            options.quality));
-  const Viewport viewport{options.view
-                              ? *options.view
-                              : fit_view(attractor_bounds(F, options.seed), size, options.margin),
-                          size};
+  const Viewport viewport = detail::checked_viewport(F, size, options.view, options.margin,
+                                                     options.quality, options.seed, options.cancel);
   detail::ChaosTopsStats chaos;
   const detail::AddressRaster tops =
-      options.exact ? detail::exact_descent(
-                          F, nullptr, viewport,
-                          {.levels = 2, .seed = options.seed, .threads = options.threads}, &chaos)
+      options.exact ? detail::exact_descent(F, nullptr, viewport,
+                                            {.levels = 2,
+                                             .seed = options.seed,
+                                             .threads = options.threads,
+                                             .cancel = options.cancel},
+                                            &chaos)
                           .tops
                     : detail::chaos_tops(F, viewport,
                                          {.quality = options.quality,
                                           .seed = options.seed,
                                           .threads = options.threads,
-                                          .key_bits = 32},  // 32/b ≥ 2 symbols for any N ≤ 65536
+                                          .key_bits = 32,  // 32/b ≥ 2 symbols for any N ≤ 65536
+                                          .cancel = options.cancel},
                                          &chaos);
   TopSymbols out;
   out.view = viewport.view;

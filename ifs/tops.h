@@ -8,6 +8,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "ifs/cancel.h"
 #include "ifs/ifs.h"
 #include "ifs/view.h"
 
@@ -20,7 +21,8 @@ struct TopsOptions {
   bool second_symbol = false;  // render_tops: mix in the colour of the second symbol
   double quality = 64;         // chaos game: points per output pixel (see StealMapStats)
   std::uint64_t seed = 1;
-  int threads = 0;  // 0 = all cores
+  int threads = 0;     // 0 = all cores
+  CancelToken cancel;  // polled between chunks of work: Error{interrupted} on a stop request
 };
 
 // The first two symbols of each pixel's top address (0-based map indices) and where the

@@ -4,9 +4,12 @@
 #include <bit>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "ifs/chaos_game.h"
 #include "ifs/detail/address_raster.h"
 #include "ifs/detail/walkers.h"
+#include "ifs/error.h"
 #include "ifs/parallel.h"
 #include "ifs/rng.h"
 
@@ -14,6 +17,17 @@ namespace ifsfx::detail {
 
 int symbol_bits(std::size_t n) {
   return std::max(1, static_cast<int>(std::bit_width(std::max<std::size_t>(n, 2) - 1)));
+}
+
+Viewport checked_viewport(const Ifs& F, cv::Size size, const std::optional<Box>& view,
+                          double margin, double quality, std::uint64_t seed,
+                          const CancelToken& cancel) {
+  if (!(quality > 0 && quality <= kMaxQuality))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("quality: must be a positive number of points per pixel, at most {:g} "
+                            "(got {})",
+                            kMaxQuality, quality));
+  return {view ? *view : fit_view(attractor_bounds(F, seed, cancel), size, margin), size};
 }
 
 cv::Mat AddressRaster::coverage() const {
@@ -73,15 +87,19 @@ struct Walkers {
 
 // Runs `points` chaos-game points of chunk `chunk` into `buffer`: each pixel keeps the largest
 // key (Top keeps the larger address, eq. 7), cut to the top bits of a Cell (32 bits halve the
-// buffer's memory traffic; they hold 32/b symbols).
+// buffer's memory traffic; they hold 32/b symbols). On a raster larger than the caches every
+// point is a cache miss and a chunk takes a good fraction of a second, so `cancel` is polled at
+// every point plotted: one relaxed load of a flag that stays in the L1 cache, next to the miss.
 template <class Cell>
 void run_chunk(const Walkers& w, std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
-               Cell* buffer) {
+               Cell* buffer, const CancelToken& cancel) {
   constexpr int kCellShift = 64 - 8 * static_cast<int>(sizeof(Cell));
   plot_chunk_keyed(w.maps, w.pick, w.mapping, seed, chunk, points, w.burn_in, w.bits,
-                   [buffer](int, long pixel, std::uint32_t, std::uint64_t key) {
+                   [buffer, cancel](int, long pixel, std::uint32_t, std::uint64_t key) {
                      Cell& cell = buffer[pixel];
                      cell = std::max<Cell>(cell, static_cast<Cell>(key >> kCellShift) | 1);
+                     if (cancel.requested()) [[unlikely]]
+                       cancel.check("chaos game");
                    });
 }
 
@@ -89,13 +107,15 @@ void run_chunk(const Walkers& w, std::uint64_t seed, std::uint64_t chunk, std::u
 // corner of the raster, all three neighbours hit); they take the largest neighbouring record. Reads
 // `in`, writes `out` (a copy of `in`), so the result does not depend on the scan order.
 template <class Cell>
-std::size_t fill_holes(const std::vector<Cell>& in, std::vector<Cell>& out, int width, int height) {
+std::size_t fill_holes(const std::vector<Cell>& in, std::vector<Cell>& out, int width, int height,
+                       const CancelToken& cancel) {
   std::size_t filled = 0;
   auto get = [&](int c, int r) -> Cell {
     if (c < 0 || r < 0 || c >= width || r >= height) return 0;
     return in[static_cast<std::size_t>(r) * width + c];
   };
-  for (int r = 0; r < height; ++r)
+  for (int r = 0; r < height; ++r) {
+    if (r % 256 == 0) cancel.check("chaos game");
     for (int c = 0; c < width; ++c) {
       if (get(c, r) != 0) continue;
       // A corner of the raster has no line through it with both ends inside: there, its three
@@ -114,6 +134,7 @@ std::size_t fill_holes(const std::vector<Cell>& in, std::vector<Cell>& out, int 
       out[static_cast<std::size_t>(r) * width + c] = best;
       ++filled;
     }
+  }
   return filled;
 }
 
@@ -133,7 +154,7 @@ struct Located {
 // the invariant measure barely visits (corners of overlapping IFSs) without leaving A. Returns
 // the pixels reached.
 std::size_t hutchinson_passes(const Ifs& F, const Kernel& k, std::vector<std::uint64_t>& keys,
-                              int key_bits, int passes) {
+                              int key_bits, int passes, const CancelToken& cancel) {
   constexpr double kMaxError = 0.05;
   const int symbols = key_bits / k.bits;
   const auto n_maps = static_cast<std::uint32_t>(F.size());
@@ -152,8 +173,11 @@ std::size_t hutchinson_passes(const Ifs& F, const Kernel& k, std::vector<std::ui
   const Point c0 = k.to_pixel({box.x0, box.y0}), c1 = k.to_pixel({box.x1, box.y1});
   const double diameter = std::hypot(c1.x - c0.x, c1.y - c0.y);
 
+  // Polled every kPoll pixels or points: these loops run over the whole raster.
+  constexpr std::size_t kPoll = std::size_t{1} << 16;
   std::vector<Located> sources;
   for (std::size_t i = 0; i < keys.size(); ++i) {
+    if (i % kPoll == 0) cancel.check("chaos game");
     if (keys[i] == 0) continue;
     auto symbol = [&](int j) {
       return std::min(n_maps - 1, static_cast<std::uint32_t>((keys[i] >> (64 - k.bits * (j + 1))) &
@@ -168,9 +192,12 @@ std::size_t hutchinson_passes(const Ifs& F, const Kernel& k, std::vector<std::ui
   }
   std::size_t reached = 0;
   for (int pass = 0; pass < passes && !sources.empty(); ++pass) {
+    cancel.check("chaos game");
     std::vector<Located> arrivals;
     std::vector<std::uint64_t> arrival_keys;
-    for (const Located& s : sources)
+    for (std::size_t i = 0; i < sources.size(); ++i) {
+      if (i % kPoll == 0) cancel.check("chaos game");
+      const Located& s = sources[i];
       for (std::uint32_t n = 0; n < n_maps; ++n) {
         const Point y = maps[n](s.p);
         if (!(y.x >= 0 && y.x < k.width && y.y >= 0 && y.y < k.height)) continue;
@@ -180,6 +207,7 @@ std::size_t hutchinson_passes(const Ifs& F, const Kernel& k, std::vector<std::ui
         arrival_keys.push_back((((keys[s.pixel] >> k.bits) | (std::uint64_t{n} << shift)) & kept) |
                                1);
       }
+    }
     // The largest key per pixel; equal keys ordered by their points, so that the result does
     // not depend on anything but the input.
     std::vector<std::size_t> order(arrivals.size());
@@ -226,11 +254,12 @@ std::vector<std::uint64_t> run_policy(const Ifs& F, const Viewport& viewport,
     const std::uint64_t first = next_chunk;
     next_chunk += chunks;
     parallel_for(chunks, threads, [&](std::size_t chunk, int worker) {
+      options.cancel.check("chaos game");
       auto& buffer = buffers[static_cast<std::size_t>(worker)];
       if (buffer.empty()) buffer.assign(pixels, 0);
       const std::uint64_t begin = chunk * kChunkPoints;
       run_chunk<Cell>(walkers, options.seed, first + chunk, std::min(kChunkPoints, points - begin),
-                      buffer.data());
+                      buffer.data(), options.cancel);
     });
     s.points += points;
     s.rounds = round + 1;
@@ -259,9 +288,12 @@ std::vector<std::uint64_t> run_policy(const Ifs& F, const Viewport& viewport,
   for (std::size_t i = 0; i < pixels; ++i)
     keys[i] = merged[i] == 0 ? 0 : (std::uint64_t{merged[i]} << (64 - kCellBits)) | 1;
   buffers.clear();
-  if (options.fill) s.propagated = hutchinson_passes(F, kernel, keys, kCellBits, kHutchinsonPasses);
+  if (options.fill)
+    s.propagated = hutchinson_passes(F, kernel, keys, kCellBits, kHutchinsonPasses, options.cancel);
+  options.cancel.check("chaos game");
   std::vector<std::uint64_t> result = keys;
-  if (options.fill) s.filled = fill_holes(keys, result, viewport.size.width, viewport.size.height);
+  if (options.fill)
+    s.filled = fill_holes(keys, result, viewport.size.width, viewport.size.height, options.cancel);
   if (stats) *stats = s;
   return result;
 }

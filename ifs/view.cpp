@@ -21,8 +21,9 @@ AffineMap Viewport::plane_to_pixel() const {
 
 namespace {
 
-Box bounds_by_sampling(const Ifs& ifs, std::uint64_t seed) {
-  const auto samples = chaos_game_samples(ifs, 1 << 20, {.seed = seed, .threads = 0});
+Box bounds_by_sampling(const Ifs& ifs, std::uint64_t seed, const CancelToken& cancel) {
+  const auto samples =
+      chaos_game_samples(ifs, 1 << 20, {.seed = seed, .threads = 0, .cancel = cancel});
   Box b{samples[0].p.x, samples[0].p.y, samples[0].p.x, samples[0].p.y};
   for (const auto& s : samples) {
     b.x0 = std::min(b.x0, s.p.x), b.x1 = std::max(b.x1, s.p.x);
@@ -31,11 +32,22 @@ Box bounds_by_sampling(const Ifs& ifs, std::uint64_t seed) {
   return b;
 }
 
+// The box, checked to lie within ±kMaxCoordinate: beyond, views and rasters overflow.
+Box checked(const Box& b, const Ifs& ifs) {
+  const double far = std::max({std::abs(b.x0), std::abs(b.y0), std::abs(b.x1), std::abs(b.y1)});
+  if (!(far <= kMaxCoordinate))
+    throw Error(ErrorKind::invalid_ifs,
+                fmt::format("{}: the attractor reaches {:.3g} from the origin, beyond ±{:g} (scale "
+                            "the IFS down)",
+                            ifs.name.empty() ? "IFS" : ifs.name, far, kMaxCoordinate));
+  return b;
+}
+
 }  // namespace
 
-Box attractor_bounds(const Ifs& ifs, std::uint64_t seed) {
+Box attractor_bounds(const Ifs& ifs, std::uint64_t seed, const CancelToken& cancel) {
   const double s = ifs.contraction();
-  if (!(s < 1)) return bounds_by_sampling(ifs, seed);
+  if (!(s < 1)) return checked(bounds_by_sampling(ifs, seed, cancel), ifs);
 
   // A lies in the disc around any point c of radius max_n |f_n(c) − c| / (1 − s); take c the
   // fixed point of a map with an inverse of I − M (any point would do, a nearby one converges
@@ -86,6 +98,7 @@ Box attractor_bounds(const Ifs& ifs, std::uint64_t seed) {
   }
   const double tolerance = 1e-11 * std::max(radius, 1e-300);
   for (int iteration = 0; iteration < 5000; ++iteration) {
+    if (iteration % 64 == 0) cancel.check("attractor bounds");
     double change = 0;
     for (std::size_t j = 0; j < kDirections; ++j) {
       double best = -INFINITY;
@@ -99,13 +112,19 @@ Box attractor_bounds(const Ifs& ifs, std::uint64_t seed) {
     std::swap(h, next);
     if (change < tolerance) break;
   }
-  return {-h[kDirections / 2], -h[3 * kDirections / 4], h[0], h[kDirections / 4]};
+  return checked({-h[kDirections / 2], -h[3 * kDirections / 4], h[0], h[kDirections / 4]}, ifs);
 }
 
 Box fit_view(const Box& bounds, cv::Size size, double margin) {
   double w = bounds.width(), h = bounds.height();
   const double largest = std::max(w, h);
-  const double minimum = largest > 0 ? largest * 1e-3 : 1.0;  // a line or a point still shows
+  // A line or a point still shows; and the view is never narrower than its pixels can resolve in
+  // double precision at its coordinates (kMinRelativeExtent of them), nor than 1e-100 (its pixel
+  // scale stays finite).
+  const double magnitude = std::max(
+      {std::abs(bounds.x0), std::abs(bounds.y0), std::abs(bounds.x1), std::abs(bounds.y1)});
+  const double minimum =
+      std::max({largest > 0 ? largest * 1e-3 : 1.0, kMinRelativeExtent * magnitude, 1e-100});
   w = std::max(w, minimum);
   h = std::max(h, minimum);
   const double pad = margin * std::max(w, h);
@@ -152,6 +171,20 @@ Box parse_box(const std::string& text, const std::string& what) {
   if (!(v[2] > v[0]) || !(v[3] > v[1]))
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("{}: needs x1 > x0 and y1 > y0 (got '{}')", what, text));
+  for (const double x : v)
+    if (std::abs(x) > kMaxCoordinate)
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("{}: coordinates must lie within ±{:g} (got '{}')", what,
+                              kMaxCoordinate, text));
+  // Pixels narrower than the spacing of doubles at these coordinates would all be one point.
+  const double magnitude =
+      std::max({std::abs(v[0]), std::abs(v[1]), std::abs(v[2]), std::abs(v[3])});
+  if (std::min(v[2] - v[0], v[3] - v[1]) < std::max(kMinRelativeExtent * magnitude, 1e-100))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: too narrow for double precision at these coordinates: each side "
+                            "must be at least {:g} times the largest coordinate and 1e-100 (got "
+                            "'{}')",
+                            what, kMinRelativeExtent, text));
   return {v[0], v[1], v[2], v[3]};
 }
 

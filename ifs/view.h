@@ -8,9 +8,14 @@
 #include <opencv2/core.hpp>
 
 #include "ifs/affine_map.h"
+#include "ifs/cancel.h"
 #include "ifs/ifs.h"
 
 namespace ifsfx {
+
+// The narrowest view, relative to the magnitude of its coordinates, whose pixels double precision
+// still tells apart (2^-52 relative spacing, 32768 pixels a side, a margin of 100).
+inline constexpr double kMinRelativeExtent = 1e-9;
 
 // An axis-aligned rectangle [x0, x1] × [y0, y1] of a plane.
 struct Box {
@@ -42,8 +47,9 @@ struct Viewport {
 // Bounding box of the attractor of a contractive IFS, from its support function
 // h(u) = max_n (u·t_n + h(M_nᵀ u)) iterated to its fixed point on a fine circle of directions:
 // deterministic and tight to ~1e-5 of the attractor's size. Falls back to a chaos-game estimate
-// (seeded with `seed`) when a map has factor ≥ 1.
-Box attractor_bounds(const Ifs& ifs, std::uint64_t seed = 1);
+// (seeded with `seed`) when a map has factor ≥ 1. At most 5000 iterations (polling `cancel`);
+// throws Error{invalid_ifs} when the box does not fit in kMaxCoordinate (ifs.h).
+Box attractor_bounds(const Ifs& ifs, std::uint64_t seed = 1, const CancelToken& cancel = {});
 
 // The smallest view with the aspect of `size` that holds `bounds` plus `margin` (a fraction of
 // the larger side) on every side, centred. A degenerate box (a line or a point) gets a minimum

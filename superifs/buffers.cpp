@@ -214,6 +214,7 @@ void Buffers::dilate_current() {
   for (auto& d : dilated_) d.resize(viewport_.size);
   parallel_for(v_count * static_cast<std::size_t>(bands), options_.threads,
                [&](std::size_t chunk, int) {
+                 options_.cancel.check("superIFS step");
                  const std::size_t v = chunk / static_cast<std::size_t>(bands);
                  const int band = static_cast<int>(chunk % static_cast<std::size_t>(bands));
                  const int row0 = band * band_rows;
@@ -253,6 +254,7 @@ void Buffers::step() {
     }
     parallel_for(
         v_count * static_cast<std::size_t>(bands), options_.threads, [&](std::size_t chunk, int) {
+          options_.cancel.check("superIFS step");
           const std::size_t v = chunk / static_cast<std::size_t>(bands);
           const int row0 = static_cast<int>(chunk % static_cast<std::size_t>(bands)) * band_rows;
           const int row1 = std::min(size.height, row0 + band_rows);
@@ -266,6 +268,7 @@ void Buffers::step() {
     map_coordinate[m] = static_cast<double>(m) / static_cast<double>(m_count - 1);
   parallel_for(
       v_count * static_cast<std::size_t>(bands), options_.threads, [&](std::size_t chunk, int) {
+        options_.cancel.check("superIFS step");
         const std::size_t v = chunk / static_cast<std::size_t>(bands);
         const int row0 = static_cast<int>(chunk % static_cast<std::size_t>(bands)) * band_rows;
         const int row1 = std::min(size.height, row0 + band_rows);

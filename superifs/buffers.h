@@ -26,6 +26,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "ifs/cancel.h"
 #include "ifs/view.h"
 #include "superifs/superifs.h"
 
@@ -87,6 +88,7 @@ struct BufferOptions {
   int history = 0;         // steps kept for the exact descent (steal coordinates, tops); 0 = none
   bool density = false;    // also carry the measures (measure mode)
   double margin = 0.02;    // auto-framing margin of buffer_view()
+  CancelToken cancel;  // polled per band of rows of a step: Error{interrupted} on a stop request
 };
 
 class Buffers {
@@ -112,6 +114,7 @@ class Buffers {
   const Viewport& viewport() const { return viewport_; }
   const SuperIfs& super() const { return super_; }
   int threads() const { return options_.threads; }
+  const CancelToken& cancel() const { return options_.cancel; }
 
   // The set K_v: CV_8UC1, 255 on the set, 0 elsewhere.
   const cv::Mat& mask(std::size_t v) const { return masks_.at(v); }

@@ -134,6 +134,7 @@ cv::Mat render_tops(const Buffers& buffers, std::size_t v) {
   const cv::Mat& mask = buffers.mask(v);
   const Descent descent(buffers);
   parallel_for(bands, buffers.threads(), [&](std::size_t band, int) {
+    buffers.cancel().check("texture");
     std::vector<Symbol> word(descent.levels.size());
     const int row0 = static_cast<int>(band) * band_rows;
     for (int row = row0; row < std::min(size.height, row0 + band_rows); ++row) {
@@ -198,6 +199,7 @@ BufferOptions buffer_options(const SuperIfs& super, cv::Size size, const Texture
   b.seed = options.seed;
   b.threads = options.threads;
   b.margin = options.margin;
+  b.cancel = options.cancel;
   b.density = options.mode == TextureMode::measure;
   if (options.mode == TextureMode::steal || options.mode == TextureMode::tops) {
     int pixels = std::max(size.width, size.height);
@@ -265,6 +267,7 @@ StealMap steal_map(const Buffers& buffers, std::size_t v) {
   const auto bands = static_cast<std::size_t>((size.height + band_rows - 1) / band_rows);
   const Descent descent(buffers);
   parallel_for(bands, buffers.threads(), [&](std::size_t band, int) {
+    buffers.cancel().check("texture");
     std::vector<Symbol> word(descent.levels.size());
     const int row0 = static_cast<int>(band) * band_rows;
     for (int row = row0; row < std::min(size.height, row0 + band_rows); ++row) {

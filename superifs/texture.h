@@ -62,6 +62,7 @@ struct TextureOptions {
   std::uint64_t seed = 1;  // seeds every choice (stream_seed(seed, step))
   int threads = 0;         // 0 = all cores
   double margin = 0.02;    // auto-framing margin when the superIFS gives no view
+  CancelToken cancel;      // polled by the burn-in, the steps and the descent (per band of rows)
 };
 
 // One texture: V buffers burnt in for options.steps, buffer options.buffer rendered in

@@ -17,6 +17,11 @@ extern "C" {
 
 namespace ifsfx::video::detail {
 
+// The thread count handed to a decoder or encoder for a requested worker count: 0 stays 0
+// (libavcodec's own choice, at most 16), others are checked as resolve_threads() checks them
+// (at most kMaxThreads) and capped at 16, since each codec thread holds frames of its own.
+int codec_threads(int requested);
+
 // libav's message for an AVERROR code, e.g. "Invalid data found when processing input".
 std::string av_message(int code);
 

@@ -4,6 +4,8 @@
 #include <chrono>
 #include <exception>
 
+#include "ifs/error.h"
+
 namespace ifsfx::video {
 
 namespace {
@@ -73,12 +75,19 @@ CameraStats run_camera(LiveSource& source, const CameraFilter& filter,
       update();
       if (observer && !observer(out, stats)) break;
     }
-  } catch (...) {
-    // Keep what was recorded: finalise the sinks, then report the fault that stopped the loop.
-    try {
-      close_all(sinks);
-    } catch (...) {
+  } catch (const Error& e) {
+    // A computation that saw the stop request (a map being built) ends the session the ordinary
+    // way, like the stop flag itself.
+    const bool stopped =
+        e.kind() == ErrorKind::interrupted && options.stop != nullptr && options.stop->load();
+    if (!stopped) {
+      for (FrameSink* sink : sinks) sink->abandon();
+      throw;
     }
+  } catch (...) {
+    // The outputs did not complete: each keeps what it can apart from its target (a recording
+    // becomes a playable partial movie), then the fault that stopped the loop is reported.
+    for (FrameSink* sink : sinks) sink->abandon();
     throw;
   }
   close_all(sinks);

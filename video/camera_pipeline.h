@@ -45,10 +45,11 @@ using CameraFilter = std::function<cv::Mat(const Frame& frame)>;
 // false to stop (the window's quit key).
 using CameraObserver = std::function<bool(const Frame& filtered, const CameraStats& stats)>;
 
-// Runs the loop until max_frames, the stop flag, the observer, or the end of the source. Every
-// sink is closed when the loop ends, also when it ends by an error — so a recording is finalised
-// and playable — and the error is then rethrown (a close that fails as well is not allowed to
-// hide the first error). Returns the stats.
+// Runs the loop until max_frames, the stop flag, the observer, or the end of the source: each is
+// the ordinary end of a live session, and every sink is closed (a recording is finalised and put
+// in place). When the loop ends by an error, every sink is abandoned instead (FrameSink::abandon:
+// a recording is kept as a playable partial movie beside its target) and the error is rethrown
+// (a close that fails as well is not allowed to hide the first error). Returns the stats.
 //   CameraStats s = run_camera(camera, [&](const Frame& f) { return apply(map, f.image); },
 //                              {&webcam, &recording}, {.max_frames = 300});
 CameraStats run_camera(LiveSource& source, const CameraFilter& filter,

@@ -45,12 +45,16 @@ double fbm(double x, std::uint64_t seed, std::uint64_t channel, int octaves) {
 }
 
 Ifs drift(const Ifs& base, double t, const DriftOptions& options) {
-  if (!(options.amount >= 0) || !std::isfinite(options.amount))
+  if (!(options.amount >= 0 && options.amount <= kMaxDriftAmount))
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("--drift-amount: must be 0 or more (got {})", options.amount));
-  if (!(options.speed >= 0) || !std::isfinite(options.speed))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("--drift-speed: must be 0 or more (got {})", options.speed));
+                fmt::format("--drift-amount: must be in [0, {:g}] (got {})", kMaxDriftAmount,
+                            options.amount));
+  if (!(options.speed >= 0 && options.speed <= kMaxDriftSpeed))
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("--drift-speed: must be in [0, {:g}] (got {})", kMaxDriftSpeed, options.speed));
+  if (!std::isfinite(t))
+    throw Error(ErrorKind::invalid_argument, fmt::format("drift: time must be finite (got {})", t));
   if (options.octaves < 1 || options.octaves > 16)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("drift octaves: must be in 1..16 (got {})", options.octaves));

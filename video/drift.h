@@ -10,6 +10,12 @@
 
 namespace ifsfx::video {
 
+// The largest drift amount and speed accepted: an excursion of 10 (ten times a coefficient's
+// usual scale, or the attractor's size) is far past any useful animation, and beyond it the
+// drifted translations leave the attractor's framing altogether.
+inline constexpr double kMaxDriftAmount = 10;
+inline constexpr double kMaxDriftSpeed = 1000;  // cycles per second
+
 struct DriftOptions {
   // Largest excursion of a linear coefficient (a, b, c, d); translations (e, f) move by the same
   // fraction of the attractor's size.

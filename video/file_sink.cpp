@@ -5,7 +5,6 @@
 #include <cmath>
 #include <map>
 #include <string_view>
-#include <system_error>
 
 #include <fmt/format.h>
 
@@ -30,6 +29,13 @@ const AVOutputFormat* guess_container(const std::filesystem::path& path) {
                 fmt::format("{}: unknown movie container extension '{}' (use .mp4, .mkv, .avi, "
                             ".mov, ...)",
                             path.string(), path.extension().string()));
+  // FFmpeg's image muxer reads printf patterns in the name itself, bypassing the output policy:
+  // image sequences go through ImageSequenceSink instead.
+  if (std::string_view(format->name).starts_with("image2"))
+    throw Error(ErrorKind::unsupported,
+                fmt::format("{}: a still image format; write an image sequence with a pattern "
+                            "such as {}_%04d{}",
+                            path.string(), path.stem().string(), path.extension().string()));
   return format;
 }
 
@@ -88,12 +94,6 @@ AVPixelFormat pick_pixel_format(const AVCodec* encoder) {
   for (AVPixelFormat f : yuv420)
     if (supports(f)) return f;
   return formats[0];
-}
-
-std::filesystem::path part_path(const std::filesystem::path& path) {
-  std::filesystem::path p = path;
-  p += ".part";
-  return p;
 }
 
 // The chroma block of a pixel format: 2×2 for 4:2:0, 2×1 for 4:2:2, 1×1 for 4:4:4 and RGB.
@@ -165,7 +165,7 @@ FrameTiming resolve_timing(const std::filesystem::path& path, const std::string&
 
 struct FileSink::Impl {
   std::filesystem::path path;
-  std::filesystem::path temp;
+  std::optional<OutputFile> out;  // the temporary file written, under the output policy
   std::unique_ptr<AVFormatContext, detail::OutputContextDeleter> format;
   std::unique_ptr<AVCodecContext, detail::CodecContextDeleter> codec;
   std::unique_ptr<AVFrame, detail::FrameDeleter> frame{av_frame_alloc()};
@@ -267,8 +267,19 @@ struct FileSink::Impl {
 
   void discard_temp() noexcept {
     format.reset();
-    std::error_code ec;
-    std::filesystem::remove(temp, ec);
+    if (out) out->discard();
+  }
+
+  // The frames given flushed, the audio up to the end of the last one, the trailer written and
+  // the file closed: a complete movie in the temporary file.
+  void finish() {
+    // The last frame of a constant-rate output lasts as long as it did in the source.
+    flush_pending(std::max(pending_end, std::max(pending_slot, end_pts) + 1));
+    encode(nullptr);
+    if (audio) audio->copy_until(seconds(end_pts));
+    check_av(av_write_trailer(format.get()), ErrorKind::io, what(), "cannot finish the file");
+    check_av(avio_closep(&format->pb), ErrorKind::io, what(), "cannot finish the file");
+    format.reset();
   }
 };
 
@@ -276,7 +287,6 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
     : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;
   s.path = path;
-  s.temp = part_path(path);
   if (options.size.width <= 0 || options.size.height <= 0)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("{}: frame size must be positive (got {}x{})", s.what(),
@@ -285,9 +295,7 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("{}: frame rate must be positive (got {}/{})", s.what(),
                             options.frame_rate.num, options.frame_rate.den));
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec))
-    throw Error(ErrorKind::io, fmt::format("{}: is a folder", s.what()));
+  check_output(path, options.output);
   const AVOutputFormat* container = guess_container(path);
   const AVCodec* encoder = find_encoder(path, container, options.codec);
 
@@ -321,7 +329,7 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
                             block.height, c->width, c->height, fit.width, fit.height));
   }
   if (c->pix_fmt == AV_PIX_FMT_YUVJ420P) c->color_range = AVCOL_RANGE_JPEG;
-  c->thread_count = options.threads;
+  c->thread_count = detail::codec_threads(options.threads);
   if (encoder->id == AV_CODEC_ID_MPEG4) {
     c->flags |= AV_CODEC_FLAG_QSCALE;
     c->global_quality = 3 * FF_QP2LAMBDA;
@@ -355,9 +363,10 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
     throw Error(ErrorKind::unsupported, fmt::format("{}: cannot convert BGR to {}", s.what(),
                                                     av_get_pix_fmt_name(c->pix_fmt)));
   // Open the temporary file last: every check that can fail without touching the disk is done.
-  check_av(avio_open(&raw->pb, s.temp.c_str(), AVIO_FLAG_WRITE), ErrorKind::io, s.what(),
-           fmt::format("cannot write {}", s.temp.string()));
+  s.out.emplace(path, options.output);
   try {
+    check_av(avio_open(&raw->pb, s.out->temporary().c_str(), AVIO_FLAG_WRITE), ErrorKind::io,
+             s.what(), "cannot write");
     check_av(avformat_write_header(raw, nullptr), ErrorKind::io, s.what(),
              "cannot write the header");
   } catch (...) {
@@ -367,12 +376,7 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
 }
 
 FileSink::~FileSink() {
-  if (impl_->closed) return;
-  try {
-    close();
-  } catch (...) {
-    impl_->discard_temp();
-  }
+  abandon();
 }
 
 void FileSink::write(const Frame& frame) {
@@ -413,22 +417,27 @@ void FileSink::close() {
   try {
     if (s.received == 0)
       throw Error(ErrorKind::io, fmt::format("{}: no frame to write; nothing was saved", s.what()));
-    // The last frame of a constant-rate output lasts as long as it did in the source.
-    s.flush_pending(std::max(s.pending_end, std::max(s.pending_slot, s.end_pts) + 1));
-    s.encode(nullptr);
-    if (s.audio) s.audio->copy_until(s.seconds(s.end_pts));
-    check_av(av_write_trailer(s.format.get()), ErrorKind::io, s.what(), "cannot finish the file");
-    check_av(avio_closep(&s.format->pb), ErrorKind::io, s.what(), "cannot finish the file");
-    s.format.reset();
-    std::error_code ec;
-    std::filesystem::rename(s.temp, s.path, ec);
-    if (ec)
-      throw Error(ErrorKind::io, fmt::format("{}: cannot rename {} into place ({})", s.what(),
-                                             s.temp.string(), ec.message()));
+    s.finish();
+    s.out->commit();
   } catch (...) {
     s.discard_temp();
     throw;
   }
+}
+
+std::filesystem::path FileSink::abandon() noexcept {
+  Impl& s = *impl_;
+  if (s.closed) return {};
+  s.closed = true;
+  if (s.received > 0) {
+    try {
+      s.finish();
+      return s.out->keep_partial();
+    } catch (...) {
+    }
+  }
+  s.discard_temp();
+  return {};
 }
 
 std::string FileSink::name() const {

@@ -1,7 +1,8 @@
-// A movie file as a frame sink, encoded and muxed with FFmpeg's libraries. The file is written
-// under a temporary name beside the target (OUTPUT.part) and renamed into place by close(), so an
-// unfinished file never takes the output's name; a file closed early (Ctrl-C, a damaged input) is
-// a complete, playable movie of the frames written.
+// A movie file as a frame sink, encoded and muxed with FFmpeg's libraries, under the output policy
+// (ifs/output_file.h): the movie is written to a fresh temporary file beside the target and
+// renamed over it by close(), so an unfinished movie never takes the output's name. A run that
+// ends early (Ctrl-C, a damaged input) calls abandon(): an existing target is left as it was, and
+// the frames written become a complete, playable movie of their own, OUTPUT-STEM.partial.EXT.
 #pragma once
 
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "ifs/output_file.h"
 #include "video/file_source.h"
 #include "video/frame_io.h"
 
@@ -45,12 +47,15 @@ struct FileSinkOptions {
   // Output time 0 is the source's time 0 (Frame::pts 0), not the first frame written: a segment
   // of a sharded run (`ifsfx farm`) keeps its place in the whole movie, for a stream-copy join.
   bool source_clock = false;
+  // The output policy: the inputs the movie must not replace (ifs/output_file.h).
+  OutputOptions output;
 };
 
 // Opens the output, checks everything that can be checked before work starts, and writes the
 // header. Throws Error{unsupported} for an unknown container extension, an unknown codec, a codec
-// the container cannot carry, and Error{io} for an output that cannot be written (folder missing,
-// no permission) — all before any frame is encoded.
+// the container cannot carry, Error{invalid_argument} for an output that is one of the inputs,
+// and Error{io} for an output that cannot be written (folder missing, no permission) — all
+// before any frame is encoded.
 //   FileSink out("out.mp4", {.size = in.size(), .frame_rate = in.frame_rate()});
 //   out.write(frame); ...; out.close();
 class FileSink final : public FrameSink {
@@ -70,6 +75,10 @@ class FileSink final : public FrameSink {
   // renames the file into place. Without any frame written, removes the temporary file and throws
   // Error{io}: an empty movie is not a playable file.
   void close() override;
+  // Finishes the frames written as a playable movie STEM.partial.EXT beside the target (never
+  // replacing a file) and returns its name; the target is not touched. With no frame written, or
+  // when the movie cannot be finished, removes the temporary file and returns an empty path.
+  std::filesystem::path abandon() noexcept override;
   std::string name() const override;
 
   std::int64_t frames_written() const;   // frames encoded so far (repeats included)

@@ -287,7 +287,7 @@ FileSource::FileSource(const std::filesystem::path& path, const FileSourceOption
   s.codec.reset(avcodec_alloc_context3(decoder));
   check_av(avcodec_parameters_to_context(s.codec.get(), s.stream->codecpar), ErrorKind::unsupported,
            s.what(), "unusable video stream parameters");
-  s.codec->thread_count = options.threads;
+  s.codec->thread_count = detail::codec_threads(options.threads);
   s.codec->thread_type = FF_THREAD_FRAME | FF_THREAD_SLICE;
   check_av(avcodec_open2(s.codec.get(), decoder, nullptr), ErrorKind::unsupported, s.what(),
            fmt::format("cannot open the {} decoder", decoder->name));

@@ -62,6 +62,7 @@ StealMapOptions FractalEngine::map_options() const {
   o.quality = settings_.quality;
   o.seed = settings_.seed;
   o.threads = settings_.threads;
+  o.cancel = settings_.cancel;
   return o;
 }
 
@@ -86,7 +87,7 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
       // Keyframe k shows F drifted to time k·K/fps, in a view fixed from F itself so that the
       // frame does not jump as the attractor moves.
       if (!map_options.view)
-        map_options.view = fit_view(attractor_bounds(F_, s.seed), size, s.margin);
+        map_options.view = fit_view(attractor_bounds(F_, s.seed, s.cancel), size, s.margin);
       schedule_ = std::make_unique<MapSchedule>(
           [=, F = F_, G = G_, drift_options = drift_options(), interval = s.keyframe_interval,
            fps = frame_rate](std::int64_t k) {
@@ -106,6 +107,7 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
       t.source = cv::Mat(frame_size, CV_8UC3);  // only its size: it sets the descent depth
       t.seed = s.seed;
       t.threads = threads;
+      t.cancel = s.cancel;
       sequence_ = std::make_shared<TextureSequence>(super_, size, t);
       schedule_ = std::make_unique<MapSchedule>(
           [=, sequence = sequence_](std::int64_t k) {

@@ -20,6 +20,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "ifs/cancel.h"
 #include "ifs/ifs.h"
 #include "ifs/steal_map.h"
 #include "ifs/timeline.h"
@@ -68,6 +69,10 @@ struct FractalSettings {
 
   std::uint64_t seed = 1;  // the chaos game, the drift and the superIFS steps
   int threads = 0;         // 0 = all cores
+  // Polled while maps are built (the steal map, the framing, the superIFS burn-in and descent):
+  // a stop request ends prepare() or a keyframe's build with Error{interrupted} within a fraction
+  // of a second. The command line passes its Ctrl-C flag; a plugin's host has none to pass.
+  CancelToken cancel;
 
   friend bool operator==(const FractalSettings&, const FractalSettings&) = default;
 };

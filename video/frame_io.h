@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -74,9 +75,21 @@ class FrameSink {
   virtual ~FrameSink() = default;
   // Throws ifsfx::Error on a fault (disk full, device gone), naming the sink.
   virtual void write(const Frame& frame) = 0;
-  // Finalises the output (trailer, rename into place). Idempotent; also called by the destructor
-  // of implementations, which must never throw.
+  // Finalises the output after its last frame (trailer, rename into place). Idempotent.
   virtual void close() = 0;
+  // Ends an output that did not complete (an error, a stop request) under the output policy
+  // (ifs/output_file.h): a file it would have replaced keeps its contents; the frames written
+  // are kept under a separate name where that is useful (a playable partial movie) and that name
+  // is returned, else nothing is kept and the result is empty. Never throws. Sinks that write no
+  // file (a window, a device) just close. The destructor of a sink that was neither closed nor
+  // abandoned abandons it.
+  virtual std::filesystem::path abandon() noexcept {
+    try {
+      close();
+    } catch (...) {
+    }
+    return {};
+  }
   virtual std::string name() const = 0;
 };
 

@@ -117,6 +117,14 @@ bool is_sequence_pattern(const std::string& path) {
   return find_number(path).has_value();
 }
 
+void check_output_name(const std::string& name, const std::string& what) {
+  if (name.find('%') != std::string::npos && !find_number(name))
+    throw Error(ErrorKind::parse,
+                fmt::format("{}: an image sequence pattern holds one %d or %0Nd with N 1..9 and no "
+                            "other '%' (got '{}')",
+                            what, name));
+}
+
 std::filesystem::path sequence_path(const std::string& pattern, std::int64_t index) {
   const auto p = find_number(pattern);
   if (!p)
@@ -190,13 +198,36 @@ bool ImageSequenceSource::skip() {
   return true;
 }
 
-ImageSequenceSink::ImageSequenceSink(const std::string& pattern) : pattern_(pattern) {
-  check_writable_image(sequence_path(pattern, 0));
+std::vector<std::filesystem::path> ImageSequenceSource::files() const {
+  std::vector<std::filesystem::path> out;
+  for (const std::int64_t number : numbers_) out.push_back(sequence_path(pattern_, number));
+  return out;
+}
+
+ImageSequenceSink::ImageSequenceSink(const std::string& pattern,
+                                     const ImageSequenceSinkOptions& options)
+    : pattern_(pattern), options_(options) {
+  check_writable_image(sequence_path(pattern, options.first), options.output);
+  for (std::int64_t k = 1; k < options.expected; ++k)
+    check_output(sequence_path(pattern, options.first + k), options.output);
 }
 
 void ImageSequenceSink::write(const Frame& frame) {
-  write_image(sequence_path(pattern_, written_), frame.image);
-  ++written_;
+  OutputFile file(
+      sequence_path(pattern_, options_.first + static_cast<std::int64_t>(staged_.size())),
+      options_.output);
+  write_image(file, frame.image);
+  staged_.push_back(std::move(file));
+}
+
+void ImageSequenceSink::close() {
+  for (OutputFile& file : staged_) file.commit();
+  staged_.clear();
+}
+
+std::filesystem::path ImageSequenceSink::abandon() noexcept {
+  staged_.clear();  // each removes its temporary file
+  return {};
 }
 
 }  // namespace ifsfx::video

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ifs/output_file.h"
 #include "video/frame_io.h"
 
 namespace ifsfx::video {
@@ -17,6 +18,10 @@ bool is_sequence_pattern(const std::string& path);
 // The file name of frame `index` of `pattern`. Throws Error{parse} unless the pattern holds
 // exactly one %d or %0Nd (N ≤ 9) and no other '%'.
 std::filesystem::path sequence_path(const std::string& pattern, std::int64_t index);
+
+// Throws Error{parse} "WHAT: ..." for an output name with a '%' that is not one %d or %0Nd (N ≤ 9):
+// such a name ("%5d", "%d%d", "%99999999999d") is neither a file name nor a pattern ifsfx writes.
+void check_output_name(const std::string& name, const std::string& what = "-o");
 
 struct ImageSequenceOptions {
   double fps = 25;  // the sequence's frame rate (images carry none)
@@ -46,6 +51,8 @@ class ImageSequenceSource final : public FrameSource {
   Rational time_base() const override { return {rate_.den, rate_.num}; }
   std::int64_t frame_count() const override { return static_cast<std::int64_t>(numbers_.size()); }
   std::string name() const override { return pattern_; }
+  // The files of the sequence, in order (they are the command's inputs).
+  std::vector<std::filesystem::path> files() const;
 
  private:
   std::string pattern_;
@@ -56,18 +63,32 @@ class ImageSequenceSource final : public FrameSource {
   cv::Size size_;
 };
 
-// Writes frame k (in order of writing, from 0) to sequence_path(pattern, k), each file atomically.
-// Throws at construction, before any work, when the first file could not be written.
+struct ImageSequenceSinkOptions {
+  std::int64_t first = 0;  // the number of the first frame written
+  // Frames the caller expects to write (-1: unknown): their names are checked against the
+  // inputs at construction, before any work.
+  std::int64_t expected = -1;
+  OutputOptions output;  // the output policy: the inputs no frame may replace
+};
+
+// Writes frame k (in order of writing) to sequence_path(pattern, first + k) under the output
+// policy (ifs/output_file.h): each frame is encoded into a temporary file at once, and close()
+// renames them all into place, so a run that fails or is stopped (abandon()) leaves every
+// existing frame file of the pattern as it was and keeps nothing. Throws at construction, before
+// any work, when the first file could not be written or a frame file would replace an input.
 class ImageSequenceSink final : public FrameSink {
  public:
-  explicit ImageSequenceSink(const std::string& pattern);
+  explicit ImageSequenceSink(const std::string& pattern,
+                             const ImageSequenceSinkOptions& options = {});
   void write(const Frame& frame) override;
-  void close() override {}
+  void close() override;
+  std::filesystem::path abandon() noexcept override;
   std::string name() const override { return pattern_; }
 
  private:
   std::string pattern_;
-  std::int64_t written_ = 0;
+  ImageSequenceSinkOptions options_;
+  std::vector<OutputFile> staged_;  // written, not yet in place
 };
 
 }  // namespace ifsfx::video

@@ -104,6 +104,11 @@ PipelineResult run_pipeline(FrameSource& source, FrameSink& sink, const FrameFil
   std::jthread filterer([&] {
     try {
       while (std::optional<Frame> frame = decoded.pop()) {
+        if (stop_requested()) {  // the output will be abandoned: no need to drain the queues
+          interrupted = true;
+          decoded.cancel();
+          break;
+        }
         cv::Mat image = filter(*frame);
         Frame out = std::move(*frame);  // index and time as the source gave them
         out.image = std::move(image);
@@ -129,6 +134,12 @@ PipelineResult run_pipeline(FrameSource& source, FrameSink& sink, const FrameFil
   auto last_report = clock::now();
   try {
     while (std::optional<Frame> frame = filtered.pop()) {
+      if (stop_requested()) {
+        interrupted = true;
+        filtered.cancel();
+        decoded.cancel();
+        break;
+      }
       sink.write(*frame);
       ++result.frames_written;
       if (std::chrono::duration<double>(clock::now() - last_report).count() >=
@@ -145,16 +156,39 @@ PipelineResult run_pipeline(FrameSource& source, FrameSink& sink, const FrameFil
   decoder.join();
   filterer.join();
 
-  // Keep what was written, whatever stopped the work: closing makes it a complete file.
   std::exception_ptr first = error.get();
-  try {
-    sink.close();
-  } catch (...) {
-    if (!first) first = std::current_exception();
+  // A stage that saw the stop request through a cancellation (an animation's map being built)
+  // was stopped, not failed.
+  if (first && stop_requested()) {
+    try {
+      std::rethrow_exception(first);
+    } catch (const Error& e) {
+      if (e.kind() == ErrorKind::interrupted) first = nullptr, interrupted = true;
+    } catch (...) {
+    }
   }
   result.interrupted = interrupted;
+  if (!first && !interrupted) {
+    try {
+      sink.close();
+    } catch (...) {
+      first = std::current_exception();
+    }
+  } else {
+    // The output did not complete: an existing one stays as it was; what was written is kept
+    // apart where that is useful.
+    result.partial = sink.abandon();
+  }
   result.seconds = std::chrono::duration<double>(clock::now() - start).count();
-  if (first) std::rethrow_exception(first);
+  if (first) {
+    if (result.partial.empty()) std::rethrow_exception(first);
+    try {
+      std::rethrow_exception(first);
+    } catch (const Error& e) {
+      throw Error(e.kind(), fmt::format("{}; {} frames kept in {}", e.what(), result.frames_written,
+                                        result.partial.string()));
+    }
+  }
   report(true);
   return result;
 }

@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <string>
 
@@ -39,13 +40,19 @@ struct PipelineOptions {
 struct PipelineResult {
   std::int64_t frames_written = 0;
   bool interrupted = false;  // stopped by options.stop before the end of the range
+  // Where the frames written were kept when the run did not complete (FrameSink::abandon: a
+  // playable partial movie beside the output); empty when nothing was kept.
+  std::filesystem::path partial;
   double seconds = 0;
 };
 
-// Runs source → filter → sink until the range ends, the source ends, or options.stop is set, then
-// closes the sink (so the file written holds exactly frames_written frames). An error in any stage
-// stops the others; the frames already written are kept (the sink is closed) and the error is
-// rethrown — a damaged input thus ends with its error after writing what could be decoded.
+// Runs source → filter → sink until the range ends or the source ends, then closes the sink (the
+// output is put in place, holding exactly frames_written frames). When options.stop is set, or an
+// error in any stage stops the others, the sink is abandoned instead: an existing output is left
+// as it was and the frames written are kept apart where the sink can (FrameSink::abandon). A stop
+// returns with `interrupted` and `partial` set; an error is rethrown, an ifsfx::Error with
+// "; N frames kept in PARTIAL" added to its message — a damaged input thus ends with its error
+// after saving what could be decoded.
 //   auto result = run_pipeline(source, sink, [&](const Frame& f) { return filter(f.image); });
 PipelineResult run_pipeline(FrameSource& source, FrameSink& sink, const FrameFilter& filter,
                             const PipelineOptions& options = {});

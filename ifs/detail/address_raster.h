@@ -9,10 +9,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
+#include "ifs/cancel.h"
 #include "ifs/ifs.h"
 #include "ifs/view.h"
 
@@ -20,6 +22,13 @@ namespace ifsfx::detail {
 
 // b = ceil(log2 N), at least 1.
 int symbol_bits(std::size_t n);
+
+// The check and the framing the tops and steal-map entries share: `quality` in (0, kMaxQuality]
+// points per pixel (Error{invalid_argument} naming `quality`), then `view`, or F's attractor
+// auto-framed with `margin` (attractor_bounds, polling `cancel`).
+Viewport checked_viewport(const Ifs& F, cv::Size size, const std::optional<Box>& view,
+                          double margin, double quality, std::uint64_t seed,
+                          const CancelToken& cancel);
 
 struct AddressRaster {
   Viewport viewport;
@@ -54,6 +63,7 @@ struct ChaosTopsOptions {
   // Bits kept per pixel record: 32 halves the buffer (faster), and holds 32/b symbols, enough
   // for tops and masks and for colouring IFSs that contract fast enough (see steal_map.cpp).
   int key_bits = 64;
+  CancelToken cancel;  // polled per chunk of points and per pass
 };
 
 inline constexpr int kMaxGrowthRounds = 8;
@@ -79,6 +89,7 @@ struct DescentOptions {
   double quality = 4;
   std::uint64_t seed = 1;
   int threads = 0;
+  CancelToken cancel;  // polled per band of pixels (and by the attractor mask's chaos game)
 };
 
 struct Descent {

@@ -1,5 +1,7 @@
 #include "collage/fit.h"
 
+#include <atomic>
+
 #include <gtest/gtest.h>
 
 #include "collage/distance.h"
@@ -105,6 +107,25 @@ TEST(fit, map_count_outside_one_to_thirty_two_is_rejected) {
                 std::string::npos)
           << e.what();
     }
+  }
+}
+
+}  // namespace
+}  // namespace ifsfx::collage
+
+namespace ifsfx::collage {
+namespace {
+
+// A stop request ends the search with Error{interrupted} (issue 12).
+TEST(fit, a_stop_request_ends_the_search) {
+  std::atomic<bool> stop{true};
+  FitOptions o = quick(3);
+  o.cancel = CancelToken(&stop);
+  try {
+    fit(filled_square(), o);
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::interrupted);
   }
 }
 

@@ -57,7 +57,8 @@ audio_of "$W/ffv1-single.mkv" >"$W/ffv1-single.audio"
 audio_of "$W/ffv1-farm.mkv" >"$W/ffv1-farm.audio"
 [ -s "$W/ffv1-single.audio" ] && cmp -s "$W/ffv1-single.audio" "$W/ffv1-farm.audio" ||
   fail "ffv1: audio packets differ"
-[ -e "$W/ffv1-farm.mkv.part" ] && fail "ffv1: temporary file left"
+# The join writes under the output policy: no temporary file (.NAME.XXXXXXXX.ifsfx-tmp) is left.
+ls -A "$W" | grep -q 'ifsfx-tmp$' && fail "ffv1: temporary file left: $(ls -A "$W" | grep 'ifsfx-tmp$')"
 ok "FFV1, K=4: $(wc -l <"$W/ffv1-farm.frames") frames equal, rate $(probe "$W/ffv1-farm.mkv" v r_frame_rate), $(wc -l <"$W/ffv1-farm.audio") audio packets identical (${SECONDS} s)"
 
 # H.264 (each segment encoded on its own): same count, every frame >= 40 dB, audio in sync.
@@ -148,4 +149,8 @@ refused "must be an absolute path" "$W/a.mp4" -o bad.mkv --shards 2
 refused "must be an absolute path" a.mp4 -o "$W/bad.mkv" --shards 2
 refused "at least 1" "$W/a.mp4" -o "$W/bad.mkv" --shards 0
 refused "more shards than frames" "$W/a.mp4" -o "$W/bad.mkv" --shards 61
+# The output policy, before anything is planned: OUTPUT is never the input (here through a link).
+ln -sf "$W/a.mp4" "$W/bad.mkv"
+refused "is the same file as the input" "$W/a.mp4" -o "$W/bad.mkv" --shards 2
+rm -f "$W/bad.mkv"
 echo "ALL OK (${SECONDS} s)"

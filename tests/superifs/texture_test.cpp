@@ -2,12 +2,15 @@
 // exact steal map, determinism, sequences and crossfades.
 #include "superifs/texture.h"
 
+#include <atomic>
+
 #include <gtest/gtest.h>
 
 #include <opencv2/imgproc.hpp>
 
 #include "ifs/error.h"
 #include "ifs/rng.h"
+#include "interrupted.h"
 #include "superifs_fixtures.h"
 
 namespace ifsfx {
@@ -238,6 +241,28 @@ TEST(texture, rejects_bad_options_with_the_option_named) {
     EXPECT_STREQ(e.what(), "--mode: must be attractor, tops, steal or measure (got 'stealing')");
   }
   EXPECT_EQ(parse_texture_mode("measure"), TextureMode::measure);
+}
+
+}  // namespace
+}  // namespace ifsfx
+
+namespace ifsfx {
+namespace {
+
+using testing::interrupted;
+
+// A stop request ends the burn-in, a step and the descent with Error{interrupted} (issue 12).
+TEST(texture, a_stop_request_ends_the_burn_in_the_steps_and_the_descent) {
+  std::atomic<bool> stop{true};
+  EXPECT_TRUE(interrupted([&] {
+    TextureSequence(paper_fig4(), {64, 64}, {.steps = 4, .cancel = CancelToken(&stop)});
+  }));
+  stop = false;
+  TextureSequence seq(paper_fig4(), {64, 64},
+                      {.steps = 4, .mode = TextureMode::steal, .cancel = CancelToken(&stop)});
+  stop = true;
+  EXPECT_TRUE(interrupted([&] { seq.step(); }));
+  EXPECT_TRUE(interrupted([&] { seq.steal_map(); }));
 }
 
 }  // namespace

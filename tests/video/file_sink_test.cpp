@@ -1,6 +1,10 @@
 #include "video/file_sink.h"
 
+#include <algorithm>
 #include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -110,16 +114,97 @@ TEST(file_sink, unwritable_output_fails_before_any_frame) {
   EXPECT_TRUE(std::filesystem::is_empty(dir));
 }
 
+// The names in a folder, sorted.
+std::vector<std::string> names_in(const std::filesystem::path& dir) {
+  std::vector<std::string> out;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    out.push_back(e.path().filename().string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string bytes_of(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
 TEST(file_sink, unfinished_file_never_takes_the_output_name) {
   const auto dir = temp_folder("partial");
+  std::ofstream(dir / "out.mkv.part") << "someone else's";
   FileSink sink(dir / "out.mkv", {.codec = "ffv1", .size = {16, 16}});
   sink.write({test_frame({16, 16}, 0), 0, 0});
   EXPECT_FALSE(std::filesystem::exists(dir / "out.mkv"));
-  EXPECT_TRUE(std::filesystem::exists(dir / "out.mkv.part"));
+  const auto during = names_in(dir);  // the movie is written to a hidden temporary file
+  ASSERT_EQ(during.size(), 2u);
+  EXPECT_EQ(during[0].rfind(".out.mkv.", 0), 0u) << during[0];
   sink.close();
-  EXPECT_TRUE(std::filesystem::exists(dir / "out.mkv"));
-  EXPECT_FALSE(std::filesystem::exists(dir / "out.mkv.part"));
+  EXPECT_EQ(names_in(dir), (std::vector<std::string>{"out.mkv", "out.mkv.part"}));
+  EXPECT_EQ(bytes_of(dir / "out.mkv.part"), "someone else's");
   EXPECT_EQ(sink.frames_written(), 1);
+}
+
+// A run that fails or is stopped: the existing movie stays as it was, the frames done become a
+// playable movie of their own beside it.
+TEST(file_sink, abandoned_movie_is_kept_apart_and_the_target_untouched) {
+  const auto dir = temp_folder("abandon");
+  const cv::Size size{32, 16};
+  write_movie(dir / "out.mkv", "ffv1", size, 5);
+  const std::string good = bytes_of(dir / "out.mkv");
+  {
+    FileSink sink(dir / "out.mkv", {.codec = "ffv1", .size = size});
+    for (int i = 0; i < 3; ++i) sink.write({test_frame(size, i), i, i / 25.0});
+    EXPECT_EQ(sink.abandon(), dir / "out.partial.mkv");
+    EXPECT_TRUE(sink.abandon().empty());  // once
+  }
+  {
+    FileSink sink(dir / "out.mkv", {.codec = "ffv1", .size = size});
+    sink.write({test_frame(size, 0), 0, 0});
+  }  // destroyed without close(): abandoned too, never over the first partial movie
+  EXPECT_EQ(bytes_of(dir / "out.mkv"), good);
+  EXPECT_EQ(names_in(dir),
+            (std::vector<std::string>{"out.mkv", "out.partial-2.mkv", "out.partial.mkv"}));
+  FileSource partial(dir / "out.partial.mkv");
+  int n = 0;
+  while (auto f = partial.read()) {
+    EXPECT_EQ(cv::norm(f->image, test_frame(size, n), cv::NORM_INF), 0.0) << "frame " << n;
+    ++n;
+  }
+  EXPECT_EQ(n, 3);
+}
+
+TEST(file_sink, abandoned_without_frames_keeps_nothing) {
+  const auto dir = temp_folder("abandon-empty");
+  FileSink sink(dir / "out.mp4", {.size = {16, 16}});
+  EXPECT_TRUE(sink.abandon().empty());
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+TEST(file_sink, an_input_is_never_the_output) {
+  const auto dir = temp_folder("input");
+  write_movie(dir / "in.mkv", "ffv1", {16, 16}, 2);
+  std::filesystem::create_symlink(dir / "in.mkv", dir / "link.mkv");
+  OutputOptions output;
+  output.inputs.add(dir / "in.mkv");
+  try {
+    FileSink sink(dir / "link.mkv", {.codec = "ffv1", .size = {16, 16}, .output = output});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
+    EXPECT_NE(std::string(e.what()).find("is the same file as the input"), std::string::npos);
+  }
+  EXPECT_EQ(names_in(dir), (std::vector<std::string>{"in.mkv", "link.mkv"}));
+}
+
+TEST(file_sink, a_still_image_container_is_refused_for_a_movie) {
+  try {
+    resolve_encoder("out.png", "");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::unsupported);
+    EXPECT_STREQ(e.what(),
+                 "out.png: a still image format; write an image sequence with a pattern "
+                 "such as out_%04d.png");
+  }
 }
 
 TEST(file_sink, closing_without_frames_leaves_nothing) {

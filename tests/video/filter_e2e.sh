@@ -60,7 +60,7 @@ real_clip)
   [[ -z $(probe out.mp4 a codec_name) ]] || fail "an input without audio gave audio"
   errors=$(ffmpeg -v error -i out.mp4 -f null - 2>&1)
   [[ -z $errors ]] || fail "does not decode cleanly: $errors"
-  [[ ! -e out.mp4.part ]] || fail "temporary file left behind"
+  [[ -z $(ls -A | grep '^\.') ]] || fail "temporary file left behind: $(ls -A)"
   ;;
 identity_ffv1)
   real_clip 12
@@ -129,21 +129,24 @@ sigint)
   with_audio 320x240 40
   "$ifsfx" filter in.mp4 -o out.mp4 --preset sierpinski-triangle --quality 4 --threads 1 2> log.txt &
   pid=$!
-  for _ in $(seq 200); do  # until frames are being written
-    [[ -f out.mp4.part && $(stat -c %s out.mp4.part) -gt 100000 ]] && break
+  for _ in $(seq 200); do  # until frames are being written (to the hidden temporary file)
+    [[ -n $(find . -name '.out.mp4.*' -size +100k) ]] && break
     sleep 0.05
   done
   kill -INT $pid
   status=0
   wait $pid || status=$?
   [[ $status == 130 ]] || fail "exit status $status, expected 130: $(cat log.txt)"
-  done_frames=$(sed -n 's/^ifsfx: interrupted: \([0-9]*\) frames written to out.mp4$/\1/p' log.txt)
-  [[ -n $done_frames ]] || fail "no 'interrupted: N frames' line: $(cat log.txt)"
-  [[ $(frames_of out.mp4) == "$done_frames" ]] || fail "file holds $(frames_of out.mp4) frames, reported $done_frames"
+  # The output policy: the stopped run's frames are a playable movie of their own; out.mp4 is
+  # never made from an unfinished run.
+  done_frames=$(sed -n 's/^ifsfx: interrupted: \([0-9]*\) frames kept in out.partial.mp4 (out.mp4 left as it was)$/\1/p' log.txt)
+  [[ -n $done_frames ]] || fail "no 'interrupted: N frames kept' line: $(cat log.txt)"
+  [[ ! -e out.mp4 ]] || fail "an interrupted run took the output's name"
+  [[ $(frames_of out.partial.mp4) == "$done_frames" ]] || fail "file holds $(frames_of out.partial.mp4) frames, reported $done_frames"
   ((done_frames > 0 && done_frames < 1000)) || fail "interrupted after $done_frames frames"
-  [[ $(probe out.mp4 a:0 codec_name) == "aac" ]] || fail "no audio after the interruption"
-  va=$(probe out.mp4 v:0 duration)
-  aa=$(probe out.mp4 a:0 duration)
+  [[ $(probe out.partial.mp4 a:0 codec_name) == "aac" ]] || fail "no audio after the interruption"
+  va=$(probe out.partial.mp4 v:0 duration)
+  aa=$(probe out.partial.mp4 a:0 duration)
   awk -v v="$va" -v a="$aa" 'BEGIN { d = v - a; exit !(d < 0.04 && d > -0.04) }' ||
     fail "audio $aa s vs video $va s after the interruption"
   echo "interrupted after $done_frames frames"
@@ -162,14 +165,15 @@ bad_input)
   expect_error 1 "^ifsfx: text.mp4: not a movie file FFmpeg can read" text.mp4 -o out.mp4
   ffmpeg -v error -y -i "$data/vtest.avi" -frames:v 40 -vf scale=192:144 -c:v mpeg4 -q:v 2 whole.avi
   head -c $(($(stat -c %s whole.avi) / 2)) whole.avi > cut.avi
-  expect_error 1 "^ifsfx: cut.avi: truncated or corrupt" cut.avi -o cut.mp4 --quality 4
-  written=$(frames_of cut.mp4)
+  expect_error 1 "^ifsfx: cut.avi: truncated or corrupt.*frames kept in cut.partial.mp4$" cut.avi -o cut.mp4 --quality 4
+  [[ ! -e cut.mp4 ]] || fail "a failed run took the output's name"
+  written=$(frames_of cut.partial.mp4)
   ((written > 5 && written < 40)) || fail "truncated input: $written frames kept"
   expect_error 1 "^ifsfx: --codec: unknown video encoder (got 'nosuchcodec'" whole.avi -o x.mp4 --codec nosuchcodec
   expect_error 1 "^ifsfx: nodir/out.mp4: cannot write" whole.avi -o nodir/out.mp4
   expect_error 1 "unknown movie container extension '.qqq'" whole.avi -o out.qqq
   expect_error 2 "^ifsfx: --frames: END must not be before START" whole.avi -o x.mp4 --frames 9:3
-  [[ ! -e x.mp4 && ! -e x.mp4.part && ! -e nodir ]] || fail "a failed run left a file behind"
+  [[ ! -e x.mp4 && ! -e nodir && -z $(ls -A | grep '^\.') ]] || fail "a failed run left a file behind: $(ls -A)"
   ;;
 vfr_dropped_frames)
   # Frames 20-50 dropped: every frame keeps its time (not re-timed to 89 frames at 22.25 fps), the

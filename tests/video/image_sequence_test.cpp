@@ -1,5 +1,9 @@
 #include "video/image_sequence.h"
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "ifs/error.h"
@@ -135,6 +139,76 @@ TEST(image_sequence, skipping_gaps_keeps_each_file_at_its_time) {
 
 TEST(image_sequence, unwritable_folder_fails_before_any_frame) {
   EXPECT_THROW(ImageSequenceSink("/nonexistent/folder/f_%04d.png"), Error);
+}
+
+// The frames of a sequence appear together when it is complete; a run that fails or is stopped
+// leaves every existing frame file as it was and no temporary file.
+TEST(image_sequence, frames_are_put_in_place_only_when_the_sequence_is_complete) {
+  const auto dir = temp_folder("staged");
+  const std::string pattern = (dir / "f_%02d.png").string();
+  const cv::Size size{8, 6};
+  {
+    ImageSequenceSink sink(pattern);
+    for (int i = 0; i < 3; ++i) sink.write({test_frame(size, i), i, 0});
+    sink.close();
+  }
+  const auto first = read_image(dir / "f_01.png").pixels;
+  {
+    ImageSequenceSink sink(pattern);
+    for (int i = 10; i < 14; ++i) sink.write({test_frame(size, i), i, 0});
+    EXPECT_FALSE(std::filesystem::exists(dir / "f_03.png"));
+    EXPECT_TRUE(sink.abandon().empty());
+  }
+  std::vector<std::string> names;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    names.push_back(e.path().filename().string());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(names, (std::vector<std::string>{"f_00.png", "f_01.png", "f_02.png"}));
+  EXPECT_EQ(cv::norm(read_image(dir / "f_01.png").pixels, first, cv::NORM_INF), 0.0);
+}
+
+// A frame file of the output pattern that is an input is refused before any work: an input
+// sequence written into the same pattern spelt otherwise.
+TEST(image_sequence, a_frame_file_that_is_an_input_is_refused) {
+  const auto dir = temp_folder("overlap");
+  const std::string pattern = (dir / "in_%04d.png").string();
+  {
+    ImageSequenceSink sink(pattern, {.first = 1});
+    for (int i = 0; i < 4; ++i) sink.write({test_frame({8, 8}, i), i, 0});
+    sink.close();
+  }
+  ImageSequenceSource source(pattern);
+  OutputOptions output;
+  for (const auto& file : source.files()) output.inputs.add(file);
+  EXPECT_EQ(source.files().size(), 4u);
+  const std::string same = (dir / "." / "in_%04d.png").string();
+  try {
+    ImageSequenceSink sink(same, {.expected = 4, .output = output});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
+    EXPECT_NE(std::string(e.what()).find("in_0001.png: is the same file as the input"),
+              std::string::npos)
+        << e.what();
+  }
+  // Without the expected count, the first overlapping frame is refused when it comes.
+  ImageSequenceSink sink(same, {.output = output});
+  sink.write({test_frame({8, 8}, 0), 0, 0});  // in_0000.png: not an input
+  EXPECT_THROW(sink.write({test_frame({8, 8}, 1), 1, 0}), Error);
+}
+
+TEST(image_sequence, output_names_with_a_stray_percent_are_refused) {
+  for (const char* name : {"x_%99999999999d.png", "x_%d%d.png", "x_%5d.png", "x%.png"}) {
+    try {
+      check_output_name(name);
+      ADD_FAILURE() << name;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.kind(), ErrorKind::parse);
+      EXPECT_EQ(std::string(e.what()).rfind("-o: an image sequence pattern holds one %d", 0), 0u);
+    }
+  }
+  EXPECT_NO_THROW(check_output_name("x_%04d.png"));
+  EXPECT_NO_THROW(check_output_name("plain.mp4"));
 }
 
 }  // namespace

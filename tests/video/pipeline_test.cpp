@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "ifs/cancel.h"
 #include "ifs/error.h"
 #include "tests/video/test_frames.h"
 
@@ -50,7 +51,9 @@ TEST(pipeline, range_gives_exactly_its_frames_with_source_indices) {
   EXPECT_EQ(source.reads(), 21);  // stops reading after the range
 }
 
-TEST(pipeline, stop_flag_ends_cleanly_with_every_frame_filtered_written) {
+// A stop request ends every stage at its next frame; the output, incomplete, is abandoned (an
+// existing file is left as it was, the frames done kept apart).
+TEST(pipeline, stop_flag_ends_promptly_and_abandons_the_output) {
   MemorySource source({16, 8}, 1000);
   MemorySink sink;
   std::atomic<bool> stop{false};
@@ -65,11 +68,12 @@ TEST(pipeline, stop_flag_ends_cleanly_with_every_frame_filtered_written) {
       },
       o);
   EXPECT_TRUE(result.interrupted);
-  EXPECT_GE(result.frames_written, 25);
-  EXPECT_LT(result.frames_written, 1000);
+  EXPECT_EQ(filtered.load(), 25);  // no frame is filtered after the request
+  EXPECT_LE(result.frames_written, 25);
   EXPECT_EQ(static_cast<std::int64_t>(sink.frames.size()), result.frames_written);
-  EXPECT_EQ(result.frames_written, filtered.load());
-  EXPECT_EQ(sink.closes, 1);
+  EXPECT_EQ(sink.closes, 0);
+  EXPECT_EQ(sink.abandons, 1);
+  EXPECT_TRUE(result.partial.empty());
 }
 
 class FailingSource final : public FrameSource {
@@ -87,18 +91,52 @@ class FailingSource final : public FrameSource {
   std::int64_t next_ = 0;
 };
 
-TEST(pipeline, source_error_keeps_the_frames_before_it_and_is_rethrown) {
+TEST(pipeline, source_error_keeps_the_frames_before_it_apart_and_is_rethrown) {
   FailingSource source;
   MemorySink sink;
+  sink.partial = "out.partial.mkv";
   try {
     run_pipeline(source, sink, invert);
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::io);
-    EXPECT_STREQ(e.what(), "broken.avi: truncated or corrupt: decoded 7 of 20 frames");
+    EXPECT_STREQ(e.what(),
+                 "broken.avi: truncated or corrupt: decoded 7 of 20 frames; 7 frames kept in "
+                 "out.partial.mkv");
   }
   EXPECT_EQ(sink.frames.size(), 7u);
-  EXPECT_EQ(sink.closes, 1);
+  EXPECT_EQ(sink.closes, 0);
+  EXPECT_EQ(sink.abandons, 1);
+  // A sink that keeps nothing: the error as it came.
+  FailingSource again;
+  MemorySink nothing;
+  try {
+    run_pipeline(again, nothing, invert);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "broken.avi: truncated or corrupt: decoded 7 of 20 frames");
+  }
+}
+
+// A stage that sees the stop request through a cancellation (an animation's map being built)
+// was stopped, not failed.
+TEST(pipeline, an_interrupted_stage_after_a_stop_request_is_a_stop) {
+  MemorySource source({8, 8}, 1000);
+  MemorySink sink;
+  std::atomic<bool> stop{false};
+  PipelineOptions o;
+  o.stop = &stop;
+  const auto filter = [&](const Frame& f) -> cv::Mat {
+    if (f.index == 4) {
+      stop = true;
+      CancelToken(&stop).check("keyframe");
+    }
+    return f.image;
+  };
+  const PipelineResult result = run_pipeline(source, sink, filter, o);
+  EXPECT_TRUE(result.interrupted);
+  EXPECT_LE(result.frames_written, 4);
+  EXPECT_EQ(sink.abandons, 1);
 }
 
 TEST(pipeline, filter_error_stops_every_stage) {
@@ -111,6 +149,7 @@ TEST(pipeline, filter_error_stops_every_stage) {
   EXPECT_THROW(run_pipeline(source, sink, failing), Error);
   EXPECT_EQ(sink.frames.size(), 3u);
   EXPECT_LT(source.reads(), 100);
+  EXPECT_EQ(sink.abandons, 1);
 }
 
 TEST(pipeline, progress_reports_end_with_the_total) {

@@ -70,13 +70,21 @@ class MemorySource final : public FrameSource {
   std::int64_t next_ = 0;
 };
 
+// Counts how its output ended: closed (complete) or abandoned (failed or stopped); an abandoned
+// output says it kept its frames in `partial` when that is set.
 class MemorySink final : public FrameSink {
  public:
   void write(const Frame& frame) override { frames.push_back(frame); }
   void close() override { ++closes; }
+  std::filesystem::path abandon() noexcept override {
+    ++abandons;
+    return partial;
+  }
   std::string name() const override { return "memory"; }
   std::vector<Frame> frames;
   int closes = 0;
+  int abandons = 0;
+  std::filesystem::path partial;
 };
 
 // A fresh empty folder under the system's temporary folder, named for the test.

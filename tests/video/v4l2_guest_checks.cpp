@@ -141,7 +141,7 @@ int run(const std::vector<std::string>& argv, const std::string& tag, std::strin
   return c.rc();
 }
 
-// N of "recording kept: PATH (N frames)" in an error message; -1 when absent.
+// N of "recording kept: PATH (N frames; ...)" in an error message; -1 when absent.
 int frames_reported(const std::string& err) {
   const auto at = err.find("recording kept: ");
   if (at == std::string::npos) return -1;
@@ -459,12 +459,13 @@ TEST_F(VividTest, loopback_round_trip_and_producer_gone_ends_the_read_without_a_
   EXPECT_LT(Clock::now() - t0, 60s);
 }
 
-// Waits until `path` holds some frames (a file recorded with a codec that writes each frame).
+// Waits until a file of `dir` named after `stem` (the recording's temporary file,
+// .STEM.XXXXXXXX.ifsfx-tmp) holds some frames (a codec that writes each frame).
 bool wait_for_recording(Child& cam, const std::filesystem::path& dir, const std::string& stem) {
   const auto deadline = Clock::now() + 90s;
   while (Clock::now() < deadline && cam.running()) {
     for (const auto& e : std::filesystem::directory_iterator(dir)) {
-      if (e.path().filename().string().rfind(stem, 0) == 0 && e.file_size() > 40'000) {
+      if (e.path().filename().string().find(stem) != std::string::npos && e.file_size() > 40'000) {
         return true;
       }
     }
@@ -729,6 +730,8 @@ TEST_F(VividTest, mjpeg_frames_from_the_loopback_decode_to_what_was_sent) {
 
 // Last: vivid stays disconnected until every handle on it is closed.
 // Also runs the live drift animation, whose worker must not keep the program from ending.
+// The recording is kept as a playable partial movie beside its target (the output policy: a run
+// that fails never takes the output's name).
 TEST_F(VividTest, camera_vanishing_mid_stream_ends_cleanly_with_the_recording_playable) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "vanish";
   std::filesystem::create_directories(dir);
@@ -746,9 +749,11 @@ TEST_F(VividTest, camera_vanishing_mid_stream_ends_cleanly_with_the_recording_pl
   EXPECT_EQ(cam.rc(), 1) << cam.err();
   const std::string err = cam.err();
   EXPECT_NE(err.find("ifsfx: " + cap_ + ": device vanished"), std::string::npos) << err;
-  EXPECT_NE(err.find("recording kept: " + rec.string()), std::string::npos) << err;
+  const std::filesystem::path partial = dir / "vanish.partial.avi";
+  EXPECT_NE(err.find("recording kept: " + partial.string()), std::string::npos) << err;
+  EXPECT_FALSE(std::filesystem::exists(rec)) << "a failed recording took the output's name";
   EXPECT_GT(frames_reported(err), 0) << err;
-  EXPECT_EQ(decodable_frames(rec), frames_reported(err)) << "recording not playable to the end";
+  EXPECT_EQ(decodable_frames(partial), frames_reported(err)) << "recording not playable to the end";
 }
 
 }  // namespace
