@@ -16,6 +16,7 @@ void add_texture_command(CLI::App& app);  // render a superIFS texture or textur
 void add_cam_command(CLI::App& app);      // live camera kaleidoscope over V4L2
 void add_filter_command(CLI::App& app);   // fractal video filter on movie files
 void add_info_command(CLI::App& app);     // version, build and kernel level
+void add_farm_command(CLI::App& app);     // shard filter/texture over a Slurm cluster
 
 // "ifsfx VERSION (BUILD TYPE build, ...)" and the kernel level line, for --version and `info`.
 std::string version_text();

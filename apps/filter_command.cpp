@@ -14,6 +14,7 @@
 
 #include "apps/cli_options.h"
 #include "apps/commands.h"
+#include "apps/filter_options.h"
 #include "apps/fractal_filter_options.h"
 #include "apps/stop_signals.h"
 #include "ifs/error.h"
@@ -28,26 +29,6 @@ namespace ifsfx::app {
 namespace {
 
 using video::Animate;
-
-struct FilterArgs {
-  std::string input;
-  std::string output;
-  bool preview = false;
-  FractalFilterArgs fractal{.preset = "barnsley-fern"};
-  Interpolation interpolation = Interpolation::bilinear;
-  std::string size;
-  std::string codec;
-  std::string frames;
-  double fps = 25;
-  bool skip_gaps = false;
-  video::FrameTiming timing = video::FrameTiming::automatic;
-  bool timing_given = false;
-  Animate animate = Animate::none;
-  int keyframe_interval = 12;
-  std::string superifs = "paper-fig4";
-  int buffers = 3;
-  bool quiet = false;
-};
 
 std::string clock_text(double seconds) {
   if (seconds < 0) return "--:--";
@@ -110,6 +91,8 @@ void run_filter(const FilterArgs& args) {
   video::check_output_name(args.output);
   const bool movie_output = !args.output.empty() && !video::is_sequence_pattern(args.output);
   if (movie_output) video::resolve_timing(args.output, args.codec, args.timing);
+  if (args.segment && !movie_output)
+    throw Error(ErrorKind::invalid_argument, "--segment: a farm segment is a movie file");
   if (args.timing_given && !movie_output)
     throw Error(ErrorKind::invalid_argument,
                 "--fps-mode: only a movie output has frame times (got an image sequence or "
@@ -180,8 +163,10 @@ void run_filter(const FilterArgs& args) {
       o.timing = args.timing;
       o.threads = args.fractal.threads;
       o.output = output;
+      o.source_clock = args.segment;
+      // A farm segment carries no audio: the join copies it once, from the input, as one run does.
       if (const auto* file = dynamic_cast<const video::FileSource*>(source.get());
-          file != nullptr && file->has_audio()) {
+          file != nullptr && file->has_audio() && !args.segment) {
         o.audio_from = file->path();
         o.audio_origin = file->start_time();
       }
@@ -256,71 +241,16 @@ void add_filter_command(CLI::App& app) {
       "stopped keeps its frames in OUTPUT-STEM.partial.EXT");
   cmd->add_flag("--preview", args->preview,
                 "Show the result in a window instead of writing a file");
-  add_fractal_filter_options(*cmd, args->fractal);
-  const std::map<std::string, Interpolation> interpolations{{"bilinear", Interpolation::bilinear},
-                                                            {"nearest", Interpolation::nearest}};
-  cmd->add_option("--interpolation", args->interpolation,
-                  "Lookup in the frame: bilinear or nearest")
-      ->transform(choice(interpolations))
-      ->default_str("bilinear")
-      ->option_text(choices_text(interpolations, "bilinear"));
-  cmd->add_option("--size", args->size,
-                  "Output size WxH (default: the input's, upright). Encoders that code colour at "
-                  "half resolution (H.264 in yuv420p, MPEG-4, ...) need even sides: an odd side "
-                  "is made one pixel smaller, with a note on stderr");
-  cmd->add_option("--codec", args->codec,
-                  "Video encoder (libx264, h264, mpeg4, ffv1, ...; default by container: "
-                  ".mp4/.mkv H.264 CRF 23, .avi MPEG-4 part 2)");
+  add_filter_options(*cmd, args);
   cmd->add_option("--frames", args->frames,
                   "Source frames START:END to filter, both included, from 0 (START: or :END too); "
                   "frames are counted as the input gives them (the Nth picture, also in a "
                   "variable-rate movie), not by time");
-  cmd->add_option("--fps", args->fps, "Frame rate of an image sequence input")
-      ->capture_default_str()
-      ->check(number_in(0, 1000, true));
-  cmd->add_flag("--skip-gaps", args->skip_gaps,
-                "Image sequence input: go on past missing numbers (frame_0003 between 0002 and "
-                "0004), holding the frame before for the missing time; without it a gap is an "
-                "error naming the missing file");
-  const std::map<std::string, video::FrameTiming> timings{{"auto", video::FrameTiming::automatic},
-                                                          {"vfr", video::FrameTiming::keep},
-                                                          {"cfr", video::FrameTiming::constant}};
-  cmd->add_option("--fps-mode", args->timing,
-                  "Frame times of a movie output. vfr: every frame keeps its input time, a "
-                  "variable-rate input (phone, screen recording, dropped frames) stays in sync "
-                  "with its audio; cfr: the input's nominal rate, each frame shown at its time, "
-                  "repeated over gaps and dropped where two fall in one frame slot (ffmpeg "
-                  "-fps_mode cfr); auto: vfr, or cfr where the container cannot keep times (.avi)")
-      ->transform(choice(timings))
-      ->default_str("auto")
-      ->option_text(choices_text(timings, "auto"))
-      ->each([args](const std::string&) { args->timing_given = true; });
-  const std::map<std::string, Animate> animations{
-      {"none", Animate::none}, {"drift", Animate::drift}, {"superifs", Animate::superifs}};
-  cmd->add_option("--animate", args->animate,
-                  "none: one fixed map; drift: map coefficients wander by fBm noise; superifs: a "
-                  "V-variable step of --superifs per keyframe. Keyframes count input frames "
-                  "(keyframe k at frame k·K), so a variable-rate input animates per frame, not "
-                  "per second")
-      ->transform(choice(animations))
-      ->default_str("none")
-      ->option_text(choices_text(animations, "none"))
-      ->group("Animation");
-  cmd->add_option("--keyframe-interval", args->keyframe_interval,
-                  "Animation: frames between rebuilt maps, cross-faded in between")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 100000))
-      ->group("Animation");
-  cmd->add_option("--superifs", args->superifs,
-                  "--animate superifs: the superIFS (shipped name or .toml path); its own view and "
-                  "colouring replace --preset, --colouring and --view")
-      ->capture_default_str()
-      ->group("Animation");
-  cmd->add_option("--buffers", args->buffers, "--animate superifs: V, the number of buffers")
-      ->capture_default_str()
-      ->check(CLI::Range(1, 64))
-      ->group("Animation");
   cmd->add_flag("-q,--quiet", args->quiet, "No progress bar or summary");
+  // Written by `ifsfx farm filter` into its shards' scripts; not for people.
+  cmd->add_flag("--segment", args->segment,
+                "A segment of a sharded run: the source's clock, no audio")
+      ->group("");
   cmd->callback([args] { run_filter(*args); });
 }
 

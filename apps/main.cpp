@@ -49,6 +49,7 @@ int main(int argc, char** argv) {
   ifsfx::app::add_cam_command(app);
   ifsfx::app::add_filter_command(app);
   ifsfx::app::add_info_command(app);
+  ifsfx::app::add_farm_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -17,6 +17,7 @@
 #include "superifs/superifs_file.h"
 #include "superifs/texture.h"
 #include "video/image_sequence.h"
+#include "video/pipeline.h"
 
 namespace ifsfx::app {
 namespace {
@@ -33,6 +34,7 @@ struct TextureArgs {
   std::uint64_t seed = 1;
   int threads = 0;
   int frames = 1;
+  std::string frame_range;  // farm shards: write only frames START:END of the sequence
   int crossfade = 1;
   int bits = 8;
   bool quiet = false;
@@ -64,13 +66,20 @@ void run_texture(const TextureArgs& args) {
     return numbered ? video::sequence_path(args.output, frame + 1)
                     : std::filesystem::path(args.output);
   };
+  // A farm shard writes its own frames; each is a pure function of its index (map_at).
+  int first = 0, last = args.frames - 1;
+  if (!args.frame_range.empty()) {
+    const video::FrameRange range = video::parse_frame_range(args.frame_range, "--frame-range");
+    first = static_cast<int>(std::min<std::int64_t>(range.first, args.frames));
+    if (range.last >= 0) last = static_cast<int>(std::min<std::int64_t>(range.last, last));
+  }
   // The output policy: no frame replaces an input; every name is checked before the burn-in.
   StopSignals signals;
   OutputOptions output{.cancel = StopSignals::token()};
   add_preset_input(output.inputs, args.preset);
   output.inputs.add(args.source);
-  check_writable_image(path_of(0), output);
-  for (int frame = 1; frame < args.frames; ++frame) check_output(path_of(frame), output);
+  if (first <= last) check_writable_image(path_of(first), output);
+  for (int frame = first + 1; frame <= last; ++frame) check_output(path_of(frame), output);
   const SuperIfsPreset preset = load_superifs(args.preset);
 
   TextureOptions options;
@@ -107,7 +116,7 @@ void run_texture(const TextureArgs& args) {
   // The frames are written to temporary files and put in place together at the end: a run that
   // fails or is stopped leaves every existing frame file as it was.
   std::vector<OutputFile> written;
-  for (int frame = 0; frame < args.frames; ++frame) {
+  for (int frame = first; frame <= last; ++frame) {
     const StepPosition position = position_of_frame(frame, args.crossfade);
     OutputFile file(path_of(frame), output);
     write_image(file, textures.frame_at(position),
@@ -174,6 +183,10 @@ void add_texture_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({8, 16}));
   cmd->add_flag("-q,--quiet", args->quiet, "Do not print the summary line");
+  // Written by `ifsfx farm texture` into its shards' scripts.
+  cmd->add_option("--frame-range", args->frame_range,
+                  "Write only frames START:END (from 0) of the --frames sequence")
+      ->group("");
   cmd->callback([args] { run_texture(*args); });
 }
 

@@ -1,6 +1,7 @@
 #!/bin/sh
 # Writes the man page ifsfx.1 and the bash completion of ifsfx from the built command itself:
-# `ifsfx --help`, then `ifsfx COMMAND --help` for every subcommand that lists, and the names
+# `ifsfx --help`, then `ifsfx COMMAND --help` for every subcommand that lists (and `ifsfx COMMAND
+# SUBCOMMAND --help` for the subcommands a command lists), and the names
 # `ifsfx presets` and `ifsfx presets --super` print. A new option or subcommand appears in both
 # at the next build, with the text its --help gives.
 #   sh cmake/cli_docs.sh IFSFX VERSION MAN_OUT COMPLETION_OUT
@@ -43,9 +44,17 @@ awk "$parse" "$tmp/top.txt" >"$tmp/top"
 commands=$(awk -F '\t' '$1 == "S" { s = $2 } $1 == "E" && s == "Subcommands" { print $2 }' "$tmp/top" |
   awk '{ print $1 }')
 [ -n "$commands" ] || { echo "cli_docs.sh: no subcommands in '$ifsfx --help'" >&2; exit 1; }
+# A command's own subcommands (`ifsfx farm filter`, ...), by the name "COMMAND SUBCOMMAND", in
+# $tmp/COMMAND.SUBCOMMAND: each gets its own man page section with its options.
+subcommands_of() { awk -F '\t' '$1 == "S" { s = $2 } $1 == "E" && s == "Subcommands" { print $2 }' \
+  "$tmp/$1" | awk '{ print $1 }'; }
 for c in $commands; do
   "$ifsfx" "$c" --help >"$tmp/$c.txt"
   awk "$parse" "$tmp/$c.txt" >"$tmp/$c"
+  for s in $(subcommands_of "$c"); do
+    "$ifsfx" "$c" "$s" --help >"$tmp/$c.$s.txt"
+    awk "$parse" "$tmp/$c.$s.txt" >"$tmp/$c.$s"
+  done
 done
 # Shipped preset names: the first column of `ifsfx presets` and `ifsfx presets --super`.
 "$ifsfx" presets >"$tmp/presets.txt"
@@ -69,10 +78,15 @@ function spec(s,  name, rest, n, parts, i, out) {
 }
 # title: the command whose help this is ("" for the top-level help; "COMMANDS" for the list of
 # subcommands of the top-level help). A command'"'"'s own -h/--help-all are said once, at the top.
+# A command that has subcommands of its own (farm) lists them, each then with its own section.
 function wanted(s) {
   if (title == "COMMANDS") return section == "Subcommands"
-  return section != "Subcommands" && !(title != "" && (s == "-h,--help" || s == "--help-all"))
+  if (title == "") return section != "Subcommands"
+  return s != "-h,--help" && s != "--help-all"
 }
+# A section title is printed with its first wanted entry: none for a section of -h alone.
+function heading() { if (pending != "") { print ".PP"; print "\\fI" roff(pending) ":\\fR" }
+                     pending = "" }
 BEGIN { FS = "\t" }
 title == "COMMANDS" && $1 == "E" && wanted($2) { split($2, w, " "); print ".TP"
                                                  print "\\fB" roff(w[1]) "\\fR" }
@@ -81,10 +95,10 @@ title == "COMMANDS" { if ($1 == "S") section = $2; if ($1 == "E") last = $2; nex
 $1 == "D" && $2 != "" { print roff($2) }
 $1 == "U" && title != "" { print ".PP"; print "Usage: \\fB" roff($2) "\\fR" }
 $1 == "S" { section = $2 }
-$1 == "S" && title != "" { print ".PP"; print "\\fI" roff($2) ":\\fR" }
+$1 == "S" && title != "" { pending = $2 }
 $1 == "S" && title == "" && $2 == "Options" { print ".SH OPTIONS" }
 $1 == "E" { last = $2 }
-$1 == "E" && wanted($2) { print ".TP"; print spec($2); if ($3 != "") print roff($3) }
+$1 == "E" && wanted($2) { heading(); print ".TP"; print spec($2); if ($3 != "") print roff($3) }
 $1 == "C" && wanted(last) { print roff($2) }
 '
 roff_lines() { awk -v title="$2" "$roff" "$1"; }
@@ -102,6 +116,10 @@ escape() { sed -e 's/\\/\\e/g' -e 's/-/\\-/g' -e "s/^\\([.']\\)/\\\\\&\\1/" "$@"
   for c in $commands; do
     printf '.SS %s\n' "$c"
     roff_lines "$tmp/$c" "$c"
+    for s in $(subcommands_of "$c"); do
+      printf '.SS "%s %s"\n' "$c" "$s"
+      roff_lines "$tmp/$c.$s" "$c $s"
+    done
   done
   printf '.SH PRESETS\n'
   printf 'The shipped IFS presets (\\fBifsfx presets\\fR):\n.PP\n.nf\n'

@@ -22,6 +22,8 @@ packages=(
   # frei0r wrapper in -bad, Matroska in -good, FFV1 in -libav)
   frei0r-plugins-dev melt gstreamer1.0-tools gstreamer1.0-plugins-base gstreamer1.0-plugins-good
   gstreamer1.0-plugins-bad gstreamer1.0-libav
+  # `ifsfx farm` is tested against a real single-node Slurm (tests/farm/start-local-slurm.sh)
+  slurmctld slurmd slurm-client munge
 )
 
 missing=()

@@ -174,6 +174,7 @@ struct FileSink::Impl {
   std::unique_ptr<detail::AudioCopy> audio;
   AVStream* stream = nullptr;
   double audio_origin = 0;
+  bool source_clock = false;
   FrameTiming timing = FrameTiming::keep;
   Rational rate;              // the nominal rate: one frame's length where a frame has none
   std::int64_t received = 0;  // frames given to write()
@@ -350,6 +351,7 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
     if (s.audio->empty()) s.audio.reset();
   }
   s.audio_origin = options.audio_origin;
+  s.source_clock = options.source_clock;
 
   s.frame->format = c->pix_fmt;
   s.frame->width = c->width;
@@ -388,6 +390,10 @@ void FileSink::write(const Frame& frame) {
   if (s.received == 0) {
     s.first = frame;
     s.first.image.release();
+    if (s.source_clock) {
+      s.first.pts = 0;
+      s.first.timestamp = 0;
+    }
     if (s.audio) s.audio->set_origin(s.audio_origin + frame.timestamp);
   }
   ++s.received;

@@ -44,6 +44,9 @@ struct FileSinkOptions {
   std::optional<std::filesystem::path> audio_from;
   // The time on audio_from's clock that Frame::timestamp 0 stands for (FileSource::start_time).
   double audio_origin = 0;
+  // Output time 0 is the source's time 0 (Frame::pts 0), not the first frame written: a segment
+  // of a sharded run (`ifsfx farm`) keeps its place in the whole movie, for a stream-copy join.
+  bool source_clock = false;
   // The output policy: the inputs the movie must not replace (ifs/output_file.h).
   OutputOptions output;
 };

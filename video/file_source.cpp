@@ -1,9 +1,11 @@
 #include "video/file_source.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <system_error>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -67,11 +69,16 @@ struct FileSource::Impl {
   bool draining = false;  // the demuxer is exhausted; the decoder is being flushed
   bool finished = false;
   bool audio = false;
+  bool pending = false;  // `frame` holds a decoded frame not yet handed out (after a seek)
 
   std::string what() const { return path.string(); }
 
   // The next decoded AVFrame, or false at the end of the stream.
   bool decode_next() {
+    if (pending) {
+      pending = false;
+      return true;
+    }
     for (;;) {
       const int got = avcodec_receive_frame(codec.get(), frame.get());
       if (got == 0) return true;
@@ -154,6 +161,76 @@ struct FileSource::Impl {
     last_timestamp = out.timestamp;
     last_duration = static_cast<double>(out.duration) * av_q2d(tb);
     return out;
+  }
+
+  // The presentation times of the next `limit` video packets (all when limit < 0) in decode
+  // order, AV_NOPTS_VALUE for a packet without one, by demuxing only: no decoding.
+  std::vector<std::int64_t> packet_times(std::int64_t limit) {
+    std::vector<std::int64_t> times;
+    while (limit < 0 || static_cast<std::int64_t>(times.size()) < limit) {
+      const int r = av_read_frame(format.get(), packet.get());
+      if (r < 0) break;  // the end (or an unreadable tail: the sequential decode will say)
+      const bool ours = packet->stream_index == stream->index &&
+                        !(packet->flags & (AV_PKT_FLAG_DISCARD | AV_PKT_FLAG_CORRUPT));
+      const std::int64_t pts = packet->pts;
+      av_packet_unref(packet.get());
+      if (ours) times.push_back(pts);
+    }
+    return times;
+  }
+
+  // The presentation time of frame `index` (the index-th smallest packet time, decode order
+  // being at most 16 frames away from presentation order in every codec libav knows), and the
+  // time of the first frame; nothing when the stream ends before or has packets without times.
+  // Reads from the current position of a fresh demuxer: the start of the file.
+  struct FrameTimes {
+    std::int64_t target = 0;
+    std::int64_t first = 0;
+  };
+  std::optional<FrameTimes> frame_time(std::int64_t index) {
+    constexpr std::int64_t max_reorder = 16;
+    std::vector<std::int64_t> times = packet_times(index + max_reorder + 1);
+    if (static_cast<std::int64_t>(times.size()) <= index ||
+        std::find(times.begin(), times.end(), AV_NOPTS_VALUE) != times.end())
+      return std::nullopt;
+    const std::int64_t first = *std::min_element(times.begin(), times.end());
+    std::nth_element(times.begin(), times.begin() + index, times.end());
+    return FrameTimes{times[static_cast<std::size_t>(index)], first};
+  }
+
+  // The demuxer to the keyframe at or before `ts` (INT64_MIN: the start), the decoder emptied.
+  bool seek_file(std::int64_t ts) {
+    // The start: the keyframe at or before the stream's start time (or 0).
+    if (ts == INT64_MIN) ts = stream->start_time != AV_NOPTS_VALUE ? stream->start_time : 0;
+    const int r = av_seek_frame(format.get(), stream->index, ts, AVSEEK_FLAG_BACKWARD);
+    if (r < 0) return false;
+    avcodec_flush_buffers(codec.get());
+    return true;
+  }
+
+  // Seeks to the keyframe at or before `target` (`from` on the stream's clock, earlier on each
+  // try) and decodes up to the frame at `target`, left pending. False when the landing is not
+  // clean: the first frame decoded is not a keyframe at or before the target (a container index
+  // by decode time, an open GOP's leading pictures), or the target was passed.
+  bool land(std::int64_t from, std::int64_t target, bool at_start) {
+    if (!seek_file(from)) return false;
+    draining = false;
+    finished = false;
+    bool first = true;
+    while (decode_next()) {
+      const std::int64_t pts = frame->best_effort_timestamp;
+      const bool clean = pts != AV_NOPTS_VALUE && pts <= target && frame->key_frame != 0;
+      if (first && !clean && !at_start) break;
+      first = false;
+      if (pts == target) {
+        pending = true;
+        return true;
+      }
+      av_frame_unref(frame.get());
+      if (pts != AV_NOPTS_VALUE && pts > target) break;
+    }
+    av_frame_unref(frame.get());
+    return false;
   }
 
   void check_complete() const {
@@ -241,6 +318,47 @@ std::optional<Frame> FileSource::read() {
 
 bool FileSource::skip() {
   return impl_->next(false).has_value();
+}
+
+std::int64_t FileSource::count_frames() {
+  Impl& s = *impl_;
+  if (s.decoded > 0 || s.finished)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: frames are counted before any is read", s.what()));
+  const auto count = static_cast<std::int64_t>(s.packet_times(-1).size());
+  if (!s.seek_file(INT64_MIN))
+    throw Error(ErrorKind::io, fmt::format("{}: cannot seek back to the start", s.what()));
+  return count;
+}
+
+bool FileSource::seek(std::int64_t index) {
+  Impl& s = *impl_;
+  if (index <= 0 || s.decoded > 0 || s.finished) return FrameSource::seek(index - s.decoded);
+  const std::optional<Impl::FrameTimes> times = s.frame_time(index);
+  if (!times) {
+    // No frame there (or no packet times): start again and let a sequential decode tell.
+    if (!s.seek_file(INT64_MIN))
+      throw Error(ErrorKind::io, fmt::format("{}: cannot seek back to the start", s.what()));
+    return FrameSource::seek(index);
+  }
+  // The origin of Frame::pts, as a sequential decode sets it from the first frame.
+  s.start_pts = s.stream->start_time != AV_NOPTS_VALUE
+                    ? std::min(s.stream->start_time, times->first)
+                    : times->first;
+  // Back off one second, then two, four, ... until the landing is clean; the start always is.
+  const std::int64_t second =
+      std::max<std::int64_t>(1, av_rescale_q(1, AVRational{1, 1}, s.stream->time_base));
+  for (std::int64_t back = 0;; back = back == 0 ? second : back * 2) {
+    const bool at_start = times->target - back <= times->first;
+    if (s.land(at_start ? INT64_MIN : times->target - back, times->target, at_start)) break;
+    if (at_start)
+      throw Error(ErrorKind::io, fmt::format("{}: frame {} (time {}) not found by decoding from "
+                                             "the start",
+                                             s.what(), index, times->target));
+  }
+  s.decoded = index;
+  s.next_pts = times->target - s.start_pts;
+  return true;
 }
 
 cv::Size FileSource::size() const {

@@ -38,6 +38,15 @@ class FileSource final : public FrameSource {
 
   std::optional<Frame> read() override;
   bool skip() override;  // decodes (the next frames depend on it) but does not convert
+  // Exact seeking by timestamp, for constant and variable rates: the presentation times of the
+  // packets up to frame `index` are read (demuxing only, no decoding) to find that frame's time;
+  // then the file seeks to the keyframe at or before it and decodes forward, dropping the frames
+  // before. The frames given equal those of a sequential decode. A source that has already given
+  // frames, or a stream without packet times, skips instead.
+  bool seek(std::int64_t index) override;
+  // The exact number of frames, counted by demuxing every video packet (no decoding; fast, but it
+  // reads the whole file), on a source that has not given a frame yet; it stays at the start.
+  std::int64_t count_frames();
   cv::Size size() const override;
   double fps() const override;
   // The container's frame count (or duration × rate); -1 when it says neither.

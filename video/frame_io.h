@@ -51,6 +51,15 @@ class FrameSource {
   // Moves past the next frame without delivering it (a frame range that starts later): false at
   // the end of the stream. Sources override it to skip the work of making the image.
   virtual bool skip() { return read().has_value(); }
+  // Moves a source that has not given a frame yet to frame `index` (counted as Frame::index
+  // counts), so that the next read() gives exactly that frame: false when the source ends before
+  // it. The default skips the frames before; a movie file seeks to the keyframe at or before the
+  // frame's time and decodes forward from there (a shard of a long film starts at once).
+  virtual bool seek(std::int64_t index) {
+    for (std::int64_t i = 0; i < index; ++i)
+      if (!skip()) return false;
+    return true;
+  }
   virtual cv::Size size() const = 0;
   virtual double fps() const = 0;  // frames per second; 0 when unknown
   // The nominal rate, exact: a movie file's own fraction, rate_from_fps(fps()) by default.

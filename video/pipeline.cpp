@@ -80,18 +80,13 @@ PipelineResult run_pipeline(FrameSource& source, FrameSink& sink, const FrameFil
   }
 
   std::jthread decoder([&] {
-    std::int64_t skipped = 0;
     try {
-      while (true) {
+      // Frames before the range: passed over without making their images (a movie file seeks).
+      const bool started = options.range.first == 0 || source.seek(options.range.first);
+      while (started) {
         if (stop_requested()) {
           interrupted = true;
           break;
-        }
-        // Frames before the range: passed over without making their images.
-        if (skipped < options.range.first) {
-          if (!source.skip()) break;
-          ++skipped;
-          continue;
         }
         std::optional<Frame> frame = source.read();
         if (!frame) break;

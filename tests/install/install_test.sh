@@ -62,6 +62,17 @@ case "$check" in
         grep -qF -- "\\fB${option//-/\\-}\\fR" <<<"$section" || fail "man page: '$c' lacks $option"
       done
     done
+    # A command's own subcommands (farm filter, ...): a section each, with every option.
+    for c in $commands; do
+      for s in $("$built_ifsfx" "$c" --help | sed -n '/^Subcommands:/,$p' | awk '/^  [a-z]/ { print $1 }'); do
+        section=$(awk -v c=".SS \"$c $s\"" '$0 == c { on = 1; next } /^\.S[SH] / { on = 0 } on' "$man")
+        [ -n "$section" ] || fail "man page: no section for '$c $s'"
+        for option in $("$built_ifsfx" "$c" "$s" --help | awk '/^  -/ { print $1 }' | tr , ' '); do
+          case $option in -h | --help | --help-all) continue ;; esac
+          grep -qF -- "\\fB${option//-/\\-}\\fR" <<<"$section" || fail "man page: '$c $s' lacks $option"
+        done
+      done
+    done
     preconv "$man" | groff -man -ww -z 2>roff.txt
     [ ! -s roff.txt ] || fail "roff warnings: $(cat roff.txt)"
     # The bash completion: commands, options, the choices of --mode, preset names.

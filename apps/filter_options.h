@@ -1,0 +1,41 @@
+// The options of `ifsfx filter` that shape the picture and the output encoding, shared by the
+// filter command and `ifsfx farm filter` (which hands them on, unchanged, to every shard).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "apps/fractal_filter_options.h"
+#include "ifs/steal_map.h"
+#include "video/file_sink.h"
+#include "video/fractal_engine.h"
+
+namespace ifsfx::app {
+
+struct FilterArgs {
+  std::string input;
+  std::string output;
+  bool preview = false;
+  FractalFilterArgs fractal{.preset = "barnsley-fern"};
+  Interpolation interpolation = Interpolation::bilinear;
+  std::string size;
+  std::string codec;
+  std::string frames;
+  double fps = 25;
+  bool skip_gaps = false;
+  video::FrameTiming timing = video::FrameTiming::automatic;
+  bool timing_given = false;
+  video::Animate animate = video::Animate::none;
+  int keyframe_interval = 12;
+  std::string superifs = "paper-fig4";
+  int buffers = 3;
+  bool quiet = false;
+  bool segment = false;  // a farm shard's segment: the source's clock, no audio
+};
+
+// Registers the options (all but INPUT, -o, --preview, --frames, -q) on `cmd`, writing to `args`.
+void add_filter_options(CLI::App& cmd, const std::shared_ptr<FilterArgs>& args);
+
+}  // namespace ifsfx::app
