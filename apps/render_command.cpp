@@ -32,6 +32,7 @@ struct RenderArgs {
   std::uint64_t seed = 1;
   int threads = 0;
   int bits = 8;
+  bool smallest = false;
   bool allow_expansive = false;
   bool quiet = false;
   // tops and steal modes (apps/steal_modes.h)
@@ -121,6 +122,7 @@ void run_render(const RenderArgs& args) {
 
   WriteOptions write;
   write.bits = args.bits;
+  write.smallest = args.smallest;
   write.metadata = {
       {"ifsfx:preset", preset.text},
       {"ifsfx:preset_name", preset.ifs.name},
@@ -190,6 +192,9 @@ void add_render_command(CLI::App& app) {
   cmd->add_option("--bits", args->bits, "Bits per channel of PNG/TIFF output: 8 or 16")
       ->capture_default_str()
       ->check(CLI::IsMember({8, 16}));
+  cmd->add_flag("--smallest", args->smallest,
+                "PNG output: the smallest file (zlib level 9) instead of the fastest to write "
+                "(level 1)");
   cmd->add_flag("--allow-expansive", args->allow_expansive,
                 "Accept maps with factor >= 1 when the IFS contracts on average");
   cmd->add_flag("-q,--quiet", args->quiet, "Do not print the summary line");

@@ -115,6 +115,7 @@ void write_image(const fs::path& path, const cv::Mat& image, const WriteOptions&
   OIIO::ImageSpec spec(pixels.cols, pixels.rows, pixels.channels(), format);
   if (pixels.channels() == 4) spec.alpha_channel = 3;
   if (is_float_format) spec.attribute("compression", "zip");
+  if (ext == ".png") spec.attribute("png:compressionLevel", options.smallest ? 9 : 1);
   spec.attribute("Software", "ifsfx");
   for (const auto& [key, value] : options.metadata) spec.attribute(key, value);
   // Formats without free-form attributes (TIFF, JPEG) keep only standard tags: carry the whole
