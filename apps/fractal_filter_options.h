@@ -15,7 +15,7 @@ namespace ifsfx::app {
 struct FractalFilterArgs {
   std::string preset;  // the command's default preset
   std::string colouring;
-  bool exact = false;
+  bool exact = true;  // --exact (default) or --chaos
   std::string view;
   double margin = 0.05;
   double quality = 64;
@@ -31,8 +31,9 @@ struct FractalFilterArgs {
   video::FractalSettings settings() const;
 };
 
-// Registers --preset, --colouring, --exact, --view, --margin, --quality, --mix and --background
-// in the help group "Fractal", --drift-amount and --drift-speed in "Animation", and --seed and
+// Registers --preset, --colouring, --exact/--chaos, --view, --margin, --quality, --mix and
+// --background in the help group "Fractal", --drift-amount and --drift-speed in "Animation", and
+// --seed and
 // --threads.
 void add_fractal_filter_options(CLI::App& cmd, FractalFilterArgs& args);
 

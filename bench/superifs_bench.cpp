@@ -56,40 +56,64 @@ BENCHMARK(texture_attractor_2048_fig4_v3)
     ->UseRealTime()
     ->MeasureProcessCPUTime();
 
-// One further step of a sequence and its new steal map (what the video filter asks for each
-// step), and the same with the source coloured in (what `ifsfx texture --frames` writes).
-void sequence_step_1920x1080(benchmark::State& state, const char* preset, bool colour) {
+// One further step of a sequence alone (the V buffers), with its new steal map (what the video
+// filter asks for each step: step + exact descent), and with the source coloured in (what
+// `ifsfx texture --frames` writes: step + descent + apply). The differences say where a step goes.
+enum class StepPart { buffers, map, frame };
+
+void sequence_step_1920x1080(benchmark::State& state, const char* preset, StepPart part) {
   const SuperIfs super = load_superifs(preset).super;
   const cv::Mat source = gradient_source({1920, 1080});
   TextureSequence seq(super, {1920, 1080},
                       {.count = 3, .mode = TextureMode::steal, .source = source});
   int previous = seq.steps_done();
   for (auto _ : state) {
-    if (colour) {
+    if (part == StepPart::frame) {
       seq.step();
       const cv::Mat frame = seq.frame();
       benchmark::DoNotOptimize(frame.data);
-    } else {
+    } else if (part == StepPart::map) {
       const StealMap map = seq.next_map();
       benchmark::DoNotOptimize(map.source_uv.data);
+    } else {
+      seq.step();
+      benchmark::DoNotOptimize(seq.buffers().mask(0).data);
     }
   }
   check(state, seq.steps_done() == previous + static_cast<int>(state.iterations()), "no steps");
   state.SetItemsProcessed(state.iterations());  // items/s = steps/s
 }
-BENCHMARK_CAPTURE(sequence_step_1920x1080, fig4_map, "paper-fig4", false)
+BENCHMARK_CAPTURE(sequence_step_1920x1080, fig4_map, "paper-fig4", StepPart::map)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MeasureProcessCPUTime();
-BENCHMARK_CAPTURE(sequence_step_1920x1080, fig4_frame, "paper-fig4", true)
+BENCHMARK_CAPTURE(sequence_step_1920x1080, fig4_frame, "paper-fig4", StepPart::frame)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MeasureProcessCPUTime();
-BENCHMARK_CAPTURE(sequence_step_1920x1080, quadrant_shuffle_map, "quadrant-shuffle", false)
+BENCHMARK_CAPTURE(sequence_step_1920x1080, quadrant_shuffle_buffers, "quadrant-shuffle",
+                  StepPart::buffers)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MeasureProcessCPUTime();
-BENCHMARK_CAPTURE(sequence_step_1920x1080, carpet_lace_frame, "carpet-lace", true)
+BENCHMARK_CAPTURE(sequence_step_1920x1080, quadrant_shuffle_map, "quadrant-shuffle", StepPart::map)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+BENCHMARK_CAPTURE(sequence_step_1920x1080, quadrant_shuffle_frame, "quadrant-shuffle",
+                  StepPart::frame)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+BENCHMARK_CAPTURE(sequence_step_1920x1080, carpet_lace_buffers, "carpet-lace", StepPart::buffers)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+BENCHMARK_CAPTURE(sequence_step_1920x1080, carpet_lace_map, "carpet-lace", StepPart::map)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MeasureProcessCPUTime();
+BENCHMARK_CAPTURE(sequence_step_1920x1080, carpet_lace_frame, "carpet-lace", StepPart::frame)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->MeasureProcessCPUTime();

@@ -190,6 +190,7 @@ void write_image(OutputFile& file, const cv::Mat& image, const WriteOptions& opt
     if (!is_float_format) spec.attribute("oiio:UnassociatedAlpha", 1);
   }
   if (is_float_format) spec.attribute("compression", "zip");
+  if (ext == ".png") spec.attribute("png:compressionLevel", options.smallest ? 9 : 1);
   spec.attribute("Software", "ifsfx");
   // Metadata is made valid UTF-8 first: a Latin-1 comment or file name must not fail the run.
   std::vector<std::pair<std::string, std::string>> metadata;

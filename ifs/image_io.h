@@ -17,6 +17,9 @@ namespace ifsfx {
 struct WriteOptions {
   // Bits per channel of integer formats: 8 or 16 (PNG, TIFF); ignored for OpenEXR (half float).
   int bits = 8;
+  // PNG: zlib level 9, the smallest files, instead of level 1, the fastest to write (about a
+  // fifth larger than level 6 for a stolen photo; bench/README.md).
+  bool smallest = false;
   // String attributes stored in the image's metadata, e.g. {"ifsfx:preset", <preset text>}.
   // Bytes that are not UTF-8 are read as Latin-1 (valid_utf8): metadata never fails a write.
   std::vector<std::pair<std::string, std::string>> metadata;

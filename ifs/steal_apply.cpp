@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
+#include "ifs/detail/compact_remap.h"
 #include "ifs/error.h"
 #include "ifs/parallel.h"
 #include "ifs/steal_map.h"
@@ -75,6 +76,9 @@ PreparedStealMap prepare_apply(const StealMap& map, cv::Size source_size,
   out.options = options;
   cv::convertMaps(mx, my, out.xy, out.frac, CV_16SC2,
                   options.interpolation == Interpolation::nearest);
+  if (auto compact =
+          detail::compact_remap(out.xy, out.frac, source_size, detail::RemapBorder::constant))
+    out.compact = std::make_shared<const detail::CompactRemap>(std::move(*compact));
   return out;
 }
 
@@ -87,14 +91,24 @@ void apply(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out) {
                     "({}x{}) (got {}x{})",
                     map.source_size.width, map.source_size.height, source.cols, source.rows));
   out.create(map.xy.size(), source.type());
-  const int interpolation =
-      map.options.interpolation == Interpolation::nearest ? cv::INTER_NEAREST : cv::INTER_LINEAR;
-  // Bands of rows on our own workers; each band is one remap.
+  // Bands of rows on our own workers: a fixed split, so the bytes never depend on the threads.
   constexpr int kBand = 64;
   const auto bands = static_cast<std::size_t>((out.rows + kBand - 1) / kBand);
+  const auto band_rows = [&](std::size_t band) {
+    return cv::Range(static_cast<int>(band) * kBand,
+                     std::min(out.rows, static_cast<int>(band + 1) * kBand));
+  };
+  if (map.compact && detail::compact_remap_supports(source.type())) {
+    const cv::Mat continuous = source.isContinuous() ? source : source.clone();
+    parallel_for(bands, map.options.threads, [&](std::size_t band, int) {
+      detail::remap_rows(*map.compact, continuous, out, band_rows(band), map.options.background);
+    });
+    return;
+  }
+  const int interpolation =
+      map.options.interpolation == Interpolation::nearest ? cv::INTER_NEAREST : cv::INTER_LINEAR;
   parallel_for(bands, map.options.threads, [&](std::size_t band, int) {
-    const cv::Range rows(static_cast<int>(band) * kBand,
-                         std::min(out.rows, static_cast<int>(band + 1) * kBand));
+    const cv::Range rows = band_rows(band);
     cv::Mat dst = out.rowRange(rows);
     const cv::Mat frac = map.frac.empty() ? cv::Mat() : map.frac.rowRange(rows);
     cv::remap(source, dst, map.xy.rowRange(rows), frac, interpolation, cv::BORDER_CONSTANT,

@@ -7,6 +7,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 
 #include <opencv2/core.hpp>
@@ -17,6 +18,10 @@
 #include "ifs/view.h"
 
 namespace ifsfx {
+
+namespace detail {
+struct CompactRemap;
+}
 
 // Coordinates in `source_uv` are normalised *image* coordinates of the source: u ∈ [0,1] left to
 // right, v ∈ [0,1] top to bottom, so the source pixel is (u·W − 0.5, v·H − 0.5) for a W×H source.
@@ -88,7 +93,9 @@ struct ApplyOptions {
 cv::Mat apply(const StealMap& map, const cv::Mat& source, const ApplyOptions& options = {});
 
 // A steal map made ready for sources of one size: the fixed-point remap tables (cv::convertMaps)
-// with uncovered pixels sent off the image, computed once and reused for every frame.
+// with uncovered pixels sent off the image, computed once and reused for every frame. 8-bit
+// sources go through `compact`, the same table reduced to the covered pixels (the bytes
+// cv::remap gives, on our own workers); other types through cv::remap.
 //   const auto prepared = prepare_apply(T, frame.size());
 //   for (...) apply(prepared, frame, out);
 struct PreparedStealMap {
@@ -96,6 +103,7 @@ struct PreparedStealMap {
   ApplyOptions options;
   cv::Mat xy;    // CV_16SC2: integer source pixel per output pixel
   cv::Mat frac;  // CV_16UC1: bilinear sub-pixel index (empty for nearest)
+  std::shared_ptr<const detail::CompactRemap> compact;  // null for a source below 2×2
 };
 PreparedStealMap prepare_apply(const StealMap& map, cv::Size source_size,
                                const ApplyOptions& options = {});

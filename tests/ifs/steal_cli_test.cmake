@@ -153,6 +153,26 @@ elseif(CHECK STREQUAL "option_of_another_mode")
   run(2 "ifsfx: --source: --mode steal needs a source image\n"
       render barnsley-fern --mode steal -o out.png)
   expect_no_file(out.png)
+  run(2 "ifsfx: --exact/--chaos: only with --mode tops or steal (got --mode measure)\n"
+      render barnsley-fern --chaos -o out.png)
+  expect_no_file(out.png)
+
+elseif(CHECK STREQUAL "exact_by_default")
+  # The steal map is the exact descent unless --chaos asks for the chaos game (issue 14 item 5).
+  foreach(method "" --chaos --exact)
+    execute_process(COMMAND ${IFSFX} render barnsley-fern --mode steal --source ${photo}
+                            --size 96x64 -o out.png ${method}
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out WORKING_DIRECTORY ${WORK})
+    if(method STREQUAL "--chaos")
+      set(want "steal map (chaos game)")
+    else()
+      set(want "steal map (exact)")
+    endif()
+    string(FIND "${out}" "${want}" at)
+    if(NOT rc EQUAL 0 OR at EQUAL -1)
+      message(FATAL_ERROR "render ${method}: exit ${rc}, stdout '${out}' (want '${want}')")
+    endif()
+  endforeach()
 
 else()
   message(FATAL_ERROR "unknown CHECK '${CHECK}'")
