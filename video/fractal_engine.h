@@ -48,7 +48,7 @@ struct FractalSettings {
   // The fractal (DESIGN.md §3): the drawing IFS F and the colouring IFS G.
   std::string preset = "barnsley-fern";  // F: a shipped name, a .toml/.ifs path or FILE.ifs:NAME
   std::string colouring;                 // G: a preset fitted to the unit square; "" = a tiling
-  bool exact = false;                    // per-pixel descent instead of the chaos game
+  bool exact = true;                     // per-pixel descent (faster); false: the chaos game
   std::optional<Box> view;               // plane rectangle of F shown; none = auto-framed
   double margin = 0.05;                  // auto-framing margin, fraction of the larger side
   double quality = 64;                   // chaos-game points per output pixel

@@ -41,7 +41,7 @@ clip() {
 # The settings both sides use: `ifsfx filter` flags and the plugin's parameters in order
 # (preset|colouring|mix|background|exact|drift|speed|seed|view).
 cli=(--preset maple-leaf --mix 0.25 --background "#336699" --seed 3)
-params="maple-leaf||0.25|#336699|n|0|0.2|3|"
+params="maple-leaf||0.25|#336699|y|0|0.2|3|"
 
 case $case_name in
 exports)
@@ -86,7 +86,7 @@ ffmpeg_drift)
   clip clip.mkv 160:120 -c:v ffv1 -pix_fmt bgr0
   "$ifsfx" filter clip.mkv -o cli.mkv --codec ffv1 --preset sierpinski-triangle --animate drift \
     --drift-amount 0.3 --drift-speed 1 --seed 4 -q
-  ffmpeg -v error -y -i clip.mkv -vf "frei0r=ifsfx:sierpinski-triangle||0|black|n|0.3|1|4|" \
+  ffmpeg -v error -y -i clip.mkv -vf "frei0r=ifsfx:sierpinski-triangle||0|black|y|0.3|1|4|" \
     -c:v ffv1 -pix_fmt bgr0 ffmpeg.mkv
   same_frames ffmpeg.mkv cli.mkv 30
   # And it moves: frames 0 and 29 show different maps.
@@ -141,7 +141,7 @@ gstreamer | gstreamer_odd_size)
   gst-inspect-1.0 frei0r-filter-ifsfx > inspect.txt 2>&1 || fail "no frei0r-filter-ifsfx: $(cat inspect.txt)"
   if [[ $case_name == gstreamer ]]; then
     clip clip.mkv 320:240 -c:v ffv1 -pix_fmt bgr0
-    ffmpeg -v error -y -i clip.mkv -vf "frei0r=ifsfx:maple-leaf||0.25|#336699|n|0|0.2|1|" \
+    ffmpeg -v error -y -i clip.mkv -vf "frei0r=ifsfx:maple-leaf||0.25|#336699|y|0|0.2|1|" \
       -c:v ffv1 -pix_fmt bgr0 expected.mkv
   else
     clip clip.mkv 321:241 -c:v ffv1 -pix_fmt bgr0

@@ -141,6 +141,7 @@ TEST(fractal_engine, a_stop_request_ends_every_map_build) {
   const cv::Size size{64, 48};
   FractalSettings fixed;
   fixed.preset = "maple-leaf";
+  fixed.exact = false;  // the chaos game's map
   fixed.cancel = CancelToken(&stop);
   EXPECT_TRUE(interrupted([&] { FractalEngine engine(fixed, size); }));
   FractalSettings exact = fixed;
