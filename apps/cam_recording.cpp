@@ -39,15 +39,17 @@ void CamRecording::start() {
 
 void CamRecording::stop() {
   if (!file_) return;
-  frames_ = file_->frames_written();
+  // Counted after closing: a constant-rate file writes its held-back last frame then.
   auto file = std::move(file_);
+  frames_ = file->frames_written();
   file->close();
+  frames_ = file->frames_written();
 }
 
 std::filesystem::path CamRecording::abandon() noexcept {
   if (!file_) return {};
-  frames_ = file_->frames_written();
   partial_ = file_->abandon();
+  frames_ = file_->frames_written();  // after abandon(): it writes the held-back last frame
   file_.reset();
   return partial_;
 }
