@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
+#include "ifs/detail/compact_remap.h"
 #include "ifs/error.h"
 #include "ifs/parallel.h"
 
@@ -61,8 +62,12 @@ cv::Mat original_at(const cv::Mat& frame, cv::Size size) {
   return resized;
 }
 
-// One band of output rows through one table, over the background already in `out`.
+// One band of output rows through one table, over the background already in `out`: through the
+// compact table where it serves the frame (the covered pixels only, no OpenCV thread pool inside
+// our bands), else cv::remap; the bytes are the same.
 void remap_band(const cv::Mat& frame, const RemapTable& table, cv::Mat& out, cv::Range rows) {
+  if (table.compact && detail::compact_remap_supports(frame.type()) && frame.isContinuous())
+    return detail::remap_rows(*table.compact, frame, out, rows, std::nullopt);
   cv::Mat dst = out.rowRange(rows);
   const int mode =
       table.interpolation == Interpolation::nearest ? cv::INTER_NEAREST : cv::INTER_LINEAR;
@@ -146,6 +151,9 @@ RemapTable make_remap_table(const StealMap& map, cv::Size source_size, Interpola
   table.interpolation = interpolation;
   cv::convertMaps(xy, cv::Mat(), table.xy, table.fraction, CV_16SC2,
                   interpolation == Interpolation::nearest);
+  if (auto compact = detail::compact_remap(table.xy, table.fraction, source_size,
+                                           detail::RemapBorder::transparent))
+    table.compact = std::make_shared<const detail::CompactRemap>(std::move(*compact));
   return table;
 }
 

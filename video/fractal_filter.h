@@ -4,9 +4,15 @@
 // one remap, plus the optional blend with the original frame.
 #pragma once
 
+#include <memory>
+
 #include <opencv2/core.hpp>
 
 #include "ifs/steal_map.h"
+
+namespace ifsfx::detail {
+struct CompactRemap;  // ifs/detail/compact_remap.h
+}
 
 namespace ifsfx::video {
 
@@ -45,6 +51,9 @@ struct RemapTable {
   cv::Mat fraction;      // CV_16UC1: sub-pixel position (bilinear), empty for nearest
   cv::Size source_size;  // the frame size the table was made for
   Interpolation interpolation = Interpolation::bilinear;
+  // The same table compacted to the covered pixels (null where it cannot be): 8-bit frames are
+  // remapped through it on our own bands, byte for byte what cv::remap gives from xy/fraction.
+  std::shared_ptr<const detail::CompactRemap> compact;
 
   cv::Size size() const { return xy.size(); }
 };

@@ -1,6 +1,7 @@
 #include "video/fractal_filter.h"
 
 #include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
 
 #include "ifs/error.h"
 #include "tests/video/test_frames.h"
@@ -130,6 +131,46 @@ TEST(fractal_filter, cross_fade_weights_the_two_maps) {
   cv::Mat quarter;
   filter_frame(frame, a).convertTo(quarter, CV_8UC3, 0.75);
   EXPECT_LE(cv::norm(filter_frame(frame, a, b, 0.25), quarter, cv::NORM_INF), 1.0);
+}
+
+// The compact table (8-bit frames, our own bands) gives cv::remap's bytes: the same frames through
+// the same table with and without it, for 3 and 4 channels, both interpolations, a colour and the
+// original as background, with and without mix, through one map and a cross-fade of two.
+TEST(fractal_filter, compact_table_gives_the_bytes_of_cv_remap) {
+  const cv::Size size{203, 151};  // odd, so that bands and rows do not line up with anything
+  StealMap map = identity_map(size);
+  for (int r = 0; r < size.height; ++r)
+    for (int c = 0; c < size.width; ++c) {
+      map.source_uv.at<cv::Vec2f>(r, c) = {0.05f + 0.93f * c / size.width,
+                                           0.02f + 0.97f * r * r / (size.height * size.height)};
+      if ((r * 7 + c * 3) % 11 == 0) map.coverage.at<std::uint8_t>(r, c) = 0;
+    }
+  StealMap other = identity_map(size);
+  for (const int type : {CV_8UC3, CV_8UC4}) {
+    cv::Mat frame = test_frame(size, 4);
+    if (type == CV_8UC4) cv::cvtColor(frame, frame, cv::COLOR_BGR2BGRA);
+    for (const Interpolation mode : {Interpolation::bilinear, Interpolation::nearest}) {
+      const RemapTable table = make_remap_table(map, size, mode);
+      const RemapTable second = make_remap_table(other, size, mode);
+      ASSERT_TRUE(table.compact) << "no compact table: the test would prove nothing";
+      RemapTable plain = table, plain_second = second;
+      plain.compact.reset();
+      plain_second.compact.reset();
+      for (const BackgroundKind kind : {BackgroundKind::colour, BackgroundKind::original})
+        for (const double mix : {0.0, 0.3}) {
+          FilterOptions o;
+          o.background = {kind, cv::Scalar(10, 200, 40, 255)};
+          o.mix = mix;
+          EXPECT_EQ(
+              cv::norm(filter_frame(frame, table, o), filter_frame(frame, plain, o), cv::NORM_INF),
+              0.0)
+              << "type " << type << " mode " << static_cast<int>(mode) << " mix " << mix;
+          EXPECT_EQ(cv::norm(filter_frame(frame, table, second, 0.4, o),
+                             filter_frame(frame, plain, plain_second, 0.4, o), cv::NORM_INF),
+                    0.0);
+        }
+    }
+  }
 }
 
 TEST(fractal_filter, thread_count_does_not_change_pixels) {
