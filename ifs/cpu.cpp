@@ -27,8 +27,9 @@ const char* to_string(CpuLevel level) noexcept {
   return "scalar";
 }
 
-#if IFSFX_X86_KERNELS
 namespace {
+
+#if IFSFX_X86_KERNELS
 
 // CPUID read directly (<cpuid.h>, GCC and clang alike): __builtin_cpu_supports("x86-64-v3") is
 // GCC's only, and neither compiler's builtin names every feature of the levels (LZCNT, MOVBE).
@@ -59,15 +60,15 @@ std::uint64_t os_saved_state() {
   return (static_cast<std::uint64_t>(hi) << 32) | lo;
 }
 
-}  // namespace
 #endif
 
-std::vector<CpuLevel> supported_cpu_levels() {
+// CPUID is slow (each one a VM exit under a hypervisor) and the answer never changes: read once.
+std::vector<CpuLevel> probe_cpu_levels() {
   std::vector<CpuLevel> levels{CpuLevel::scalar};
 #if IFSFX_X86_KERNELS
-  // The AVX2 kernels are compiled for x86-64-v3, the AVX-512 ones for x86-64-v4 (both less FMA,
-  // which the kernels never use: -mno-fma): each level needs every feature of its psABI level and
-  // the OS saving the YMM (XCR0 bits 1-2) and ZMM state (bits 5-7).
+  // The AVX2 kernels are compiled for x86-64-v3, the AVX-512 ones for x86-64-v4 (never with
+  // contracted multiply-adds: ifs/CMakeLists.txt): each level needs every feature of its psABI
+  // level and the OS saving the YMM (XCR0 bits 1-2) and ZMM state (bits 5-7).
   const std::uint64_t state = os_saved_state();
   const bool v3 = (state & 0x6) == 0x6 && cpuid_has_all({{1, 0, 2, 12},             // FMA
                                                          {1, 0, 2, 22},             // MOVBE
@@ -86,6 +87,13 @@ std::vector<CpuLevel> supported_cpu_levels() {
                                  {7, 0, 1, 31}});  // AVX512VL
   if (v4) levels.push_back(CpuLevel::avx512);
 #endif
+  return levels;
+}
+
+}  // namespace
+
+std::vector<CpuLevel> supported_cpu_levels() {
+  static const std::vector<CpuLevel> levels = probe_cpu_levels();
   return levels;
 }
 
