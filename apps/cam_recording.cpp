@@ -41,7 +41,6 @@ void CamRecording::stop() {
   if (!file_) return;
   // Counted after closing: a constant-rate file writes its held-back last frame then.
   auto file = std::move(file_);
-  frames_ = file->frames_written();
   file->close();
   frames_ = file->frames_written();
 }

@@ -5,8 +5,6 @@
 #include <cmath>
 #include <cstdint>
 
-#include <fmt/format.h>
-
 #include "ifs/chaos_game.h"
 #include "ifs/detail/address_raster.h"
 #include "ifs/detail/walkers.h"
