@@ -5,8 +5,7 @@
 # shared machine falls on both alike; the best of the rounds is kept. Prints per benchmark both
 # figures and the portable build's speed relative to the native one (1.00 = as fast; the issue
 # allows no kernel to lose more than 5%, i.e. no ratio below 0.95).
-#   cmake -S . -B build/native -G Ninja -DCMAKE_BUILD_TYPE=Release -DIFSFX_NATIVE=ON
-#   cmake --build build/native --target chaos_game_bench steal_bench ifsfx
+#   bash tools/build.sh native   (→ build/native; the portable one: bash tools/build.sh release)
 #   bench/native_vs_portable.sh [PORTABLE_BUILD] [NATIVE_BUILD] [ROUNDS]
 # (defaults build/release, build/native, 3)
 set -euo pipefail
