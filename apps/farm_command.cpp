@@ -2,6 +2,7 @@
 // cluster. The job folder (OUTPUT.farm/) holds the plan, one array job of shards (each an ordinary
 // `ifsfx filter --frames A:B` or `ifsfx texture --frame-range A:B`) and, for a movie, a join job
 // that runs once every shard succeeded and concatenates the segments by stream copy.
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -140,6 +141,18 @@ std::vector<std::string> without_options(const std::vector<std::string>& tokens,
   return out;
 }
 
+// The job folder's plan for frames `span` of the input cut into args.shards, written.
+FarmPlan write_new_plan(JobKind kind, const FarmArgs& args, farm::FrameSpan span) {
+  FarmPlan plan;
+  plan.kind = kind;
+  plan.folder = farm::job_folder_for(args.output);
+  plan.input = args.input;
+  plan.output = args.output;
+  plan.shards = farm::split_frames(span, args.shards);
+  farm::write_plan(plan);
+  return plan;
+}
+
 void run_farm_filter(const FarmArgs& args, const std::vector<std::string>& extra) {
   require_absolute(args.output, "-o");
   require_absolute(args.input, "INPUT");
@@ -181,13 +194,7 @@ void run_farm_filter(const FarmArgs& args, const std::vector<std::string>& extra
       args.frames.empty() ? video::FrameRange{} : video::parse_frame_range(args.frames);
   const std::int64_t last = range.last < 0 ? frames - 1 : std::min(range.last, frames - 1);
   policy.cancel.check("farm filter");
-  FarmPlan plan;
-  plan.kind = JobKind::filter;
-  plan.folder = farm::job_folder_for(args.output);
-  plan.input = args.input;
-  plan.output = args.output;
-  plan.shards = farm::split_frames({range.first, last}, args.shards);
-  farm::write_plan(plan);
+  const FarmPlan plan = write_new_plan(JobKind::filter, args, {range.first, last});
 
   const std::string self = self_binary().string();
   farm::JobCommands commands;
@@ -219,12 +226,10 @@ void run_farm_texture(const FarmArgs& args, const std::vector<std::string>& extr
   require_absolute(args.output, "-o");
   if (given(extra, "--frame-range"))
     throw Error(ErrorKind::invalid_argument, "farm texture: --frame-range is set per shard");
+  // The whole text a number, as `texture --frames` will read it in every shard ("7x" fails there).
   int frames = 0;
-  try {
-    frames = std::stoi(args.frames);
-  } catch (const std::exception&) {
-    frames = 0;
-  }
+  const char* end = args.frames.data() + args.frames.size();
+  if (std::from_chars(args.frames.data(), end, frames).ptr != end) frames = 0;
   if (frames < 1)
     throw Error(
         ErrorKind::invalid_argument,
@@ -241,13 +246,7 @@ void run_farm_texture(const FarmArgs& args, const std::vector<std::string>& extr
   check_output(video::sequence_path(args.output, 1), policy);
   policy.cancel.check("farm texture");
 
-  FarmPlan plan;
-  plan.kind = JobKind::texture;
-  plan.folder = farm::job_folder_for(args.output);
-  plan.input = args.input;
-  plan.output = args.output;
-  plan.shards = farm::split_frames({0, frames - 1}, args.shards);
-  farm::write_plan(plan);
+  const FarmPlan plan = write_new_plan(JobKind::texture, args, {0, frames - 1});
   const std::string self = self_binary().string();
   farm::JobCommands commands;
   commands.shard = [&](std::size_t i) {

@@ -153,4 +153,14 @@ refused "more shards than frames" "$W/a.mp4" -o "$W/bad.mkv" --shards 61
 ln -sf "$W/a.mp4" "$W/bad.mkv"
 refused "is the same file as the input" "$W/a.mp4" -o "$W/bad.mkv" --shards 2
 rm -f "$W/bad.mkv"
+# farm texture's count is read whole, as each shard's `texture --frames` will read it.
+for count in 7x 1e3; do
+  rm -rf "$W/badtex_.farm"
+  if "$IFSFX" farm texture paper-fig4 --frames $count -o "$W/badtex_%04d.png" --shards 2 --submit \
+    >"$W/bad.out" 2>"$W/bad.err"; then fail "farm texture --frames $count accepted"; fi
+  grep -q "^ifsfx: --frames: the number of textures, at least 1 (got '$count')$" "$W/bad.err" ||
+    fail "farm texture --frames $count: $(cat "$W/bad.err")"
+  [ -z "$(squeue -h)" ] && [ ! -e "$W/badtex_.farm" ] || fail "farm texture --frames $count: submitted"
+  ok "refused: $(cat "$W/bad.err")"
+done
 echo "ALL OK (${SECONDS} s)"
