@@ -15,10 +15,12 @@
 #include "apps/commands.h"
 #include "apps/filter_options.h"
 #include "apps/stop_signals.h"
+#include "apps/texture_options.h"
 #include "farm/farm_job.h"
 #include "farm/segment_join.h"
 #include "farm/shard_plan.h"
 #include "ifs/error.h"
+#include "ifs/image_io.h"
 #include "ifs/output_file.h"
 #include "superifs/superifs_file.h"
 #include "video/file_sink.h"
@@ -91,20 +93,28 @@ std::vector<std::string> handed_on(const CLI::App& cmd) {
   return cmd.remaining();
 }
 
-// The filter options handed on, parsed as `ifsfx filter` parses them: bad ones fail here, before
-// anything is submitted.
-FilterArgs parse_filter_options(const std::vector<std::string>& tokens) {
-  auto args = std::make_shared<FilterArgs>();
-  CLI::App parser{"ifsfx filter"};
-  add_filter_options(parser, args);
-  parser.add_flag("-q,--quiet", args->quiet);
+// The options handed on to every shard, parsed as the shard's command (`ifsfx filter` or `ifsfx
+// texture`) will parse them: bad ones fail here, before anything is submitted.
+template <class Args, class AddOptions>
+Args parse_handed_on(const std::vector<std::string>& tokens, const std::string& command,
+                     AddOptions add_options) {
+  auto args = std::make_shared<Args>();
+  CLI::App parser{"ifsfx " + command};
+  add_options(parser, args);
   std::vector<std::string> reversed(tokens.rbegin(), tokens.rend());
   try {
     parser.parse(reversed);
   } catch (const CLI::ParseError& e) {
-    throw Error(ErrorKind::invalid_argument, fmt::format("farm filter: {}", e.what()));
+    throw Error(ErrorKind::invalid_argument, fmt::format("farm {}: {}", command, e.what()));
   }
   return *args;
+}
+
+FilterArgs parse_filter_options(const std::vector<std::string>& tokens) {
+  return parse_handed_on<FilterArgs>(tokens, "filter", [](CLI::App& parser, const auto& args) {
+    add_filter_options(parser, args);
+    parser.add_flag("-q,--quiet", args->quiet);
+  });
 }
 
 bool given(const std::vector<std::string>& tokens, const std::string& name) {
@@ -240,10 +250,22 @@ void run_farm_texture(const FarmArgs& args, const std::vector<std::string>& extr
   // A superIFS named by path must be seen by the nodes too; a shipped name is found anywhere.
   if (args.input.find('/') != std::string::npos) require_absolute(args.input, "SUPERPRESET");
   load_superifs(args.input);  // a bad one fails here
+  // The texture options every shard gets, checked as `ifsfx texture` checks them.
+  TextureArgs texture = parse_handed_on<TextureArgs>(extra, "texture", add_texture_options);
+  texture.preset = args.input;
+  texture.output = args.output;
+  texture.frames = frames;
+  check_texture_args(texture);
   StopSignals signals;
   OutputOptions policy{.cancel = StopSignals::token()};
   add_preset_input(policy.inputs, args.input);
-  check_output(video::sequence_path(args.output, 1), policy);
+  if (!texture.source.empty()) {
+    require_absolute(texture.source, "--source");
+    (void)read_image(texture.source);  // a missing or damaged source fails here, not per shard
+    policy.inputs.add(texture.source);
+  }
+  // A writer for the pattern's extension, and the output policy.
+  check_writable_image(video::sequence_path(args.output, 1), policy);
   policy.cancel.check("farm texture");
 
   const FarmPlan plan = write_new_plan(JobKind::texture, args, {0, frames - 1});

@@ -163,4 +163,26 @@ for count in 7x 1e3; do
   [ -z "$(squeue -h)" ] && [ ! -e "$W/badtex_.farm" ] || fail "farm texture --frames $count: submitted"
   ok "refused: $(cat "$W/bad.err")"
 done
+# The texture options handed on to every shard are checked as `ifsfx texture` checks them, before
+# anything is planned or submitted (they used to fail in every shard, after submitting).
+printf 'not an image' >"$W/not-an-image.png"
+tex_refused() {  # expected-message options...
+  local want=$1
+  shift
+  rm -rf "$W/badtex_.farm"
+  if "$IFSFX" farm texture paper-fig4 --frames 4 -o "$W/badtex_%04d.png" --shards 2 --submit "$@" \
+    >"$W/bad.out" 2>"$W/bad.err"; then fail "farm texture $* accepted"; fi
+  [ "$(wc -l <"$W/bad.err")" = 1 ] && grep -q "^ifsfx: .*$want" "$W/bad.err" ||
+    fail "farm texture $*: expected one line with '$want', got: $(cat "$W/bad.err")"
+  [ -z "$(squeue -h)" ] && [ ! -e "$W/badtex_.farm" ] || fail "farm texture $*: submitted"
+  ok "refused: $(cat "$W/bad.err")"
+}
+tex_refused "--size: expected WxH (got '10x')" --size 10x
+tex_refused "--mode: must be one of" --mode sepia
+tex_refused "--buffer: must be 1..3 for V = 3 (got 4)" --buffer 4
+tex_refused "--source: steal mode needs a source image" --mode steal
+tex_refused "--source: must be an absolute path" --mode steal --source photo.png
+tex_refused "no such file" --mode steal --source "$W/missing.png"
+tex_refused "cannot read as an image" --mode steal --source "$W/not-an-image.png"
+tex_refused "not expected" --sparkle 3
 echo "ALL OK (${SECONDS} s)"
