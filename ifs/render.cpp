@@ -97,12 +97,12 @@ struct CountState {
   }
 };
 
-// Visit count and palette-coordinate sum per pixel, packed in one 64-bit word so a point costs a
-// single memory update, binned by tile on the way (detail::MeasureCells). Σc6 ≤ 63 · points, so
-// folding into wide totals every 2^26 points keeps both halves of the words exact.
+// Visit count and palette-coordinate sum per pixel, packed in one 32-bit word so a point costs a
+// single memory update (detail::MeasureCells), folded into the shared totals at the end, and
+// every kFoldPoints points so that the spills always have room.
 class MeasureState {
  public:
-  static constexpr std::uint64_t kFoldPoints = std::uint64_t{1} << 26;
+  static constexpr std::uint64_t kFoldPoints = std::uint64_t{1} << 28;
 
   struct Totals {
     std::vector<std::uint64_t> count, colour;
@@ -111,45 +111,32 @@ class MeasureState {
 
   MeasureState(const Viewport& v, Totals& totals)
       : cells_(static_cast<std::size_t>(v.size.area()), 0),
-        tiles_(static_cast<std::uint32_t>((cells_.size() + kTileCells - 1) / kTileCells)),
-        queue_(std::size_t{tiles_} * detail::MeasureCells::kQueueLength),
-        queued_(tiles_, 0),
+        spills_(kFoldPoints / detail::MeasureCells::kFull),
         totals_(&totals) {}
   MeasureState(MeasureState&&) = default;
 
   void run(const detail::WalkKernels& k, const detail::WalkSpec& w, const detail::LaneSeeds& seeds,
            std::uint64_t points) {
-    kernels_ = &k;
     if (pending_ + points > kFoldPoints) fold();
     pending_ += points;
-    detail::MeasureCells cells = view();
+    detail::MeasureCells cells{cells_.data(), spills_.data(), spilled_};
     k.measure(w, seeds, points, cells);
+    spilled_ = cells.spilled;
   }
   void fold() {
-    if (kernels_ == nullptr) return;  // no chunk ran here
-    detail::MeasureCells cells = view();
-    kernels_->measure_flush(cells);
+    if (pending_ == 0) return;  // nothing ran here since the last fold
+    detail::MeasureCells cells{cells_.data(), spills_.data(), spilled_};
     std::lock_guard lock(totals_->mutex);
-    for (std::size_t i = 0; i < cells_.size(); ++i) {
-      if (cells_[i] == 0) continue;
-      totals_->count[i] += cells_[i] & 0xffffffffu;
-      totals_->colour[i] += cells_[i] >> 32;
-      cells_[i] = 0;
-    }
+    detail::fold_measure_cells(cells, cells_.size(), totals_->count.data(), totals_->colour.data());
+    spilled_ = 0;
     pending_ = 0;
   }
 
  private:
-  static constexpr std::size_t kTileCells = std::size_t{1} << detail::MeasureCells::kTileBits;
-
-  detail::MeasureCells view() { return {cells_.data(), queue_.data(), queued_.data(), tiles_}; }
-
-  std::vector<std::uint64_t> cells_;
-  std::uint32_t tiles_;
-  std::vector<std::uint32_t> queue_;   // per tile: kQueueLength entries (c6 << 14 | cell in tile)
-  std::vector<std::uint32_t> queued_;  // entries waiting per tile
+  std::vector<std::uint32_t> cells_;
+  std::vector<std::uint64_t> spills_;
+  std::uint64_t spilled_ = 0;
   Totals* totals_;
-  const detail::WalkKernels* kernels_ = nullptr;
   std::uint64_t pending_ = 0;
 };
 
