@@ -171,6 +171,17 @@ double coverage_of(const cv::Mat& mask) {
   return static_cast<double>(cv::countNonZero(mask)) / static_cast<double>(mask.total());
 }
 
+// Of a BGR float image (channels ≥ 0): the share of pixels that are not black, in one pass (a
+// grey conversion, a threshold and a count took three, as long as the tone map itself).
+double coverage_of_colour(const cv::Mat& image) {
+  std::size_t lit = 0;
+  for (int r = 0; r < image.rows; ++r) {
+    const auto* row = image.ptr<cv::Vec3f>(r);
+    for (int c = 0; c < image.cols; ++c) lit += (row[c][0] > 0) | (row[c][1] > 0) | (row[c][2] > 0);
+  }
+  return static_cast<double>(lit) / static_cast<double>(image.total());
+}
+
 }  // namespace
 
 Rgb palette_colour(std::size_t n, std::size_t count) {
@@ -240,16 +251,34 @@ cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& optio
     sum += c;
     covered += c > 0;
   }
-  cv::Mat hires(viewport.size, CV_32FC3, cv::Scalar::all(0));
+  // Every pixel is written below (uncovered ones 0), so the raster is not cleared first.
+  cv::Mat hires(viewport.size, CV_32FC3);
+  if (covered == 0) hires.setTo(cv::Scalar::all(0));
   if (covered > 0) {
     const double kk = options.brightness * static_cast<double>(covered) / static_cast<double>(sum);
     const double norm = std::log1p(kk * static_cast<double>(max_count));
+    const auto tone = [&](std::uint64_t c) {
+      return std::pow(std::log1p(kk * static_cast<double>(c)) / norm, 1.0 / options.gamma);
+    };
+    // v is a function of the count alone, and counts repeat (a few thousand distinct values
+    // cover a 1080p fern): each count below kToneCounts is toned once, then looked up (the same
+    // expression, so the same bits). -1: not toned yet (v ≥ 0).
+    constexpr std::uint64_t kToneCounts = std::uint64_t{1} << 16;
+    std::vector<double> toned(std::min(max_count + 1, kToneCounts), -1.0);
     auto* out = hires.ptr<cv::Vec3f>();
     for (std::size_t i = 0; i < area; ++i) {
       const auto c = totals.count[i];
-      if (c == 0) continue;
-      const double v =
-          std::pow(std::log1p(kk * static_cast<double>(c)) / norm, 1.0 / options.gamma);
+      if (c == 0) {
+        out[i] = cv::Vec3f(0, 0, 0);
+        continue;
+      }
+      double v;
+      if (c < toned.size()) {
+        if (toned[c] < 0) toned[c] = tone(c);
+        v = toned[c];
+      } else {
+        v = tone(c);
+      }
       const double t = static_cast<double>(totals.colour[i]) / (63.0 * static_cast<double>(c));
       const Rgb rgb = palette_at(ifs, t);
       out[i] = cv::Vec3f(static_cast<float>(rgb.b * v), static_cast<float>(rgb.g * v),
@@ -261,11 +290,7 @@ cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& optio
     image = hires;
   else
     cv::resize(hires, image, size, 0, 0, cv::INTER_AREA);  // box filter: the mean of k×k cells
-  if (stats) {
-    cv::Mat grey;
-    cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
-    *stats = {points, seconds, coverage_of(grey > 0), viewport.view};
-  }
+  if (stats) *stats = {points, seconds, coverage_of_colour(image), viewport.view};
   return image;
 }
 
