@@ -253,8 +253,9 @@ cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& optio
   }
   // Every pixel is written below (uncovered ones 0), so the raster is not cleared first.
   cv::Mat hires(viewport.size, CV_32FC3);
-  if (covered == 0) hires.setTo(cv::Scalar::all(0));
-  if (covered > 0) {
+  if (covered == 0) {
+    hires.setTo(cv::Scalar::all(0));
+  } else {
     const double kk = options.brightness * static_cast<double>(covered) / static_cast<double>(sum);
     const double norm = std::log1p(kk * static_cast<double>(max_count));
     const auto tone = [&](std::uint64_t c) {
