@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <memory>
 #include <mutex>
+#include <new>
 
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
@@ -104,8 +107,19 @@ class MeasureState {
  public:
   static constexpr std::uint64_t kFoldPoints = std::uint64_t{1} << 28;
 
+  // The wide totals of every worker's cells, zeroed by calloc: an allocation this large comes
+  // fresh from the system, already zero, so only the pages a fold writes cost anything (a
+  // vector cleared all 32 MiB of a 1080p raster first, 20 ms).
   struct Totals {
-    std::vector<std::uint64_t> count, colour;
+    explicit Totals(std::size_t area)
+        : count(static_cast<std::uint64_t*>(std::calloc(area, sizeof(std::uint64_t)))),
+          colour(static_cast<std::uint64_t*>(std::calloc(area, sizeof(std::uint64_t)))) {
+      if (!count || !colour) throw std::bad_alloc();
+    }
+    struct Free {
+      void operator()(std::uint64_t* p) const { std::free(p); }
+    };
+    std::unique_ptr<std::uint64_t[], Free> count, colour;
     std::mutex mutex;
   };
 
@@ -127,7 +141,7 @@ class MeasureState {
     if (pending_ == 0) return;  // nothing ran here since the last fold
     detail::MeasureCells cells{cells_.data(), spills_.data(), spilled_};
     std::lock_guard lock(totals_->mutex);
-    detail::fold_measure_cells(cells, cells_.size(), totals_->count.data(), totals_->colour.data());
+    detail::fold_measure_cells(cells, cells_.size(), totals_->count.get(), totals_->colour.get());
     spilled_ = 0;
     pending_ = 0;
   }
@@ -229,10 +243,8 @@ cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& optio
   const Viewport viewport{viewport_for(ifs, size, options).view, size * k};
   const std::uint64_t points = point_budget(size, options.quality);
 
-  MeasureState::Totals totals;
   const auto area = static_cast<std::size_t>(viewport.size.area());
-  totals.count.assign(area, 0);
-  totals.colour.assign(area, 0);
+  MeasureState::Totals totals(area);
 
   const auto start = std::chrono::steady_clock::now();
   const ChaosGameOptions chaos{
@@ -246,7 +258,8 @@ cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& optio
   // Log-density tone map v = log(1 + k·c) / log(1 + k·max), k = brightness / mean covered count
   // (so the look does not depend on --quality), then the display gamma.
   std::uint64_t max_count = 0, sum = 0, covered = 0;
-  for (auto c : totals.count) {
+  for (std::size_t i = 0; i < area; ++i) {
+    const std::uint64_t c = totals.count[i];
     max_count = std::max(max_count, c);
     sum += c;
     covered += c > 0;
