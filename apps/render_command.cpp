@@ -215,8 +215,8 @@ void add_render_command(CLI::App& app) {
       ->capture_default_str()
       ->check(CLI::IsMember({8, 16}));
   cmd->add_flag("--smallest", args->smallest,
-                "PNG output: the smallest file (zlib level 9) instead of the fastest to write "
-                "(level 1)");
+                "PNG output: the smallest file (zlib level 9, filter chosen per row) instead "
+                "of the fastest to write (level 1, sub filter)");
   cmd->add_flag("--allow-expansive", args->allow_expansive,
                 "Accept maps with factor >= 1 when the IFS contracts on average");
   cmd->add_flag("-q,--quiet", args->quiet, "Do not print the summary line");

@@ -190,7 +190,15 @@ void write_image(OutputFile& file, const cv::Mat& image, const WriteOptions& opt
     if (!is_float_format) spec.attribute("oiio:UnassociatedAlpha", 1);
   }
   if (is_float_format) spec.attribute("compression", "zip");
-  if (ext == ".png") spec.attribute("png:compressionLevel", options.smallest ? 9 : 1);
+  if (ext == ".png") {
+    spec.attribute("png:compressionLevel", options.smallest ? 9 : 1);
+    // The fastest write also filters every row by its left neighbour alone (libpng's
+    // PNG_FILTER_SUB) instead of trying the five filters per row: half the time of a 1080p
+    // write; files 1 % (fern) to 8 % (Sierpinski) larger for 1080p measure renders, 11 % for a
+    // frame-filling stolen photo.
+    constexpr int kPngFilterSub = 0x10;
+    if (!options.smallest) spec.attribute("png:filter", kPngFilterSub);
+  }
   spec.attribute("Software", "ifsfx");
   // Metadata is made valid UTF-8 first: a Latin-1 comment or file name must not fail the run.
   std::vector<std::pair<std::string, std::string>> metadata;

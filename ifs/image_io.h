@@ -17,8 +17,8 @@ namespace ifsfx {
 struct WriteOptions {
   // Bits per channel of integer formats: 8 or 16 (PNG, TIFF); ignored for OpenEXR (half float).
   int bits = 8;
-  // PNG: zlib level 9, the smallest files, instead of level 1, the fastest to write (about a
-  // fifth larger than level 6 for a stolen photo; bench/README.md).
+  // PNG: zlib level 9 and libpng's choice of filter per row, the smallest files, instead of
+  // level 1 and the "sub" filter, the fastest to write (bench/README.md).
   bool smallest = false;
   // String attributes stored in the image's metadata, e.g. {"ifsfx:preset", <preset text>}.
   // Bytes that are not UTF-8 are read as Latin-1 (valid_utf8): metadata never fails a write.

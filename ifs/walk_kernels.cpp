@@ -17,6 +17,23 @@ LaneSeeds lane_seeds(std::uint64_t seed, std::uint64_t chunk) {
   return out;
 }
 
+void fold_measure_cells(MeasureCells& m, std::size_t area, std::uint64_t* count,
+                        std::uint64_t* colour) {
+  for (std::uint64_t k = 0; k < m.spilled; ++k) {
+    const std::uint64_t spill = m.spills[k];
+    count[spill & 0xffffffffu] += MeasureCells::kFull;
+    colour[spill & 0xffffffffu] += spill >> 32;
+  }
+  m.spilled = 0;
+  for (std::size_t i = 0; i < area; ++i) {
+    const std::uint32_t cell = m.cells[i];
+    if (cell == 0) continue;
+    count[i] += cell & MeasureCells::kFull;
+    colour[i] += cell >> MeasureCells::kCountBits;
+    m.cells[i] = 0;
+  }
+}
+
 const WalkKernels& walk_kernels(CpuLevel level) {
   for (CpuLevel supported : supported_cpu_levels()) {
     if (supported != level) continue;

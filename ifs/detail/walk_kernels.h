@@ -45,20 +45,22 @@ struct LaneSeeds {
   std::uint64_t s[kLanes][4];
 };
 
-// render_measure's accumulation: per raster cell a 64-bit word, visit count in the low 32 bits
-// and Σ c6 in the high 32 (c6: the palette coordinate quantised to kPaletteBits). Points are
-// binned by tile (2^kTileBits consecutive cells, 128 KiB: a slice of the raster that fits in L2)
-// into queues of kQueueLength entries (c6 << kTileBits | cell within the tile); a full queue is
-// added to its tile in one burst, while the tile is in cache.
+// render_measure's accumulation: per raster cell one 32-bit word, the visit count in its low
+// kCountBits bits and Σc6 above them (c6: the palette coordinate quantised to kPaletteBits) —
+// half the bytes of a 64-bit count and sum, so a 1080p raster is 8 MiB and two workers' rasters
+// stay in the shared cache. A cell whose count reaches kFull spills: (Σc6 << 32 | cell) is
+// appended to `spills` (its count, kFull, implied) and the cell starts again from 0, so a stored
+// count is always below kFull. Each spill takes kFull points, so from empty cells (and no spills)
+// `points` points need room for points / kFull spills. fold_measure_cells adds both to totals.
 struct MeasureCells {
   static constexpr int kPaletteBits = 6;
-  static constexpr int kTileBits = 14;
-  static constexpr std::uint32_t kQueueLength = 256;
+  static constexpr int kCountBits = 13;  // Σc6 of kFull points < 2^(kCountBits + kPaletteBits)
+  static constexpr std::uint32_t kFull = (1u << kCountBits) - 1;
+  static_assert(2 * kCountBits + kPaletteBits <= 32);
 
-  std::uint64_t* cells;
-  std::uint32_t* queue;   // tiles × kQueueLength entries
-  std::uint32_t* queued;  // entries waiting per tile
-  std::uint32_t tiles;
+  std::uint32_t* cells;
+  std::uint64_t* spills;
+  std::uint64_t spilled;  // entries of `spills` in use
 };
 
 // One plotted point, as the walkers see it (for the tests and the kernel check program).
@@ -83,8 +85,6 @@ struct WalkKernels {
   void (*counts)(const WalkSpec&, const LaneSeeds&, std::uint64_t points, std::uint32_t* counts);
   // the point and its palette coordinate into `cells` (see MeasureCells)
   void (*measure)(const WalkSpec&, const LaneSeeds&, std::uint64_t points, MeasureCells& cells);
-  // adds every queued entry of `cells` to its cell and empties the queues
-  void (*measure_flush)(MeasureCells& cells);
   // cells[pixel] = max(cells[pixel], key >> (64 − cell bits) | 1) (fractal tops, eq. 7)
   void (*tops32)(const WalkSpec&, const LaneSeeds&, std::uint64_t points, std::uint32_t* cells);
   void (*tops64)(const WalkSpec&, const LaneSeeds&, std::uint64_t points, std::uint64_t* cells);
@@ -95,6 +95,11 @@ struct WalkKernels {
 // The lanes of chunk `chunk` of the run seeded with `seed`: lane l's xoshiro256+ state from
 // stream_seed(seed, chunk · kLanes + l), expanded by SplitMix64.
 LaneSeeds lane_seeds(std::uint64_t seed, std::uint64_t chunk);
+
+// Adds the `area` cells and the spills of `m` to the totals (count[i] visits, colour[i] Σc6 of
+// cell i) and empties both.
+void fold_measure_cells(MeasureCells& m, std::size_t area, std::uint64_t* count,
+                        std::uint64_t* colour);
 
 // The kernels of `level`. Throws Error{unsupported} for a level this CPU or build does not run.
 const WalkKernels& walk_kernels(CpuLevel level);

@@ -40,7 +40,7 @@ inline double unit_interval(std::uint64_t r) {
 // x, y) gets the lane's address key (when kKeys), palette coordinate (when kPalette) and the point
 // in the plane (when kPoints; else 0).
 struct HitSink {
-  static constexpr bool kKeys = false, kPalette = false, kPoints = false;
+  static constexpr bool kKeys = false, kPalette = false, kPoints = false, kQuads = false;
   std::uint8_t* hits;
   void plot(int, long pixel, std::uint32_t, std::uint64_t, std::uint32_t, double, double) {
     hits[pixel] = 255;
@@ -48,40 +48,64 @@ struct HitSink {
 };
 
 struct CountSink {
-  static constexpr bool kKeys = false, kPalette = false, kPoints = false;
+  static constexpr bool kKeys = false, kPalette = false, kPoints = false, kQuads = false;
   std::uint32_t* counts;
   void plot(int, long pixel, std::uint32_t, std::uint64_t, std::uint32_t, double, double) {
     ++counts[pixel];
   }
 };
 
-// Adds the queued entries of one tile to its cells (count + 1, Σc6 + c6).
-inline void drain_tile(const MeasureCells& m, std::uint32_t tile) {
-  constexpr std::uint32_t kTileMask = (1u << MeasureCells::kTileBits) - 1;
-  std::uint64_t* cells = m.cells + (static_cast<std::size_t>(tile) << MeasureCells::kTileBits);
-  const std::uint32_t* entry =
-      m.queue + static_cast<std::size_t>(tile) * MeasureCells::kQueueLength;
-  for (std::uint32_t k = 0, n = m.queued[tile]; k < n; ++k)
-    cells[entry[k] & kTileMask] +=
-        (static_cast<std::uint64_t>(entry[k] >> MeasureCells::kTileBits) << 32) | 1;
-  m.queued[tile] = 0;
-}
-
+// The cells of MeasureCells. Each point's cell is prefetched when it lands and added to kDelay
+// points later, so the cache miss of its read overlaps the walk instead of stalling it (the add
+// is a read-modify-write: without the delay, the walker's steps wait behind the reads). The
+// order of the adds changes nothing: the totals are sums. The waiting slots start as "add 0 to
+// cell 0", which changes nothing either (a stored count is below kFull, so it does not spill).
 struct MeasureSink {
   static constexpr bool kKeys = false, kPalette = true, kPoints = false;
+  static constexpr unsigned kDelay = 16;
   MeasureCells m;
+  std::uint32_t waiting_cell[kDelay] = {};
+  std::uint32_t waiting_add[kDelay] = {};
+  unsigned next = 0;
+
+  [[gnu::always_inline]] void add(std::uint32_t cell, std::uint32_t increment) {
+    std::uint32_t v = m.cells[cell] + increment;
+    if ((v & MeasureCells::kFull) == MeasureCells::kFull) {
+      m.spills[m.spilled++] =
+          static_cast<std::uint64_t>(v >> MeasureCells::kCountBits) << 32 | cell;
+      v = 0;
+    }
+    m.cells[cell] = v;
+  }
   void plot(int, long pixel, std::uint32_t, std::uint64_t, std::uint32_t c, double, double) {
     constexpr int kBits = MeasureCells::kPaletteBits;
-    constexpr std::uint32_t kTileMask = (1u << MeasureCells::kTileBits) - 1;
     // c (16 bits) rounded to kBits bits, at most 2^kBits − 1.
     std::uint32_t c6 = (c + (1u << (15 - kBits))) >> (16 - kBits);
     if (c6 > (1u << kBits) - 1) c6 = (1u << kBits) - 1;
-    const auto cell = static_cast<std::uint32_t>(pixel);
-    const std::uint32_t tile = cell >> MeasureCells::kTileBits;
-    std::uint32_t& length = m.queued[tile];
-    m.queue[static_cast<std::size_t>(tile) * MeasureCells::kQueueLength + length] =
-        (c6 << MeasureCells::kTileBits) | (cell & kTileMask);
-    if (++length == MeasureCells::kQueueLength) drain_tile(m, tile);
+    __builtin_prefetch(m.cells + pixel, 1);
+    const unsigned slot = next++ % kDelay;
+    add(waiting_cell[slot], waiting_add[slot]);
+    waiting_cell[slot] = static_cast<std::uint32_t>(pixel);
+    waiting_add[slot] = (c6 << MeasureCells::kCountBits) | 1;
+  }
+  // Four points at once, their cells and increments (c6 << kCountBits | 1) computed by a vector
+  // walker (walk_quads.inl); a lane off the raster comes as "add 0 to cell 0". Only for a sink
+  // that plot() is not called on.
+  static constexpr bool kQuads = true;
+  [[gnu::always_inline]] void plot4(const std::uint32_t* cell, const std::uint32_t* increment) {
+    static_assert(kDelay % 4 == 0);
+    for (int j = 0; j < 4; ++j) __builtin_prefetch(m.cells + cell[j], 1);
+    const unsigned slot = next % kDelay;
+    next += 4;
+    for (unsigned j = 0; j < 4; ++j) {
+      add(waiting_cell[slot + j], waiting_add[slot + j]);
+      waiting_cell[slot + j] = cell[j];
+      waiting_add[slot + j] = increment[j];
+    }
+  }
+  // Adds the points still waiting.
+  void finish() {
+    for (unsigned k = 0; k < kDelay; ++k) add(waiting_cell[k], waiting_add[k]);
   }
 };
 
@@ -89,7 +113,7 @@ struct MeasureSink {
 // bits, bit 0 set to mark the cell as hit.
 template <class Cell>
 struct TopsSink {
-  static constexpr bool kKeys = true, kPalette = false, kPoints = false;
+  static constexpr bool kKeys = true, kPalette = false, kPoints = false, kQuads = false;
   static constexpr int kShift = 64 - 8 * static_cast<int>(sizeof(Cell));
   Cell* cells;
   void plot(int, long pixel, std::uint32_t, std::uint64_t key, std::uint32_t, double, double) {
@@ -100,7 +124,7 @@ struct TopsSink {
 };
 
 struct TraceSink {
-  static constexpr bool kKeys = true, kPalette = true, kPoints = true;
+  static constexpr bool kKeys = true, kPalette = true, kPoints = true, kQuads = false;
   TracedPoint* out;
   std::size_t count;
   void plot(int lane, long pixel, std::uint32_t map, std::uint64_t key, std::uint32_t c, double x,

@@ -14,10 +14,8 @@ void counts(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, std
 void measure(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, MeasureCells& cells) {
   MeasureSink sink{cells};
   walk(w, seeds, points, sink);
-}
-
-void measure_flush(MeasureCells& cells) {
-  for (std::uint32_t tile = 0; tile < cells.tiles; ++tile) drain_tile(cells, tile);
+  sink.finish();
+  cells.spilled = sink.m.spilled;
 }
 
 void tops32(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, std::uint32_t* cells) {
@@ -37,5 +35,4 @@ std::size_t trace(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t point
   return sink.count;
 }
 
-constexpr WalkKernels kernels{kLevel,         &hits,   &counts, &measure,
-                              &measure_flush, &tops32, &tops64, &trace};
+constexpr WalkKernels kernels{kLevel, &hits, &counts, &measure, &tops32, &tops64, &trace};

@@ -174,6 +174,34 @@ void walk_quads(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points,
         _mm256_and_pd(_mm256_cmp_pd(py, zero, _CMP_GE_OQ), _mm256_cmp_pd(py, height, _CMP_LT_OQ)));
     const int mask = _mm256_movemask_pd(inside) & ((1 << lanes_wanted) - 1);
     if (mask == 0) return;
+    if constexpr (Sink::kQuads) {
+      // MeasureSink::plot's increment of four lanes: c6 = min((c + 2^(15−b)) >> (16−b), 2^b − 1),
+      // (c6 << kCountBits) | 1; the 32-bit halves of 64-bit lanes, the high ones 0 and unused.
+      constexpr int kBits = MeasureCells::kPaletteBits;
+      const __m256i c6 = _mm256_min_epu32(
+          _mm256_srli_epi32(_mm256_add_epi32(l.colour, _mm256_set1_epi32(1 << (15 - kBits))),
+                            16 - kBits),
+          _mm256_set1_epi32((1 << kBits) - 1));
+      const __m256i increment =
+          _mm256_or_si256(_mm256_slli_epi32(c6, MeasureCells::kCountBits), _mm256_set1_epi32(1));
+      const __m256i even = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+      // Lanes off the raster, or past lanes_wanted: cell 0, increment 0.
+      __m128i keep =
+          _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(_mm256_castpd_si256(inside), even));
+      if (lanes_wanted < 4)
+        keep = _mm_and_si128(
+            keep, _mm_cmpgt_epi32(_mm_set1_epi32(lanes_wanted), _mm_setr_epi32(0, 1, 2, 3)));
+      alignas(16) std::uint32_t cell[4], add[4];
+      _mm_store_si128(
+          reinterpret_cast<__m128i*>(cell),
+          _mm_and_si128(keep, _mm_add_epi32(_mm_mullo_epi32(_mm256_cvttpd_epi32(py), stride),
+                                            _mm256_cvttpd_epi32(px))));
+      _mm_store_si128(reinterpret_cast<__m128i*>(add),
+                      _mm_and_si128(keep, _mm256_castsi256_si128(
+                                              _mm256_permutevar8x32_epi32(increment, even))));
+      sink.plot4(cell, add);
+      return;
+    }
     alignas(16) std::int32_t index[4];
     alignas(32) std::uint32_t map[8];
     alignas(32) std::uint64_t key[4] = {}, colour[4] = {};
