@@ -34,7 +34,7 @@ void run_apply(const ApplyArgs& args) {
   write.output.cancel = StopSignals::token();
   write.output.inputs.add(args.map);
   write.output.inputs.add(args.image);
-  check_writable_image(args.output, write.output);
+  check_writable_image(args.output, write.output, write.bits);
   const StealMap map = load_steal_map(args.map);
   const cv::Mat source = read_image(args.image).pixels;
   ApplyOptions options;

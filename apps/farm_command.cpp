@@ -264,8 +264,8 @@ void run_farm_texture(const FarmArgs& args, const std::vector<std::string>& extr
     (void)read_image(texture.source);  // a missing or damaged source fails here, not per shard
     policy.inputs.add(texture.source);
   }
-  // A writer for the pattern's extension, and the output policy.
-  check_writable_image(video::sequence_path(args.output, 1), policy);
+  // A writer for the pattern's extension that holds --bits, and the output policy.
+  check_writable_image(video::sequence_path(args.output, 1), policy, texture.bits);
   policy.cancel.check("farm texture");
 
   const FarmPlan plan = write_new_plan(JobKind::texture, args, {0, frames - 1});

@@ -90,7 +90,7 @@ void run_render(const RenderArgs& args) {
   add_preset_input(output.inputs, args.preset);
   add_preset_input(output.inputs, args.colouring);
   output.inputs.add(args.source);
-  check_writable_image(args.output, output);
+  check_writable_image(args.output, output, args.bits);
   if (!args.save_map.empty()) {
     check_output(args.save_map, output);
     if (same_output(args.save_map, args.output))

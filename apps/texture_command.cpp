@@ -48,7 +48,7 @@ void run_texture(const TextureArgs& args) {
   OutputOptions output{.cancel = StopSignals::token()};
   add_preset_input(output.inputs, args.preset);
   output.inputs.add(args.source);
-  if (first <= last) check_writable_image(path_of(first), output);
+  if (first <= last) check_writable_image(path_of(first), output, args.bits);
   for (int frame = first + 1; frame <= last; ++frame) check_output(path_of(frame), output);
   const SuperIfsPreset preset = load_superifs(args.preset);
 

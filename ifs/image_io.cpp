@@ -26,6 +26,24 @@ std::string lower_extension(const fs::path& path) {
   return ext;
 }
 
+bool float_format(const std::string& ext) {
+  return ext == ".exr" || ext == ".hdr";
+}
+
+// Bits per channel: 8 or 16, and 16 only where the format holds it (floats ignore it).
+void check_bits(const fs::path& path, int bits) {
+  if (bits != 8 && bits != 16)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: bits per channel must be 8 or 16 (got {})", path.string(), bits));
+  const std::string ext = lower_extension(path);
+  const bool can_16 = ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".ppm" ||
+                      ext == ".pgm" || ext == ".pnm";
+  if (bits == 16 && !can_16 && !float_format(ext))
+    throw Error(
+        ErrorKind::unsupported,
+        fmt::format("{}: 16 bits per channel needs .png or .tif (got '{}')", path.string(), ext));
+}
+
 // OpenImageIO wants RGB(A) order; the libraries use OpenCV's BGR(A).
 cv::Mat to_rgb_order(const cv::Mat& image) {
   cv::Mat out;
@@ -133,7 +151,7 @@ bool harmless(const std::string& why) {
 
 }  // namespace
 
-void check_writable_image(const fs::path& path, const OutputOptions& output) {
+void check_writable_image(const fs::path& path, const OutputOptions& output, int bits) {
   if (path.empty()) throw Error(ErrorKind::invalid_argument, "output: no file name given");
   auto out = OIIO::ImageOutput::create(path.string());
   if (!out) {
@@ -142,11 +160,12 @@ void check_writable_image(const fs::path& path, const OutputOptions& output) {
                 fmt::format("{}: no image writer for extension '{}' (use .png, .tif, .exr, .jpg)",
                             path.string(), path.extension().string()));
   }
+  check_bits(path, bits);
   check_output(path, output);
 }
 
 void write_image(const fs::path& path, const cv::Mat& image, const WriteOptions& options) {
-  check_writable_image(path, options.output);
+  check_writable_image(path, options.output, options.bits);
   OutputFile out(path, options.output);
   write_image(out, image, options);
   out.commit();
@@ -156,27 +175,18 @@ void write_image(OutputFile& file, const cv::Mat& image, const WriteOptions& opt
   const fs::path& path = file.target();
   if (image.empty())
     throw Error(ErrorKind::invalid_argument, fmt::format("{}: empty image", path.string()));
-  if (options.bits != 8 && options.bits != 16)
-    throw Error(
-        ErrorKind::invalid_argument,
-        fmt::format("{}: bits per channel must be 8 or 16 (got {})", path.string(), options.bits));
+  check_bits(path, options.bits);
 
   const std::string ext = lower_extension(path);
-  const bool is_float_format = ext == ".exr" || ext == ".hdr";
-  const bool can_16 = ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".ppm" ||
-                      ext == ".pgm" || ext == ".pnm";
+  const bool is_float_format = float_format(ext);
   int cv_depth = CV_8U;
   OIIO::TypeDesc format = OIIO::TypeDesc::UINT8;
   if (is_float_format) {
     cv_depth = CV_32F;
     format = OIIO::TypeDesc::FLOAT;
-  } else if (options.bits == 16 && can_16) {
+  } else if (options.bits == 16) {
     cv_depth = CV_16U;
     format = OIIO::TypeDesc::UINT16;
-  } else if (options.bits == 16) {
-    throw Error(
-        ErrorKind::unsupported,
-        fmt::format("{}: 16 bits per channel needs .png or .tif (got '{}')", path.string(), ext));
   }
   cv::Mat pixels = to_rgb_order(to_file_depth(image, cv_depth));
   if (!pixels.isContinuous()) pixels = pixels.clone();

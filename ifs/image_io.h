@@ -39,9 +39,11 @@ void write_image(const std::filesystem::path& path, const cv::Mat& image,
 // is not used (the OutputFile has its own).
 void write_image(OutputFile& out, const cv::Mat& image, const WriteOptions& options = {});
 
-// Throws Error{unsupported} if no writer handles `path`'s extension, and what check_output throws
-// — the checks write_image makes, for use before long work.
-void check_writable_image(const std::filesystem::path& path, const OutputOptions& output = {});
+// Throws Error{unsupported} if no writer handles `path`'s extension or it cannot hold `bits` per
+// channel, Error{invalid_argument} for bits other than 8 or 16, and what check_output throws — the
+// checks write_image makes, for use before long work.
+void check_writable_image(const std::filesystem::path& path, const OutputOptions& output = {},
+                          int bits = 8);
 
 struct ImageFile {
   cv::Mat pixels;  // BGR/BGRA/grey, CV_8U, CV_16U or CV_32F as stored (other depths to CV_32F)

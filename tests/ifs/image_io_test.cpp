@@ -110,6 +110,34 @@ TEST_F(image_io, unknown_extension_and_missing_folder_are_refused_before_writing
   EXPECT_FALSE(fs::exists(dir_ / "x.nope"));
 }
 
+// --bits is checked with the file name, before any work: a long texture burn-in must not end in
+// "16 bits per channel needs .png or .tif".
+TEST_F(image_io, bits_the_format_cannot_hold_are_refused_before_writing) {
+  try {
+    check_writable_image(dir_ / "x.jpg", {}, 16);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::unsupported);
+    EXPECT_NE(std::string(e.what()).find("x.jpg: 16 bits per channel needs .png or .tif (got "
+                                         "'.jpg')"),
+              std::string::npos)
+        << e.what();
+  }
+  try {
+    check_writable_image(dir_ / "x.png", {}, 12);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
+    EXPECT_NE(std::string(e.what()).find("bits per channel must be 8 or 16 (got 12)"),
+              std::string::npos);
+  }
+  EXPECT_NO_THROW(check_writable_image(dir_ / "x.png", {}, 16));
+  EXPECT_NO_THROW(check_writable_image(dir_ / "x.TIF", {}, 16));
+  EXPECT_NO_THROW(check_writable_image(dir_ / "x.exr", {}, 16));  // floats: bits do not apply
+  EXPECT_NO_THROW(check_writable_image(dir_ / "x.jpg", {}, 8));
+  EXPECT_FALSE(fs::exists(dir_ / "x.jpg"));
+}
+
 TEST_F(image_io, unreadable_files_name_the_path) {
   try {
     read_image(dir_ / "none.png");
