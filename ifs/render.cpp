@@ -191,7 +191,7 @@ double coverage_of_colour(const cv::Mat& image) {
   std::size_t lit = 0;
   for (int r = 0; r < image.rows; ++r) {
     const auto* row = image.ptr<cv::Vec3f>(r);
-    for (int c = 0; c < image.cols; ++c) lit += (row[c][0] > 0) | (row[c][1] > 0) | (row[c][2] > 0);
+    for (int c = 0; c < image.cols; ++c) lit += row[c][0] > 0 || row[c][1] > 0 || row[c][2] > 0;
   }
   return static_cast<double>(lit) / static_cast<double>(image.total());
 }
