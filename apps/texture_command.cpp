@@ -2,7 +2,6 @@
 // with --frames a sequence of them, one per further step, optionally crossfaded.
 #include <chrono>
 #include <cstdio>
-#include <map>
 #include <memory>
 #include <string>
 #include <vector>
