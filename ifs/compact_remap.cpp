@@ -5,12 +5,14 @@
 // missing 1 to the far neighbour; |p11 − p00| ≤ 255 < 2^14 makes that round to the same byte.
 #include "ifs/detail/compact_remap.h"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
 #include <fmt/format.h>
 
 #include "ifs/error.h"
+#include "ifs/parallel.h"
 
 namespace ifsfx::detail {
 
@@ -18,7 +20,8 @@ namespace {
 
 constexpr int kSteps = 32;  // cv::INTER_TAB_SIZE: fractions are in 1/32 pixel
 constexpr int kWeightSide = kSteps + 1;
-constexpr int kShift = 15;  // cv::INTER_REMAP_COEF_BITS
+constexpr int kShift = 15;     // cv::INTER_REMAP_COEF_BITS
+constexpr int kPartRows = 64;  // output rows compacted by one worker at a time
 
 // Weights of (x0,y0), (x0+1,y0), (x0,y0+1), (x0+1,y0+1) for fractions fx, fy in 0..32. The
 // 33rd step lets a pixel on the last column or row read its square one pixel to the left or up
@@ -104,29 +107,26 @@ void remap_rows_cn(const CompactRemap& table, const cv::Mat& source, cv::Mat& ou
   }
 }
 
-}  // namespace
+// The table's entries for output rows [r0, r1): row offsets local to the part, so that parts
+// built on different workers are joined by adding the entries before them.
+struct Part {
+  std::vector<std::uint32_t> row_runs, row_entries;  // r1 − r0 offsets each
+  std::vector<CompactRemap::Run> runs;
+  std::vector<std::uint32_t> pixel;
+  std::vector<std::uint16_t> weight;
+};
 
-std::optional<CompactRemap> compact_remap(const cv::Mat& xy, const cv::Mat& frac,
-                                          cv::Size source_size, RemapBorder border) {
-  if (xy.type() != CV_16SC2 ||
-      (!frac.empty() && (frac.type() != CV_16UC1 || frac.size() != xy.size())))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("remap table: needs CV_16SC2 pixels and an empty or CV_16UC1 fraction "
-                            "of one size (got types {} and {})",
-                            xy.type(), frac.type()));
-  if (source_size.width < 2 || source_size.height < 2) return std::nullopt;
-  CompactRemap table;
-  table.size = xy.size();
-  table.source_size = source_size;
-  table.bilinear = !frac.empty();
-  table.row_runs.reserve(static_cast<std::size_t>(xy.rows) + 1);
-  table.row_entries.reserve(static_cast<std::size_t>(xy.rows) + 1);
+// Compacts rows [r0, r1) into `part`; false where a bilinear square lies partly on the source
+// under a constant border (cv::remap's general border handling is needed).
+bool compact_rows(const cv::Mat& xy, const cv::Mat& frac, cv::Size source_size, RemapBorder border,
+                  int r0, int r1, Part& part) {
+  const bool bilinear = !frac.empty();
   const auto w = static_cast<std::uint32_t>(source_size.width);
-  for (int r = 0; r < xy.rows; ++r) {
-    table.row_runs.push_back(static_cast<std::uint32_t>(table.runs.size()));
-    table.row_entries.push_back(static_cast<std::uint32_t>(table.pixel.size()));
+  for (int r = r0; r < r1; ++r) {
+    part.row_runs.push_back(static_cast<std::uint32_t>(part.runs.size()));
+    part.row_entries.push_back(static_cast<std::uint32_t>(part.pixel.size()));
     const auto* p = xy.ptr<cv::Vec2s>(r);
-    const auto* f = table.bilinear ? frac.ptr<std::uint16_t>(r) : nullptr;
+    const auto* f = bilinear ? frac.ptr<std::uint16_t>(r) : nullptr;
     bool in_run = false;
     for (int c = 0; c < xy.cols; ++c) {
       int sx = p[c][0], sy = p[c][1], fx = 0, fy = 0;
@@ -135,7 +135,7 @@ std::optional<CompactRemap> compact_remap(const cv::Mat& xy, const cv::Mat& frac
         const int index = f[c] & (kSteps * kSteps - 1);
         fx = index % kSteps, fy = index / kSteps;
         reads = classify_bilinear(sx, sy, fx, fy, source_size, border);
-        if (reads == Reads::partly) return std::nullopt;
+        if (reads == Reads::partly) return false;
       } else if (sx >= 0 && sx < source_size.width && sy >= 0 && sy < source_size.height) {
         reads = Reads::source;
       }
@@ -143,15 +143,69 @@ std::optional<CompactRemap> compact_remap(const cv::Mat& xy, const cv::Mat& frac
         in_run = false;
         continue;
       }
-      if (!in_run) table.runs.push_back({c, c});
+      if (!in_run) part.runs.push_back({c, c});
       in_run = true;
-      ++table.runs.back().end;
-      table.pixel.push_back(static_cast<std::uint32_t>(sy) * w + static_cast<std::uint32_t>(sx));
-      table.weight.push_back(static_cast<std::uint16_t>(fy * kWeightSide + fx));
+      ++part.runs.back().end;
+      part.pixel.push_back(static_cast<std::uint32_t>(sy) * w + static_cast<std::uint32_t>(sx));
+      part.weight.push_back(static_cast<std::uint16_t>(fy * kWeightSide + fx));
     }
   }
-  table.row_runs.push_back(static_cast<std::uint32_t>(table.runs.size()));
-  table.row_entries.push_back(static_cast<std::uint32_t>(table.pixel.size()));
+  return true;
+}
+
+}  // namespace
+
+std::optional<CompactRemap> compact_remap(const cv::Mat& xy, const cv::Mat& frac,
+                                          cv::Size source_size, RemapBorder border, int threads) {
+  if (xy.type() != CV_16SC2 ||
+      (!frac.empty() && (frac.type() != CV_16UC1 || frac.size() != xy.size())))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("remap table: needs CV_16SC2 pixels and an empty or CV_16UC1 fraction "
+                            "of one size (got types {} and {})",
+                            xy.type(), frac.type()));
+  if (source_size.width < 2 || source_size.height < 2) return std::nullopt;
+  // Fixed bands of rows, compacted on the workers and joined in row order: the same table for
+  // any thread count (the prepare of a superIFS frame or an animated filter is on its path).
+  const auto parts = static_cast<std::size_t>((xy.rows + kPartRows - 1) / kPartRows);
+  std::vector<Part> part(parts);
+  std::vector<char> whole(parts, 1);
+  parallel_for(parts, threads, [&](std::size_t k, int) {
+    const int r0 = static_cast<int>(k) * kPartRows, r1 = std::min(xy.rows, r0 + kPartRows);
+    whole[k] = compact_rows(xy, frac, source_size, border, r0, r1, part[k]) ? 1 : 0;
+  });
+  if (std::find(whole.begin(), whole.end(), 0) != whole.end()) return std::nullopt;
+
+  CompactRemap table;
+  table.size = xy.size();
+  table.source_size = source_size;
+  table.bilinear = !frac.empty();
+  // Where each part's entries start in the joined table.
+  std::vector<std::size_t> run_base(parts + 1, 0), entry_base(parts + 1, 0);
+  for (std::size_t k = 0; k < parts; ++k) {
+    run_base[k + 1] = run_base[k] + part[k].runs.size();
+    entry_base[k + 1] = entry_base[k] + part[k].pixel.size();
+  }
+  table.row_runs.resize(static_cast<std::size_t>(xy.rows) + 1);
+  table.row_entries.resize(static_cast<std::size_t>(xy.rows) + 1);
+  table.runs.resize(run_base[parts]);
+  table.pixel.resize(entry_base[parts]);
+  table.weight.resize(entry_base[parts]);
+  parallel_for(parts, threads, [&](std::size_t k, int) {
+    const Part& p = part[k];
+    const std::size_t row0 = k * kPartRows;
+    for (std::size_t i = 0; i < p.row_runs.size(); ++i) {
+      table.row_runs[row0 + i] = static_cast<std::uint32_t>(run_base[k] + p.row_runs[i]);
+      table.row_entries[row0 + i] = static_cast<std::uint32_t>(entry_base[k] + p.row_entries[i]);
+    }
+    std::copy(p.runs.begin(), p.runs.end(),
+              table.runs.begin() + static_cast<std::ptrdiff_t>(run_base[k]));
+    std::copy(p.pixel.begin(), p.pixel.end(),
+              table.pixel.begin() + static_cast<std::ptrdiff_t>(entry_base[k]));
+    std::copy(p.weight.begin(), p.weight.end(),
+              table.weight.begin() + static_cast<std::ptrdiff_t>(entry_base[k]));
+  });
+  table.row_runs.back() = static_cast<std::uint32_t>(run_base[parts]);
+  table.row_entries.back() = static_cast<std::uint32_t>(entry_base[parts]);
   return table;
 }
 

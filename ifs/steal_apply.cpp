@@ -14,6 +14,8 @@ namespace ifsfx {
 
 namespace {
 
+constexpr int kBand = 64;  // rows a worker prepares or remaps at a time
+
 void check_map(const StealMap& map) {
   if (map.empty())
     throw Error(ErrorKind::invalid_argument, "steal map: must not be empty (got 0×0)");
@@ -56,28 +58,39 @@ PreparedStealMap prepare_apply(const StealMap& map, cv::Size source_size,
   // image (the edge pixel is repeated, never mixed with the background); uncovered ones are sent
   // two pixels off it, where BORDER_CONSTANT gives the background.
   const float w = static_cast<float>(source_size.width), h = static_cast<float>(source_size.height);
-  cv::Mat mx(map.size(), CV_32FC1), my(map.size(), CV_32FC1);
-  for (int r = 0; r < mx.rows; ++r) {
-    const auto* uv = map.source_uv.ptr<cv::Vec2f>(r);
-    const auto* cov = map.coverage.ptr<std::uint8_t>(r);
-    auto* px = mx.ptr<float>(r);
-    auto* py = my.ptr<float>(r);
-    for (int c = 0; c < mx.cols; ++c) {
-      if (cov[c] == 0) {
-        px[c] = py[c] = -2;
-        continue;
-      }
-      px[c] = std::clamp(uv[c][0] * w - 0.5f, 0.0f, w - 1);
-      py[c] = std::clamp(uv[c][1] * h - 0.5f, 0.0f, h - 1);
-    }
-  }
+  const bool nearest = options.interpolation == Interpolation::nearest;
   PreparedStealMap out;
   out.source_size = source_size;
   out.options = options;
-  cv::convertMaps(mx, my, out.xy, out.frac, CV_16SC2,
-                  options.interpolation == Interpolation::nearest);
-  if (auto compact =
-          detail::compact_remap(out.xy, out.frac, source_size, detail::RemapBorder::constant))
+  out.xy.create(map.size(), CV_16SC2);
+  if (!nearest) out.frac.create(map.size(), CV_16UC1);
+  // Bands of rows on the workers, each converted to OpenCV's fixed point by cv::convertMaps on its
+  // own rows: the same bytes as one call over the whole map, for any thread count.
+  const auto bands = static_cast<std::size_t>((map.size().height + kBand - 1) / kBand);
+  parallel_for(bands, options.threads, [&](std::size_t band, int) {
+    const cv::Range rows(static_cast<int>(band) * kBand,
+                         std::min(map.size().height, static_cast<int>(band + 1) * kBand));
+    cv::Mat mx(rows.size(), map.size().width, CV_32FC1), my(mx.size(), CV_32FC1);
+    for (int r = rows.start; r < rows.end; ++r) {
+      const auto* uv = map.source_uv.ptr<cv::Vec2f>(r);
+      const auto* cov = map.coverage.ptr<std::uint8_t>(r);
+      auto* px = mx.ptr<float>(r - rows.start);
+      auto* py = my.ptr<float>(r - rows.start);
+      for (int c = 0; c < mx.cols; ++c) {
+        if (cov[c] == 0) {
+          px[c] = py[c] = -2;
+          continue;
+        }
+        px[c] = std::clamp(uv[c][0] * w - 0.5f, 0.0f, w - 1);
+        py[c] = std::clamp(uv[c][1] * h - 0.5f, 0.0f, h - 1);
+      }
+    }
+    cv::Mat xy = out.xy.rowRange(rows), frac;
+    if (!nearest) frac = out.frac.rowRange(rows);
+    cv::convertMaps(mx, my, xy, frac, CV_16SC2, nearest);
+  });
+  if (auto compact = detail::compact_remap(out.xy, out.frac, source_size,
+                                           detail::RemapBorder::constant, options.threads))
     out.compact = std::make_shared<const detail::CompactRemap>(std::move(*compact));
   return out;
 }
@@ -92,7 +105,6 @@ void apply(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out) {
                     map.source_size.width, map.source_size.height, source.cols, source.rows));
   out.create(map.xy.size(), source.type());
   // Bands of rows on our own workers: a fixed split, so the bytes never depend on the threads.
-  constexpr int kBand = 64;
   const auto bands = static_cast<std::size_t>((out.rows + kBand - 1) / kBand);
   const auto band_rows = [&](std::size_t band) {
     return cv::Range(static_cast<int>(band) * kBand,

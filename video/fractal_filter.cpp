@@ -130,6 +130,12 @@ RemapTable make_remap_table(const StealMap& map, cv::Size source_size, Interpola
   // otherwise drop them.
   const float x_max = w - 1.0f - 1.0f / 32;
   const float y_max = h - 1.0f - 1.0f / 32;
+  RemapTable table;
+  table.source_size = source_size;
+  table.interpolation = interpolation;
+  const bool nearest = interpolation == Interpolation::nearest;
+  table.xy.create(size, CV_16SC2);
+  if (!nearest) table.fraction.create(size, CV_16UC1);
   parallel_for(bands(size.height), threads, [&](std::size_t chunk, int) {
     const cv::Range rows = band(chunk, size.height);
     for (int r = rows.start; r < rows.end; ++r) {
@@ -145,14 +151,13 @@ RemapTable make_remap_table(const StealMap& map, cv::Size source_size, Interpola
                   std::clamp(uv[c][1] * h - 0.5f, 0.0f, y_max)};
       }
     }
+    // OpenCV's fixed point, band by band: the bytes of one call over the whole map.
+    cv::Mat fixed = table.xy.rowRange(rows), fraction;
+    if (!nearest) fraction = table.fraction.rowRange(rows);
+    cv::convertMaps(xy.rowRange(rows), cv::Mat(), fixed, fraction, CV_16SC2, nearest);
   });
-  RemapTable table;
-  table.source_size = source_size;
-  table.interpolation = interpolation;
-  cv::convertMaps(xy, cv::Mat(), table.xy, table.fraction, CV_16SC2,
-                  interpolation == Interpolation::nearest);
   if (auto compact = detail::compact_remap(table.xy, table.fraction, source_size,
-                                           detail::RemapBorder::transparent))
+                                           detail::RemapBorder::transparent, threads))
     table.compact = std::make_shared<const detail::CompactRemap>(std::move(*compact));
   return table;
 }

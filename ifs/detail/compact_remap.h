@@ -36,9 +36,11 @@ struct CompactRemap {
 
 // Compacts the maps cv::convertMaps(…, CV_16SC2, nearest) made: `xy` CV_16SC2, `frac` CV_16UC1
 // (empty for nearest). Returns nothing where the table needs cv::remap's general border handling:
-// a source below 2×2, or (constant border) a bilinear square partly on the source.
+// a source below 2×2, or (constant border) a bilinear square partly on the source. Bands of rows
+// on `threads` workers (0 = all cores); the table is the same for any count.
 std::optional<CompactRemap> compact_remap(const cv::Mat& xy, const cv::Mat& frac,
-                                          cv::Size source_size, RemapBorder border);
+                                          cv::Size source_size, RemapBorder border,
+                                          int threads = 1);
 
 // Whether remap_rows handles this source type (8-bit, 1 to 4 channels).
 bool compact_remap_supports(int type);

@@ -124,5 +124,43 @@ TEST(compact_remap, a_square_partly_on_the_source_is_left_to_cv_remap) {
   EXPECT_FALSE(compact_remap(xy, cv::Mat(), {1, 4}, RemapBorder::constant));
 }
 
+// The table is built in bands of rows on the workers and joined in row order: every field is the
+// same for any thread count, over several bands, bilinear and nearest; and one band whose square
+// lies partly on the source gives no table, whichever worker met it.
+TEST(compact_remap, the_table_is_the_same_for_any_thread_count) {
+  const cv::Size src(37, 23), out(53, 301);  // 301 rows: five bands, the last one short
+  for (const bool nearest : {false, true})
+    for (const RemapBorder border : {RemapBorder::constant, RemapBorder::transparent}) {
+      cv::Mat xy, frac;
+      if (border == RemapBorder::constant && !nearest)
+        clamped_maps(out, src, xy, frac);
+      else
+        random_maps(out, src, nearest, xy, frac);
+      const auto one = compact_remap(xy, frac, src, border, 1);
+      ASSERT_TRUE(one);
+      for (const int threads : {2, 3, 8}) {
+        const auto many = compact_remap(xy, frac, src, border, threads);
+        ASSERT_TRUE(many);
+        EXPECT_EQ(many->row_runs, one->row_runs);
+        EXPECT_EQ(many->row_entries, one->row_entries);
+        ASSERT_EQ(many->runs.size(), one->runs.size());
+        for (std::size_t i = 0; i < one->runs.size(); ++i) {
+          EXPECT_EQ(many->runs[i].begin, one->runs[i].begin);
+          EXPECT_EQ(many->runs[i].end, one->runs[i].end);
+        }
+        EXPECT_EQ(many->pixel, one->pixel);
+        EXPECT_EQ(many->weight, one->weight);
+      }
+      EXPECT_EQ(one->row_runs.size(), static_cast<std::size_t>(out.height) + 1);
+      EXPECT_EQ(one->row_entries.back(), one->pixel.size());
+    }
+  cv::Mat xy, frac;
+  clamped_maps(out, src, xy, frac);
+  xy.at<cv::Vec2s>(250, 7) = cv::Vec2s(-1, 0);  // partly on the source, in the fourth band
+  frac.at<std::uint16_t>(250, 7) = 5;
+  for (const int threads : {1, 2, 8})
+    EXPECT_FALSE(compact_remap(xy, frac, src, RemapBorder::constant, threads)) << threads;
+}
+
 }  // namespace
 }  // namespace ifsfx::detail

@@ -1,5 +1,8 @@
 // apply: colouring through a steal map by one remap, nearest and bilinear, with a background.
+#include <algorithm>
+
 #include <gtest/gtest.h>
+#include <opencv2/imgproc.hpp>
 
 #include "ifs/error.h"
 #include "ifs/steal_map.h"
@@ -74,6 +77,39 @@ TEST(steal_apply, prepared_map_gives_what_apply_gives_and_checks_the_source_size
     EXPECT_STREQ(e.what(),
                  "source image: must be the size the steal map was prepared for (60x40) (got "
                  "60x41)");
+  }
+}
+
+// prepare_apply converts the map band by band on its workers: the fixed-point tables are those of
+// one cv::convertMaps over the whole map (the reference), for 1 and 3 threads, bilinear and
+// nearest.
+TEST(steal_apply, prepared_tables_are_one_convert_maps_for_any_thread_count) {
+  StealMap map;
+  map.source_uv = cv::Mat(200, 70, CV_32FC2);  // 200 rows: four bands, the last one short
+  cv::randu(map.source_uv, -0.1, 1.1);
+  map.coverage = cv::Mat(200, 70, CV_8UC1);
+  cv::randu(map.coverage, 0, 2);
+  const cv::Size source(61, 47);
+  cv::Mat mx(map.size(), CV_32FC1), my(map.size(), CV_32FC1);
+  for (int r = 0; r < map.size().height; ++r)
+    for (int c = 0; c < map.size().width; ++c) {
+      const cv::Vec2f uv = map.source_uv.at<cv::Vec2f>(r, c);
+      const bool covered = map.coverage.at<std::uint8_t>(r, c) != 0;
+      mx.at<float>(r, c) = covered ? std::clamp(uv[0] * 61.0f - 0.5f, 0.0f, 60.0f) : -2.0f;
+      my.at<float>(r, c) = covered ? std::clamp(uv[1] * 47.0f - 0.5f, 0.0f, 46.0f) : -2.0f;
+    }
+  for (const auto interpolation : {Interpolation::bilinear, Interpolation::nearest}) {
+    cv::Mat xy, frac;
+    cv::convertMaps(mx, my, xy, frac, CV_16SC2, interpolation == Interpolation::nearest);
+    for (const int threads : {1, 3}) {
+      const PreparedStealMap prepared =
+          prepare_apply(map, source, {.interpolation = interpolation, .threads = threads});
+      EXPECT_EQ(cv::norm(prepared.xy, xy, cv::NORM_INF), 0) << threads;
+      ASSERT_EQ(prepared.frac.empty(), frac.empty());
+      if (!frac.empty()) {
+        EXPECT_EQ(cv::norm(prepared.frac, frac, cv::NORM_INF), 0) << threads;
+      }
+    }
   }
 }
 
