@@ -1,16 +1,24 @@
 // SuperIFS textures (issue targets on 2 cores): a converged 2048×2048 steal-mode texture of the
 // paper's Fig. 4 superIFS with V = 3 (≤ 1 s), and each further step of a 1920×1080 texture
-// sequence (≥ 10 steps/s). Every run also checks its result.
+// sequence (≥ 10 steps/s). Every run also checks its result. `--threads N` (before Google
+// Benchmark's own flags) gives every case N workers; the default, 0, is all cores.
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
 #include <benchmark/benchmark.h>
 
 #include <opencv2/core.hpp>
 
+#include "ifs/parallel.h"
 #include "superifs/superifs_file.h"
 #include "superifs/texture.h"
 
 namespace {
 
 using namespace ifsfx;
+
+int threads_option = 0;  // --threads, set once in main() before any case runs
 
 // A smooth colourful source, so that the stolen texture is a real image.
 cv::Mat gradient_source(cv::Size size) {
@@ -30,8 +38,11 @@ void check(benchmark::State& state, bool ok, const char* what) {
 void texture_steal_2048_fig4_v3(benchmark::State& state) {
   const SuperIfs super = load_superifs("paper-fig4").super;
   const cv::Size size{2048, 2048};
-  TextureOptions options{
-      .count = 3, .mode = TextureMode::steal, .source = gradient_source({1024, 1024}), .seed = 1};
+  TextureOptions options{.count = 3,
+                         .mode = TextureMode::steal,
+                         .source = gradient_source({1024, 1024}),
+                         .seed = 1,
+                         .threads = threads_option};
   for (auto _ : state) {
     const cv::Mat t = render_texture(super, size, options);
     benchmark::DoNotOptimize(t.data);
@@ -47,7 +58,7 @@ BENCHMARK(texture_steal_2048_fig4_v3)
 void texture_attractor_2048_fig4_v3(benchmark::State& state) {
   const SuperIfs super = load_superifs("paper-fig4").super;
   for (auto _ : state) {
-    const cv::Mat t = render_texture(super, {2048, 2048}, {.count = 3});
+    const cv::Mat t = render_texture(super, {2048, 2048}, {.count = 3, .threads = threads_option});
     benchmark::DoNotOptimize(t.data);
   }
 }
@@ -64,8 +75,9 @@ enum class StepPart { buffers, map, frame };
 void sequence_step_1920x1080(benchmark::State& state, const char* preset, StepPart part) {
   const SuperIfs super = load_superifs(preset).super;
   const cv::Mat source = gradient_source({1920, 1080});
-  TextureSequence seq(super, {1920, 1080},
-                      {.count = 3, .mode = TextureMode::steal, .source = source});
+  TextureSequence seq(
+      super, {1920, 1080},
+      {.count = 3, .mode = TextureMode::steal, .source = source, .threads = threads_option});
   int previous = seq.steps_done();
   for (auto _ : state) {
     if (part == StepPart::frame) {
@@ -120,4 +132,33 @@ BENCHMARK_CAPTURE(sequence_step_1920x1080, carpet_lace_frame, "carpet-lace", Ste
 
 }  // namespace
 
-BENCHMARK_MAIN();
+int main(int argc, char** argv) {
+  // --threads N or --threads=N, taken out before Google Benchmark reads the rest.
+  int kept = 1;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    std::string value;
+    if (arg == "--threads" && i + 1 < argc)
+      value = argv[++i];
+    else if (arg.rfind("--threads=", 0) == 0)
+      value = arg.substr(10);
+    else {
+      argv[kept++] = argv[i];
+      continue;
+    }
+    char* end = nullptr;
+    const long n = std::strtol(value.c_str(), &end, 10);
+    if (value.empty() || *end != '\0' || n < 0 || n > kMaxThreads) {
+      std::fprintf(stderr, "superifs_bench: --threads: 0 (all cores) to %d (got '%s')\n",
+                   kMaxThreads, value.c_str());
+      return 2;
+    }
+    threads_option = static_cast<int>(n);
+  }
+  argc = kept;
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
