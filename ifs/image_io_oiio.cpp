@@ -4,8 +4,12 @@
 #include <fstream>
 #include <system_error>
 
-#include <OpenImageIO/imageio.h>
+// fmt before OpenImageIO: OpenImageIO's headers ask for fmt header-only, which would define fmt's
+// tables in this object too, and a binary that needs them from libfmt (the light ifsfx) would
+// then pull this object, and OpenImageIO with it, out of libifsfx_ifs.a.
 #include <fmt/format.h>
+
+#include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
 
