@@ -3,7 +3,7 @@
 // "Start-up"), which `render` to PNG does not use. So the installed `ifsfx` is a light binary
 // that links only what that needs (apps/light_main.cpp) and execs the full one, ifsfx-full, for
 // everything else, before it builds any command line: the same process, arguments, exit codes,
-// messages and signals, for about a millisecond more.
+// messages and signals, for about 5 ms more (the light binary's own start-up).
 #pragma once
 
 namespace ifsfx::app {
