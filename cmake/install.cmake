@@ -1,6 +1,7 @@
 # What `cmake --install BUILD --prefix P` puts where (the .deb packs the same, cmake/package_deb.cmake):
 #
-#   bin/ifsfx                                   the command                          runtime
+#   bin/ifsfx                                   the command (render to PNG itself)   runtime
+#   libexec/ifsfx/ifsfx-full                    every command; bin/ifsfx execs it    runtime
 #   share/man/man1/ifsfx.1                      man page, from the real --help texts runtime
 #   share/bash-completion/completions/ifsfx     bash completion, from the same       runtime
 #   share/ifsfx/presets/                        copies of the shipped presets        runtime
@@ -11,6 +12,8 @@
 #   LIBDIR/pkgconfig/ifsfx.pc                   pkg-config --cflags --libs ifsfx     dev
 #
 # LIBDIR is GNUInstallDirs' CMAKE_INSTALL_LIBDIR: lib, or lib/x86_64-linux-gnu for prefix /usr.
+# bin/ifsfx finds ifsfx-full by the path from BINDIR to LIBEXECDIR fixed at configure time
+# (apps/CMakeLists.txt), so the two move together under any prefix.
 # The presets are built into the program (cmake/embed_presets.cmake); the copies are there to be
 # read, copied and changed (`ifsfx render my-fern.toml`), like a package's examples.
 #
@@ -38,15 +41,16 @@ endforeach()
 
 # ---- the command, its man page and completion ----------------------------------------------------
 install(TARGETS ifsfx RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS ifsfx_full RUNTIME DESTINATION ${CMAKE_INSTALL_LIBEXECDIR}/ifsfx)
 
 set(IFSFX_MAN_PAGE ${PROJECT_BINARY_DIR}/doc/ifsfx.1)
 set(IFSFX_COMPLETION ${PROJECT_BINARY_DIR}/doc/ifsfx.bash-completion)
 add_custom_command(
   OUTPUT ${IFSFX_MAN_PAGE} ${IFSFX_COMPLETION}
-  COMMAND sh ${PROJECT_SOURCE_DIR}/cmake/cli_docs.sh $<TARGET_FILE:ifsfx> ${PROJECT_VERSION}
+  COMMAND sh ${PROJECT_SOURCE_DIR}/cmake/cli_docs.sh $<TARGET_FILE:ifsfx_full> ${PROJECT_VERSION}
           ${IFSFX_MAN_PAGE} ${IFSFX_COMPLETION}
-  DEPENDS ifsfx ${PROJECT_SOURCE_DIR}/cmake/cli_docs.sh
-  COMMENT "Writing the man page and bash completion from ifsfx --help"
+  DEPENDS ifsfx_full ${PROJECT_SOURCE_DIR}/cmake/cli_docs.sh
+  COMMENT "Writing the man page and bash completion from ifsfx-full --help"
   VERBATIM)
 add_custom_target(ifsfx_cli_docs ALL DEPENDS ${IFSFX_MAN_PAGE} ${IFSFX_COMPLETION})
 install(FILES ${IFSFX_MAN_PAGE} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)

@@ -8,7 +8,7 @@ packages=(
   # clang and its runtime libraries (libFuzzer, sanitizers) for tools/run-fuzz.sh
   g++ cmake ninja-build pkg-config ccache clang-format dpkg-dev file clang libclang-rt-14-dev
   # libraries
-  libopencv-dev libopenimageio-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
+  libopencv-dev libopenimageio-dev libpng-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   # runtime tools and data: ffmpeg/ffprobe (audio remux, tests), OpenCV's sample clips and images;

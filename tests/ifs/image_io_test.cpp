@@ -1,7 +1,11 @@
 #include "ifs/image_io.h"
 
+#include <sys/resource.h>
+
+#include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
@@ -250,6 +254,86 @@ TEST_F(image_io, semi_transparent_pixels_keep_their_colour) {
   orange.convertTo(orange_float, CV_32F, 1 / 255.0);
   write_image(dir_ / "out.exr", orange_float);
   EXPECT_LT(cv::norm(read_image(dir_ / "out.exr").pixels, orange_float, cv::NORM_INF), 1e-3);
+}
+
+// The chunk types of a PNG file, in order.
+std::vector<std::string> png_chunks(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<std::string> types;
+  for (std::size_t at = 8; at + 8 <= bytes.size();) {
+    const auto byte = [&](std::size_t i) {
+      return std::size_t{static_cast<unsigned char>(bytes[i])};
+    };
+    const std::size_t length =
+        byte(at) << 24 | byte(at + 1) << 16 | byte(at + 2) << 8 | byte(at + 3);
+    types.push_back(bytes.substr(at + 4, 4));
+    at += 12 + length;
+  }
+  return types;
+}
+
+// PNG goes through libpng, everything else through OpenImageIO: every layout ifsfx writes comes
+// back from OpenImageIO's reader exactly, straight alpha included.
+TEST_F(image_io, png_holds_grey_bgr_and_bgra_at_8_and_16_bits_exactly) {
+  cv::RNG rng(7);
+  for (const int channels : {1, 3, 4})
+    for (const int bits : {8, 16}) {
+      cv::Mat image(37, 53, CV_MAKETYPE(bits == 8 ? CV_8U : CV_16U, channels));
+      rng.fill(image, cv::RNG::UNIFORM, 0, bits == 8 ? 256 : 65536);
+      const fs::path path =
+          dir_ / ("c" + std::to_string(channels) + "_" + std::to_string(bits) + ".png");
+      for (const bool smallest : {false, true}) {
+        write_image(path, image, {.bits = bits, .smallest = smallest});
+        const cv::Mat back = read_image(path).pixels;
+        ASSERT_EQ(back.type(), image.type()) << path;
+        EXPECT_EQ(cv::norm(back, image, cv::NORM_INF), 0) << path << " smallest " << smallest;
+      }
+    }
+}
+
+// Metadata are text chunks OpenImageIO reads back under the same names: ASCII in tEXt, other text
+// (a preset's "∈") in iTXt, which holds UTF-8 (tEXt is Latin-1); the JSON copy is "Description".
+TEST_F(image_io, png_metadata_are_text_chunks_with_utf8_kept) {
+  const std::string preset = "# x \u2208 [\u22122, 2]\nname = \"fern\"\n";
+  write_image(dir_ / "m.png", gradient(),
+              {.metadata = {{"ifsfx:preset", preset}, {"ifsfx:seed", "42"}}});
+  const ImageFile back = read_image(dir_ / "m.png");
+  EXPECT_EQ(find(back.metadata, "ifsfx:preset"), preset);
+  EXPECT_EQ(find(back.metadata, "ifsfx:seed"), "42");
+  EXPECT_EQ(find(back.metadata, "Software"), "ifsfx");
+  EXPECT_EQ(find(back.metadata, "ImageDescription").rfind("ifsfx metadata: {", 0), 0u);
+  const std::vector<std::string> chunks = png_chunks(dir_ / "m.png");
+  // Software, the seed: tEXt; the preset and the JSON copy of both: iTXt.
+  EXPECT_EQ(std::count(chunks.begin(), chunks.end(), "tEXt"), 2);
+  EXPECT_EQ(std::count(chunks.begin(), chunks.end(), "iTXt"), 2);
+  EXPECT_EQ(chunks.back(), "IEND");
+}
+
+// A write that fails part-way (here the file size limit, as a full disk would) is Error{io}
+// naming the target, with the system's reason; no file and no temporary are left.
+TEST_F(image_io, failed_png_write_names_the_path_and_leaves_nothing) {
+  cv::Mat noise(512, 512, CV_8UC3);
+  cv::RNG(3).fill(noise, cv::RNG::UNIFORM, 0, 256);  // incompressible: ~768 KB
+  rlimit old{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &old), 0);
+  rlimit small = old;
+  small.rlim_cur = 64 * 1024;
+  const auto previous = std::signal(SIGXFSZ, SIG_IGN);  // EFBIG instead of the signal
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string message;
+  ErrorKind kind = ErrorKind::parse;
+  try {
+    write_image(dir_ / "big.png", noise);
+  } catch (const Error& e) {
+    message = e.what();
+    kind = e.kind();
+  }
+  setrlimit(RLIMIT_FSIZE, &old);
+  std::signal(SIGXFSZ, previous);
+  EXPECT_EQ(kind, ErrorKind::io);
+  EXPECT_EQ(message, (dir_ / "big.png").string() + ": cannot write (File too large)");
+  EXPECT_TRUE(fs::is_empty(dir_));
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 # deb         cpack's packages: their files and fields, unpacked into a scratch root and run
 set -euo pipefail
 check=$1 src=$2 build=$3 work=$4 built_ifsfx=$5
+built_full=$(dirname "$built_ifsfx")/ifsfx-full  # what the light ifsfx execs for other commands
 prefix=$work/prefix
 photo=/usr/share/doc/opencv-doc/examples/data/baboon.jpg
 
@@ -21,7 +22,8 @@ scratch() {
 }
 
 # expect_command IFSFX: the command of an install, run from a folder that is neither the source
-# nor the build tree, lists the same presets and renders the same bytes as the built one.
+# nor the build tree, lists the same presets (through the ifsfx-full it installs beside it) and
+# renders the same bytes as the built one, PNG by itself and TIFF through ifsfx-full.
 expect_command() {
   local ifsfx=$1
   mkdir -p elsewhere && cd elsewhere
@@ -32,6 +34,12 @@ expect_command() {
   "$ifsfx" render maple-leaf --size 96x64 --quality 8 --seed 3 -q -o leaf.png
   "$built_ifsfx" render maple-leaf --size 96x64 --quality 8 --seed 3 -q -o built-leaf.png
   cmp -s leaf.png built-leaf.png || fail "$ifsfx render differs from the built one"
+  "$ifsfx" render maple-leaf --size 96x64 --quality 8 --seed 3 -q -o leaf.tif
+  "$built_ifsfx" render maple-leaf --size 96x64 --quality 8 --seed 3 -q -o built-leaf.tif
+  # The pixels: a TIFF carries the second it was written (DateTime).
+  [ "$(oiiotool --info --hash leaf.tif | grep SHA-1)" = \
+    "$(oiiotool --info --hash built-leaf.tif | grep SHA-1)" ] ||
+    fail "$ifsfx render to TIFF differs from the built one"
   cd ..
 }
 
@@ -176,7 +184,8 @@ CPP
     [ -f "$deb" ] && [ -f "$dev" ] || fail "packages: $(ls ./*.deb)"
     dpkg-deb -c "$deb" | awk '{ print $6 }' >deb-files.txt
     dpkg-deb -c "$dev" | awk '{ print $6 }' >dev-files.txt
-    for f in ./usr/bin/ifsfx ./usr/share/man/man1/ifsfx.1 ./usr/share/bash-completion/completions/ifsfx \
+    for f in ./usr/bin/ifsfx ./usr/libexec/ifsfx/ifsfx-full ./usr/share/man/man1/ifsfx.1 \
+             ./usr/share/bash-completion/completions/ifsfx \
              ./usr/share/ifsfx/presets/barnsley-fern.toml ./usr/share/doc/ifsfx/README.md; do
       grep -qx -- "$f" deb-files.txt || fail "$deb lacks $f"
     done
@@ -205,11 +214,11 @@ CPP
       body=$(dpkg-deb --ctrl-tarfile "$deb" | tar -xO "./$script" 2>/dev/null | grep -Ev '^(#!|set -e|if |fi|$)') || true
       [ -z "$body" ] || [ "$(echo $body)" = ldconfig ] || fail "$deb $script does more than ldconfig: $body"
     done
-    # Depends, from dpkg-shlibdeps: the package of every library the command links to.
+    # Depends, from dpkg-shlibdeps: the package of every library the two binaries link to.
     depends=$(dpkg-deb -f "$deb" Depends)
     [ -n "$depends" ] || fail "$deb has no Depends"
     multiarch=$(dpkg-architecture -qDEB_HOST_MULTIARCH)
-    for lib in $(objdump -p "$built_ifsfx" | awk '$1 == "NEEDED" { print $2 }'); do
+    for lib in $(objdump -p "$built_ifsfx" "$built_full" | awk '$1 == "NEEDED" { print $2 }' | sort -u); do
       owner=$(dpkg -S "*/$multiarch/$lib" 2>/dev/null | head -1 | sed 's/[:,].*//') || true
       [ -n "$owner" ] || fail "no installed package holds $lib"
       [[ ", $depends," == *", $owner "* || ", $depends," == *", $owner,"* ]] ||

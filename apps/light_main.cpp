@@ -1,0 +1,15 @@
+// ifsfx, the installed command: `render` to PNG in a binary that loads neither OpenImageIO nor
+// the video stack, every other command line handed to ifsfx-full (apps/light_dispatch.h).
+#include <CLI/CLI.hpp>
+
+#include "apps/commands.h"
+#include "apps/light_dispatch.h"
+#include "apps/run_cli.h"
+
+int main(int argc, char** argv) {
+  if (!ifsfx::app::light_runs(argc, argv)) ifsfx::app::exec_full_binary(argv);
+  CLI::App app{ifsfx::app::kDescription};
+  app.require_subcommand(1);
+  ifsfx::app::add_render_command(app);
+  return ifsfx::app::run_cli(app, argc, argv);
+}

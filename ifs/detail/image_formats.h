@@ -1,0 +1,42 @@
+// The two image writers behind ifs/image_io.h, for image_io.cpp only: PNG through libpng
+// (png_writer.cpp), every other format through OpenImageIO (image_io_oiio.cpp). PNG has its own
+// writer so that `ifsfx render` can write its picture without loading OpenImageIO, whose 260
+// shared libraries cost more start-up than a small render (bench/README.md, "Start-up"); the
+// light `ifsfx` links image_io_without_oiio.cpp in place of image_io_oiio.cpp.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+namespace ifsfx::detail {
+
+// Prefix of the image description that carries ifsfx's metadata as JSON (formats without
+// free-form attributes, TIFF and JPEG, keep it; read_image takes the attributes back from it).
+inline constexpr std::string_view kMetadataTag = "ifsfx metadata: ";
+
+// String attributes in the order they are stored: "Software", the caller's metadata (valid
+// UTF-8), and "ImageDescription" with all of them as JSON.
+using ImageAttributes = std::vector<std::pair<std::string, std::string>>;
+
+// `pixels` (grey, BGR or BGRA with straight alpha, CV_8U or CV_16U) as a PNG in `file`, which
+// `target` names in messages: zlib level 9 and libpng's filter choice per row with `smallest`,
+// else level 1 and the sub filter. Attributes are text chunks (tEXt, iTXt where not ASCII);
+// "ImageDescription" is PNG's "Description", as OpenImageIO names it. Throws Error{io}
+// "TARGET: cannot write (REASON)".
+void write_png(const std::filesystem::path& target, const std::filesystem::path& file,
+               const cv::Mat& pixels, bool smallest, const ImageAttributes& attributes);
+
+// Whether OpenImageIO has a writer for `path`'s extension.
+bool oiio_can_write(const std::filesystem::path& path);
+
+// `pixels` (BGR order, the depth the file holds: CV_8U, CV_16U or CV_32F) written by OpenImageIO
+// to `file` in the format of `target`'s extension. Throws Error{io} "TARGET: cannot write (...)".
+void write_oiio(const std::filesystem::path& target, const std::filesystem::path& file,
+                const cv::Mat& pixels, const ImageAttributes& attributes);
+
+}  // namespace ifsfx::detail

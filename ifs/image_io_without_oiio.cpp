@@ -1,0 +1,41 @@
+// OpenImageIO's side of ifs/image_io.h for a binary that must not load OpenImageIO: the light
+// `ifsfx`, which writes PNG (ifs/png_writer.cpp) and hands every command that reads an image or
+// writes another format to the full binary before it gets here (apps/light_main.cpp). Linked as
+// an object ahead of libifs.a, these definitions keep the linker from taking image_io_oiio.o out
+// of the archive; should one be called after all, it refuses instead of writing or reading.
+#include <fmt/format.h>
+
+#include "ifs/detail/image_formats.h"
+#include "ifs/error.h"
+#include "ifs/image_io.h"
+
+namespace ifsfx {
+namespace fs = std::filesystem;
+
+namespace {
+
+[[noreturn]] void refuse(const fs::path& path, const char* what) {
+  throw Error(ErrorKind::unsupported,
+              fmt::format("{}: this ifsfx binary {} (the full one, ifsfx-full, does)",
+                          path.string(), what));
+}
+
+}  // namespace
+
+namespace detail {
+
+bool oiio_can_write(const fs::path& path) {
+  refuse(path, "writes only PNG");
+}
+
+void write_oiio(const fs::path& target, const fs::path&, const cv::Mat&, const ImageAttributes&) {
+  refuse(target, "writes only PNG");
+}
+
+}  // namespace detail
+
+ImageFile read_image(const fs::path& path) {
+  refuse(path, "reads no images");
+}
+
+}  // namespace ifsfx
