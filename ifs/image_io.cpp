@@ -71,7 +71,7 @@ detail::ImageAttributes attributes_of(const WriteOptions& options) {
 
 void check_writable_image(const fs::path& path, const OutputOptions& output, int bits) {
   if (path.empty()) throw Error(ErrorKind::invalid_argument, "output: no file name given");
-  if (lower_extension(path) != ".png" && !detail::oiio_can_write(path))
+  if (!detail::oiio_can_write(path))
     throw Error(ErrorKind::unsupported,
                 fmt::format("{}: no image writer for extension '{}' (use .png, .tif, .exr, .jpg)",
                             path.string(), path.extension().string()));
@@ -95,10 +95,7 @@ void write_image(OutputFile& file, const cv::Mat& image, const WriteOptions& opt
   const std::string ext = lower_extension(path);
   const int cv_depth = float_format(ext) ? CV_32F : options.bits == 16 ? CV_16U : CV_8U;
   const cv::Mat pixels = to_file_depth(image, cv_depth);
-  if (ext == ".png")
-    detail::write_png(path, file.temporary(), pixels, options.smallest, attributes_of(options));
-  else
-    detail::write_oiio(path, file.temporary(), pixels, attributes_of(options));
+  detail::write_oiio(path, file.temporary(), pixels, options.smallest, attributes_of(options));
 }
 
 }  // namespace ifsfx

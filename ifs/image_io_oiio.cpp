@@ -1,7 +1,8 @@
-// OpenImageIO's side of ifs/image_io.h: reading every format, and writing every format but PNG
+// OpenImageIO's side of ifs/image_io.h: reading and writing every format
 // (ifs/detail/image_formats.h).
 #include <algorithm>
 #include <fstream>
+#include <string_view>
 #include <system_error>
 
 // fmt before OpenImageIO: OpenImageIO's headers ask for fmt header-only, which would define fmt's
@@ -124,7 +125,7 @@ bool oiio_can_write(const fs::path& path) {
   return can;
 }
 
-void write_oiio(const fs::path& target, const fs::path& file, const cv::Mat& image,
+void write_oiio(const fs::path& target, const fs::path& file, const cv::Mat& image, bool smallest,
                 const ImageAttributes& attributes) {
   const bool is_float = image.depth() == CV_32F;
   const OIIO::TypeDesc format = is_float                  ? OIIO::TypeDesc::FLOAT
@@ -145,6 +146,15 @@ void write_oiio(const fs::path& target, const fs::path& file, const cv::Mat& ima
 
   // The format is the target's; the bytes go to the output's temporary file.
   auto out = OIIO::ImageOutput::create(target.string());
+  if (out && std::string_view(out->format_name()) == "png") {
+    spec.attribute("png:compressionLevel", smallest ? 9 : 1);
+    // The fastest write also filters every row by its left neighbour alone (libpng's
+    // PNG_FILTER_SUB) instead of trying the five filters per row: half the time of a 1080p
+    // write; files 1 % (fern) to 8 % (Sierpinski) larger for 1080p measure renders, 11 % for a
+    // frame-filling stolen photo. png_writer.cpp makes the same choice.
+    constexpr int kPngFilterSub = 0x10;
+    if (!smallest) spec.attribute("png:filter", kPngFilterSub);
+  }
   bool ok = out && out->open(file.string(), spec);
   ok = ok && out->write_image(format, pixels.data);
   ok = out && out->close() && ok;

@@ -1,8 +1,12 @@
 // OpenImageIO's side of ifs/image_io.h for a binary that must not load OpenImageIO: the light
-// `ifsfx`, which writes PNG (ifs/png_writer.cpp) and hands every command that reads an image or
-// writes another format to the full binary before it gets here (apps/light_main.cpp). Linked as
-// an object ahead of libifs.a, these definitions keep the linker from taking image_io_oiio.o out
-// of the archive; should one be called after all, it refuses instead of writing or reading.
+// `ifsfx`, which writes PNG through libpng (ifs/png_writer.cpp: the pixels and text attributes
+// OpenImageIO would write) and hands every command that reads an image or writes another format
+// to the full binary before it gets here (apps/light_main.cpp). Linked as an object ahead of
+// libifs.a, these definitions keep the linker from taking image_io_oiio.o out of the archive;
+// anything but PNG asked of them after all is refused, never written or read.
+#include <cctype>
+#include <string>
+
 #include <fmt/format.h>
 
 #include "ifs/detail/image_formats.h"
@@ -20,16 +24,25 @@ namespace {
                           path.string(), what));
 }
 
+bool is_png(const fs::path& path) {
+  std::string ext = path.extension().string();
+  for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return ext == ".png";
+}
+
 }  // namespace
 
 namespace detail {
 
 bool oiio_can_write(const fs::path& path) {
-  refuse(path, "writes only PNG");
+  if (!is_png(path)) refuse(path, "writes only PNG");
+  return true;
 }
 
-void write_oiio(const fs::path& target, const fs::path&, const cv::Mat&, const ImageAttributes&) {
-  refuse(target, "writes only PNG");
+void write_oiio(const fs::path& target, const fs::path& file, const cv::Mat& pixels, bool smallest,
+                const ImageAttributes& attributes) {
+  if (!is_png(target)) refuse(target, "writes only PNG");
+  write_png(target, file, pixels, smallest, attributes);
 }
 
 }  // namespace detail

@@ -1,4 +1,4 @@
-// PNG through libpng (ifs/detail/image_formats.h). libpng reports errors by longjmp: the one
+// PNG through libpng, for the light `ifsfx` (ifs/detail/image_formats.h). libpng reports errors by longjmp: the one
 // function that calls setjmp (encode) holds no C++ object, everything it uses lives in its caller.
 #include <png.h>
 #include <zlib.h>
@@ -69,8 +69,8 @@ bool encode(png_structp png, png_infop info, const Layout& layout, png_bytepp ro
   // trying the five filters per row: half the time of a 1080p write; files 1 % (fern) to 8 %
   // (Sierpinski) larger for 1080p measure renders, 11 % for a frame-filling stolen photo.
   png_set_compression_level(png, layout.smallest ? 9 : 1);
-  // zlib's default strategy, as OpenImageIO chose (libpng's own is Z_FILTERED for filtered rows):
-  // the same compressed bytes as before libpng wrote them here.
+  // zlib's default strategy, as OpenImageIO chooses (libpng's own is Z_FILTERED for filtered rows):
+  // the same compressed bytes as OpenImageIO's writer.
   png_set_compression_strategy(png, Z_DEFAULT_STRATEGY);
   if (!layout.smallest) png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
   png_write_info(png, info);

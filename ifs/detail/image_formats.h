@@ -1,8 +1,8 @@
-// The two image writers behind ifs/image_io.h, for image_io.cpp only: PNG through libpng
-// (png_writer.cpp), every other format through OpenImageIO (image_io_oiio.cpp). PNG has its own
-// writer so that `ifsfx render` can write its picture without loading OpenImageIO, whose 260
-// shared libraries cost more start-up than a small render (bench/README.md, "Start-up"); the
-// light `ifsfx` links image_io_without_oiio.cpp in place of image_io_oiio.cpp.
+// The image writers behind ifs/image_io.h, for image_io.cpp only. The libraries write every
+// format through OpenImageIO (image_io_oiio.cpp). The light `ifsfx`, which runs `render` to PNG
+// without loading OpenImageIO (its 260 shared libraries cost more start-up than a small render:
+// bench/README.md, "Start-up"), links image_io_without_oiio.cpp in its place, whose write_oiio
+// writes PNG through libpng (png_writer.cpp): the same pixels and text attributes.
 #pragma once
 
 #include <filesystem>
@@ -35,8 +35,9 @@ void write_png(const std::filesystem::path& target, const std::filesystem::path&
 bool oiio_can_write(const std::filesystem::path& path);
 
 // `pixels` (BGR order, the depth the file holds: CV_8U, CV_16U or CV_32F) written by OpenImageIO
-// to `file` in the format of `target`'s extension. Throws Error{io} "TARGET: cannot write (...)".
+// to `file` in the format of `target`'s extension; `smallest` as write_png's for PNG. Throws
+// Error{io} "TARGET: cannot write (...)".
 void write_oiio(const std::filesystem::path& target, const std::filesystem::path& file,
-                const cv::Mat& pixels, const ImageAttributes& attributes);
+                const cv::Mat& pixels, bool smallest, const ImageAttributes& attributes);
 
 }  // namespace ifsfx::detail

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The light `ifsfx` (apps/light_dispatch.h): it loads neither OpenImageIO nor the video stack,
-# writes the same PNG bytes as ifsfx-full, runs render to PNG itself and hands every other
+# writes the same PNG pictures and metadata as ifsfx-full, runs render to PNG itself and hands every other
 # command line to ifsfx-full with the same output and exit code.
 #   light_binary_test.sh IFSFX IFSFX_FULL WORKDIR
 set -euo pipefail
@@ -17,14 +17,21 @@ needed "$full" | grep -Eq "$heavy" || fail "the pattern finds nothing in ifsfx-f
 if needed "$light" | grep -E "$heavy"; then fail "the light ifsfx loads the libraries above"; fi
 echo "light NEEDED: $(needed "$light" | tr '\n' ' ')"
 
-# The same PNG bytes from either binary, in every mode the light one runs, 8 and 16 bits and
-# --smallest.
+# The same picture from either binary (the light one writes PNG through libpng, ifsfx-full through
+# OpenImageIO), in every mode the light one runs, 8 and 16 bits and --smallest: size, channels,
+# depth, the SHA-1 of the pixels and every attribute as OpenImageIO reads them back.
+command -v oiiotool >/dev/null || { echo "SKIP: no oiiotool (openimageio-tools)"; exit 77; }
+described() { oiiotool --info -v --hash "$1" | tail -n +2 | sed "s|^$1 *:||"; }
 same() {  # NAME ARGS...
   local name=$1
   shift
   "$light" render "$@" -q -o "light-$name.png"
   "$full" render "$@" -q -o "full-$name.png"
-  cmp "light-$name.png" "full-$name.png" || fail "$name: the two binaries wrote different bytes"
+  described "light-$name.png" >light.txt
+  described "full-$name.png" >full.txt
+  grep -q "SHA-1: " light.txt || fail "$name: oiiotool gave no hash: $(cat light.txt)"
+  cmp -s light.txt full.txt || fail "$name: the two binaries wrote different pictures:
+$(diff light.txt full.txt)"
 }
 same measure barnsley-fern --size 96x72 --quality 8
 same measure16 sierpinski-triangle --size 96x72 --quality 8 --bits 16 --smallest
@@ -71,4 +78,4 @@ same_run render barnsley-fern -o x.png --mode bogus
 same_run render barnsley-fern -o x.bmpx
 same_run render barnsley-fern -o x.png --mode steal
 same_run render barnsley-fern -o x.png --bogus
-echo "PASS: the light ifsfx loads no OpenImageIO or video library, writes ifsfx-full's bytes and hands the rest on"
+echo "PASS: the light ifsfx loads no OpenImageIO or video library, writes ifsfx-full's pictures and hands the rest on"
