@@ -1,5 +1,6 @@
-// PNG through libpng, for the light `ifsfx` (ifs/detail/image_formats.h). libpng reports errors by longjmp: the one
-// function that calls setjmp (encode) holds no C++ object, everything it uses lives in its caller.
+// PNG through libpng, for the light `ifsfx` (ifs/detail/image_formats.h). libpng reports errors
+// by longjmp: the one function that calls setjmp (encode) holds no C++ object, everything it uses
+// lives in its caller.
 #include <png.h>
 #include <zlib.h>
 
