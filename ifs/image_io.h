@@ -1,7 +1,8 @@
 // Still images, read and written through OpenImageIO (the light `ifsfx` binary writes its PNG
-// through libpng instead: ifs/detail/image_formats.h says why). Images in the libraries are cv::Mat in OpenCV's channel
-// order (BGR, BGRA, or one grey channel) of depth CV_8U, CV_16U or CV_32F (floats in [0, 1]). Alpha
-// is straight: the colour of a half-transparent pixel is its full colour, not multiplied by alpha.
+// through libpng instead: ifs/detail/image_formats.h says why). Images in the libraries are cv::Mat
+// in OpenCV's channel order (BGR, BGRA, or one grey channel) of depth CV_8U, CV_16U or CV_32F
+// (floats in [0, 1]). Alpha is straight: the colour of a half-transparent pixel is its full colour,
+// not multiplied by alpha.
 #pragma once
 
 #include <filesystem>
