@@ -23,24 +23,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// OpenImageIO wants RGB(A) order; the libraries use OpenCV's BGR(A).
-cv::Mat to_rgb_order(const cv::Mat& image) {
+// OpenImageIO wants RGB(A) order; the libraries use OpenCV's BGR(A). Swapping red and blue goes
+// either way.
+cv::Mat swap_red_blue(const cv::Mat& image) {
   cv::Mat out;
   if (image.channels() == 3)
     cv::cvtColor(image, out, cv::COLOR_BGR2RGB);
   else if (image.channels() == 4)
     cv::cvtColor(image, out, cv::COLOR_BGRA2RGBA);
-  else
-    out = image;
-  return out;
-}
-
-cv::Mat to_bgr_order(const cv::Mat& image) {
-  cv::Mat out;
-  if (image.channels() == 3)
-    cv::cvtColor(image, out, cv::COLOR_RGB2BGR);
-  else if (image.channels() == 4)
-    cv::cvtColor(image, out, cv::COLOR_RGBA2BGRA);
   else
     out = image;
   return out;
@@ -131,7 +121,7 @@ void write_oiio(const fs::path& target, const fs::path& file, const cv::Mat& ima
   const OIIO::TypeDesc format = is_float                  ? OIIO::TypeDesc::FLOAT
                                 : image.depth() == CV_16U ? OIIO::TypeDesc::UINT16
                                                           : OIIO::TypeDesc::UINT8;
-  cv::Mat pixels = to_rgb_order(image);
+  cv::Mat pixels = swap_red_blue(image);
   if (!pixels.isContinuous()) pixels = pixels.clone();
   // The libraries' alpha is straight (colour not multiplied by it): say so to formats that store
   // it straight (TIFF), so nothing divides the colour again; OpenEXR stores it multiplied.
@@ -208,7 +198,7 @@ ImageFile read_image(const fs::path& path) {
   if (keep == 4 && spec.get_int_attribute("oiio:UnassociatedAlpha", 0) == 0)
     unpremultiply(pixels);  // OpenEXR and associated TIFF: colour back to straight
   ImageFile file;
-  file.pixels = to_bgr_order(pixels);
+  file.pixels = swap_red_blue(pixels);
   std::string description;
   for (const auto& attr : spec.extra_attribs) {
     if (attr.type() != OIIO::TypeDesc::STRING) continue;
