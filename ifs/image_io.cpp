@@ -12,13 +12,13 @@
 namespace ifsfx {
 namespace fs = std::filesystem;
 
-namespace {
-
-std::string lower_extension(const fs::path& path) {
+std::string detail::lower_extension(const fs::path& path) {
   std::string ext = path.extension().string();
   for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
   return ext;
 }
+
+namespace {
 
 bool float_format(const std::string& ext) {
   return ext == ".exr" || ext == ".hdr";
@@ -29,7 +29,7 @@ void check_bits(const fs::path& path, int bits) {
   if (bits != 8 && bits != 16)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("{}: bits per channel must be 8 or 16 (got {})", path.string(), bits));
-  const std::string ext = lower_extension(path);
+  const std::string ext = detail::lower_extension(path);
   const bool can_16 = ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".ppm" ||
                       ext == ".pgm" || ext == ".pnm";
   if (bits == 16 && !can_16 && !float_format(ext))
@@ -92,7 +92,7 @@ void write_image(OutputFile& file, const cv::Mat& image, const WriteOptions& opt
     throw Error(ErrorKind::invalid_argument, fmt::format("{}: empty image", path.string()));
   check_bits(path, options.bits);
 
-  const std::string ext = lower_extension(path);
+  const std::string ext = detail::lower_extension(path);
   const int cv_depth = float_format(ext) ? CV_32F : options.bits == 16 ? CV_16U : CV_8U;
   const cv::Mat pixels = to_file_depth(image, cv_depth);
   detail::write_oiio(path, file.temporary(), pixels, options.smallest, attributes_of(options));

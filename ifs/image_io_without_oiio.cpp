@@ -4,9 +4,6 @@
 // to the full binary before it gets here (apps/light_main.cpp). Linked as an object ahead of
 // libifs.a, these definitions keep the linker from taking image_io_oiio.o out of the archive;
 // anything but PNG asked of them after all is refused, never written or read.
-#include <cctype>
-#include <string>
-
 #include <fmt/format.h>
 
 #include "ifs/detail/image_formats.h"
@@ -25,9 +22,7 @@ namespace {
 }
 
 bool is_png(const fs::path& path) {
-  std::string ext = path.extension().string();
-  for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-  return ext == ".png";
+  return detail::lower_extension(path) == ".png";
 }
 
 }  // namespace

@@ -19,6 +19,9 @@ namespace ifsfx::detail {
 // free-form attributes, TIFF and JPEG, keep it; read_image takes the attributes back from it).
 inline constexpr std::string_view kMetadataTag = "ifsfx metadata: ";
 
+// `path`'s extension in lower case, with its dot (".png"): what picks the format.
+std::string lower_extension(const std::filesystem::path& path);
+
 // String attributes in the order they are stored: "Software", the caller's metadata (valid
 // UTF-8), and "ImageDescription" with all of them as JSON.
 using ImageAttributes = std::vector<std::pair<std::string, std::string>>;
