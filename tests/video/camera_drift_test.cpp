@@ -45,16 +45,27 @@ TEST(camera_drift, new_maps_arrive_from_the_worker_without_waiting) {
   const Fixture x;
   LiveDrift live(x.F, x.G, x.size, x.options);
   const cv::Mat first = live.filter(x.frame, 0.0);
-  // Keep filtering at later times (the worker builds maps meanwhile) until maps of t > 0 have
-  // arrived; the first map built in the background is of t = 0 again.
+  // Every later frame asks for t = 0.5: half-way between lattice points, where the drift noise is
+  // far from zero (gradient noise is zero at whole cycles, so a map of t = 1 or 99 at speed 1 is
+  // the base map again). The first map built in the background is of t = 0 again, the second and
+  // any after it are of t = 0.5; filtering until it has arrived and its fade is over must give
+  // the frame through that map, whatever the timing.
+  constexpr double t = 0.5;
   for (int i = 1; i < 2000 && live.maps_built() < 3; ++i) {
-    live.filter(x.frame, 0.05 * i);
+    live.filter(x.frame, t);
     std::this_thread::sleep_for(5ms);
   }
   ASSERT_GE(live.maps_built(), 3);
   cv::Mat now;
-  for (int i = 0; i < x.options.fade_frames; ++i) now = live.filter(x.frame, 99.0);
-  EXPECT_GT(cv::norm(now, first, cv::NORM_L1), 0) << "the drifted maps never showed";
+  for (int i = 0; i < x.options.fade_frames; ++i) now = live.filter(x.frame, t);
+
+  StealMapOptions map = x.options.map;
+  map.view = fit_view(attractor_bounds(x.F, map.seed), x.size, map.margin);
+  const cv::Mat drifted = filter_frame(
+      x.frame, make_remap_table(compute_steal_map(drift(x.F, t, x.options.drift), x.G, x.size, map),
+                                x.size));
+  ASSERT_GT(cv::norm(drifted, first, cv::NORM_L1), 0) << "the drift at t = 0.5 moved no pixel";
+  EXPECT_EQ(cv::norm(now, drifted, cv::NORM_INF), 0) << "the drifted map never showed";
 }
 
 }  // namespace
