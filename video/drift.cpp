@@ -34,14 +34,26 @@ double gradient_noise(double x, std::uint64_t stream) {
 }  // namespace
 
 double fbm(double x, std::uint64_t seed, std::uint64_t channel, int octaves) {
-  double sum = 0, amplitude = 1, norm = 0, frequency = 1;
+  // Gradient noise is zero on its lattice, and the lattices of octaves 2^o apart share every
+  // whole x: unshifted, every coefficient of every map would be back on its base value at once,
+  // every 1/speed seconds (the animation "breathing" back to the preset). Each octave of each
+  // channel is shifted by its own phase in [0, 1) instead, and the sum taken relative to x = 0,
+  // so that t = 0 is still the base IFS.
+  double sum = 0, at_zero = 0, amplitude = 1, norm = 0, frequency = 1;
   for (int o = 0; o < octaves; ++o) {
-    sum += amplitude * gradient_noise(x * frequency, stream_seed(seed, channel * 64 + o));
+    const std::uint64_t stream = stream_seed(seed, channel * 64 + o);
+    const double phase = static_cast<double>(mix64(~stream) >> 11) * 0x1.0p-53;
+    sum += amplitude * gradient_noise(x * frequency + phase, stream);
+    at_zero += amplitude * gradient_noise(phase, stream);
     norm += amplitude;
     amplitude *= 0.5;
     frequency *= 2;
   }
-  return norm > 0 ? 2 * sum / norm : 0;  // gradient noise spans about ±0.5
+  if (norm <= 0) return 0;
+  // Gradient noise spans about ±0.5, so 2·sum/norm and 2·at_zero/norm lie in about [−1, 1] and
+  // their difference in ±(1 + |offset|): scaled back by that, the result stays in [−1, 1].
+  const double offset = 2 * at_zero / norm;
+  return (2 * sum / norm - offset) / (1 + std::abs(offset));
 }
 
 Ifs drift(const Ifs& base, double t, const DriftOptions& options) {

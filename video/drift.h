@@ -1,7 +1,9 @@
 // `--animate drift`: every coefficient of every map wanders smoothly in time, driven by fractal
 // Brownian motion (a sum of octaves of 1-D gradient noise, each half the amplitude and twice the
-// frequency of the one before). The drifted IFS is a pure function of (base, t, seed): the same
-// seed gives the same animation for any frame range or thread count.
+// frequency of the one before, each on a lattice of its own phase). Time 0 is the base IFS; after
+// it the coefficients wander independently, rather than all coming back to the base together
+// every 1/speed seconds. The drifted IFS is a pure function of (base, t, seed): the same seed
+// gives the same animation for any frame range or thread count.
 #pragma once
 
 #include <cstdint>
@@ -28,7 +30,8 @@ struct DriftOptions {
   double max_contraction = 0.95;
 };
 
-// fBm noise in about [−1, 1]: octaves of gradient noise on channel `channel` of `seed`, at x.
+// fBm noise in [−1, 1], zero at x = 0: octaves of gradient noise on channel `channel` of `seed`,
+// at x.
 double fbm(double x, std::uint64_t seed, std::uint64_t channel, int octaves);
 
 // The base IFS drifted to time t (seconds). Probabilities and colours are kept.

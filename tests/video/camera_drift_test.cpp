@@ -45,11 +45,9 @@ TEST(camera_drift, new_maps_arrive_from_the_worker_without_waiting) {
   const Fixture x;
   LiveDrift live(x.F, x.G, x.size, x.options);
   const cv::Mat first = live.filter(x.frame, 0.0);
-  // Every later frame asks for t = 0.5: half-way between lattice points, where the drift noise is
-  // far from zero (gradient noise is zero at whole cycles, so a map of t = 1 or 99 at speed 1 is
-  // the base map again). The first map built in the background is of t = 0 again, the second and
-  // any after it are of t = 0.5; filtering until it has arrived and its fade is over must give
-  // the frame through that map, whatever the timing.
+  // Every later frame asks for the one time t = 0.5. The first map built in the background is of
+  // t = 0 again, the second and any after it are of t = 0.5; filtering until it has arrived and
+  // its fade is over must give the frame through that map, whatever the timing.
   constexpr double t = 0.5;
   for (int i = 1; i < 2000 && live.maps_built() < 3; ++i) {
     live.filter(x.frame, t);

@@ -61,7 +61,37 @@ TEST(drift, motion_is_smooth_and_bounded) {
   EXPECT_LE(largest, 1.0);
   EXPECT_GT(largest, 0.1);
   EXPECT_LT(biggest_step, 0.05);
-  EXPECT_EQ(fbm(3.0, 1, 0, 1), 0.0);  // gradient noise vanishes on its lattice
+}
+
+TEST(drift, time_zero_is_the_base_and_whole_cycles_are_not) {
+  // Gradient noise vanishes on its lattice, and octaves of doubling frequency share every whole
+  // x: without each octave's own phase, every coefficient would be back on its base value at
+  // t = k / speed, all at once, and the animation would pass through the preset on a beat.
+  const Ifs base = fern();
+  const DriftOptions o{.amount = 0.1, .speed = 1, .seed = 5};
+  const Ifs start = drift(base, 0, o);
+  for (std::size_t n = 0; n < base.size(); ++n) EXPECT_EQ(start.maps[n], base.maps[n]);
+  for (const double t : {1.0, 2.0, 3.0, 5.0, 99.0}) {
+    const Ifs d = drift(base, t, o);
+    double moved = 0;
+    for (std::size_t n = 0; n < base.size(); ++n) {
+      const auto a = base.maps[n].coefficients(), b = d.maps[n].coefficients();
+      for (std::size_t j = 0; j < 6; ++j) moved = std::max(moved, std::abs(a[j] - b[j]));
+    }
+    EXPECT_GT(moved, 0.01) << "t = " << t << " is the base IFS again";
+  }
+  for (std::uint64_t channel = 0; channel < 24; ++channel) {
+    EXPECT_EQ(fbm(0, 5, channel, 4), 0.0);
+    EXPECT_NE(fbm(1, 5, channel, 4), 0.0);
+  }
+}
+
+TEST(drift, noise_stays_within_one_on_every_channel) {
+  for (std::uint64_t channel = 0; channel < 64; ++channel)
+    for (int i = 0; i <= 4000; ++i) {
+      const double v = fbm(i * 0.01, 11, channel, 4);
+      ASSERT_LE(std::abs(v), 1.0) << "channel " << channel << ", x = " << i * 0.01;
+    }
 }
 
 TEST(drift, bad_options_are_refused) {
