@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -166,15 +167,18 @@ void run_fit(const FitArgs& args) {
 
   const std::string summary = fmt::format("fitted by ifsfx fit to {}: IoU {:.3f}, s {:.3f}",
                                           args.target, r.iou, r.contraction);
-  write_file(output,
-             format == PresetFormat::toml ? to_toml(result.ifs, summary)
-                                          : to_fractint(result.ifs, summary),
-             policy);
-  if (!args.preview.empty())
-    write_image(args.preview,
+  // The preset and its preview appear together or not at all (a stop during the preview).
+  std::vector<OutputFile> staged;
+  staged.emplace_back(output, policy);
+  write_file(staged.back(), format == PresetFormat::toml ? to_toml(result.ifs, summary)
+                                                         : to_fractint(result.ifs, summary));
+  if (!args.preview.empty()) {
+    staged.emplace_back(args.preview, policy);
+    write_image(staged.back(),
                 collage::fit_preview(raster, result.ifs,
-                                     {.quality = 256, .seed = args.seed, .threads = args.threads}),
-                {.output = policy});
+                                     {.quality = 256, .seed = args.seed, .threads = args.threads}));
+  }
+  commit_together(staged);
 
   const bool holds = r.bound_holds();
   if (args.json) {

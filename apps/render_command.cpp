@@ -2,6 +2,7 @@
 #include <cstdio>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -11,6 +12,7 @@
 #include "apps/stop_signals.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
+#include "ifs/output_file.h"
 #include "ifs/preset.h"
 #include "ifs/render.h"
 
@@ -113,6 +115,7 @@ void run_render(const RenderArgs& args) {
 
   RenderStats stats;
   cv::Mat image;
+  std::vector<OutputFile> staged;  // put in place together at the end (the image, the map)
   switch (args.mode) {
     case Mode::attractor:
       image = render_attractor(preset.ifs, size, options, &stats);
@@ -133,13 +136,12 @@ void run_render(const RenderArgs& args) {
                            .background = background,
                            .quiet = args.quiet,
                            .output = output},
-                          args.output, &stats);
+                          args.output, staged, &stats);
       break;
   }
 
   WriteOptions write;
   write.bits = args.bits;
-  write.output = output;
   write.smallest = args.smallest;
   write.metadata = {
       {"ifsfx:preset", preset.text},
@@ -149,7 +151,10 @@ void run_render(const RenderArgs& args) {
       {"ifsfx:view",
        fmt::format("{},{},{},{}", stats.view.x0, stats.view.y0, stats.view.x1, stats.view.y1)},
   };
-  write_image(args.output, image, write);
+  OutputFile image_file(args.output, output);
+  write_image(image_file, image, write);
+  staged.push_back(std::move(image_file));
+  commit_together(staged);
 
   if (args.quiet) return;
   // The exact modes plot no chaos-game points: say so rather than print a rate of zero.

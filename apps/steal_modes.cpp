@@ -120,7 +120,8 @@ cv::Mat tops_image(const Ifs& F, cv::Size size, const RenderOptions& options, bo
 }
 
 cv::Mat steal_image(const Ifs& F, cv::Size size, const RenderOptions& options,
-                    const StealModeArgs& args, const std::string& output, RenderStats* stats) {
+                    const StealModeArgs& args, const std::string& output,
+                    std::vector<OutputFile>& staged, RenderStats* stats) {
   if (args.source.empty())
     throw Error(ErrorKind::invalid_argument, "--source: --mode steal needs a source image");
   // Read first: a missing or unreadable source fails before any long work.
@@ -136,7 +137,11 @@ cv::Mat steal_image(const Ifs& F, cv::Size size, const RenderOptions& options,
   so.cancel = options.cancel;
   StealMapStats ss;
   const StealMap map = compute_steal_map(F, G, size, so, &ss);
-  if (!args.save_map.empty()) save(map, args.save_map, args.output);
+  if (!args.save_map.empty()) {
+    OutputFile file(args.save_map, args.output);
+    save(map, file);
+    staged.push_back(std::move(file));
+  }
   const cv::Mat coloured = apply(map, source,
                                  {.background = background_scalar(args.background, source.depth()),
                                   .threads = options.threads});

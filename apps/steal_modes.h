@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -35,9 +36,11 @@ cv::Mat tops_image(const Ifs& F, cv::Size size, const RenderOptions& options, bo
                    bool second_symbol, const Rgb& background, const std::string& output,
                    RenderStats* stats);
 
-// `--mode steal`: the steal map of F through G, applied to the source (and saved if asked).
+// `--mode steal`: the steal map of F through G, applied to the source. With args.save_map, the
+// map is written too and added to `staged`, to be put in place with the image (commit_together).
 cv::Mat steal_image(const Ifs& F, cv::Size size, const RenderOptions& options,
-                    const StealModeArgs& args, const std::string& output, RenderStats* stats);
+                    const StealModeArgs& args, const std::string& output,
+                    std::vector<OutputFile>& staged, RenderStats* stats);
 
 // An image of the map's pixels from `coloured` (the source's depth) and `coverage` ready for
 // `output`: with an alpha channel of the coverage where the format has one.

@@ -14,6 +14,7 @@
 #include "apps/texture_options.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
+#include "ifs/output_file.h"
 #include "superifs/superifs_file.h"
 #include "superifs/texture.h"
 #include "video/image_sequence.h"
@@ -92,7 +93,7 @@ void run_texture(const TextureArgs& args) {
                 metadata(textures.burn_in() + static_cast<int>(position.step)));
     written.push_back(std::move(file));
   }
-  for (OutputFile& file : written) file.commit();
+  commit_together(written);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!args.quiet)

@@ -147,6 +147,29 @@ void OutputFile::commit() {
     discard();
     cancel_.check(target_.c_str());
   }
+  rename_into_place();
+}
+
+void commit_together(std::span<OutputFile> files) {
+  for (const OutputFile& file : files)
+    if (file.temporary_.empty())
+      throw Error(ErrorKind::io,
+                  fmt::format("{}: already committed or discarded", file.target_.string()));
+  for (OutputFile& file : files) {
+    if (!file.cancel_.requested()) continue;
+    for (OutputFile& each : files) each.discard();
+    file.cancel_.check(file.target_.c_str());
+  }
+  std::size_t done = 0;
+  try {
+    for (; done < files.size(); ++done) files[done].rename_into_place();
+  } catch (...) {
+    for (std::size_t rest = done + 1; rest < files.size(); ++rest) files[rest].discard();
+    throw;
+  }
+}
+
+void OutputFile::rename_into_place() {
   if (std::rename(temporary_.c_str(), destination_.c_str()) != 0) {
     const int code = errno;
     discard();
@@ -192,6 +215,12 @@ void OutputFile::discard() noexcept {
 
 void write_file(const fs::path& target, std::string_view bytes, const OutputOptions& options) {
   OutputFile out(target, options);
+  write_file(out, bytes);
+  out.commit();
+}
+
+void write_file(OutputFile& out, std::string_view bytes) {
+  const fs::path& target = out.target();
   std::FILE* file = std::fopen(out.temporary().c_str(), "wb");
   if (file == nullptr) throw cannot_write(target, reason(errno));
   const std::size_t written = std::fwrite(bytes.data(), 1, bytes.size(), file);
@@ -201,7 +230,6 @@ void write_file(const fs::path& target, std::string_view bytes, const OutputOpti
   const int close_error = std::fclose(file) != 0 ? (errno != 0 ? errno : EIO) : 0;
   if (write_error != 0 || close_error != 0)
     throw cannot_write(target, reason(write_error != 0 ? write_error : close_error));
-  out.commit();
 }
 
 }  // namespace ifsfx

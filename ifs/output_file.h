@@ -18,6 +18,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -85,13 +86,27 @@ class OutputFile {
   // Removes the temporary file now.
   void discard() noexcept;
 
+  friend void commit_together(std::span<OutputFile> files);
+
  private:
+  void rename_into_place();  // commit() without the stop poll
+
   std::filesystem::path target_, destination_, temporary_;
   CancelToken cancel_;
 };
 
+// Commits several outputs of one command (an image and its steal map, the frames of a sequence)
+// so that a stop leaves them all new or all as they were: the stop request is polled once, before
+// the first rename (commit() polls it per file, and a stop between two renames would leave some
+// targets new and the rest old). Throws Error{interrupted} with every temporary removed and every
+// target untouched when a stop was requested, and Error{io} as commit() does when a rename fails
+// (a folder that appeared in the way): the outputs before it are in place, the rest removed.
+void commit_together(std::span<OutputFile> files);
+
 // `bytes` written to `target` under the policy (a preset, a report).
 void write_file(const std::filesystem::path& target, std::string_view bytes,
                 const OutputOptions& options = {});
+// `bytes` written into the temporary file of `out`, not committed (see commit_together).
+void write_file(OutputFile& out, std::string_view bytes);
 
 }  // namespace ifsfx

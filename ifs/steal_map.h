@@ -117,6 +117,8 @@ void apply(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out);
 // save writes through the output policy (ifs/output_file.h): `output` names the inputs the map
 // must not replace.
 void save(const StealMap& map, const std::filesystem::path& path, const OutputOptions& output = {});
+// The same into the temporary file of `out`, not committed (see commit_together).
+void save(const StealMap& map, OutputFile& out);
 StealMap load_steal_map(const std::filesystem::path& path,
                         std::optional<cv::Size> expected_size = std::nullopt);
 

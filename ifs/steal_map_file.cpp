@@ -34,30 +34,32 @@ std::uintmax_t payload_bytes(std::uint32_t w, std::uint32_t h) {
 }  // namespace
 
 void save(const StealMap& map, const std::filesystem::path& path, const OutputOptions& output) {
+  OutputFile file(path, output);
+  save(map, file);
+  file.commit();
+}
+
+void save(const StealMap& map, OutputFile& file) {
+  const std::filesystem::path& path = file.target();
   if (map.empty() || map.source_uv.type() != CV_32FC2 || map.coverage.type() != CV_8UC1 ||
       map.source_uv.size() != map.coverage.size())
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("{}: only a non-empty steal map can be saved", path.string()));
   const auto w = static_cast<std::uint32_t>(map.size().width);
   const auto h = static_cast<std::uint32_t>(map.size().height);
-  OutputFile file(path, output);
-  {
-    std::ofstream out(file.temporary(), std::ios::binary | std::ios::trunc);
-    const std::array<std::uint32_t, 4> header{kVersion, w, h, 0};
-    out.write(kMagic.data(), kMagic.size());
-    out.write(reinterpret_cast<const char*>(header.data()), sizeof(header));
-    for (int r = 0; r < map.source_uv.rows; ++r)
-      out.write(reinterpret_cast<const char*>(map.source_uv.ptr(r)),
-                static_cast<std::streamsize>(w * 2 * sizeof(float)));
-    for (int r = 0; r < map.coverage.rows; ++r)
-      out.write(reinterpret_cast<const char*>(map.coverage.ptr(r)),
-                static_cast<std::streamsize>(w));
-    out.close();
-    if (!out)
-      throw Error(ErrorKind::io, fmt::format("{}: cannot write: {}", path.string(),
-                                             std::generic_category().message(errno ? errno : EIO)));
-  }
-  file.commit();
+  std::ofstream out(file.temporary(), std::ios::binary | std::ios::trunc);
+  const std::array<std::uint32_t, 4> header{kVersion, w, h, 0};
+  out.write(kMagic.data(), kMagic.size());
+  out.write(reinterpret_cast<const char*>(header.data()), sizeof(header));
+  for (int r = 0; r < map.source_uv.rows; ++r)
+    out.write(reinterpret_cast<const char*>(map.source_uv.ptr(r)),
+              static_cast<std::streamsize>(w * 2 * sizeof(float)));
+  for (int r = 0; r < map.coverage.rows; ++r)
+    out.write(reinterpret_cast<const char*>(map.coverage.ptr(r)), static_cast<std::streamsize>(w));
+  out.close();
+  if (!out)
+    throw Error(ErrorKind::io, fmt::format("{}: cannot write: {}", path.string(),
+                                           std::generic_category().message(errno ? errno : EIO)));
 }
 
 StealMap load_steal_map(const std::filesystem::path& path, std::optional<cv::Size> expected_size) {

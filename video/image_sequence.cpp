@@ -221,7 +221,7 @@ void ImageSequenceSink::write(const Frame& frame) {
 }
 
 void ImageSequenceSink::close() {
-  for (OutputFile& file : staged_) file.commit();
+  commit_together(staged_);
   staged_.clear();
 }
 

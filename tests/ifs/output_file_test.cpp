@@ -10,6 +10,7 @@
 #include <iterator>
 #include <set>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -161,6 +162,44 @@ TEST_F(output_file, a_stop_request_before_commit_leaves_the_target) {
   EXPECT_EQ(e.kind(), ErrorKind::interrupted);
   EXPECT_EQ(contents(dir_ / "out.txt"), "good");
   EXPECT_EQ(names(), (std::set<std::string>{"out.txt"}));
+}
+
+TEST_F(output_file, outputs_committed_together_are_all_new_or_all_as_they_were) {
+  std::atomic<bool> stop{false};
+  const auto stage = [&](const std::string& text) {
+    std::vector<OutputFile> files;
+    for (const char* name : {"a.txt", "b.txt", "c.txt"}) {
+      files.emplace_back(dir_ / name, OutputOptions{.cancel = CancelToken(&stop)});
+      put(files.back().temporary(), text);
+    }
+    return files;
+  };
+  std::vector<OutputFile> first = stage("one");
+  commit_together(first);
+  for (const char* name : {"a.txt", "b.txt", "c.txt"}) EXPECT_EQ(contents(dir_ / name), "one");
+
+  // A stop before the commit: no target replaced, no temporary left.
+  std::vector<OutputFile> stopped = stage("two");
+  stop = true;
+  EXPECT_EQ(error_of([&] { commit_together(stopped); }).kind(), ErrorKind::interrupted);
+  for (const char* name : {"a.txt", "b.txt", "c.txt"}) EXPECT_EQ(contents(dir_ / name), "one");
+  EXPECT_EQ(names(), (std::set<std::string>{"a.txt", "b.txt", "c.txt"}));
+  stop = false;
+
+  // A rename that fails (a folder put in the way of b after the checks): a is in place, b and c
+  // keep their contents, and no temporary is left.
+  std::vector<OutputFile> blocked = stage("three");
+  fs::remove(dir_ / "b.txt");
+  fs::create_directory(dir_ / "b.txt");
+  put(dir_ / "b.txt" / "inside", "x");
+  const Error e = error_of([&] { commit_together(blocked); });
+  EXPECT_EQ(e.kind(), ErrorKind::io);
+  EXPECT_NE(std::string(e.what()).find("b.txt: cannot write: "), std::string::npos) << e.what();
+  EXPECT_EQ(contents(dir_ / "a.txt"), "three");
+  EXPECT_EQ(contents(dir_ / "c.txt"), "one");
+  EXPECT_EQ(names(), (std::set<std::string>{"a.txt", "b.txt", "c.txt"}));
+  // Committed or discarded files cannot be committed again.
+  EXPECT_EQ(error_of([&] { commit_together(blocked); }).kind(), ErrorKind::io);
 }
 
 TEST_F(output_file, partial_result_is_kept_beside_and_never_over_a_file) {
