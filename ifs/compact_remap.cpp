@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include <fmt/format.h>
+#include <opencv2/imgproc.hpp>
 
 #include "ifs/error.h"
 #include "ifs/parallel.h"
@@ -21,7 +22,7 @@ namespace {
 constexpr int kSteps = 32;  // cv::INTER_TAB_SIZE: fractions are in 1/32 pixel
 constexpr int kWeightSide = kSteps + 1;
 constexpr int kShift = 15;     // cv::INTER_REMAP_COEF_BITS
-constexpr int kPartRows = 64;  // output rows compacted by one worker at a time
+constexpr int kPartRows = 64;  // output rows converted or compacted by one worker at a time
 
 // Weights of (x0,y0), (x0+1,y0), (x0,y0+1), (x0+1,y0+1) for fractions fx, fy in 0..32. The
 // 33rd step lets a pixel on the last column or row read its square one pixel to the left or up
@@ -154,6 +155,26 @@ bool compact_rows(const cv::Mat& xy, const cv::Mat& frac, cv::Size source_size, 
 }
 
 }  // namespace
+
+void fixed_point_maps(cv::Size size, bool nearest, int threads,
+                      const std::function<void(int row, cv::Vec2f* out)>& fill_row, cv::Mat& xy,
+                      cv::Mat& frac) {
+  xy.create(size, CV_16SC2);
+  if (nearest)
+    frac.release();
+  else
+    frac.create(size, CV_16UC1);
+  const auto parts = static_cast<std::size_t>((size.height + kPartRows - 1) / kPartRows);
+  parallel_for(parts, threads, [&](std::size_t k, int) {
+    const cv::Range rows(static_cast<int>(k) * kPartRows,
+                         std::min(size.height, static_cast<int>(k + 1) * kPartRows));
+    cv::Mat band(rows.size(), size.width, CV_32FC2);
+    for (int r = rows.start; r < rows.end; ++r) fill_row(r, band.ptr<cv::Vec2f>(r - rows.start));
+    cv::Mat band_xy = xy.rowRange(rows), band_frac;
+    if (!nearest) band_frac = frac.rowRange(rows);
+    cv::convertMaps(band, cv::Mat(), band_xy, band_frac, CV_16SC2, nearest);
+  });
+}
 
 std::optional<CompactRemap> compact_remap(const cv::Mat& xy, const cv::Mat& frac,
                                           cv::Size source_size, RemapBorder border, int threads) {

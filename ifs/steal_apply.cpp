@@ -14,7 +14,7 @@ namespace ifsfx {
 
 namespace {
 
-constexpr int kBand = 64;  // rows a worker prepares or remaps at a time
+constexpr int kBand = 64;  // rows a worker remaps at a time
 
 void check_map(const StealMap& map) {
   if (map.empty())
@@ -58,37 +58,21 @@ PreparedStealMap prepare_apply(const StealMap& map, cv::Size source_size,
   // image (the edge pixel is repeated, never mixed with the background); uncovered ones are sent
   // two pixels off it, where BORDER_CONSTANT gives the background.
   const float w = static_cast<float>(source_size.width), h = static_cast<float>(source_size.height);
-  const bool nearest = options.interpolation == Interpolation::nearest;
   PreparedStealMap out;
   out.source_size = source_size;
   out.options = options;
-  out.xy.create(map.size(), CV_16SC2);
-  if (!nearest) out.frac.create(map.size(), CV_16UC1);
-  // Bands of rows on the workers, each converted to OpenCV's fixed point by cv::convertMaps on its
-  // own rows: the same bytes as one call over the whole map, for any thread count.
-  const auto bands = static_cast<std::size_t>((map.size().height + kBand - 1) / kBand);
-  parallel_for(bands, options.threads, [&](std::size_t band, int) {
-    const cv::Range rows(static_cast<int>(band) * kBand,
-                         std::min(map.size().height, static_cast<int>(band + 1) * kBand));
-    cv::Mat mx(rows.size(), map.size().width, CV_32FC1), my(mx.size(), CV_32FC1);
-    for (int r = rows.start; r < rows.end; ++r) {
-      const auto* uv = map.source_uv.ptr<cv::Vec2f>(r);
-      const auto* cov = map.coverage.ptr<std::uint8_t>(r);
-      auto* px = mx.ptr<float>(r - rows.start);
-      auto* py = my.ptr<float>(r - rows.start);
-      for (int c = 0; c < mx.cols; ++c) {
-        if (cov[c] == 0) {
-          px[c] = py[c] = -2;
-          continue;
-        }
-        px[c] = std::clamp(uv[c][0] * w - 0.5f, 0.0f, w - 1);
-        py[c] = std::clamp(uv[c][1] * h - 0.5f, 0.0f, h - 1);
-      }
-    }
-    cv::Mat xy = out.xy.rowRange(rows), frac;
-    if (!nearest) frac = out.frac.rowRange(rows);
-    cv::convertMaps(mx, my, xy, frac, CV_16SC2, nearest);
-  });
+  const int width = map.size().width;
+  detail::fixed_point_maps(
+      map.size(), options.interpolation == Interpolation::nearest, options.threads,
+      [&](int r, cv::Vec2f* out_row) {
+        const auto* uv = map.source_uv.ptr<cv::Vec2f>(r);
+        const auto* cov = map.coverage.ptr<std::uint8_t>(r);
+        for (int c = 0; c < width; ++c)
+          out_row[c] = cov[c] == 0 ? cv::Vec2f(-2, -2)
+                                   : cv::Vec2f(std::clamp(uv[c][0] * w - 0.5f, 0.0f, w - 1),
+                                               std::clamp(uv[c][1] * h - 0.5f, 0.0f, h - 1));
+      },
+      out.xy, out.frac);
   if (auto compact = detail::compact_remap(out.xy, out.frac, source_size,
                                            detail::RemapBorder::constant, options.threads))
     out.compact = std::make_shared<const detail::CompactRemap>(std::move(*compact));

@@ -122,7 +122,6 @@ RemapTable make_remap_table(const StealMap& map, cv::Size source_size, Interpola
                 fmt::format("fractal filter: frames must be at least 2x2 (got {}x{})",
                             source_size.width, source_size.height));
   const cv::Size size = map.size();
-  cv::Mat xy(size, CV_32FC2);
   const float w = static_cast<float>(source_size.width);
   const float h = static_cast<float>(source_size.height);
   // The remap's fixed point has 1/32 pixel steps; staying a step inside the last column and row
@@ -133,29 +132,21 @@ RemapTable make_remap_table(const StealMap& map, cv::Size source_size, Interpola
   RemapTable table;
   table.source_size = source_size;
   table.interpolation = interpolation;
-  const bool nearest = interpolation == Interpolation::nearest;
-  table.xy.create(size, CV_16SC2);
-  if (!nearest) table.fraction.create(size, CV_16UC1);
-  parallel_for(bands(size.height), threads, [&](std::size_t chunk, int) {
-    const cv::Range rows = band(chunk, size.height);
-    for (int r = rows.start; r < rows.end; ++r) {
-      const auto* uv = map.source_uv.ptr<cv::Vec2f>(r);
-      const auto* covered = map.coverage.ptr<std::uint8_t>(r);
-      auto* out = xy.ptr<cv::Vec2f>(r);
-      for (int c = 0; c < size.width; ++c) {
-        if (covered[c] == 0 || !std::isfinite(uv[c][0]) || !std::isfinite(uv[c][1])) {
-          out[c] = {outside, outside};
-          continue;
+  detail::fixed_point_maps(
+      size, interpolation == Interpolation::nearest, threads,
+      [&](int r, cv::Vec2f* out) {
+        const auto* uv = map.source_uv.ptr<cv::Vec2f>(r);
+        const auto* covered = map.coverage.ptr<std::uint8_t>(r);
+        for (int c = 0; c < size.width; ++c) {
+          if (covered[c] == 0 || !std::isfinite(uv[c][0]) || !std::isfinite(uv[c][1])) {
+            out[c] = {outside, outside};
+            continue;
+          }
+          out[c] = {std::clamp(uv[c][0] * w - 0.5f, 0.0f, x_max),
+                    std::clamp(uv[c][1] * h - 0.5f, 0.0f, y_max)};
         }
-        out[c] = {std::clamp(uv[c][0] * w - 0.5f, 0.0f, x_max),
-                  std::clamp(uv[c][1] * h - 0.5f, 0.0f, y_max)};
-      }
-    }
-    // OpenCV's fixed point, band by band: the bytes of one call over the whole map.
-    cv::Mat fixed = table.xy.rowRange(rows), fraction;
-    if (!nearest) fraction = table.fraction.rowRange(rows);
-    cv::convertMaps(xy.rowRange(rows), cv::Mat(), fixed, fraction, CV_16SC2, nearest);
-  });
+      },
+      table.xy, table.fraction);
   if (auto compact = detail::compact_remap(table.xy, table.fraction, source_size,
                                            detail::RemapBorder::transparent, threads))
     table.compact = std::make_shared<const detail::CompactRemap>(std::move(*compact));

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -33,6 +34,15 @@ struct CompactRemap {
   std::vector<std::uint32_t> pixel;   // top-left source pixel, y·W + x
   std::vector<std::uint16_t> weight;  // fy·33 + fx with fx, fy in 0..32 (see compact_remap.cpp)
 };
+
+// OpenCV's fixed-point remap tables of a float map that `fill_row(r, out)` writes a row at a time
+// (the source pixel (x, y) that each output pixel of row r reads): cv::convertMaps(…, CV_16SC2,
+// nearest) on fixed bands of rows on `threads` workers (0 = all cores), which gives the bytes of
+// one call over the whole map for any thread count. `xy` becomes CV_16SC2 of `size`, `frac`
+// CV_16UC1 of `size` (empty for nearest).
+void fixed_point_maps(cv::Size size, bool nearest, int threads,
+                      const std::function<void(int row, cv::Vec2f* out)>& fill_row, cv::Mat& xy,
+                      cv::Mat& frac);
 
 // Compacts the maps cv::convertMaps(…, CV_16SC2, nearest) made: `xy` CV_16SC2, `frac` CV_16UC1
 // (empty for nearest). Returns nothing where the table needs cv::remap's general border handling:
