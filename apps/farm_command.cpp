@@ -19,6 +19,7 @@
 #include "farm/farm_job.h"
 #include "farm/segment_join.h"
 #include "farm/shard_plan.h"
+#include "farm/slurm.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
@@ -301,6 +302,8 @@ void wait_and_report(const FarmPlan& plan, const farm::Submission& ids) {
                             plan.folder.string(), ids.array,
                             ids.array.empty() || ids.join.empty() ? "" : " ", ids.join));
   }
+  // A join that can never start would stay in the queue, and block `farm resume`: it goes.
+  if (end && end->state == "PENDING" && !ids.join.empty()) farm::scancel(ids.join);
   const farm::JobStatus status = farm::job_status(plan);
   std::string failed;
   for (std::size_t i = 0; i < status.shards.size(); ++i)
@@ -323,6 +326,17 @@ void wait_and_report(const FarmPlan& plan, const farm::Submission& ids) {
                             plan.kind == JobKind::filter ? "the join did not run, no output"
                                                          : "some files are missing",
                             plan.folder.string(), plan.folder.string()));
+  // Every shard left its frames, yet Slurm may still count one of their tasks as not having
+  // succeeded: a task cancelled just as it finished (scancel of a task already COMPLETED does
+  // this too) makes the join's afterok unsatisfiable, and kill_invalid_depend cancels the join
+  // before it starts. Its log (if any) is an older run's, so it is not the place to look.
+  if (end && end->reason == "DependencyNeverSatisfied")
+    throw Error(ErrorKind::io,
+                fmt::format("farm: every shard's frames are done, but the join {} was cancelled "
+                            "before it ran ({}: Slurm counts a task of job {} as cancelled or "
+                            "failed, e.g. one cancelled as it finished); no output; `ifsfx farm "
+                            "resume {}` runs the join",
+                            ids.join, end->reason, ids.array, plan.folder.string()));
   throw Error(ErrorKind::io, fmt::format("farm: the join {} ({}, exit {}); see {}", ids.join,
                                          end ? end->state : "gone", end ? end->exit_code : -1,
                                          farm::join_log(plan.folder).string()));
@@ -399,8 +413,12 @@ void run_resume(const fs::path& folder, const FarmArgs& args) {
                               status.shards[i].queue_state));
     if (status.shards[i].state != farm::ShardState::done) missing.push_back(i);
   }
-  if (plan.kind == JobKind::filter && status.join_state &&
-      (*status.join_state == "PENDING" || *status.join_state == "RUNNING"))
+  const std::optional<farm::Submission> ids = farm::read_submission(plan);
+  if (const auto join = ids && !ids->join.empty() ? farm::job_info(ids->join) : std::nullopt;
+      join && join->never_runs())
+    farm::scancel(ids->join);  // the shards it waited on failed: it would pend for ever
+  else if (plan.kind == JobKind::filter && status.join_state &&
+           (*status.join_state == "PENDING" || *status.join_state == "RUNNING"))
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("farm resume: the join is still {}", *status.join_state));
   if (plan.kind == JobKind::texture && missing.empty()) {

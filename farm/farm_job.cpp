@@ -127,7 +127,10 @@ void write_scripts(const FarmPlan& plan, const SlurmOptions& options, const JobC
         "#!/bin/bash\n"
         "# ifsfx farm: joins the segments of {} into the output, once every shard succeeded.\n"
         "#SBATCH --job-name=ifsfx-join\n"
-        "#SBATCH --output={}\n",
+        "#SBATCH --output={}\n"
+        "# Once a shard has failed the join can never run: Slurm then ends it instead of leaving\n"
+        "# it pending for ever (its default, unless the cluster sets kill_invalid_depend).\n"
+        "#SBATCH --kill-on-invalid-dep=yes\n",
         plan.folder.string(), slurm_path(join_log(plan.folder)));
     for (const auto& a : sbatch_options(options))
       if (!a.starts_with("--cpus-per-task")) join += "#SBATCH " + a + "\n";
@@ -219,7 +222,8 @@ std::optional<JobEnd> wait_for_job(const std::string& id, double poll_seconds, C
     cancel.check(what.c_str());
     const std::optional<JobInfo> info = job_info(id);
     if (!info) return std::nullopt;
-    if (info->finished()) return JobEnd{info->state, info->exit_code, info->reason};
+    if (info->finished() || info->never_runs())
+      return JobEnd{info->state, info->exit_code, info->reason};
     // Slept in short slices, so that a stop request is seen soon.
     const auto until =
         std::chrono::steady_clock::now() + std::chrono::duration<double>(poll_seconds);

@@ -62,8 +62,9 @@ struct JobStatus {
 // How the job in plan.folder stands: done markers, the queue, the logs.
 JobStatus job_status(const FarmPlan& plan);
 
-// Waits (polling squeue/scontrol every `poll_seconds`) until job `id` has ended; its exit code,
-// or nothing when Slurm forgot it before it was seen ending. A stop request through `cancel`
+// Waits (polling squeue/scontrol every `poll_seconds`) until job `id` has ended, or pends on a
+// dependency that can never be met (JobInfo::never_runs: state PENDING); how it ended, or nothing
+// when Slurm forgot it before it was seen ending. A stop request through `cancel`
 // ends the wait (Error{interrupted}) within a quarter of a second; the job itself goes on.
 struct JobEnd {
   std::string state;

@@ -40,6 +40,20 @@ std::string field(const std::string& line, const std::string& key) {
   return padded.substr(start, padded.find(' ', start) - start);
 }
 
+JobInfo job_info_of_line(const std::string& line) {
+  JobInfo info;
+  info.state = field(line, "JobState");
+  info.reason = field(line, "Reason");
+  const std::string code = field(line, "ExitCode");  // "N:S"
+  const auto colon = code.find(':');
+  if (colon != std::string::npos) {
+    const int status = std::atoi(code.substr(0, colon).c_str());
+    const int signal = std::atoi(code.substr(colon + 1).c_str());
+    info.exit_code = signal != 0 ? 128 + signal : status;
+  }
+  return info;
+}
+
 }  // namespace
 
 ProcessResult run_process(const std::vector<std::string>& argv) {
@@ -110,6 +124,14 @@ std::string sbatch(const std::vector<std::string>& args) {
   return id;
 }
 
+void scancel(const std::string& id) {
+  const ProcessResult r = run_process({"scancel", id});
+  if (r.exit_code == 0) return;
+  std::string why = r.err.empty() ? r.out : r.err;
+  while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
+  throw Error(ErrorKind::io, fmt::format("scancel {}: failed (exit {}): {}", id, r.exit_code, why));
+}
+
 std::map<int, std::string> queued_array_tasks(const std::string& id) {
   const ProcessResult r = run_process({"squeue", "-h", "-r", "-j", id, "-o", "%i %T"});
   std::map<int, std::string> tasks;
@@ -132,21 +154,31 @@ bool JobInfo::finished() const {
            state == "RESIZING" || state.empty());
 }
 
+bool JobInfo::never_runs() const {
+  return state == "PENDING" && reason == "DependencyNeverSatisfied";
+}
+
+JobInfo job_info_of(const std::string& scontrol_lines) {
+  std::vector<JobInfo> lines;
+  std::istringstream in(scontrol_lines);
+  for (std::string line; std::getline(in, line);)
+    if (line.find("JobState=") != std::string::npos) lines.push_back(job_info_of_line(line));
+  if (lines.empty()) return {};
+  // A task still running or waiting for its turn decides; one that can never start only when
+  // nothing else is still going.
+  for (const JobInfo& l : lines)
+    if (!l.finished() && !l.never_runs()) return l;
+  for (const JobInfo& l : lines)
+    if (l.never_runs()) return l;
+  for (const JobInfo& l : lines)
+    if (l.state != "COMPLETED") return l;
+  return lines.front();
+}
+
 std::optional<JobInfo> job_info(const std::string& id) {
   const ProcessResult r = run_process({"scontrol", "-o", "show", "job", id});
   if (r.exit_code != 0) return std::nullopt;
-  JobInfo info;
-  const std::string line = r.out.substr(0, r.out.find('\n'));
-  info.state = field(line, "JobState");
-  info.reason = field(line, "Reason");
-  const std::string code = field(line, "ExitCode");  // "N:S"
-  const auto colon = code.find(':');
-  if (colon != std::string::npos) {
-    const int status = std::atoi(code.substr(0, colon).c_str());
-    const int signal = std::atoi(code.substr(colon + 1).c_str());
-    info.exit_code = signal != 0 ? 128 + signal : status;
-  }
-  return info;
+  return job_info_of(r.out);
 }
 
 }  // namespace ifsfx::farm
