@@ -112,7 +112,8 @@ PreparedStealMap prepare_apply(const StealMap& map, cv::Size source_size,
 void apply(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out);
 
 // save/load: a versioned binary file; load throws Error{io} or Error{unsupported} for a file that
-// is not a steal map, of another version, or truncated, naming the path.
+// is not a steal map, of another version, truncated, or corrupt (a coverage byte other than 0 and
+// 255, a covered pixel whose source point is not finite), naming the path (and the pixel).
 // With `expected_size`, a map of another size is refused (Error{invalid_argument}).
 // save writes through the output policy (ifs/output_file.h): `output` names the inputs the map
 // must not replace.

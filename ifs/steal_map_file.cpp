@@ -3,10 +3,12 @@
 //   "IFSFXSTM"  8 bytes magic
 //   u32 version (1), u32 width, u32 height, u32 reserved (0)
 //   width·height (u, v) float32 pairs, row-major, then width·height coverage bytes (0 or 255)
-// The file length must match the header exactly, so a truncated file is refused.
+// The file length must match the header exactly, so a truncated file is refused; so is a payload
+// the writer cannot have made (a coverage byte other than 0/255, a covered pixel at NaN or ±inf).
 #include <array>
 #include <bit>
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <system_error>
@@ -29,6 +31,27 @@ constexpr std::size_t kHeaderBytes = 8 + 4 * 4;
 
 std::uintmax_t payload_bytes(std::uint32_t w, std::uint32_t h) {
   return static_cast<std::uintmax_t>(w) * h * (2 * sizeof(float) + 1);
+}
+
+// What the writer never writes, refused by pixel: a coverage byte other than 0 and 255, or a
+// covered pixel whose source point is not a number (it would colour that pixel from nowhere).
+void check_payload(const StealMap& map, const std::filesystem::path& path) {
+  for (int r = 0; r < map.coverage.rows; ++r) {
+    const auto* covered = map.coverage.ptr<std::uint8_t>(r);
+    const auto* uv = map.source_uv.ptr<cv::Vec2f>(r);
+    for (int c = 0; c < map.coverage.cols; ++c) {
+      if (covered[c] != 0 && covered[c] != 255)
+        throw Error(ErrorKind::io,
+                    fmt::format("{}: corrupt steal map: the coverage of pixel ({}, {}) is {} "
+                                "(0 or 255 only)",
+                                path.string(), c, r, covered[c]));
+      if (covered[c] != 0 && !(std::isfinite(uv[c][0]) && std::isfinite(uv[c][1])))
+        throw Error(ErrorKind::io,
+                    fmt::format("{}: corrupt steal map: pixel ({}, {}) is covered but its source "
+                                "point ({}, {}) is not a finite number",
+                                path.string(), c, r, uv[c][0], uv[c][1]));
+    }
+  }
 }
 
 }  // namespace
@@ -106,6 +129,7 @@ StealMap load_steal_map(const std::filesystem::path& path, std::optional<cv::Siz
   in.read(reinterpret_cast<char*>(map.coverage.data),
           static_cast<std::streamsize>(map.coverage.total()));
   if (!in) throw Error(ErrorKind::io, fmt::format("{}: read failed", path.string()));
+  check_payload(map, path);
   return map;
 }
 

@@ -1,6 +1,8 @@
 // Steal map files: what is saved loads back bit for bit; anything else is refused by name.
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 
 #include <gtest/gtest.h>
 
@@ -85,6 +87,57 @@ TEST_F(steal_map_file, truncated_map_is_refused) {
   EXPECT_NE(message.find("truncated or corrupt steal map: a 8x4 map has 312 bytes (got 311)"),
             std::string::npos)
       << message;
+}
+
+// Overwrites `bytes` at `offset` of the file.
+void poke(const fs::path& path, std::streamoff offset, const void* bytes, std::size_t n) {
+  std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+  f.seekp(offset);
+  f.write(static_cast<const char*>(bytes), static_cast<std::streamsize>(n));
+}
+
+constexpr std::streamoff kHeader = 24;  // magic, version, width, height, reserved
+
+TEST_F(steal_map_file, a_covered_pixel_that_is_not_a_number_is_refused_by_name) {
+  StealMap map = some_map({8, 4});
+  map.coverage.setTo(255);
+  save(map, dir_ / "t.stealmap");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  poke(dir_ / "t.stealmap", kHeader + (2 * 8 + 5) * 8 + 4, &nan, sizeof nan);  // v of (5, 2)
+  std::string message;
+  EXPECT_EQ(load_error(dir_ / "t.stealmap", std::nullopt, &message), ErrorKind::io);
+  EXPECT_NE(message.find("t.stealmap: corrupt steal map: pixel (5, 2) is covered but its source "
+                         "point ("),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("nan) is not a finite number"), std::string::npos) << message;
+
+  const float inf = std::numeric_limits<float>::infinity();
+  save(map, dir_ / "t.stealmap");
+  poke(dir_ / "t.stealmap", kHeader, &inf, sizeof inf);  // u of (0, 0)
+  EXPECT_EQ(load_error(dir_ / "t.stealmap", std::nullopt, &message), ErrorKind::io);
+  EXPECT_NE(message.find("pixel (0, 0) is covered but its source point (inf, "), std::string::npos)
+      << message;
+}
+
+TEST_F(steal_map_file, an_uncovered_pixel_may_hold_anything) {
+  StealMap map = some_map({8, 4});
+  map.coverage.at<std::uint8_t>(3, 7) = 0;
+  save(map, dir_ / "t.stealmap");
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  poke(dir_ / "t.stealmap", kHeader + (3 * 8 + 7) * 8, &nan, sizeof nan);
+  const StealMap back = load_steal_map(dir_ / "t.stealmap");
+  EXPECT_TRUE(std::isnan(back.source_uv.at<cv::Vec2f>(3, 7)[0]));
+}
+
+TEST_F(steal_map_file, a_coverage_byte_other_than_0_and_255_is_refused) {
+  save(some_map({8, 4}), dir_ / "t.stealmap");
+  const std::uint8_t seven = 7;
+  poke(dir_ / "t.stealmap", kHeader + 8 * 4 * 8 + 1 * 8 + 6, &seven, 1);  // pixel (6, 1)
+  std::string message;
+  EXPECT_EQ(load_error(dir_ / "t.stealmap", std::nullopt, &message), ErrorKind::io);
+  EXPECT_EQ(message, (dir_ / "t.stealmap").string() +
+                         ": corrupt steal map: the coverage of pixel (6, 1) is 7 (0 or 255 only)");
 }
 
 TEST_F(steal_map_file, other_files_are_refused) {
