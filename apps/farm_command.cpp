@@ -393,7 +393,10 @@ void run_status(const fs::path& folder) {
   }
   std::string join;
   if (plan.kind == JobKind::filter)
-    join = fmt::format("; join {}; output {}", status.join_state.value_or("not known to Slurm"),
+    join = fmt::format("; join {}; output {}",
+                       status.join_never_runs
+                           ? "PENDING, never to run (`ifsfx farm resume` cancels it)"
+                           : status.join_state.value_or("not known to Slurm"),
                        status.output_written ? "written" : "not written");
   std::printf("%s\n", fmt::format("{} shards: {} done, {} running or pending, {} failed, {} not "
                                   "run{}",
@@ -413,10 +416,8 @@ void run_resume(const fs::path& folder, const FarmArgs& args) {
                               status.shards[i].queue_state));
     if (status.shards[i].state != farm::ShardState::done) missing.push_back(i);
   }
-  const std::optional<farm::Submission> ids = farm::read_submission(plan);
-  if (const auto join = ids && !ids->join.empty() ? farm::job_info(ids->join) : std::nullopt;
-      join && join->never_runs())
-    farm::scancel(ids->join);  // the shards it waited on failed: it would pend for ever
+  if (status.join_never_runs)
+    farm::scancel(farm::read_submission(plan)->join);  // its shards failed: it would pend for ever
   else if (plan.kind == JobKind::filter && status.join_state &&
            (*status.join_state == "PENDING" || *status.join_state == "RUNNING"))
     throw Error(ErrorKind::invalid_argument,

@@ -211,7 +211,10 @@ JobStatus job_status(const FarmPlan& plan) {
     status.shards.push_back(s);
   }
   if (ids && !ids->join.empty())
-    if (const auto info = job_info(ids->join)) status.join_state = info->state;
+    if (const auto info = job_info(ids->join)) {
+      status.join_state = info->state;
+      status.join_never_runs = info->never_runs();
+    }
   status.output_written = std::filesystem::exists(plan.output, ec);
   return status;
 }

@@ -56,6 +56,7 @@ struct ShardStatus {
 struct JobStatus {
   std::vector<ShardStatus> shards;
   std::optional<std::string> join_state;  // the join job as Slurm reports it, when it knows it
+  bool join_never_runs = false;           // pending on shards that failed (JobInfo::never_runs)
   bool output_written = false;            // the output exists (filter: joined)
 };
 

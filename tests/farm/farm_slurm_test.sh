@@ -173,6 +173,8 @@ grep -q "^ifsfx: farm: shard 0 (.*), shard 1 (.*), shard 2 (.*) failed; the join
 "$IFSFX" farm resume "$W/gone.mkv.farm" >"$W/gone.out" 2>&1 || { cat "$W/gone.out"; fail "pending join: resume failed"; }
 for _ in $(seq 150); do squeue -h -o '%j %r' | grep -q "^ifsfx-join DependencyNeverSatisfied$" && break; sleep 0.2; done
 squeue -h -o '%j %r' | grep -q "^ifsfx-join DependencyNeverSatisfied$" || fail "pending join: not pending: $(squeue)"
+"$IFSFX" farm status "$W/gone.mkv.farm" | grep -q "; join PENDING, never to run (\`ifsfx farm resume\` cancels it); output not written$" ||
+  fail "pending join: status says: $("$IFSFX" farm status "$W/gone.mkv.farm")"
 mv "$W/gone-away.mp4" "$W/gone.mp4"
 "$IFSFX" farm resume "$W/gone.mkv.farm" --wait >"$W/gone.out" 2>&1 || { cat "$W/gone.out"; fail "pending join: resume failed"; }
 [ -z "$(squeue -h)" ] || fail "pending join: the old join is still in the queue: $(squeue)"
