@@ -166,7 +166,10 @@ TEST(fit, search_gives_the_same_maps_for_one_two_and_three_threads) {
 TEST(fit, max_seconds_holds_within_a_tenth) {
   // A 128-pixel target and more evaluations than any machine does in the time: the clock ends
   // the fit, at most 10% late (each unit of work is short, and renderings that would not end in
-  // time are not started).
+  // time are not started). How early it ends depends on the load: the fit keeps a reserve of its
+  // slowest rendering so far, so a busy machine makes it stop sooner (2.0-2.9 s of 3 with two to
+  // eight busy loops beside the ASan build, 1.9 s after a 0.6 s pause of the process): the lower
+  // bound only tells that the clock, not an early exit, ended it.
   cv::Mat l(128, 128, CV_8UC1, cv::Scalar(0));
   cv::ellipse(l, {64, 64}, {54, 34}, 30, 0, 360, cv::Scalar(255), cv::FILLED);
   cv::circle(l, {90, 40}, 14, cv::Scalar(0), cv::FILLED);
@@ -181,7 +184,7 @@ TEST(fit, max_seconds_holds_within_a_tenth) {
   EXPECT_TRUE(result.time_capped);
   EXPECT_LE(wall, 3.3);
   EXPECT_LE(result.seconds, 3.3);
-  EXPECT_GE(wall, 2.0) << "the time was used";
+  EXPECT_GE(wall, 1.0) << "the time was used";
   expect_bound_holds(result.report);
 }
 

@@ -1,4 +1,6 @@
 // Steal map files: what is saved loads back bit for bit; anything else is refused by name.
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -18,7 +20,7 @@ class steal_map_file : public ::testing::Test {
  protected:
   void SetUp() override {
     dir_ = fs::temp_directory_path() /
-           ("ifsfx_steal_file_" +
+           ("ifsfx_steal_file_" + std::to_string(getpid()) + "_" +
             std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
     fs::create_directories(dir_);
   }

@@ -2,6 +2,8 @@
 // Latin-1, valid UTF-8 is kept byte for byte.
 #include "ifs/utf8.h"
 
+#include <unistd.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -43,7 +45,8 @@ TEST(valid_utf8, makes_any_bytes_valid) {
 // A Fractint comment or a file name in Latin-1 must not fail the write of an image
 // ("internal error: invalid UTF-8 byte" from the JSON of the metadata).
 TEST(valid_utf8, metadata_with_latin1_bytes_is_written_and_read_back) {
-  const auto dir = std::filesystem::temp_directory_path() / "ifsfx-utf8-metadata";
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("ifsfx-utf8-metadata-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   for (const char* ext : {".png", ".tif", ".jpg", ".exr"}) {
     const auto path = dir / (std::string("caf\xe9") + ext);

@@ -1,6 +1,8 @@
 // SuperIFS files: the shipped presets, and bad files rejected with file, line and rule.
 #include "superifs/superifs_file.h"
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -66,7 +68,8 @@ TEST(superifs_file, every_shipped_superifs_loads) {
 }
 
 TEST(superifs_file, loads_a_path) {
-  const auto path = std::filesystem::temp_directory_path() / "superifs_file_test.super.toml";
+  const auto path = std::filesystem::temp_directory_path() /
+                    ("superifs_file_test-" + std::to_string(getpid()) + ".super.toml");
   std::ofstream(path) << good;
   EXPECT_EQ(load_superifs(path.string()).super.size(), 2u);
   std::filesystem::remove(path);

@@ -133,7 +133,7 @@ sigint)
     [[ -n $(find . -name '.out.mp4.*' -size +100k) ]] && break
     sleep 0.05
   done
-  kill -INT $pid
+  kill -INT $pid || fail "the filter ended before the signal came: $(cat log.txt)"
   status=0
   wait $pid || status=$?
   [[ $status == 130 ]] || fail "exit status $status, expected 130: $(cat log.txt)"

@@ -1,5 +1,7 @@
 #include "video/fractal_engine.h"
 
+#include <unistd.h>
+
 #include <atomic>
 #include <filesystem>
 #include <fstream>
@@ -117,7 +119,8 @@ TEST(fractal_engine, bad_settings_fail_before_any_frame) {
 // Fractint draws it; the engine hands load_ifs's one warning line to its caller, which prints it.
 TEST(fractal_engine, keeps_the_warning_of_a_fractint_entry_contracting_on_average) {
   const std::filesystem::path file =
-      std::filesystem::temp_directory_path() / "fractal_engine_test_reflect.ifs";
+      std::filesystem::temp_directory_path() /
+      ("fractal_engine_test_reflect-" + std::to_string(getpid()) + ".ifs");
   std::ofstream(file) << "reflect {\n -1 0 0 -1 0 10 .55\n .5 0 0 .5 0 0 .15\n"
                          " .5 0 0 .5 0 5 .15\n .5 0 0 .5 5 0 .15\n}\n";
   FractalSettings s;
