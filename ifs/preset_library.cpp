@@ -211,15 +211,60 @@ std::vector<PresetSummary> list_shipped_presets() {
   return list;
 }
 
+namespace {
+
+// Fractint validates an entry as we do, when it is picked: an IFS that contracts on average.
+void validate_entry(const IfsPreset& preset, const ValidateOptions& options) {
+  ValidateOptions relaxed = options;
+  relaxed.allow_expansive =
+      options.allow_expansive || preset.allow_expansive || preset.format == PresetFormat::fractint;
+  validate(preset.ifs, preset.origin, relaxed);
+}
+
+// For a Fractint file named without an entry whose first entry cannot be used (artists' files
+// often open with a `_README {...}` block of notes): which entries there are, and the first
+// usable one, so that the message says what to type instead.
+std::string other_entries_hint(const std::string& path, const ValidateOptions& options) {
+  try {
+    const SourceText source = read_source(path);
+    const auto entries = detail::read_fractint_entries(source.text, source.filename);
+    if (entries.size() < 2) return {};
+    for (std::size_t i = 1; i < entries.size(); ++i) {
+      if (entries[i].error) continue;
+      try {
+        validate_entry(*entries[i].preset, options);
+      } catch (const Error&) {
+        continue;
+      }
+      return fmt::format(
+          " (the first of the file's {} entries; name one as FILE.ifs:NAME, e.g. "
+          "{}:{})",
+          entries.size(), path, entries[i].name);
+    }
+    return fmt::format(" (the first of the file's {} entries, none of which is usable)",
+                       entries.size());
+  } catch (const Error&) {
+    return {};
+  }
+}
+
+}  // namespace
+
 IfsPreset load_ifs(const std::string& spec, const ValidateOptions& options) {
-  IfsPreset preset = resolve(spec);
+  IfsPreset preset;
+  try {
+    preset = resolve(spec);
+    validate_entry(preset, options);
+  } catch (const Error& e) {
+    if (!is_fractint(spec) || e.kind() == ErrorKind::not_found || e.kind() == ErrorKind::io) throw;
+    const std::string hint = other_entries_hint(spec, options);
+    if (hint.empty()) throw;
+    throw Error(e.kind(), e.what() + hint);
+  }
   // Fractint renders IFSs that contract only on average; so do we, saying so once, unless the
   // caller or the file already accepted that.
   const bool fractint = preset.format == PresetFormat::fractint;
   const bool allowed = options.allow_expansive || preset.allow_expansive;
-  ValidateOptions relaxed = options;
-  relaxed.allow_expansive = allowed || fractint;
-  validate(preset.ifs, preset.origin, relaxed);
   if (fractint && !allowed) {
     std::vector<std::string> maps, factors;
     for (std::size_t i = 0; i < preset.ifs.size(); ++i)

@@ -270,14 +270,53 @@ TEST(load_ifs, a_2d_entry_loads_from_a_file_with_3d_and_broken_entries) {
   EXPECT_EQ(load_ifs(path + ":half").ifs.maps, (std::vector<AffineMap>{{0.5, 0, 0, 0.5, 0, 0}}));
   expect_error(path + ":solid", ErrorKind::unsupported,
                path + ":1: entry 'solid': only 2-D IFSs are supported (got a (3D) entry)");
+  // Named without an entry, the first is taken; it cannot be used, so the message says which can.
   expect_error(path, ErrorKind::unsupported,
-               path + ":1: entry 'solid': only 2-D IFSs are supported (got a (3D) entry)");
+               path +
+                   ":1: entry 'solid': only 2-D IFSs are supported (got a (3D) entry) (the first "
+                   "of the file's 3 entries; name one as FILE.ifs:NAME, e.g. " +
+                   path + ":half)");
   expect_error(path + ":odd", ErrorKind::parse,
                path +
                    ":3: entry 'odd': needs 7 numbers per map (a b c d e f p) or 6 "
                    "(a b c d e f) (got 8, a multiple of neither)");
   // parse_fractint reads the whole file, so it reports the first bad entry.
   EXPECT_THROW(parse_fractint("half { .5 0 0 .5 0 0 }\nsolid (3D) { 1 }\n", "x.ifs"), Error);
+}
+
+// Artists' files often open with notes in an entry of their own (Tony Hanmer's squares.ifs: 1375
+// entries, the first `_README`, whose numbers make a map that does not contract). Named without
+// an entry, such a file's message names the first entry that can be used.
+TEST(load_ifs, a_file_opening_with_notes_names_an_entry_that_can_be_used) {
+  const TempDir dir;
+  const std::string path = dir.write("artist.ifs",
+                                     "_README {     ; notes on this file\n"
+                                     "1 1 1 1 1 1 1 ; a set of IFSs\n"
+                                     "}\n"
+                                     "flat { 1 0 0 1 0 0 1 }\n"
+                                     "fine { .5 0 0 .5 0 0 .5  .5 0 0 .5 1 0 .5 }\n");
+  const auto message_of = [](const std::string& spec) {
+    try {
+      load_ifs(spec);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string what = message_of(path);
+  EXPECT_EQ(what.substr(0, path.size() + 9), path + ":_README:") << what;
+  const std::string hint =
+      " (the first of the file's 3 entries; name one as FILE.ifs:NAME, e.g. " + path + ":fine)";
+  ASSERT_GE(what.size(), hint.size()) << what;
+  EXPECT_EQ(what.substr(what.size() - hint.size()), hint) << "'flat' does not contract";
+  EXPECT_EQ(load_ifs(path + ":fine").ifs.size(), 2u);
+  // Named, an entry's own message stays as it is; so does that of a file of one entry.
+  EXPECT_EQ(message_of(path + ":_README").find("(the first of"), std::string::npos);
+  const std::string one = dir.write("one.ifs", "bad { 1 2 3 }\n");
+  EXPECT_EQ(message_of(one),
+            one +
+                ":1: entry 'bad': needs 7 numbers per map (a b c d e f p) or 6 (a b c d e f) "
+                "(got 3, a multiple of neither)");
 }
 
 // A designer's kind of Fractint entry: a point reflection (factor exactly 1) among three halves;
