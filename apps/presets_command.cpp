@@ -1,11 +1,16 @@
-// `ifsfx presets`: one aligned line per shipped IFS preset (name, maps, contraction factor,
-// description). The names are what `ifsfx render NAME` accepts.
+// `ifsfx presets [FILE...]`: one aligned line per shipped IFS preset (name, maps, contraction
+// factor, description), or per entry of the files given. The names are what `ifsfx render NAME`
+// (or FILE.ifs:NAME) accepts.
 #include <algorithm>
 #include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "apps/commands.h"
+#include "ifs/error.h"
 #include "ifs/preset.h"
 #include "superifs/superifs_file.h"
 
@@ -18,10 +23,31 @@ void add_presets_command(CLI::App& app) {
       "Name one on the command line, or give a path to a .toml or .ifs file (FILE.ifs:NAME for\n"
       "one entry of a Fractint file). --super lists the superIFS presets of `ifsfx texture`.");
   auto super = std::make_shared<bool>(false);
+  auto files = std::make_shared<std::vector<std::string>>();
   cmd->add_flag("--super", *super,
                 "List the shipped superIFS presets (for `ifsfx texture` and "
                 "`ifsfx filter --animate superifs`) instead");
-  cmd->callback([super] {
+  cmd->add_option("file", *files,
+                  "List the presets of these files instead: every entry of a Fractint .ifs file "
+                  "(render one as FILE.ifs:NAME), with why an entry cannot be used, or the "
+                  "preset of a .toml file");
+  cmd->callback([super, files] {
+    if (!files->empty()) {
+      if (*super) throw Error(ErrorKind::invalid_argument, "--super: lists shipped presets only");
+      std::string out;
+      for (const auto& file : *files) {
+        const auto presets = list_presets_in(file);
+        std::size_t width = 0;
+        for (const auto& p : presets) width = std::max(width, p.name.size());
+        for (const auto& p : presets)
+          out += p.problem.empty()
+                     ? fmt::format("{:<{}}  {:>2} maps  factor {:<6.4g}  {}\n", p.name, width,
+                                   p.maps, p.contraction, p.description)
+                     : fmt::format("{:<{}}  not usable: {}\n", p.name, width, p.problem);
+      }
+      std::fputs(out.c_str(), stdout);
+      return;
+    }
     if (*super) {
       const auto presets = list_shipped_superifs();
       std::size_t width = 0;

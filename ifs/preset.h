@@ -89,8 +89,15 @@ struct PresetSummary {
   std::size_t maps = 0;
   double contraction = 0;
   std::string description;
+  std::string problem;  // list_presets_in: why the entry cannot be loaded (empty: it can)
 };
 std::vector<PresetSummary> list_shipped_presets();
+
+// The presets of one file, for `ifsfx presets FILE`: each entry of a Fractint file (usable or
+// not, with the reason, as load_ifs("FILE.ifs:NAME", options) would give it), or the one preset
+// of a .toml file. Throws as load_ifs does for a file that cannot be read at all.
+std::vector<PresetSummary> list_presets_in(const std::string& path,
+                                           const ValidateOptions& options = {});
 
 // Loads an IFS named on the command line: a shipped preset's name ("barnsley-fern"), a path to a
 // .toml or .ifs file, or "FILE.ifs:NAME" for one entry of a Fractint file (the first when no

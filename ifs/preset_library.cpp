@@ -250,6 +250,38 @@ std::string other_entries_hint(const std::string& path, const ValidateOptions& o
 
 }  // namespace
 
+std::vector<PresetSummary> list_presets_in(const std::string& path,
+                                           const ValidateOptions& options) {
+  std::vector<PresetSummary> list;
+  if (!is_fractint(path)) {
+    const IfsPreset p = load_ifs(path, options);
+    list.push_back({p.ifs.name, p.ifs.size(), p.ifs.contraction(), p.description, {}});
+    return list;
+  }
+  const SourceText source = read_source(path);
+  for (auto& entry : detail::read_fractint_entries(source.text, source.filename)) {
+    PresetSummary s{entry.name, 0, 0, {}, {}};
+    if (entry.error) {
+      s.problem = entry.error->what();
+    } else {
+      entry.preset->origin = fmt::format("{}:{}", source.origin, entry.name);
+      s.maps = entry.preset->ifs.size();
+      s.contraction = entry.preset->ifs.contraction();
+      s.description = entry.preset->description;
+      try {
+        validate_entry(*entry.preset, options);
+      } catch (const Error& e) {
+        s.problem = e.what();
+      }
+    }
+    list.push_back(std::move(s));
+  }
+  if (list.empty())
+    throw Error(ErrorKind::parse,
+                fmt::format("{}: no entries (got a Fractint file without any)", source.filename));
+  return list;
+}
+
 IfsPreset load_ifs(const std::string& spec, const ValidateOptions& options) {
   IfsPreset preset;
   try {

@@ -126,6 +126,25 @@ case "$check" in
     [ "$(wc -l <list.txt)" -ge 4 ] || fail "fewer than 4 superIFS presets: $(cat list.txt)"
     ! grep -q barnsley-fern list.txt || fail "IFS presets among the superIFS ones"
     ;;
+  file_presets)
+    # `ifsfx presets FILE...`: every entry of a Fractint file, the unusable ones with the reason
+    # (an artist's notes entry first, as in Tony Hanmer's files), and a .toml file's preset.
+    printf '_README { ; notes\n1 1 1 1 1 1 1 ; of the artist\n}\nhalves { ; two halves\n.5 0 0 .5 0 0 .5\n.5 0 0 .5 1 0 .5\n}\nodd { .5 0 0 .5 0 0 1 1 }\n' >artist.ifs
+    "$ifsfx" presets ./artist.ifs barnsley-fern.toml >list.txt 2>err.txt || fail "presets FILE: $(cat err.txt)"
+    [ "$(wc -l <list.txt)" -eq 4 ] || fail "expected 4 lines: $(cat list.txt)"
+    grep -Eq '^_README +not usable: \./artist\.ifs:_README: the IFS must contract on average' list.txt ||
+      fail "no _README line: $(cat list.txt)"
+    grep -Eq '^halves +2 maps +factor 0\.5 +two halves$' list.txt || fail "no halves line: $(cat list.txt)"
+    grep -Eq "^odd +not usable: \./artist\.ifs:8: entry 'odd': needs 7 numbers per map" list.txt ||
+      fail "no odd line: $(cat list.txt)"
+    grep -Eq '^barnsley-fern +4 maps +factor 0\.8509 ' list.txt || fail "no fern line: $(cat list.txt)"
+    # Rendered without an entry, the file's message names one that can be used.
+    "$ifsfx" render ./artist.ifs -q -o x.png 2>err.txt && fail "the notes entry rendered"
+    grep -q "(the first of the file's 3 entries; name one as FILE.ifs:NAME, e.g. ./artist.ifs:halves)$" err.txt ||
+      fail "render of the file: $(cat err.txt)"
+    "$ifsfx" presets ./missing.ifs 2>err.txt && fail "a missing file listed"
+    grep -qx 'ifsfx: ./missing.ifs: no such file' err.txt || fail "missing file: $(cat err.txt)"
+    ;;
   *) fail "unknown check '$check'" ;;
 esac
 echo "PASS: $check"

@@ -319,6 +319,34 @@ TEST(load_ifs, a_file_opening_with_notes_names_an_entry_that_can_be_used) {
                 "(got 3, a multiple of neither)");
 }
 
+TEST(list_presets_in, every_entry_of_a_fractint_file_with_why_it_cannot_be_used) {
+  const TempDir dir;
+  const std::string path = dir.write("artist.ifs",
+                                     "_README { ; notes\n1 1 1 1 1 1 1\n}\n"
+                                     "halves { ; two halves\n.5 0 0 .5 0 0 .5 .5 0 0 .5 1 0 .5\n}\n"
+                                     "solid (3D) { 0 0 0 0 0 0 0 0 0 0 0 0 1 }\n");
+  const auto list = list_presets_in(path);
+  ASSERT_EQ(list.size(), 3u);
+  EXPECT_EQ(list[0].name, "_README");
+  const std::string refused = path + ":_README: the IFS must contract on average";
+  EXPECT_EQ(list[0].problem.substr(0, refused.size()), refused);
+  EXPECT_EQ(list[1].name, "halves");
+  EXPECT_TRUE(list[1].problem.empty()) << list[1].problem;
+  EXPECT_EQ(list[1].maps, 2u);
+  EXPECT_DOUBLE_EQ(list[1].contraction, 0.5);
+  EXPECT_EQ(list[1].description, "two halves");
+  EXPECT_EQ(list[2].problem,
+            path + ":7: entry 'solid': only 2-D IFSs are supported (got a (3D) entry)");
+  // What is listed as usable loads; what is not, does not, with the same message.
+  EXPECT_EQ(load_ifs(path + ":halves").ifs.size(), 2u);
+  expect_error(path + ":solid", ErrorKind::unsupported, list[2].problem);
+  // A .toml file: its one preset.
+  const auto fern = list_presets_in("barnsley-fern.toml");
+  ASSERT_EQ(fern.size(), 1u);
+  EXPECT_EQ(fern[0].maps, 4u);
+  EXPECT_TRUE(fern[0].problem.empty());
+}
+
 // A designer's kind of Fractint entry: a point reflection (factor exactly 1) among three halves;
 // it contracts on average (0.55 · log 1 + 0.45 · log ½ < 0).
 constexpr const char* kReflection =
