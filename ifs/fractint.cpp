@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -109,6 +110,30 @@ class FractintReader {
     return text_.substr(begin, pos_ - begin);
   }
 
+  // Fractint reads no number on the line of an entry's opening brace (it looks there only for
+  // "(3D)"), so artists write notes after the brace without a ';' ("sq475a {Tony Hanmer
+  // 23/1/2004, Designed with BRAZIL"). Such a line -- its first word not a number, and not the
+  // whole entry -- is the entry's description, and the numbers start on the next line. A line
+  // that starts with a number is read as numbers (entries written on one line, or starting on
+  // the brace line), so that a typo there is still reported, not taken for a note.
+  std::optional<std::string> brace_line_note() {
+    const std::size_t eol = std::min(text_.find('\n', pos_), text_.size());
+    const std::string_view rest = text_.substr(pos_, eol - pos_);
+    if (rest.find_first_of("{}") != std::string_view::npos) return std::nullopt;
+    const std::string_view before_comment = rest.substr(0, rest.find(';'));
+    std::size_t i = 0;
+    while (i < before_comment.size() && is_separator(before_comment[i])) ++i;
+    std::size_t j = i;
+    while (j < before_comment.size() && !is_separator(before_comment[j])) ++j;
+    double x = 0;
+    if (j == i || parse_number(before_comment.substr(i, j - i), x)) return std::nullopt;
+    pos_ = eol;
+    std::string note = trim(before_comment);
+    if (const auto semicolon = rest.find(';'); note.empty() && semicolon != std::string_view::npos)
+      note = trim(rest.substr(semicolon + 1));
+    return note;
+  }
+
   // Errors of the file's structure (a missing brace) throw at once; errors inside a well-formed
   // entry (a (3D) tag, a bad number, a count that does not fit) stay with that entry, so that
   // the other entries of the file can still be used.
@@ -157,7 +182,10 @@ class FractintReader {
     ++pos_;
 
     IfsPreset preset;
-    preset.description = skip(is_separator);
+    if (std::optional<std::string> note = brace_line_note())
+      preset.description = std::move(*note);
+    else
+      preset.description = skip(is_separator);
     std::vector<Number> numbers;
     while (true) {
       skip(is_separator);

@@ -123,6 +123,31 @@ TEST(parse_fractint, a_missing_brace_is_reported_with_its_line) {
                "(got '{')");
 }
 
+// Fractint reads no number on the line of the opening brace, so artists write notes there
+// without a ';' (Tony Hanmer's sqs02.ifs: "sq475a {Tony Hanmer 23/1/2004, Designed with
+// BRAZIL"): such a line is the description. A brace line that starts with a number is numbers.
+TEST(parse_fractint, a_note_after_the_brace_without_a_semicolon_is_the_description) {
+  const auto entries = parse_fractint(
+      "sq {Tony Hanmer 23/1/2004, Designed with BRAZIL ; and a comment\n"
+      ".5 0 0 .5 0 0 .5\n"
+      ".5 0 0 .5 1 0 .5\n"
+      "}\n"
+      "one {.5 0 0 .5 0 0 .5\n"
+      ".5 0 0 .5 1 0 .5}\n",
+      "test.ifs");
+  ASSERT_EQ(entries.size(), 2u);
+  EXPECT_EQ(entries[0].description, "Tony Hanmer 23/1/2004, Designed with BRAZIL");
+  EXPECT_EQ(entries[0].ifs.maps,
+            (std::vector<AffineMap>{{0.5, 0, 0, 0.5, 0, 0}, {0.5, 0, 0, 0.5, 1, 0}}));
+  EXPECT_EQ(entries[1].ifs.maps, entries[0].ifs.maps);
+  // A typo on a brace line that starts with numbers is still a typo, not a note.
+  expect_error("e { .5 0 0 .5 0 0 1O\n .5 0 0 .5 1 0 .5\n}\n", ErrorKind::parse,
+               "test.ifs:1: entry 'e': not a number (got '1O')");
+  // A note on the line of a one-line entry is not taken either: Fractint would not read it.
+  expect_error("w { Tony .5 0 0 .5 0 0 1 }\n", ErrorKind::parse,
+               "test.ifs:1: entry 'w': not a number (got 'Tony')");
+}
+
 TEST(parse_fractint, a_token_that_is_not_a_number_is_reported_with_its_line) {
   expect_error("bad {\n .5 0 0 .5 0 0 1\n .5 0 0 .5 1O 0 1\n}\n", ErrorKind::parse,
                "test.ifs:3: entry 'bad': not a number (got '1O')");
