@@ -49,37 +49,64 @@ wait_for_handlers() {
   fail "process $1 never caught SIGINT and SIGTERM"
 }
 stop_during() {
-  local signal=$1 code=$2 delay=$3 rc=0
+  local signal=$1 code=$2 delay=$3
   shift 3
   "$ifsfx" "$@" >out.txt 2>err.txt &
   local pid=$!
   wait_for_handlers "$pid"
   sleep "$delay"
   kill -0 "$pid" 2>/dev/null || fail "'$*' ended before the signal: $(cat err.txt)"
-  local start
+  stop_now "$signal" "$code" "$pid" "$*"
+}
+# stop_now SIGNAL CODE PID WHAT: sends SIGNAL to the running PID, checks its exit code, the time it
+# took and its one line (kept in last-err.txt).
+stop_now() {
+  local signal=$1 code=$2 pid=$3 what=$4 rc=0 start
   start=$(date +%s%N)
   kill -s "$signal" "$pid"
   wait "$pid" || rc=$?
   local ms=$((($(date +%s%N) - start) / 1000000))
-  echo "$signal during '$*': exit $rc after $ms ms: $(cat err.txt)"
-  [[ $rc -eq $code ]] || fail "'$*' exited $rc after $signal, expected $code: $(cat err.txt)"
-  ((ms < stop_bound_ms)) || fail "'$*' took $ms ms to stop after $signal"
-  [[ $(wc -l <err.txt) -eq 1 ]] || fail "'$*' printed $(wc -l <err.txt) lines: $(cat err.txt)"
+  echo "$signal during '$what': exit $rc after $ms ms: $(cat err.txt)"
+  [[ $rc -eq $code ]] || fail "'$what' exited $rc after $signal, expected $code: $(cat err.txt)"
+  ((ms < stop_bound_ms)) || fail "'$what' took $ms ms to stop after $signal"
+  [[ $(wc -l <err.txt) -eq 1 ]] || fail "'$what' printed $(wc -l <err.txt) lines: $(cat err.txt)"
   mv err.txt last-err.txt
   rm -f out.txt
 }
-# stop_in_phase PHASE SIGNAL CODE args...: stop_during, the signal sent later and later (1.5, 3, 6,
-# 12 s) until it lands in PHASE ("ifsfx: PHASE: interrupted"). Which phase a fixed delay hits
-# depends on the machine's speed: a still's exact steal map starts with a chaos game (its
-# attractor mask), so at 1.5 s the exact descent itself was never the phase stopped here.
+# stop_in_phase PHASE EARLIER SIGNAL CODE OUTPUTS args...: stop_during with the delay searched
+# until the signal lands in PHASE ("ifsfx: PHASE: interrupted"): twice as late while it stopped
+# the EARLIER phase, halfway back when it stopped a later one or the run had ended. Which phase a
+# fixed delay hits depends on the machine: an exact steal map starts with a chaos game (its
+# attractor mask), which a signal at 1.5 s always hit here, and which takes over 12 s under ASan
+# at 6000x6000. OUTPUTS (the files the command writes, absent before) must still be absent after
+# a stop in PHASE or before it; after a later stop or an end they are removed.
 stop_in_phase() {
-  local phase=$1 delay
-  shift
-  for delay in 1.5 3 6 12; do
-    stop_during "$1" "$2" "$delay" "${@:3}"
-    grep -qx "ifsfx: $phase: interrupted" last-err.txt && return 0
+  local phase=$1 earlier=$2 signal=$3 code=$4 outputs=$5 early=0 late=0 delay=1 pid f
+  shift 5
+  for _ in $(seq 12); do
+    "$ifsfx" "$@" >out.txt 2>err.txt &
+    pid=$!
+    wait_for_handlers "$pid"
+    sleep "$delay"
+    if kill -0 "$pid" 2>/dev/null; then
+      stop_now "$signal" "$code" "$pid" "$*"
+      if grep -qx -e "ifsfx: $phase: interrupted" -e "ifsfx: $earlier: interrupted" last-err.txt; then
+        for f in $outputs; do [[ ! -e $f ]] || fail "'$*' left $f after $signal"; done
+        grep -qx "ifsfx: $phase: interrupted" last-err.txt && return 0
+        early=$delay
+      else
+        late=$delay
+      fi
+    else
+      wait "$pid" || fail "'$*' failed: $(cat err.txt)"
+      echo "'$*' ended before a signal at $delay s"
+      late=$delay
+    fi
+    # shellcheck disable=SC2086
+    rm -f $outputs out.txt err.txt
+    delay=$(awk -v e="$early" -v l="$late" 'BEGIN { print (l > 0 ? (e + l) / 2 : 2 * e) }')
   done
-  fail "'${*:3}': no signal landed in the $phase phase: $(cat last-err.txt)"
+  fail "'$*': no signal landed in the $phase phase: $(cat last-err.txt)"
 }
 
 # A small photo (a white square on black, also a shape to fit), an image sequence, a movie.
@@ -206,13 +233,13 @@ case "$check" in
     sums=$(md5sum out.png out.mp4 f.toml)
     before=$(listing)
     # The exact descent (and its attractor mask) of a big still.
-    stop_in_phase "exact descent" INT 130 render barnsley-fern --mode steal --exact --source P.png --size 6000x6000 -o out.png --save-map out.map
+    stop_in_phase "exact descent" "chaos game" INT 130 "phase.png phase.map" render barnsley-fern --mode steal --exact --source P.png --size 3000x3000 -o phase.png --save-map phase.map
     # The chaos game of a measure render.
     stop_during TERM 143 1.5 render barnsley-fern --size 3000x3000 --quality 20000 -o out.png
     # The chaos-game steal map of `filter` before the first frame (once ignored for minutes).
     stop_during TERM 143 1.5 filter in.avi --size 8000x8000 --quality 2000 -o out.mp4
     # The exact steal map of `filter`.
-    stop_in_phase "exact descent" INT 130 filter in.avi --size 8000x8000 --exact -o out.mp4
+    stop_in_phase "exact descent" "chaos game" INT 130 "phase.mp4" filter in.avi --size 4000x4000 --exact -q -o phase.mp4
     # The filter's animations, through the one fractal engine: a drift keyframe built on a worker
     # thread while the first frame waits for it, and the superIFS burn-in before any frame.
     stop_during INT 130 1.5 filter in.avi --size 3000x3000 --quality 20000 --animate drift --view -3,-1,3,11 -q -o out.mp4
