@@ -15,6 +15,22 @@
 #include "superifs/superifs_file.h"
 
 namespace ifsfx::app {
+namespace {
+
+// One aligned line per preset: name, maps, contraction factor, description (or why it cannot be
+// used).
+std::string preset_lines(const std::vector<PresetSummary>& presets) {
+  std::size_t width = 0;
+  for (const auto& p : presets) width = std::max(width, p.name.size());
+  std::string out;
+  for (const auto& p : presets)
+    out += p.problem.empty() ? fmt::format("{:<{}}  {:>2} maps  factor {:<6.4g}  {}\n", p.name,
+                                           width, p.maps, p.contraction, p.description)
+                             : fmt::format("{:<{}}  not usable: {}\n", p.name, width, p.problem);
+  return out;
+}
+
+}  // namespace
 
 void add_presets_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
@@ -35,16 +51,7 @@ void add_presets_command(CLI::App& app) {
     if (!files->empty()) {
       if (*super) throw Error(ErrorKind::invalid_argument, "--super: lists shipped presets only");
       std::string out;
-      for (const auto& file : *files) {
-        const auto presets = list_presets_in(file);
-        std::size_t width = 0;
-        for (const auto& p : presets) width = std::max(width, p.name.size());
-        for (const auto& p : presets)
-          out += p.problem.empty()
-                     ? fmt::format("{:<{}}  {:>2} maps  factor {:<6.4g}  {}\n", p.name, width,
-                                   p.maps, p.contraction, p.description)
-                     : fmt::format("{:<{}}  not usable: {}\n", p.name, width, p.problem);
-      }
+      for (const auto& file : *files) out += preset_lines(list_presets_in(file));
       std::fputs(out.c_str(), stdout);
       return;
     }
@@ -58,14 +65,7 @@ void add_presets_command(CLI::App& app) {
       std::fputs(out.c_str(), stdout);
       return;
     }
-    const auto presets = list_shipped_presets();
-    std::size_t width = 0;
-    for (const auto& p : presets) width = std::max(width, p.name.size());
-    std::string out;
-    for (const auto& p : presets)
-      out += fmt::format("{:<{}}  {:>2} maps  factor {:<6.4g}  {}\n", p.name, width, p.maps,
-                         p.contraction, p.description);
-    std::fputs(out.c_str(), stdout);
+    std::fputs(preset_lines(list_shipped_presets()).c_str(), stdout);
   });
 }
 

@@ -40,6 +40,13 @@ std::string field(const std::string& line, const std::string& key) {
   return padded.substr(start, padded.find(' ', start) - start);
 }
 
+// What a failed command said, for a message: its stderr (else stdout), trailing newlines gone.
+std::string complaint(const ProcessResult& r) {
+  std::string why = r.err.empty() ? r.out : r.err;
+  while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
+  return why;
+}
+
 JobInfo job_info_of_line(const std::string& line) {
   JobInfo info;
   info.state = field(line, "JobState");
@@ -116,10 +123,8 @@ std::string sbatch(const std::vector<std::string>& args) {
   const ProcessResult r = run_process(argv);
   std::string id = r.out.substr(0, r.out.find_first_of(";\n"));
   if (r.exit_code != 0 || id.empty() || id.find_first_not_of("0123456789") != std::string::npos) {
-    std::string why = r.err.empty() ? r.out : r.err;
-    while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
     throw Error(ErrorKind::io,
-                fmt::format("{}: failed (exit {}): {}", joined(argv), r.exit_code, why));
+                fmt::format("{}: failed (exit {}): {}", joined(argv), r.exit_code, complaint(r)));
   }
   return id;
 }
@@ -127,9 +132,8 @@ std::string sbatch(const std::vector<std::string>& args) {
 void scancel(const std::string& id) {
   const ProcessResult r = run_process({"scancel", id});
   if (r.exit_code == 0) return;
-  std::string why = r.err.empty() ? r.out : r.err;
-  while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
-  throw Error(ErrorKind::io, fmt::format("scancel {}: failed (exit {}): {}", id, r.exit_code, why));
+  throw Error(ErrorKind::io,
+              fmt::format("scancel {}: failed (exit {}): {}", id, r.exit_code, complaint(r)));
 }
 
 std::map<int, std::string> queued_array_tasks(const std::string& id) {

@@ -141,13 +141,7 @@ OutputFile& OutputFile::operator=(OutputFile&& other) noexcept {
 }
 
 void OutputFile::commit() {
-  if (temporary_.empty())
-    throw Error(ErrorKind::io, fmt::format("{}: already committed or discarded", target_.string()));
-  if (cancel_.requested()) {
-    discard();
-    cancel_.check(target_.c_str());
-  }
-  rename_into_place();
+  commit_together(std::span<OutputFile>(this, 1));
 }
 
 void commit_together(std::span<OutputFile> files) {

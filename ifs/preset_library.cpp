@@ -150,13 +150,22 @@ SourceText read_source(const std::string& path) {
   throw Error(ErrorKind::not_found, fmt::format("{}: no such file", path));
 }
 
-// One entry of a Fractint file: the named one, or the first. Only the entry picked has to be
-// usable, so a 2-D entry loads from a file that also holds (3D) ones.
-IfsPreset pick_entry(const SourceText& source, const std::string& name) {
+// The entries of a Fractint file, each usable one named by where it comes from (FILE:NAME).
+// Throws Error{parse} for a file without any.
+std::vector<detail::FractintEntry> entries_of(const SourceText& source) {
   auto entries = detail::read_fractint_entries(source.text, source.filename);
   if (entries.empty())
     throw Error(ErrorKind::parse,
                 fmt::format("{}: no entries (got a Fractint file without any)", source.filename));
+  for (auto& entry : entries)
+    if (entry.preset) entry.preset->origin = fmt::format("{}:{}", source.origin, entry.name);
+  return entries;
+}
+
+// One entry of a Fractint file: the named one, or the first. Only the entry picked has to be
+// usable, so a 2-D entry loads from a file that also holds (3D) ones.
+IfsPreset pick_entry(const SourceText& source, const std::string& name) {
+  auto entries = entries_of(source);
   detail::FractintEntry* picked = name.empty() ? &entries.front() : nullptr;
   for (int pass = 0; pass < 2 && !picked; ++pass)
     for (auto& entry : entries)
@@ -171,9 +180,7 @@ IfsPreset pick_entry(const SourceText& source, const std::string& name) {
                 fmt::format("{}: no entry '{}' (entries: {})", source.filename, name, names));
   }
   if (picked->error) throw *picked->error;
-  IfsPreset preset = std::move(*picked->preset);
-  preset.origin = fmt::format("{}:{}", source.origin, preset.ifs.name);
-  return preset;
+  return std::move(*picked->preset);
 }
 
 IfsPreset resolve(const std::string& spec) {
@@ -221,21 +228,26 @@ void validate_entry(const IfsPreset& preset, const ValidateOptions& options) {
   validate(preset.ifs, preset.origin, relaxed);
 }
 
+// Why a Fractint entry cannot be used, as load_ifs("FILE.ifs:NAME") says it; empty when it can.
+std::string entry_problem(const detail::FractintEntry& entry, const ValidateOptions& options) {
+  if (entry.error) return entry.error->what();
+  try {
+    validate_entry(*entry.preset, options);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return {};
+}
+
 // For a Fractint file named without an entry whose first entry cannot be used (artists' files
 // often open with a `_README {...}` block of notes): which entries there are, and the first
 // usable one, so that the message says what to type instead.
 std::string other_entries_hint(const std::string& path, const ValidateOptions& options) {
   try {
-    const SourceText source = read_source(path);
-    const auto entries = detail::read_fractint_entries(source.text, source.filename);
+    const auto entries = entries_of(read_source(path));
     if (entries.size() < 2) return {};
     for (std::size_t i = 1; i < entries.size(); ++i) {
-      if (entries[i].error) continue;
-      try {
-        validate_entry(*entries[i].preset, options);
-      } catch (const Error&) {
-        continue;
-      }
+      if (!entry_problem(entries[i], options).empty()) continue;
       return fmt::format(
           " (the first of the file's {} entries; name one as FILE.ifs:NAME, e.g. "
           "{}:{})",
@@ -258,27 +270,15 @@ std::vector<PresetSummary> list_presets_in(const std::string& path,
     list.push_back({p.ifs.name, p.ifs.size(), p.ifs.contraction(), p.description, {}});
     return list;
   }
-  const SourceText source = read_source(path);
-  for (auto& entry : detail::read_fractint_entries(source.text, source.filename)) {
-    PresetSummary s{entry.name, 0, 0, {}, {}};
-    if (entry.error) {
-      s.problem = entry.error->what();
-    } else {
-      entry.preset->origin = fmt::format("{}:{}", source.origin, entry.name);
+  for (const auto& entry : entries_of(read_source(path))) {
+    PresetSummary s{entry.name, 0, 0, {}, entry_problem(entry, options)};
+    if (entry.preset) {
       s.maps = entry.preset->ifs.size();
       s.contraction = entry.preset->ifs.contraction();
       s.description = entry.preset->description;
-      try {
-        validate_entry(*entry.preset, options);
-      } catch (const Error& e) {
-        s.problem = e.what();
-      }
     }
     list.push_back(std::move(s));
   }
-  if (list.empty())
-    throw Error(ErrorKind::parse,
-                fmt::format("{}: no entries (got a Fractint file without any)", source.filename));
   return list;
 }
 
