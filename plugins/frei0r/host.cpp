@@ -1,23 +1,20 @@
 #include "plugins/frei0r/host.h"
 
-#include <dlfcn.h>
-
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 
 #include <fmt/format.h>
 
 #include "ifs/error.h"
+#include "plugins/frei0r/host_clock.h"
 
 namespace ifsfx::frei0r {
 
-double seconds_from_host(double time, const void* caller) {
-  Dl_info info{};
-  if (caller != nullptr && dladdr(caller, &info) != 0 && info.dli_fname != nullptr &&
-      std::strstr(info.dli_fname, "libavfilter") != nullptr)
-    return time / 1000;
-  return time;
+double frame_rate_parameter(double value) {
+  if (!is_frame_rate(value))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("rate: must be in (0, 1000] frames per second (got {})", value));
+  return value;
 }
 
 std::int64_t whole_number(double value, const char* name, std::int64_t lo, std::int64_t hi) {

@@ -6,16 +6,14 @@
 
 namespace ifsfx::frei0r {
 
-// The seconds a host means by f0r_update's `time`. The frei0r API says seconds, and MLT and
-// GStreamer pass seconds; FFmpeg's frei0r and frei0r_src filters pass milliseconds (libavfilter's
-// vf_frei0r.c: pts · time_base · 1000). `caller` is f0r_update's return address: a call from
-// inside libavfilter is FFmpeg's.
-double seconds_from_host(double time, const void* caller);
-
 // The nominal frame rate of a host's time line: frei0r does not tell a plugin the stream's rate,
 // so an animation keyed to frame numbers reads the time at this rate (frames between two of its
 // frames are blended, never dropped).
 inline constexpr double nominal_frame_rate = 25;
+
+// A plugin's `rate` parameter: frames per second in (0, 1000], or Error{invalid_argument}
+// "rate: must be in (0, 1000] frames per second (got X)".
+double frame_rate_parameter(double value);
 
 // A parameter that must be a whole number in [lo, hi] (frei0r has doubles only): the value, or
 // Error{invalid_argument} "NAME: must be a whole number in [lo, hi] (got X)".

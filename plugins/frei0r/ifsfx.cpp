@@ -13,11 +13,13 @@
 #include <mutex>
 #include <optional>
 
+#include <fmt/format.h>
 #include <opencv2/core.hpp>
 
 #include "ifs/error.h"
 #include "ifs/view.h"
 #include "plugins/frei0r/host.h"
+#include "plugins/frei0r/host_clock.h"
 #include "plugins/frei0r/params.h"
 #include "video/fractal_engine.h"
 
@@ -27,7 +29,7 @@ namespace {
 constexpr const char* plugin_name = "ifsfx";
 
 // The parameters, in the order hosts address them by position. Do not reorder or rename.
-enum Param { preset, colouring, mix, background, exact, drift, speed, seed, view };
+enum Param { preset, colouring, mix, background, exact, drift, speed, seed, view, rate };
 constexpr ParamInfo table[] = {
     {"preset", ParamType::text,
      "The drawing IFS F: a shipped name (see `ifsfx presets`), a .toml/.ifs path or FILE.ifs:NAME",
@@ -46,6 +48,10 @@ constexpr ParamInfo table[] = {
      1},
     {"view", ParamType::text,
      "Plane rectangle x0,y0,x1,y1 shown on the frame (empty: the attractor, auto-framed)"},
+    {"rate", ParamType::number,
+     "Animation: frames per second to count by when the host gives no frame times (FFmpeg 5.1 "
+     "at widths that are not a multiple of 64)",
+     default_count_rate},
 };
 
 // The engine's settings for parameter values; throws ifsfx::Error naming the parameter.
@@ -68,6 +74,7 @@ video::FractalSettings settings_of(const ParamValues::Values& v) {
   s.drift_speed = v.number(speed);
   s.seed = static_cast<std::uint64_t>(whole_number(v.number(seed), "seed", 0, 1LL << 53));
   if (!v.text(view).empty()) s.view = parse_box(v.text(view), "view");
+  frame_rate_parameter(v.number(rate));
   return s;
 }
 
@@ -100,16 +107,24 @@ class FilterInstance {
     });
   }
 
-  void update(double seconds, const std::uint32_t* in, std::uint32_t* out) {
+  // One frame at the host's `host_time`, in `unit` (host_clock.h: checked before it is trusted).
+  void update(double host_time, TimeUnit unit, const std::uint32_t* in, std::uint32_t* out) {
     const std::size_t bytes = static_cast<std::size_t>(size_.area()) * 4;
     if (in == nullptr || out == nullptr) return;
     std::lock_guard lock(mutex_);
+    if (!clock_) clock_.emplace(unit);
+    const ParamValues::Values v = values_.values();
+    // Every frame is counted, filtered or not: the count is the clock of a host without times.
+    const HostClock::Reading at = clock_->next(host_time, v.number(rate));
     try {
-      const video::FractalSettings s = settings_of(values_.values());
+      const video::FractalSettings s = settings_of(v);
+      if (at.counted && s.animate != video::Animate::none)
+        clock_reporter_.report(fmt::format(
+            "the host gives no frame times; animating by frame count at {:g} fps", at.rate));
       engine_for(s);
       const cv::Mat frame(size_, CV_8UC4, const_cast<std::uint32_t*>(in));
       cv::Mat result(size_, CV_8UC4, out);
-      engine_->filter_at(frame, seconds, result);
+      engine_->filter_at(frame, at.seconds, result);
       if (result.data != reinterpret_cast<std::uint8_t*>(out))  // never: same size and type
         result.copyTo(cv::Mat(size_, CV_8UC4, out));
       reporter_.clear();
@@ -154,6 +169,8 @@ class FilterInstance {
   cv::Size size_;
   ParamValues values_{table};
   Reporter reporter_{plugin_name};
+  Reporter clock_reporter_{plugin_name};  // once per instance (and per rate), never cleared
+  std::optional<HostClock> clock_;        // made by the first frame, which shows who the host is
   std::mutex mutex_;  // a parameter set from another thread while a frame is made (GStreamer)
   std::unique_ptr<video::FractalEngine> engine_;
   std::future<std::unique_ptr<video::FractalEngine>> prefetch_;
@@ -220,7 +237,7 @@ IFSFX_F0R_EXPORT void f0r_get_param_value(f0r_instance_t instance, f0r_param_t p
 IFSFX_F0R_EXPORT void f0r_update(f0r_instance_t instance, double time, const uint32_t* inframe,
                                  uint32_t* outframe) {
   static_cast<FilterInstance*>(instance)->update(
-      ifsfx::frei0r::seconds_from_host(time, __builtin_return_address(0)), inframe, outframe);
+      time, ifsfx::frei0r::host_time_unit(__builtin_return_address(0)), inframe, outframe);
 }
 
 }  // extern "C"

@@ -14,6 +14,7 @@
 #include <memory>
 #include <optional>
 
+#include <fmt/format.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -21,6 +22,7 @@
 #include "ifs/image_io.h"
 #include "ifs/timeline.h"
 #include "plugins/frei0r/host.h"
+#include "plugins/frei0r/host_clock.h"
 #include "plugins/frei0r/params.h"
 #include "superifs/superifs_file.h"
 #include "superifs/texture.h"
@@ -31,7 +33,7 @@ namespace {
 constexpr const char* plugin_name = "ifsfx-texture";
 
 // The parameters, in the order hosts address them by position. Do not reorder or rename.
-enum Param { preset, buffers, mode, source, seed, speed, crossfade };
+enum Param { preset, buffers, mode, source, seed, speed, crossfade, rate };
 constexpr ParamInfo table[] = {
     {"preset", ParamType::text,
      "The superIFS: a shipped name (paper-fig4, carpet-lace, ...) or a .super.toml path", 0,
@@ -46,6 +48,8 @@ constexpr ParamInfo table[] = {
     {"speed", ParamType::number, "Steps of the sequence per second: a new texture every 1/speed s",
      1},
     {"crossfade", ParamType::flag, "Blend each texture into the next instead of cutting", 1},
+    {"rate", ParamType::number, "Frames per second to count by when the host gives no frame times",
+     default_count_rate},
 };
 
 // What the textures depend on (speed and crossfade only pick among them).
@@ -97,17 +101,25 @@ class TextureInstance {
 
   ParamValues& params() { return values_; }
 
-  void update(double seconds, std::uint32_t* out) {
+  // One frame at the host's `host_time`, in `unit` (host_clock.h: checked before it is trusted).
+  void update(double host_time, TimeUnit unit, std::uint32_t* out) {
     if (out == nullptr) return;
     cv::Mat result(size_, CV_8UC4, out);
+    if (!clock_) clock_.emplace(unit);
+    const ParamValues::Values v = values_.values();
+    // Every frame is counted, made or not: the count is the clock of a host without times.
+    const HostClock::Reading time = clock_->next(host_time, v.number(rate));
     try {
-      const ParamValues::Values v = values_.values();
-      const double rate = v.number(speed);
-      if (!(rate >= 0) || !std::isfinite(rate))
-        throw Error(ErrorKind::invalid_argument,
-                    "speed: must be 0 or more steps per second (got " + std::to_string(rate) + ")");
+      const double steps_per_second = v.number(speed);
+      if (!(steps_per_second >= 0) || !std::isfinite(steps_per_second))
+        throw Error(ErrorKind::invalid_argument, "speed: must be 0 or more steps per second (got " +
+                                                     std::to_string(steps_per_second) + ")");
+      frame_rate_parameter(v.number(rate));
       sequence_for(key_of(v));
-      StepPosition at = position_of_steps(std::max(0.0, seconds) * rate);
+      if (time.counted && steps_per_second > 0)
+        clock_reporter_.report(fmt::format(
+            "the host gives no frame times; animating by frame count at {:g} fps", time.rate));
+      StepPosition at = position_of_steps(time.seconds * steps_per_second);
       if (!v.flag(crossfade)) at.phase = 0;
       to_rgba(sequence_->frame_at(at), result);
       reporter_.clear();
@@ -143,6 +155,8 @@ class TextureInstance {
   cv::Size size_;
   ParamValues values_{table};
   Reporter reporter_{plugin_name};
+  Reporter clock_reporter_{plugin_name};  // once per instance (and per rate), never cleared
+  std::optional<HostClock> clock_;        // made by the first frame, which shows who the host is
   SequenceKey key_;
   std::unique_ptr<TextureSequence> sequence_;
   std::optional<std::pair<SequenceKey, std::string>> failed_;
@@ -204,7 +218,7 @@ IFSFX_F0R_EXPORT void f0r_get_param_value(f0r_instance_t instance, f0r_param_t p
 IFSFX_F0R_EXPORT void f0r_update(f0r_instance_t instance, double time, const uint32_t*,
                                  uint32_t* outframe) {
   static_cast<TextureInstance*>(instance)->update(
-      ifsfx::frei0r::seconds_from_host(time, __builtin_return_address(0)), outframe);
+      time, ifsfx::frei0r::host_time_unit(__builtin_return_address(0)), outframe);
 }
 
 }  // extern "C"

@@ -4,12 +4,15 @@
 //
 //   frei0r_host PLUGIN.so --size WxH --frames N [--input IN.rgba] [--fps F] [--order
 //   forward|reverse]
-//               [--instances K] [--param I=VALUE]... [--set FRAME:I=VALUE]... -o OUT.rgba
+//               [--instances K] [--times seconds|none] [--param I=VALUE]...
+//               [--set FRAME:I=VALUE]... -o OUT.rgba
 //
-// Frame j is shown at time j / fps seconds, rendered by instance j mod K (each instance on its own
-// thread, in the given order) and written at its place in OUT whatever the order. --param sets a
-// parameter of every instance before the first frame; --set changes one before frame FRAME of the
-// instance that renders it (mid-stream, as an editor's keyframes do). A flag takes y/n or a number.
+// Frame j is shown at time j / fps seconds (with --times none, at the time FFmpeg 5.1 passes for a
+// frame without a timestamp: AV_NOPTS_VALUE · 1000 / 25), rendered by instance j mod K (each
+// instance on its own thread, in the given order) and written at its place in OUT whatever the
+// order. --param sets a parameter of every instance before the first frame; --set changes one
+// before frame FRAME of the instance that renders it (mid-stream, as an editor's keyframes do). A
+// flag takes y/n or a number.
 #include <dlfcn.h>
 
 #include <cstdint>
@@ -57,6 +60,7 @@ struct Args {
   int frames = 0, instances = 1;
   double fps = 25;
   bool reverse = false;
+  bool timeless = false;  // --times none
   std::vector<Setting> params;
   std::multimap<int, Setting> changes;  // by frame
 };
@@ -87,6 +91,10 @@ Args parse(int argc, char** argv) {
       a.fps = std::stod(next());
     } else if (arg == "--order") {
       a.reverse = next() == "reverse";
+    } else if (arg == "--times") {
+      const std::string t = next();
+      if (t != "seconds" && t != "none") throw std::runtime_error("--times: seconds or none");
+      a.timeless = t == "none";
     } else if (arg == "--instances") {
       a.instances = std::stoi(next());
     } else if (arg == "--param") {
@@ -164,8 +172,9 @@ int run(const Args& a) {
         for (auto it = first; it != last; ++it)
           set(api, instances[static_cast<std::size_t>(k)], it->second);
         const std::size_t at = pixels * static_cast<std::size_t>(j);
-        api.update(instances[static_cast<std::size_t>(k)], j / a.fps, source ? nullptr : &in[at],
-                   &out[at]);
+        const double nopts = static_cast<double>(INT64_MIN) * 1000 / 25;
+        api.update(instances[static_cast<std::size_t>(k)], a.timeless ? nopts : j / a.fps,
+                   source ? nullptr : &in[at], &out[at]);
       }
     });
   }

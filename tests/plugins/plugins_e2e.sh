@@ -81,17 +81,26 @@ ffmpeg_h264)
   echo "plugin through ffmpeg vs ifsfx filter: smallest PSNR $p dB"
   ;;
 ffmpeg_drift)
-  # The drift animation keyed on FFmpeg's time (milliseconds, read as such) is `ifsfx filter
-  # --animate drift` at the same 25 fps, frame for frame.
-  clip clip.mkv 160:120 -c:v ffv1 -pix_fmt bgr0
-  "$ifsfx" filter clip.mkv -o cli.mkv --codec ffv1 --preset sierpinski-triangle --animate drift \
-    --drift-amount 0.3 --drift-speed 1 --seed 4 -q
-  ffmpeg -v error -y -i clip.mkv -vf "frei0r=ifsfx:sierpinski-triangle||0|black|y|0.3|1|4|" \
-    -c:v ffv1 -pix_fmt bgr0 ffmpeg.mkv
-  same_frames ffmpeg.mkv cli.mkv 30
-  # And it moves: frames 0 and 29 show different maps.
-  ffmpeg -v error -y -i ffmpeg.mkv -vf "select=eq(n\,0)+eq(n\,29)" -vsync 0 f%d.png
-  [[ $(cmp -s f1.png f2.png; echo $?) != 0 ]] || fail "drift 0.3 left the map still"
+  # The drift animation through FFmpeg is `ifsfx filter --animate drift` at the same 25 fps, frame
+  # for frame: at 256 wide FFmpeg 5.1 passes each frame's time (milliseconds, read as such); at
+  # 160 wide it passes none (it copies rows that are not a multiple of 64 pixels and drops the
+  # timestamp) and the plugin counts frames at 25 fps, saying so once.
+  for width in 256 160; do
+    clip clip$width.mkv $width:120 -c:v ffv1 -pix_fmt bgr0
+    "$ifsfx" filter clip$width.mkv -o cli$width.mkv --codec ffv1 --preset sierpinski-triangle \
+      --animate drift --drift-amount 0.3 --drift-speed 1 --seed 4 -q
+    ffmpeg -v error -y -i clip$width.mkv -vf "frei0r=ifsfx:sierpinski-triangle||0|black|y|0.3|1|4|" \
+      -c:v ffv1 -pix_fmt bgr0 ffmpeg$width.mkv 2> err$width.txt
+    same_frames ffmpeg$width.mkv cli$width.mkv 30
+    [[ ! -s err$width.txt ]] ||
+      grep -qx "frei0r ifsfx: the host gives no frame times; animating by frame count at 25 fps" \
+        err$width.txt || fail "stderr at $width wide: $(cat err$width.txt)"
+    echo "${width}x120: $( [[ -s err$width.txt ]] && echo "no times from FFmpeg, frames counted" ||
+      echo "FFmpeg's times")"
+    # And it moves: frames 0 and 29 show different maps.
+    ffmpeg -v error -y -i ffmpeg$width.mkv -vf "select=eq(n\,0)+eq(n\,29)" -vsync 0 f$width-%d.png
+    [[ $(cmp -s f$width-1.png f$width-2.png; echo $?) != 0 ]] || fail "drift 0.3 left the map still"
+  done
   ;;
 ffmpeg_bad_preset)
   # A bad preset does not stop FFmpeg: one line on stderr, the frames pass through unchanged.
@@ -130,6 +139,78 @@ melt)
   p=$(min_psnr melt.mkv ffmpeg.mkv 30)
   awk -v p="$p" 'BEGIN { exit !(p >= 40) }' || fail "melt vs ffmpeg: $p dB < 40 dB"
   echo "melt vs ffmpeg: smallest PSNR $p dB"
+  ;;
+melt_drift | gstreamer_drift)
+  # The drift animation keyed on melt's and GStreamer's times (seconds) is `ifsfx filter --animate
+  # drift`. PSNR, not bits: each host converts FFV1's BGR to the plugin's RGBA itself. A frozen or
+  # wrongly timed map is far below 40 dB (11-12 dB by frame 29). GStreamer's wrapper limits number
+  # properties to 0..1, so the seed is 1.
+  clip clip.mkv 320:240 -c:v ffv1 -pix_fmt bgr0
+  "$ifsfx" filter clip.mkv -o cli.mkv --codec ffv1 --preset sierpinski-triangle --animate drift \
+    --drift-amount 0.3 --drift-speed 1 --seed 1 -q
+  if [[ $case_name == melt_drift ]]; then
+    need melt
+    melt -quiet clip.mkv -filter frei0r.ifsfx preset=sierpinski-triangle drift=0.3 speed=1 seed=1 \
+      -consumer avformat:host.mkv vcodec=ffv1 pix_fmt=bgr0 an=1 > host.log 2>&1 ||
+      fail "melt: $(cat host.log)"
+  else
+    need gst-launch-1.0
+    export GST_REGISTRY=$PWD/registry.bin
+    gst-launch-1.0 -q filesrc location=clip.mkv ! matroskademux ! avdec_ffv1 ! videoconvert ! \
+      frei0r-filter-ifsfx preset=sierpinski-triangle drift=0.3 speed=1 seed=1 ! videoconvert ! \
+      video/x-raw,format=BGRx ! avenc_ffv1 ! matroskamux ! filesink location=host.mkv \
+      > host.log 2>&1 || fail "gst-launch: $(cat host.log)"
+  fi
+  [[ $(frames_of host.mkv) == 30 ]] || fail "the host wrote $(frames_of host.mkv) frames"
+  p=$(min_psnr host.mkv cli.mkv 30)
+  awk -v p="$p" 'BEGIN { exit !(p >= 40) }' || fail "$case_name vs ifsfx filter: $p dB < 40 dB"
+  echo "$case_name vs ifsfx filter --animate drift: smallest PSNR $p dB"
+  ;;
+host_times)
+  # What each host passes as f0r_update's time, printed by a probe plugin (tests/plugins/
+  # time_probe.cpp): the facts plugins/frei0r/host_clock.h is built on. FFmpeg: milliseconds, or
+  # for frames whose rows it copied (widths not a multiple of 64 in 5.1) a negative NOPTS pattern;
+  # melt and GStreamer: seconds. A host that starts passing anything else fails here, naming it.
+  probe=$(dirname "$host")/probe
+  [[ -f $probe/ifsfx-time-probe.so ]] || fail "no probe plugin in $probe"
+  # The first three times, or with `distinct` the first three different ones (melt renders frame
+  # 0 twice).
+  first_times() { sed -n 's/^time=//p' "$1" | { [[ ${2:-} == distinct ]] && uniq || cat; } |
+    head -3 | paste -sd' '; }
+  calls() { grep -c '^time=' "$1"; }
+  steps_of() {  # steps_of "T0 T1 T2" STEP: the times are 0, STEP, 2 STEP
+    awk -v t="$1" -v d="$2" 'BEGIN { n = split(t, a, " "); if (n != 3) exit 1
+      for (k = 1; k <= 3; ++k) if ((a[k] - (k - 1) * d) ^ 2 > 1e-12) exit 1 }'
+  }
+  for width in 320 256 160 176; do
+    clip clip$width.mkv $width:120 -c:v ffv1 -pix_fmt bgr0
+    FREI0R_PATH=$probe ffmpeg -v error -y -i clip$width.mkv -vf frei0r=ifsfx-time-probe \
+      -f null - 2> ffmpeg$width.txt
+    t=$(first_times ffmpeg$width.txt)
+    if steps_of "$t" 40; then
+      echo "ffmpeg ${width}x120: $t (milliseconds; $(calls ffmpeg$width.txt) calls for 30 frames)"
+    elif awk -v t="$t" 'BEGIN { n = split(t, a, " "); if (n != 3) exit 1
+        for (k = 1; k <= 3; ++k) if (!(a[k] < -1e15)) exit 1 }'; then
+      echo "ffmpeg ${width}x120: $t (no time: NOPTS)"
+    else
+      fail "ffmpeg ${width}x120 passes times host_clock.h does not expect: $t"
+    fi
+  done
+  if command -v melt > /dev/null; then
+    FREI0R_PATH=$probe melt -quiet clip320.mkv -filter frei0r.ifsfx-time-probe \
+      -consumer avformat:melt.mkv vcodec=ffv1 an=1 > melt.txt 2>&1 || fail "melt: $(cat melt.txt)"
+    t=$(first_times melt.txt distinct)
+    steps_of "$t" 0.04 || fail "melt passes times host_clock.h does not expect: $t"
+    echo "melt 320x120: $t (seconds; $(calls melt.txt) calls for 30 frames)"
+  fi
+  if command -v gst-launch-1.0 > /dev/null; then
+    GST_REGISTRY=$PWD/registry.bin FREI0R_PATH=$probe gst-launch-1.0 -q filesrc \
+      location=clip320.mkv ! matroskademux ! avdec_ffv1 ! videoconvert ! \
+      frei0r-filter-ifsfx-time-probe ! fakesink > gst.txt 2>&1 || fail "gst-launch: $(cat gst.txt)"
+    t=$(first_times gst.txt)
+    steps_of "$t" 0.04 || fail "GStreamer passes times host_clock.h does not expect: $t"
+    echo "gst-launch 320x120: $t (seconds; $(calls gst.txt) calls for 30 frames)"
+  fi
   ;;
 gstreamer | gstreamer_odd_size)
   # gst-launch-1.0 with the frei0r-filter-ifsfx element, in a registry of its own (the frei0r
@@ -171,6 +252,39 @@ own_host_reverse_order | own_host_instances)
   fi
   cmp forward.rgba other.rgba || fail "frames differ"
   ! cmp -s forward.rgba clip.rgba || fail "the filter did nothing"
+  ;;
+own_host_no_times)
+  # A host that gives no frame times (FFmpeg 5.1's NOPTS pattern): the plugin counts frames at its
+  # `rate` (25 by default), and the frames are those of a host that gives k / rate seconds; it says
+  # so once. A still filter (drift 0) has nothing to say.
+  clip clip.rgba 161:121 -f rawvideo -pix_fmt rgba
+  run=("$host" "$plugins/ifsfx.so" --size 161x121 --frames 30 --input clip.rgba
+    --param 0=sierpinski-triangle --param 5=0.4 --param 6=2 --param 7=9)
+  message="frei0r ifsfx: the host gives no frame times; animating by frame count at"
+  "${run[@]}" -o timed.rgba 2> timed.txt
+  "${run[@]}" --times none -o counted.rgba 2> counted.txt
+  cmp timed.rgba counted.rgba || fail "frames counted at 25 fps differ from frames at k/25 s"
+  [[ ! -s timed.txt ]] || fail "a host with times got: $(cat timed.txt)"
+  [[ $(cat counted.txt) == "$message 25 fps" ]] || fail "message: $(cat counted.txt)"
+  "${run[@]}" --fps 30 -o timed30.rgba
+  "${run[@]}" --times none --param 9=30 -o counted30.rgba 2> counted30.txt
+  cmp timed30.rgba counted30.rgba || fail "frames counted at rate 30 differ from frames at k/30 s"
+  [[ $(cat counted30.txt) == "$message 30 fps" ]] || fail "message: $(cat counted30.txt)"
+  ! cmp -s timed.rgba timed30.rgba || fail "25 and 30 fps gave the same frames"
+  "$host" "$plugins/ifsfx.so" --size 161x121 --frames 5 --input clip.rgba --times none \
+    -o still.rgba 2> still.txt
+  [[ ! -s still.txt ]] || fail "a still filter said: $(cat still.txt)"
+  "$host" "$plugins/ifsfx.so" --size 161x121 --frames 5 --input clip.rgba --times none \
+    --param 5=0.4 --param 9=0 -o bad_rate.rgba 2> bad_rate.txt
+  grep -q "^frei0r ifsfx: rate: must be in (0, 1000\] frames per second (got 0)" bad_rate.txt ||
+    fail "rate 0: $(cat bad_rate.txt)"
+  # The texture source too (speed 6 steps per second).
+  tex=("$host" "$plugins/ifsfx-texture.so" --size 97x65 --frames 12 --param 5=6)
+  "${tex[@]}" -o tex_timed.rgba
+  "${tex[@]}" --times none -o tex_counted.rgba 2> tex.txt
+  cmp tex_timed.rgba tex_counted.rgba || fail "texture frames counted differ from timed ones"
+  [[ $(cat tex.txt) == "frei0r ifsfx-texture: the host gives no frame times; animating by frame count at 25 fps" ]] ||
+    fail "texture message: $(cat tex.txt)"
   ;;
 own_host_parameter_changes)
   # Parameters changed mid-stream, a bad one among them: frames 10-14 pass through unchanged, the
