@@ -5,17 +5,59 @@
 # build, build against it and package it (label `install`): they run in the Release pass only.
 # Last, the file readers are fuzzed for a fixed budget (tools/run-fuzz.sh: clang, libFuzzer,
 # ASan+UBSan, 45 s per reader, about 5 minutes with its build).
+#
+# The passes are independent: a failure in one (a build or a test) does not stop the others, so one
+# broken case never hides what the others would find. The script ends with one line per pass and
+# exits non-zero if any failed, naming them. It starts by printing the versions of the programs the
+# tests run against (tools/host-versions.sh), again at the end of a red run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
+bash tools/host-versions.sh
 
 jobs=$(nproc)
-bash tools/build.sh release
-(cd build/release && ctest --output-on-failure -j"$jobs" --timeout 600)
+release_tests() { cd build/release && ctest --output-on-failure -j"$jobs" --timeout 600; }
+asan_tests() {
+  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
+  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+  cd build/asan && ctest --output-on-failure -j"$jobs" --timeout 1200 -LE 'vm|install|slurm'
+}
 
-bash tools/build.sh asan
-export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
-export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-(cd build/asan && ctest --output-on-failure -j"$jobs" --timeout 1200 -LE 'vm|install|slurm')
+# run_pass NAME COMMAND...: runs COMMAND in a subshell with errexit and records how it ended.
+results=()
+failed=()
+run_pass() {
+  local name=$1 rc start=$SECONDS
+  shift
+  echo "=== run-tests: $name"
+  set +e
+  (set -e; "$@")
+  rc=$?
+  set -e
+  results+=("$(printf '%-14s %s (%d s)' "$name" "$( ((rc == 0)) && echo passed || echo "FAILED (exit $rc)")" $((SECONDS - start)))")
+  ((rc == 0)) || failed+=("$name")
+}
 
-bash tools/run-fuzz.sh
+run_pass release-build bash tools/build.sh release
+if [[ " ${failed[*]} " != *" release-build "* ]]; then
+  run_pass release-tests release_tests
+else
+  results+=("$(printf '%-14s %s' release-tests "not run (no build)")") && failed+=(release-tests)
+fi
+run_pass asan-build bash tools/build.sh asan
+if [[ " ${failed[*]} " != *" asan-build "* ]]; then
+  run_pass asan-tests asan_tests
+else
+  results+=("$(printf '%-14s %s' asan-tests "not run (no build)")") && failed+=(asan-tests)
+fi
+run_pass fuzz bash tools/run-fuzz.sh
+
+echo "=== run-tests: summary"
+printf '  %s\n' "${results[@]}"
+echo "passes: $((${#results[@]} - ${#failed[@]})) passed, ${#failed[@]} failed"
+if ((${#failed[@]})); then
+  bash tools/host-versions.sh
+  echo "run-tests: FAILED: ${failed[*]}" >&2
+  exit 1
+fi
+echo "run-tests: every pass passed"
