@@ -25,7 +25,7 @@ cv::Vec3b piece_colour(int n);
 // Three panels of S·scale pixels side by side (CV_8UC3, BGR) on the working raster of `target`:
 //   1. L in white;
 //   2. W(L): f_n(L) in piece_colour(n) (a higher n is painted over a lower one);
-//   3. A: each pixel in the colour of the first symbol of its top address (DESIGN.md §2), i.e.
+//   3. A: each pixel in the colour of the first symbol of its top address (docs/design.md §2), i.e.
 //      of the piece f_n(A) on top there.
 // In 2 and 3 the pixels of L left uncovered are dark grey, and those coloured outside L (spill)
 // are dimmed to a third.

@@ -1,4 +1,4 @@
-// The conjugacy and Salem oracles of colour stealing (DESIGN.md §3, issue 3), and bad input.
+// The conjugacy and Salem oracles of colour stealing (docs/design.md §3, issue 3), and bad input.
 #include <cmath>
 
 #include <gtest/gtest.h>

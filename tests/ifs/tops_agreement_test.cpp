@@ -1,4 +1,4 @@
-// Chaos-game tops against exact tops (DESIGN.md §3: the descent is the test oracle of the
+// Chaos-game tops against exact tops (docs/design.md §3: the descent is the test oracle of the
 // chaos-game renderer): the same first symbol on ≥ 98 % of the pixels both cover. Pixels that
 // straddle a piece boundary may legitimately differ.
 #include <gtest/gtest.h>

@@ -19,7 +19,7 @@ using testing::paper_fig4;
 using testing::sierpinski_triangle;
 using testing::triangle_corner;
 
-// Slow, plain reference (DESIGN.md §3): the attractor by the deterministic set iteration
+// Slow, plain reference (docs/design.md §3): the attractor by the deterministic set iteration
 // M_{k+1} = ∪ f_m(M_k) from the full raster, a pixel set when the pixel under f_m⁻¹ of its centre
 // meets M_k dilated by r (cv::dilate), iterated until nothing changes.
 cv::Mat reference_attractor(const Ifs& f, const Viewport& vp, int r) {
