@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ifsfx fit TARGET -n N -o OUT.toml`: collage-theorem fitting (paper §2, eq. 3;
 // docs/design.md §6). Finds N affine maps whose attractor looks like the target's shape, writes
 // them as a preset any other subcommand reads, and reports the collage theorem's numbers.

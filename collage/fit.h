@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Collage-theorem fitting (paper §2, eq. 3; docs/design.md §6): search N affine maps whose collage
 // W(L) = ∪ f_n(L) covers the target L tightly with a small contraction s, then report what the
 // collage theorem promises and what the rendered attractor A actually achieves:

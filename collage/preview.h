@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The picture of a fit (`ifsfx fit --preview`): the target L, the collage W(L) = ∪ f_n(L) and the
 // attractor A side by side, each of the N pieces in its own colour, so that one can see which map
 // makes which part of the shape and where the collage misses or spills (paper §2, eq. 3).

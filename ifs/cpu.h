@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Kernel levels: the instruction sets the hot kernels of the libraries are compiled for. The
 // libraries are built for baseline x86-64; each kernel also exists in translation units of its
 // own compiled for AVX2 and AVX-512, and the level is chosen once, at run time, from what the CPU

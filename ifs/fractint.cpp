@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fractint's .ifs format: named entries `NAME { a b c d e f p ... }`, `;` comments to the end of
 // the line, numbers separated by spaces, tabs, commas or newlines. Fractint's a b c d e f are
 // ours: x' = a x + b y + e, y' = c x + d y + f (docs/design.md §1); its p are weights, drawn from

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // An iterated function system {X; f1..fN; p1..pN} (paper §2, eq. 1–2; docs/design.md §1).
 #pragma once
 

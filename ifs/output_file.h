@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one output policy (docs/design.md §8). Every file ifsfx writes — images, steal maps, presets,
 // movies, image sequences, recordings — goes through an OutputFile:
 //   - an output that is the same file as an input (same device and inode: through symbolic and

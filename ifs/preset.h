@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // IFS preset files: the native TOML format and Fractint's .ifs format, and finding a preset by
 // name among the shipped ones (embedded in the library at build time) or by path.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rendering an IFS to an image by the chaos game: the attractor as a set, and its invariant
 // measure (paper Fig. 1 left and centre; docs/design.md §4).
 #pragma once

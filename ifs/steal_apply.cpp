@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // apply: colouring an image through a steal map, one cv::remap (docs/design.md §3: T depends on F,
 // G and the grid only, so a video filter prepares the map once and remaps every frame).
 #include <algorithm>

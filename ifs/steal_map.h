@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The steal map of colour stealing (paper §4, Fig. 3; docs/design.md §3): per output pixel, the
 // source coordinate T(x) = π_G(τ_F(x)) — the top address of x under the drawing IFS F, followed
 // to a point under the colouring IFS G — and whether the pixel lies on the attractor at all.

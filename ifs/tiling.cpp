@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Colouring IFSs: the default tilings of the unit square (docs/design.md §3: a good default G tiles
 // the source rectangle R with N pieces so that every source pixel is reachable), and fitting an
 // arbitrary G onto the unit square.

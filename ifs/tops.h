@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fractal tops (paper §3, eq. 4–9; docs/design.md §2): the top address of each pixel of an IFS's
 // attractor — its largest address, so that where pieces overlap the higher-numbered map is on
 // top — and pictures of it, each pixel coloured by the first (and optionally second) symbol.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The V buffers of a V-variable superfractal (paper §5, eq. 13–14; docs/design.md §5).
 //
 // One step, for each buffer v: pick n_v ~ P; for each map m pick a source buffer v_m uniformly in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Textures from a superIFS (paper §5, Fig. 4–5): a buffer of the V-variable step rendered as a
 // set, as fractal tops, coloured by colour stealing, or as its measure; and texture sequences —
 // every further step a new texture of the same family, optionally crossfaded for animation.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs what is missing, builds (Release) and runs the main job on built-in defaults: filters a
 # real movie clip (OpenCV's sample footage, Debian package opencv-doc) through a shipped preset,
 # and writes a superfractal still and a few IFS stills. Everything lands in out/.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fractal filter as one object (docs/design.md §10, "One engine, many doors"): every door —
 // `ifsfx filter`, `ifsfx cam`, the frei0r plugins, a farm's shards — fills in one FractalSettings
 // and asks one FractalEngine for its frames, so a picture made through any door is the picture

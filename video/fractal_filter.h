@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fractal filter of paper §6 (Fig. 6): colour stealing (§4) with each video frame as the
 // colour source. The steal map T(x) = π_G(τ_F(x)) does not depend on the frame (docs/design.md §3),
 // so it is computed once and turned here into a remap table in the frame's pixels; each frame is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Private to ifs/: per-pixel top addresses on a raster, the common ground of the tops renderer
 // and of both ways of computing a steal map (docs/design.md §2–3).
 //

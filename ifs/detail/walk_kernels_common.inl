@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scalar walker and the plot sinks of every kernel level, included by each
 // ifs/walk_kernels_<level>.cpp INSIDE its own namespace (ifsfx::detail::kernel_<level>), so that
 // every level compiles its own copy with its own instruction set and none is shared with another

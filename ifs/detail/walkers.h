@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The chaos game of the renderers, baseline side: the fixed split of a point budget into chunks,
 // the seeds of a chunk's lanes, and the tables a WalkSpec points into. The walks themselves are
 // the kernels of walk_kernels.h, chosen per CPU. Private to ifs/.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Same seed ⇒ same bytes, whatever the thread count (docs/style.md rule 5), in every render mode:
 // attractor, measure, tops and steal maps, by the chaos game and exactly. IFSs of 2 to 9 maps,
 // sizes and qualities whose point budgets span several chunks of the chaos game (so that with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The identity oracle (docs/design.md §3): F = G = a square tiling of the unit square ⇒ T(x) = x ⇒
 // stealing from a photograph gives the photograph back.
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The conjugacy and Salem oracles of colour stealing (docs/design.md §3, issue 3), and bad input.
 #include <cmath>
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tops rule (paper eq. 7, docs/design.md §2): where pieces overlap, the higher-numbered map is
 // on top. Four maps of factor 0.6 into the corners of the unit square overlap in bands: the first
 // symbol of the top address splits the square at 0.4 (the higher maps, right and top, win the

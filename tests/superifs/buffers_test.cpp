@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The V-variable step (eq. 14) against known answers: an IFS alone gives its attractor, pieces
 // are images of previous buffers, at most V distinct sub-shapes, burn-in forgets the start, and
 // threads never change a pixel.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Synthetic frames and in-memory sources and sinks shared by the video tests.
 #pragma once
 

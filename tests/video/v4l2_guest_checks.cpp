@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks against real kernel V4L2 drivers, run inside the VM of tests/v4l2-vm/run-vm-tests.sh:
 // vivid (a virtual webcam showing 75% colour bars) and v4l2loopback (the virtual webcam that
 // `ifsfx cam --output` feeds). Not part of the host suite: the host kernel has no V4L2.
