@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ifsfx apply MAP IMAGE -o OUT`: colours an image through a saved steal map (from
 // `ifsfx render ... --mode steal --save-map MAP`), one remap.
 #include <cstdio>

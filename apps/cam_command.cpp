@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ifsfx cam`: the live kaleidoscope of paper §6 (Fig. 6, bottom right) — a V4L2 camera coloured
 // through a steal map computed once, shown in a window, sent to a V4L2 output device (a virtual
 // webcam for any app), recorded to a movie file, or all three.

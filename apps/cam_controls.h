@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the keys of the `ifsfx cam` window do to the live session: n/p step through the shipped
 // presets, a turns the drift animation on and off, s writes a snapshot, r starts and stops a
 // recording. Each action is reported: on stderr and, for a few seconds, in the window's readout.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A recording that the live loop of `ifsfx cam` can start and stop while it runs (the window's r
 // key), each start a new movie file through the file sink of `ifsfx filter`.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The interactive window of `ifsfx cam`: the filtered frame with a readout drawn in its top-left
 // corner (frame rate, preset, recording state, and the last action for a moment), and the keys the
 // user pressed.

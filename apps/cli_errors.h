@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The libraries name their own parameters in messages ("quality: must be a positive number ...",
 // "count: the number of buffers ...", "... allow_expansive accepts it ..."); the command line
 // reports the flags the user typed instead ("--quality: ...", "-V: ...", "--allow-expansive").

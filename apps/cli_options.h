@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Option parsing shared by the subcommands: sizes, views, colours, thread counts. Thin wrappers
 // that turn a command-line string into a library type, reporting errors as ifsfx::Error.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The subcommands of `ifsfx`. Each lives in its own file, apps/<name>_command.cpp, and registers
 // itself on the top-level CLI11 app; main() turns any error into one line and an exit code.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ifsfx farm filter|texture|status|resume`: a long movie or texture sequence sharded over a Slurm
 // cluster. The job folder (OUTPUT.farm/) holds the plan, one array job of shards (each an ordinary
 // `ifsfx filter --frames A:B` or `ifsfx texture --frame-range A:B`) and, for a movie, a join job

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ifsfx filter INPUT -o OUTPUT`: the fractal video filter (paper §6, Fig. 6). Every frame of a
 // movie (or image sequence) is colour-stolen through the steal map of an IFS, computed once (or
 // rebuilt as time goes on with --animate), on three threads: decode, filter, encode.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The options of `ifsfx filter` that shape the picture and the output encoding, shared by the
 // filter command and `ifsfx farm filter` (which hands them on, unchanged, to every shard).
 #pragma once

@@ -1,6 +1,7 @@
-// `ifsfx fit TARGET -n N -o OUT.toml`: collage-theorem fitting (paper §2, eq. 3; DESIGN.md §6).
-// Finds N affine maps whose attractor looks like the target's shape, writes them as a preset any
-// other subcommand reads, and reports the collage theorem's numbers.
+// SPDX-License-Identifier: Apache-2.0
+// `ifsfx fit TARGET -n N -o OUT.toml`: collage-theorem fitting (paper §2, eq. 3;
+// docs/design.md §6). Finds N affine maps whose attractor looks like the target's shape, writes
+// them as a preset any other subcommand reads, and reports the collage theorem's numbers.
 #include <chrono>
 #include <cmath>
 #include <cstdio>

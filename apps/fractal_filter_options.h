@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The options `ifsfx filter` and `ifsfx cam` share: the fractal a frame is coloured through (the
 // drawing IFS F, the colouring IFS G, the view, how the steal map is made), how the frame shows
 // through it, the drift animation, the seed and the worker threads.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ifsfx info` and `ifsfx --version`: the version, how this binary was built, and the kernel
 // level it runs at on this machine (ifs/cpu.h).
 #include <cstdio>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/light_dispatch.h"
 
 #include <unistd.h>

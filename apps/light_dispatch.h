@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Which of the two ifsfx binaries runs a command line. Most of ifsfx's start-up is the dynamic
 // loader binding OpenImageIO and the video stack (about 275 shared libraries; bench/README.md,
 // "Start-up"), which `render` to PNG does not use. So the installed `ifsfx` is a light binary

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ifsfx, the installed command: `render` to PNG in a binary that loads neither OpenImageIO nor
 // the video stack, every other command line handed to ifsfx-full (apps/light_dispatch.h).
 #include <CLI/CLI.hpp>

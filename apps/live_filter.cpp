@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/live_filter.h"
 
 #include "apps/cli_options.h"

@@ -1,6 +1,7 @@
-// The filter of `ifsfx cam`: F coloured through G on the camera's frame size (DESIGN.md §3) — one
-// steal map computed once and reapplied per frame, or, animated, maps of F drifting in time built
-// on a worker and cross-faded in (video/camera_drift.h).
+// SPDX-License-Identifier: Apache-2.0
+// The filter of `ifsfx cam`: F coloured through G on the camera's frame size (docs/design.md §3) —
+// one steal map computed once and reapplied per frame, or, animated, maps of F drifting in time
+// built on a worker and cross-faded in (video/camera_drift.h).
 #pragma once
 
 #include <cstdint>

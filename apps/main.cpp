@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ifsfx-full: every command of ifsfx. The installed `ifsfx` is the light binary
 // (apps/light_main.cpp), which runs `render` to PNG itself and hands every other command line to
 // this one unchanged (exec: the same process). main() builds the command line, runs one

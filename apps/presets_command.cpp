@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ifsfx presets [FILE...]`: one aligned line per shipped IFS preset (name, maps, contraction
 // factor, description), or per entry of the files given. The names are what `ifsfx render NAME`
 // (or FILE.ifs:NAME) accepts.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ifsfx render PRESET -o OUT`: an IFS rendered to a still image by the chaos game.
 #include <cstdio>
 #include <map>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What both ifsfx binaries share around their commands (apps/main.cpp: every command;
 // apps/light_main.cpp: `render` to PNG): the top-level description, and main()'s error handling.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "apps/steal_modes.h"
 
 #include "apps/cli_options.h"

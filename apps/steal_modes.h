@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The tops and steal modes of `ifsfx render`, and what they share with `ifsfx apply`: the
 // --background colour, and making an image fit its output format (transparent background where
 // the format has alpha, the background colour elsewhere).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Ctrl-C (SIGINT) and SIGTERM as a request to stop, for every command: long computations poll the
 // request through a CancelToken (ifs/cancel.h) and end within a fraction of a second, outputs are
 // left as the output policy says (ifs/output_file.h), and main() exits with 128 + the signal's

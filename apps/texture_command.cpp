@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `ifsfx texture SUPERPRESET -o OUT`: a V-variable superfractal texture (paper §5, Fig. 4–5), or
 // with --frames a sequence of them, one per further step, optionally crossfaded.
 #include <chrono>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The options of `ifsfx texture`, shared by the texture command and `ifsfx farm texture` (which
 // hands them on, unchanged, to every shard, and so checks them before it submits anything).
 #pragma once

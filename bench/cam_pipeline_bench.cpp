@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The live path of `ifsfx cam` without a camera: a synthetic source paced at 1280×720, 30 fps
 // (frames "captured" in real time whether read or not, newest-frame-wins like a V4L2 driver with
 // few buffers) through the fractal filter into a null sink, for a fixed run of real time.

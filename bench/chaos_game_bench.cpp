@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The chaos-game core: points per second for the fern and the Sierpinski triangle at 1920×1080,
 // 64 points per pixel, attractor and measure modes, on 1 and 2 threads. Each run also checks its
 // result (coverage), so a broken kernel cannot look fast. Run: build/release/bench/chaos_game_bench

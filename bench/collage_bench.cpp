@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Collage fitting on real silhouettes (issue 15): every shape of bench/collage-shapes/ is fitted
 // with its N maps and default options, once from issue 14's moment-matched start and once from
 // the range/domain search, in one run. Per shape and start it prints IoU(L, A), the measured

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # `ifsfx farm filter --shards 2 --cpus-per-task=1` on a real single-node Slurm (this 2-core machine)
 # against one `ifsfx filter --threads 1`, on a 1080p H.264 clip with AAC audio: the speed-up, and the
 # farm's overheads measured apart — the plan (counting frames by demuxing), the seek of a shard that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The filter stage of `ifsfx filter` alone (no decode, no encode): one frame coloured through a
 // fixed steal map (issue 5 target: ≥ 150 fps at 1920×1080, bilinear, on 2 cores), and the
 // --animate drift stage at 1280×720 (target ≥ 30 fps), keyframe maps rebuilt on a worker while

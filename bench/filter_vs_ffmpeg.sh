@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # End to end: `ifsfx filter` (decode, fractal filter, encode to H.264) against a plain ffmpeg
 # transcode of the same 1080p H.264 file with the same encoder settings ifsfx uses by default
 # (libx264, preset medium, CRF 23, yuv420p), measured in the same run. Issue 5 target: ifsfx at

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The portable build (baseline x86-64, kernels chosen at run time) against a build for this
 # machine's CPU (-DIFSFX_NATIVE=ON, -march=native), in one run: chaos_game_bench, steal_bench and
 # bench/vs-flam3.sh of each, the two builds alternating round by round so that the load of a

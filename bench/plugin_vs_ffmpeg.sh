@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The frei0r filter inside FFmpeg, in one run on one 1080p H.264 clip (issue 13 target: ≥ 100 fps
 # through FFmpeg on 2 cores, fixed map):
 #   decode    ffmpeg -i clip -f null -                          (decoding alone)

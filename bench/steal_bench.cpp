@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fractal tops and colour stealing (issue 3 targets, 2-core machine):
 //   chaos-game tops + stealing ≥ 150 Mpts/s per core; exact steal map 1920×1080 fern ≤ 250 ms on
 //   2 cores; apply of a 1080p map to a 1080p frame ≥ 150 frames/s on 2 cores (bilinear);

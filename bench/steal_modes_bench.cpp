@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The two steal maps side by side over every shipped IFS preset (issue 14 item 5): the exact
 // per-pixel descent and the chaos game (quality 64, the paper's method), at 1280×720 and
 // 1920×1080, coloured through the default colouring, on 2 threads. Each exact run reports its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SuperIFS textures (issue targets on 2 cores): a converged 2048×2048 steal-mode texture of the
 // paper's Fig. 4 superIFS with V = 3 (≤ 1 s), and each further step of a 1920×1080 texture
 // sequence (≥ 10 steps/s). Every run also checks its result. `--threads N` (before Google

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # ifsfx's measure renderer against flam3's, on the same IFSs (linear variation only), the same
 # size and the same samples per pixel, in the same run: points per CPU-second for each and the
 # ratio. Installs Debian's flam3-utils when missing. Issue 14's target: ratio >= 13 for both IFSs,

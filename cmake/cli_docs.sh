@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: Apache-2.0
 # Writes the man page ifsfx.1 and the bash completion of ifsfx from the built command itself:
 # `ifsfx --help`, then `ifsfx COMMAND --help` for every subcommand that lists (and `ifsfx COMMAND
 # SUBCOMMAND --help` for the subcommands a command lists), and the names

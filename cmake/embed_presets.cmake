@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Writes OUTPUT, a C++ file defining ifsfx::shipped_files() over the text of FILES.
 set(body "")
 foreach(file IN LISTS FILES)

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # What `cmake --install BUILD --prefix P` puts where (the .deb packs the same, cmake/package_deb.cmake):
 #
 #   bin/ifsfx                                   the command (render to PNG itself)   runtime
@@ -5,7 +6,9 @@
 #   share/man/man1/ifsfx.1                      man page, from the real --help texts runtime
 #   share/bash-completion/completions/ifsfx     bash completion, from the same       runtime
 #   share/ifsfx/presets/                        copies of the shipped presets        runtime
-#   share/doc/ifsfx/README.md                                                        runtime
+#   share/doc/ifsfx/README.md, docs/            the README and the pages it links    runtime
+#   share/doc/ifsfx/copyright                   Debian copyright (cmake/debian-copyright) runtime
+#   share/doc/ifsfx-dev/copyright               the same, for the -dev package        dev
 #   include/ifsfx/{ifs,superifs,collage,video}/ public headers (not detail/)         dev
 #   LIBDIR/libifsfx_{ifs,superifs,collage,video}.a                                   dev
 #   LIBDIR/cmake/ifsfx/                         find_package(ifsfx CONFIG)           dev
@@ -58,6 +61,13 @@ install(FILES ${IFSFX_COMPLETION} DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-comp
         RENAME ifsfx)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/presets/ DESTINATION ${CMAKE_INSTALL_DATADIR}/ifsfx/presets)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)
+# Debian wants /usr/share/doc/PACKAGE/copyright in every package: the machine-readable copyright
+# file (format 1.0, Apache-2.0, as LICENSE) goes into both, under each package's name.
+install(FILES ${PROJECT_SOURCE_DIR}/cmake/debian-copyright DESTINATION ${CMAKE_INSTALL_DOCDIR}
+        RENAME copyright)
+install(FILES ${PROJECT_SOURCE_DIR}/cmake/debian-copyright
+        DESTINATION ${CMAKE_INSTALL_DATAROOTDIR}/doc/ifsfx-dev RENAME copyright COMPONENT dev)
 
 # ---- the libraries: headers, archives, CMake package, pkg-config ---------------------------------
 install(TARGETS ${IFSFX_LIBRARIES} EXPORT ifsfxTargets

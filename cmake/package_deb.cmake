@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The Debian packages, made by `cpack -G DEB` in a build tree (tools/build-deb.sh):
 #   ifsfx_<version>_amd64.deb      component runtime: the command, man page, completion, presets
 #   ifsfx-dev_<version>_amd64.deb  component dev: headers, static libraries, CMake package, ifsfx.pc

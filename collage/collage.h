@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The collage W(L) = ∪ f_n(L) of a target L under N affine maps (paper §2, eq. 2–3), its
 // distance to L, and the objective the fitter minimises.
 //

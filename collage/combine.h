@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Putting searched maps together (issue 15): choose N of a pool of candidate maps so that their
 // collage covers L best, then move the maps one at a time. Both work on footprints (collage.h):
 // a combination is scored without mapping L again, and a moved map costs one map's image.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Distances between shapes on one raster: the Hausdorff distance h of the collage theorem
 // (paper eq. 3), the mean (chamfer) distance, and the intersection over union.
 //

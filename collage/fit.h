@@ -1,4 +1,5 @@
-// Collage-theorem fitting (paper §2, eq. 3; DESIGN.md §6): search N affine maps whose collage
+// SPDX-License-Identifier: Apache-2.0
+// Collage-theorem fitting (paper §2, eq. 3; docs/design.md §6): search N affine maps whose collage
 // W(L) = ∪ f_n(L) covers the target L tightly with a small contraction s, then report what the
 // collage theorem promises and what the rendered attractor A actually achieves:
 //   h(L, W(L)) / (1 + s)  ≤  h(L, A)  ≤  h(L, W(L)) / (1 − s).
@@ -132,7 +133,7 @@ struct FitOptions {
 };
 
 struct FitResult {
-  Ifs ifs;               // N maps on the unit square, probabilities ∝ |det| (DESIGN.md §1)
+  Ifs ifs;               // N maps on the unit square, probabilities ∝ |det| (docs/design.md §1)
   CollageReport report;  // of the chosen run
   double objective = 0;  // its collage objective
   long evaluations = 0;  // all runs

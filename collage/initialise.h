@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A deterministic starting IFS for the collage fit: split L into N parts and map L onto each
 // part by the affine map that matches the part's first and second moments (paper §2: the
 // collage W(L) = ∪ f_n(L) should tile L, so each f_n(L) should look like one piece of it).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Derivative-free minimisation for the collage fit: CMA-ES (Hansen's covariance matrix
 // adaptation evolution strategy, (μ/μ_w, λ) with rank-one and rank-μ updates and cumulative
 // step-size adaptation). The collage objective is piecewise constant on the pixel grid and full of

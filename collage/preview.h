@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The picture of a fit (`ifsfx fit --preview`): the target L, the collage W(L) = ∪ f_n(L) and the
 // attractor A side by side, each of the N pieces in its own colour, so that one can see which map
 // makes which part of the shape and where the collage misses or spills (paper §2, eq. 3).
@@ -25,7 +26,7 @@ cv::Vec3b piece_colour(int n);
 // Three panels of S·scale pixels side by side (CV_8UC3, BGR) on the working raster of `target`:
 //   1. L in white;
 //   2. W(L): f_n(L) in piece_colour(n) (a higher n is painted over a lower one);
-//   3. A: each pixel in the colour of the first symbol of its top address (DESIGN.md §2), i.e.
+//   3. A: each pixel in the colour of the first symbol of its top address (docs/design.md §2), i.e.
 //      of the piece f_n(A) on top there.
 // In 2 and 3 the pixels of L left uncovered are dark grey, and those coloured outside L (spill)
 // are dimmed to a third.

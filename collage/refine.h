@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Sub-pixel refinement of a collage by symmetric iterative closest points (ICP). The collage
 // objective is piecewise constant below a pixel, so the evolution strategy leaves each map a
 // fraction of a pixel off — and a thin attractor drifts off its 1-pixel-wide target by exactly

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The range/domain search of fractal image compression (Jacquin 1992; Fisher, "Fractal Image
 // Compression", 1995), turned to shapes: the starting maps of the collage fit (paper §7: the maps
 // "can also be found by fractal image compression methods").

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The shape to fit: a binary mask L taken from an image (paper §2: the target L ∈ H(X) of the
 // collage theorem, eq. 3), and the working raster on which the fitter sees it.
 //

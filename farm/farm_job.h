@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A farm job's batch scripts, their submission, and how the job stands: the Slurm side of
 // `ifsfx farm`. The scripts are written for people to read (and submit by hand with submit.sh).
 #pragma once

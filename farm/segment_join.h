@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The join of a sharded filter run: the segments' video packets concatenated into one movie by
 // stream copy (no re-encoding), with the input's audio copied as a single run copies it.
 #pragma once

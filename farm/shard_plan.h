@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The plan of a farm job: which frames each shard makes, and the folder that holds the job
 // (OUTPUT.farm/: plan.txt, the batch scripts, logs/, segments/, done/, jobs.txt).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The Slurm commands a farm job needs, run as processes: sbatch to submit, squeue and scontrol to
 // ask how jobs stand. Nothing here prints; failures throw ifsfx::Error naming the command.
 #pragma once

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 // Affine maps of the plane, f(x, y) = (a x + b y + e, c x + d y + f): the coefficient order of
-// Barnsley's IFS-code tables and of Fractint's .ifs files (DESIGN.md §1).
+// Barnsley's IFS-code tables and of Fractint's .ifs files (docs/design.md §1).
 #pragma once
 
 #include <array>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cooperative cancellation of long library computations (steal maps, the exact descent, superIFS
 // burn-in, collage fits). The caller owns a stop flag (the command line sets it from SIGINT and
 // SIGTERM); the library polls it between units of work of bounded cost and throws

@@ -1,4 +1,5 @@
-// The chaos game (random iteration, DESIGN.md §1): x_k = f_σk(x_{k-1}), σk drawn with the map
+// SPDX-License-Identifier: Apache-2.0
+// The chaos game (random iteration, docs/design.md §1): x_k = f_σk(x_{k-1}), σk drawn with the map
 // probabilities. Many independent walkers, each with its own burn-in and its own random stream
 // derived from (seed, chunk); chunks are fixed by the work size, never by the thread count, so the
 // same seed gives the same result for any number of threads.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The compacted remap table and its 8-bit kernel. The arithmetic is cv::remap's for 8-bit
 // sources (imgwarp.cpp, remapBilinear with FixedPtCast<int, uchar, 15>): four neighbours weighted
 // by products of 1/32-pixel fractions scaled to 2^15, summed in integers, rounded by +2^14 and

@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: Apache-2.0
 // Kernel levels: the instruction sets the hot kernels of the libraries are compiled for. The
 // libraries are built for baseline x86-64; each kernel also exists in translation units of its
 // own compiled for AVX2 and AVX-512, and the level is chosen once, at run time, from what the CPU
-// reports (DESIGN.md §8). Every level gives the same bytes as the scalar one, which is the
+// reports (docs/design.md §9). Every level gives the same bytes as the scalar one, which is the
 // reference: same operations in the same order, no fused multiply-add.
 //
 // The environment variable IFSFX_CPU=scalar|avx2|avx512 forces a level (for tests, and for users

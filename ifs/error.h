@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one error type of the ifsfx libraries. Libraries never print or exit: they throw an
 // ifsfx::Error, and the command line turns it into one line on stderr and a non-zero exit code.
 //

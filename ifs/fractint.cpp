@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fractint's .ifs format: named entries `NAME { a b c d e f p ... }`, `;` comments to the end of
 // the line, numbers separated by spaces, tabs, commas or newlines. Fractint's a b c d e f are
-// ours: x' = a x + b y + e, y' = c x + d y + f (DESIGN.md §1); its p are weights, drawn from by
-// Fractint's selection rule (fractint_probabilities).
+// ours: x' = a x + b y + e, y' = c x + d y + f (docs/design.md §1); its p are weights, drawn from
+// by Fractint's selection rule (fractint_probabilities).
 #include <algorithm>
 #include <cctype>
 #include <charconv>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The entries of a Fractint .ifs file one by one, for load_ifs: a file whose other entries are
 // (3D) or broken still yields the 2-D entry asked for. Users call parse_fractint (ifs/preset.h).
 #pragma once

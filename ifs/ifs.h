@@ -1,4 +1,5 @@
-// An iterated function system {X; f1..fN; p1..pN} (paper §2, eq. 1–2; DESIGN.md §1).
+// SPDX-License-Identifier: Apache-2.0
+// An iterated function system {X; f1..fN; p1..pN} (paper §2, eq. 1–2; docs/design.md §1).
 #pragma once
 
 #include <optional>
@@ -35,7 +36,7 @@ struct Ifs {
 };
 
 // Probabilities ∝ |det f_n| with a floor, so that a degenerate map (det 0, e.g. the fern's stem)
-// is still visited: p_n = max(|det|, floor · max|det|) normalised (DESIGN.md §1).
+// is still visited: p_n = max(|det|, floor · max|det|) normalised (docs/design.md §1).
 std::vector<double> default_probabilities(const std::vector<AffineMap>& maps, double floor = 0.01);
 
 // The probabilities to iterate with: the given ones normalised to sum 1, or the defaults.

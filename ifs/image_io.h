@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Still images, read and written through OpenImageIO (the light `ifsfx` binary writes its PNG
 // through libpng instead: ifs/detail/image_formats.h says why). Images in the libraries are cv::Mat
 // in OpenCV's channel order (BGR, BGRA, or one grey channel) of depth CV_8U, CV_16U or CV_32F

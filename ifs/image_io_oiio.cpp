@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // OpenImageIO's side of ifs/image_io.h: reading and writing every format
 // (ifs/detail/image_formats.h).
 #include <algorithm>

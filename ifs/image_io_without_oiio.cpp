@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // OpenImageIO's side of ifs/image_io.h for a binary that must not load OpenImageIO: the light
 // `ifsfx`, which writes PNG through libpng (ifs/png_writer.cpp: the pixels and text attributes
 // OpenImageIO would write) and hands every command that reads an image or writes another format

@@ -1,4 +1,5 @@
-// The one output policy (DESIGN.md §8). Every file ifsfx writes — images, steal maps, presets,
+// SPDX-License-Identifier: Apache-2.0
+// The one output policy (docs/design.md §8). Every file ifsfx writes — images, steal maps, presets,
 // movies, image sequences, recordings — goes through an OutputFile:
 //   - an output that is the same file as an input (same device and inode: through symbolic and
 //     hard links, whatever the spelling of the path) is refused before anything is written;

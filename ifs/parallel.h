@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: Apache-2.0
 // The one parallel helper of the libraries: a fixed list of chunks handed out to worker threads.
 // Results must depend only on the chunk index, never on which thread ran it, so that the same
-// seed gives the same pixels for any thread count (STYLE.md rule 5).
+// seed gives the same pixels for any thread count (docs/style.md rule 5).
 #pragma once
 
 #include <cstddef>

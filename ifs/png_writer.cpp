@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // PNG through libpng, for the light `ifsfx` (ifs/detail/image_formats.h). libpng reports errors
 // by longjmp: the one function that calls setjmp (encode) holds no C++ object, everything it uses
 // lives in its caller.

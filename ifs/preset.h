@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // IFS preset files: the native TOML format and Fractint's .ifs format, and finding a preset by
 // name among the shipped ones (embedded in the library at build time) or by path.
 //
@@ -113,8 +114,8 @@ std::vector<PresetSummary> list_presets_in(const std::string& path,
 // naming it, and the parse errors above.
 IfsPreset load_ifs(const std::string& spec, const ValidateOptions& options = {});
 
-// The colouring IFS G for a drawing IFS F (DESIGN.md §3): default_colouring(N) for an empty spec,
-// else the preset `spec` fitted to the unit square. Tilings that contract only over two steps
+// The colouring IFS G for a drawing IFS F (docs/design.md §3): default_colouring(N) for an empty
+// spec, else the preset `spec` fitted to the unit square. Tilings that contract only over two steps
 // (square-tiling-2/3) are accepted; a map count other than F's is refused with Error{invalid_ifs}
 // naming `what`: "colouring: sierpinski-triangle must have as many maps as barnsley-fern (got 3
 // for 4)".

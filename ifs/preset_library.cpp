@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Finding a preset: a shipped name, a path to a .toml or .ifs file, or FILE.ifs:NAME.
 #include <algorithm>
 #include <cctype>

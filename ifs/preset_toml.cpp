@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The native preset format: one IFS per TOML file (the layout is documented in ifs/preset.h).
 #include <cmath>
 #include <filesystem>

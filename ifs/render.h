@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 // Rendering an IFS to an image by the chaos game: the attractor as a set, and its invariant
-// measure (paper Fig. 1 left and centre; DESIGN.md §4).
+// measure (paper Fig. 1 left and centre; docs/design.md §4).
 #pragma once
 
 #include <cstdint>

@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: Apache-2.0
 // Random numbers for the chaos game: small, fast, and splittable, so that every chunk of work
 // draws from its own stream derived from (seed, chunk) and the result never depends on how
-// chunks are spread over threads (STYLE.md rule 5).
+// chunks are spread over threads (docs/style.md rule 5).
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,6 @@
-// apply: colouring an image through a steal map, one cv::remap (DESIGN.md §3: T depends on F, G
-// and the grid only, so a video filter prepares the map once and remaps every frame).
+// SPDX-License-Identifier: Apache-2.0
+// apply: colouring an image through a steal map, one cv::remap (docs/design.md §3: T depends on F,
+// G and the grid only, so a video filter prepares the map once and remaps every frame).
 #include <algorithm>
 
 #include <fmt/format.h>

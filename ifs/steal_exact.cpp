@@ -1,4 +1,5 @@
-// The exact top-address descent (DESIGN.md §3): τ(x) = n · τ(f_n⁻¹(x)) with
+// SPDX-License-Identifier: Apache-2.0
+// The exact top-address descent (docs/design.md §3): τ(x) = n · τ(f_n⁻¹(x)) with
 // n = max{i : f_i⁻¹(x) ∈ A} (the tops rule of eq. 7: the higher map is on top), followed from each
 // pixel centre in double precision through a conservative raster of the attractor A.
 #include <algorithm>

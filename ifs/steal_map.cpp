@@ -1,6 +1,7 @@
-// compute_steal_map: T(x) = π_G(τ_F(x)) per output pixel (paper §4, DESIGN.md §3), by the chaos
-// game (tops with address keys, then G applied to each pixel's winning address) or exactly (the
-// per-pixel descent).
+// SPDX-License-Identifier: Apache-2.0
+// compute_steal_map: T(x) = π_G(τ_F(x)) per output pixel (paper §4, docs/design.md §3), by the
+// chaos game (tops with address keys, then G applied to each pixel's winning address) or exactly
+// (the per-pixel descent).
 #include "ifs/steal_map.h"
 
 #include <algorithm>

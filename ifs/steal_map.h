@@ -1,4 +1,5 @@
-// The steal map of colour stealing (paper §4, Fig. 3; DESIGN.md §3): per output pixel, the
+// SPDX-License-Identifier: Apache-2.0
+// The steal map of colour stealing (paper §4, Fig. 3; docs/design.md §3): per output pixel, the
 // source coordinate T(x) = π_G(τ_F(x)) — the top address of x under the drawing IFS F, followed
 // to a point under the colouring IFS G — and whether the pixel lies on the attractor at all.
 // T depends on F, G and the output grid, never on the source pixels: computed once, it colours
@@ -37,7 +38,7 @@ struct StealMap {
 struct StealMapOptions {
   std::optional<Box> view;  // plane rectangle of F shown; default: F's attractor, auto-framed
   double margin = 0.05;     // auto-framing margin
-  bool exact = false;       // per-pixel descent (DESIGN.md §3) instead of the chaos game
+  bool exact = false;       // per-pixel descent (docs/design.md §3) instead of the chaos game
   double quality = 64;      // chaos game: points per output pixel before the coverage policy
                             // (the exact map's attractor mask uses 4 per pixel plus growth)
   std::uint64_t seed = 1;

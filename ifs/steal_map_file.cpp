@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Steal map files: a map computed once colours many frames (`ifsfx render --save-map`,
 // `ifsfx apply`). Layout, little-endian:
 //   "IFSFXSTM"  8 bytes magic

@@ -1,4 +1,5 @@
-// Colouring IFSs: the default tilings of the unit square (DESIGN.md §3: a good default G tiles
+// SPDX-License-Identifier: Apache-2.0
+// Colouring IFSs: the default tilings of the unit square (docs/design.md §3: a good default G tiles
 // the source rectangle R with N pieces so that every source pixel is reachable), and fitting an
 // arbitrary G onto the unit square.
 #include <cmath>

@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where an animation stands: a step of a sequence (a keyframe of the filter's maps, a texture of a
 // superIFS sequence) and how far it has faded towards the next one. Every animated picture of
-// ifsfx is a pure function of its position (DESIGN.md §8, "Time is an argument"), whichever
+// ifsfx is a pure function of its position (docs/design.md §7, "Time is an argument"), whichever
 // door asks: a frame number (`ifsfx filter`, a farm shard) or a time in seconds (a frei0r host).
 #pragma once
 

@@ -1,4 +1,5 @@
-// Fractal tops (paper §3, eq. 4–9; DESIGN.md §2): the top address of each pixel of an IFS's
+// SPDX-License-Identifier: Apache-2.0
+// Fractal tops (paper §3, eq. 4–9; docs/design.md §2): the top address of each pixel of an IFS's
 // attractor — its largest address, so that where pieces overlap the higher-numbered map is on
 // top — and pictures of it, each pixel coloured by the first (and optionally second) symbol.
 #pragma once
@@ -17,7 +18,7 @@ namespace ifsfx {
 struct TopsOptions {
   std::optional<Box> view;     // plane rectangle shown; default: the attractor, auto-framed
   double margin = 0.05;        // auto-framing margin, fraction of the larger side
-  bool exact = false;          // per-pixel descent (DESIGN.md §3) instead of the chaos game
+  bool exact = false;          // per-pixel descent (docs/design.md §3) instead of the chaos game
   bool second_symbol = false;  // render_tops: mix in the colour of the second symbol
   double quality = 64;         // chaos game: points per output pixel (see StealMapStats)
   std::uint64_t seed = 1;

@@ -1,4 +1,6 @@
-// Fractal tops by the chaos game with a 64-bit address key per walker (DESIGN.md §2, paper eq. 7).
+// SPDX-License-Identifier: Apache-2.0
+// Fractal tops by the chaos game with a 64-bit address key per walker (paper eq. 7;
+// docs/design.md §2).
 #include <algorithm>
 #include <array>
 #include <bit>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Text that goes into metadata, JSON and TOML must be valid UTF-8, whatever the bytes it came
 // from: a Fractint comment from a DOS-era file, a file name from another system.
 #pragma once

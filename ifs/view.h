@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Where the IFS plane meets the pixel grid. The IFS plane has y up; image rows go down. A View is
 // the rectangle of the plane shown on the whole raster (pixel (0,0) is its top-left corner).
 #pragma once

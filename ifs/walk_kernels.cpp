@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The dispatcher of the chaos-game kernels: the table of the level asked for, or of cpu_level().
 #include "ifs/detail/walk_kernels.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The chaos-game kernels on AVX2 (compiled with -march=x86-64-v3 -mno-fma, see ifs/CMakeLists.txt;
 // chosen at run time, ifs/cpu.h): the eight lanes of a chunk as two vectors of four doubles
 // (walk_quads.inl) for IFSs of up to 8 maps; larger ones run walk_scalar, compiled here for this

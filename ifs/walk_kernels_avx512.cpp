@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The chaos-game kernels on AVX-512 (compiled with -march=x86-64-v4 -mno-fma, see
 // ifs/CMakeLists.txt; chosen at run time, ifs/cpu.h): the eight lanes of a chunk in one vector of
 // eight doubles (or, where that pays less, as two vectors of four: walk_quads.inl, see walk()).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The chaos-game kernels at the scalar level: walk_scalar, the reference every other level must
 // match byte for byte, compiled for baseline x86-64 (or whatever processor this is built for).
 #include "ifs/detail/walk_kernels.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "superifs/buffers.h"
 
 #include <algorithm>
@@ -158,7 +159,7 @@ Buffers::Buffers(const SuperIfs& super, cv::Size size, const BufferOptions& opti
   }
   ifs_probabilities_ = effective_probabilities(super_);
   // The lookup reaches the pixel under f⁻¹(x) and `dilation_` more on each side: enough to meet
-  // every pixel the preimage of x's pixel touches, to within half a pixel (DESIGN.md §3).
+  // every pixel the preimage of x's pixel touches, to within half a pixel (docs/design.md §3).
   dilation_ = std::clamp(static_cast<int>(std::ceil(widest - 0.5)), 1, 32);
   for (const AffineMap& a : pixel_inverse_) {
     const AffineMap f = *a.inverse(0);

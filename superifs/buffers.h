@@ -1,4 +1,5 @@
-// The V buffers of a V-variable superfractal (paper §5, eq. 13–14; DESIGN.md §5).
+// SPDX-License-Identifier: Apache-2.0
+// The V buffers of a V-variable superfractal (paper §5, eq. 13–14; docs/design.md §5).
 //
 // One step, for each buffer v: pick n_v ~ P; for each map m pick a source buffer v_m uniformly in
 // 1..V; then K'_v = Top-union over m of f^{n_v}_m(K_{v_m}), painted in increasing m so that the
@@ -7,7 +8,7 @@
 //
 // Rasterised by inverse mapping: pixel x of K'_v is set when, for some m, f_m⁻¹(x) falls in
 // K_{v_m}. The lookup is conservative — into K_{v_m} dilated by about the preimage of a pixel —
-// since a nearest-pixel lookup erodes thin shapes to dust within a few steps (DESIGN.md §3).
+// since a nearest-pixel lookup erodes thin shapes to dust within a few steps (docs/design.md §3).
 // x stays in floating point; the buffers share one plane rectangle (buffer_view()), and a shape
 // cut by its edge is still exact once burnt in, because the union attractor lies inside it.
 //
@@ -121,9 +122,9 @@ class Buffers {
   // The measure μ_v: CV_32FC1 mass per pixel summing to 1 (empty without options.density).
   const cv::Mat& density(std::size_t v) const { return densities_.at(v); }
   // The palette coordinate carried with that mass, ∫ c dμ_v per pixel (CV_32FC1): each step
-  // takes c to (c + c_m) / 2 on the mass map m moves, c_m = m / (M − 1) (DESIGN.md §4, the chaos
-  // game's c_k = (c_{k−1} + c_σk) / 2 in expectation). colour_mass / density is the pixel's mean
-  // coordinate in [0, 1], so the measure can be coloured by map.
+  // takes c to (c + c_m) / 2 on the mass map m moves, c_m = m / (M − 1) (docs/design.md §4, the
+  // chaos game's c_k = (c_{k−1} + c_σk) / 2 in expectation). colour_mass / density is the pixel's
+  // mean coordinate in [0, 1], so the measure can be coloured by map.
   const cv::Mat& colour_mass(std::size_t v) const { return colour_masses_.at(v); }
 
   // The last min(history, steps_done()) levels, oldest first; back() made the current buffers.

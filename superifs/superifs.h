@@ -1,6 +1,7 @@
-// A superIFS (paper §5, eq. 10–11; DESIGN.md §5): N IFSs F^n = {f^n_1..f^n_M; p^n_1..p^n_M}, each
-// of M maps, chosen with probabilities P_1..P_N, and an optional colouring superIFS
-// G^n = {g^n_1..g^n_M} on the source's unit square for colour stealing.
+// SPDX-License-Identifier: Apache-2.0
+// A superIFS (paper §5, eq. 10–11; docs/design.md §5): N IFSs F^n = {f^n_1..f^n_M; p^n_1..p^n_M},
+// each of M maps, chosen with probabilities P_1..P_N, and an optional colouring superIFS G^n =
+// {g^n_1..g^n_M} on the source's unit square for colour stealing.
 #pragma once
 
 #include <optional>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SuperIFS preset files (extension .super.toml), the same TOML family as the IFS presets of
 // ifs/preset.h:
 //

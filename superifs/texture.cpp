@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "superifs/texture.h"
 
 #include <algorithm>
@@ -67,9 +68,9 @@ struct Descent {
     reach = buffers.dilation() + 1;
   }
 
-  // The exact descent (DESIGN.md §3, §5) from the centre of pixel (col, row) of buffer v through
-  // every level, newest first. Writes the symbols, returns how many, and leaves in `z` the point
-  // reached (continuous pixel coordinates of the oldest level's buffers).
+  // The exact descent (docs/design.md §3, §5) from the centre of pixel (col, row) of buffer v
+  // through every level, newest first. Writes the symbols, returns how many, and leaves in `z` the
+  // point reached (continuous pixel coordinates of the oldest level's buffers).
   std::size_t run(std::size_t v, int col, int row, std::vector<Symbol>& word, Point& z) const {
     z = {col + 0.5, row + 0.5};
     std::size_t depth = 0, buf = v;
@@ -160,7 +161,7 @@ cv::Mat render_tops(const Buffers& buffers, std::size_t v) {
 
 // Measure: brightness v = log(1 + k·ρ/mean) / log(1 + k·max/mean), then gamma, mean over the
 // pixels that carry mass; hue the palette ramp at the pixel's mean palette coordinate, so the
-// measure is coloured by map (DESIGN.md §4).
+// measure is coloured by map (docs/design.md §4).
 cv::Mat render_measure(const Buffers& buffers, std::size_t v) {
   if (buffers.density(v).empty())
     throw Error(ErrorKind::invalid_argument,

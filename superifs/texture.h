@@ -1,9 +1,10 @@
+// SPDX-License-Identifier: Apache-2.0
 // Textures from a superIFS (paper §5, Fig. 4–5): a buffer of the V-variable step rendered as a
 // set, as fractal tops, coloured by colour stealing, or as its measure; and texture sequences —
 // every further step a new texture of the same family, optionally crossfaded for animation.
 //
-// Steal coordinates and tops come from an exact descent through the buffers' history (DESIGN.md
-// §3 and §5): from pixel x of buffer v at step k, pick the highest m whose preimage
+// Steal coordinates and tops come from an exact descent through the buffers' history
+// (docs/design.md §3 and §5): from pixel x of buffer v at step k, pick the highest m whose preimage
 // f^{n_v}_m⁻¹(x) lies in buffer v_m one step back, continue there with x ← f⁻¹(x), L times; then
 // T(x) = g^{n_1}_{m_1} ∘ … ∘ g^{n_L}_{m_L}(ρ(x_L)), where ρ maps the buffers' plane rectangle onto
 // the colouring's unit square (the steal coordinates of the starting buffer, the whole

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs what is missing, builds ifsfx for /usr (Release, tools/build.sh deb) and packs it with
 # CPack into build/deb/:
 #   ifsfx_VERSION_ARCH.deb      the command, its man page, bash completion and the presets

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Configures and builds ifsfx: tools/build.sh [release|asan|deb|native]  (default release) →
 # build/<kind>/. deb: what the Debian packages hold (tools/build-deb.sh), installed under /usr,
 # without the tests. native: -march=native, runs only on CPUs like this one (for

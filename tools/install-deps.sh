@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs the Debian 12 packages ifsfx needs to build, test and run, skipping those already there.
 # Run as root (or through sudo). Safe to run again.
 set -euo pipefail

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs what is missing, builds (Release) and runs the main job on built-in defaults: filters a
 # real movie clip (OpenCV's sample footage, Debian package opencv-doc) through a shipped preset,
 # and writes a superfractal still and a few IFS stills. Everything lands in out/.
@@ -24,4 +25,13 @@ $ifsfx texture carpet-lace -V 3 --size 1024x1024 --mode steal \
 $ifsfx render barnsley-fern --mode measure --size 1024x1024 --supersample 2 -o out/fern-measure.png
 $ifsfx render barnsley-fern --mode steal --exact --size 1024x1024 \
   --source /usr/share/doc/opencv-doc/examples/data/baboon.jpg -o out/fern-steal.png
-echo "run-demo: results in out/ (vtest-fern.mp4, paper-fig4*.png, carpet-lace-steal.png, fern-*.png)"
+# The README's pictures (docs/images/): 256 pixels wide, JPEG, into out/readme/; copy them over
+# docs/images/ to refresh the README.
+mkdir -p out/readme
+small() { ffmpeg -nostdin -loglevel error -y ${3:+-ss "$3"} -i "$1" -vf scale=256:-2 -frames:v 1 \
+  -q:v 3 -update 1 "$2"; }  # INPUT OUTPUT [SECONDS]
+small out/fern-steal.png out/readme/fern-steal.jpg
+small out/carpet-lace-steal.png out/readme/carpet-lace-steal.jpg
+small out/vtest-fern.mp4 out/readme/vtest-fern.jpg 40
+echo "run-demo: results in out/ (vtest-fern.mp4, paper-fig4*.png, carpet-lace-steal.png, fern-*.png;"
+echo "          the README's pictures in out/readme/)"

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Fuzzes the file readers for a fixed budget: builds the libFuzzer harnesses of tests/fuzz with
 # clang under AddressSanitizer and UndefinedBehaviorSanitizer in build/fuzz (only the harnesses and
 # the libraries they link), then runs each on a scratch copy of its seeds — tests/fuzz/corpus/

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Installs what is missing, builds, and runs the whole test suite through CTest twice: in a Release
 # build, and in a build with AddressSanitizer and UndefinedBehaviorSanitizer. The V4L2 tests boot a
 # kernel in a software-emulated VM (label `vm`, minutes each), and the install tests install the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Internal to the file sink: copies the audio streams of an input movie, packet for packet and
 // unchanged, into the output being muxed, in step with the video so that the muxer can interleave
 // them. Stream copy keeps the audio bit-exact and costs nothing; done with FFmpeg's libraries in

@@ -1,6 +1,7 @@
+// SPDX-License-Identifier: Apache-2.0
 // Internal helpers shared by the FFmpeg-backed sources and sinks: RAII owners for libav objects
 // and the translation of libav error codes into ifsfx::Error (foreign errors are translated where
-// they enter, STYLE.md rule 4). Not part of the public interface.
+// they enter, docs/style.md rule 4). Not part of the public interface.
 #pragma once
 
 #include <string>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A blocking queue of bounded capacity between two pipeline stages: the producer waits when the
 // consumer falls behind, so memory stays bounded whatever the relative speed of the stages.
 #pragma once

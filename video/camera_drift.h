@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `--animate drift` for a live camera: the maps of a drifting IFS (video/drift.h) built on a worker
 // thread that the live loop never waits for. A file filter may wait for each keyframe (its frames
 // are not going anywhere); a camera's frames are, so here the animation advances as fast as maps

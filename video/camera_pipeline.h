@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The live loop of `ifsfx cam`: newest frame from a live source → filter → sinks, one frame at a
 // time, measuring what a live view is judged by: sustained frame rate, frames dropped, and
 // capture-to-output latency. Single-threaded on purpose: with a newest-frame source, a frame is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A live frame source: a camera, or a paced synthetic pattern standing in for one. Frames are
 // produced in real time whether or not anyone reads them; read() returns the newest one and drops
 // the older ones (low latency beats completeness for a live view), counting what it dropped.

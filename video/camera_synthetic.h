@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A synthetic live source: a moving test pattern "captured" in real time at a fixed rate, for
 // benchmarking and testing the live loop without a camera. Frame k is captured at
 // clock_origin() + k / fps whether or not anyone reads it; read() returns the newest captured

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `--animate drift`: every coefficient of every map wanders smoothly in time, driven by fractal
 // Brownian motion (a sum of octaves of 1-D gradient noise, each half the amplitude and twice the
 // frequency of the one before, each on a lattice of its own phase). Time 0 is the base IFS; after

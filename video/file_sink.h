@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A movie file as a frame sink, encoded and muxed with FFmpeg's libraries, under the output policy
 // (ifs/output_file.h): the movie is written to a fresh temporary file beside the target and
 // renamed over it by close(), so an unfinished movie never takes the output's name. A run that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A movie file as a frame source: any container and codec FFmpeg's libraries read (the backend of
 // OpenCV's videoio), decoded to 8-bit BGR frames in presentation order.
 #pragma once

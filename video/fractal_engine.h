@@ -1,4 +1,5 @@
-// The fractal filter as one object (DESIGN.md §8, "One engine, many doors"): every door —
+// SPDX-License-Identifier: Apache-2.0
+// The fractal filter as one object (docs/design.md §10, "One engine, many doors"): every door —
 // `ifsfx filter`, `ifsfx cam`, the frei0r plugins, a farm's shards — fills in one FractalSettings
 // and asks one FractalEngine for its frames, so a picture made through any door is the picture
 // made through every other one.
@@ -45,7 +46,7 @@ enum class Animate {
 };
 
 struct FractalSettings {
-  // The fractal (DESIGN.md §3): the drawing IFS F and the colouring IFS G.
+  // The fractal (docs/design.md §3): the drawing IFS F and the colouring IFS G.
   std::string preset = "barnsley-fern";  // F: a shipped name, a .toml/.ifs path or FILE.ifs:NAME
   std::string colouring;                 // G: a preset fitted to the unit square; "" = a tiling
   bool exact = true;                     // per-pixel descent (faster); false: the chaos game

@@ -1,7 +1,8 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fractal filter of paper §6 (Fig. 6): colour stealing (§4) with each video frame as the
-// colour source. The steal map T(x) = π_G(τ_F(x)) does not depend on the frame (DESIGN.md §3), so
-// it is computed once and turned here into a remap table in the frame's pixels; each frame is then
-// one remap, plus the optional blend with the original frame.
+// colour source. The steal map T(x) = π_G(τ_F(x)) does not depend on the frame (docs/design.md §3),
+// so it is computed once and turned here into a remap table in the frame's pixels; each frame is
+// then one remap, plus the optional blend with the original frame.
 #pragma once
 
 #include <memory>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Frame sources and sinks: the small interfaces every video input (movie file, image sequence,
 // V4L2 camera) and output (movie file, image sequence, window, V4L2 output device) sits behind.
 #pragma once

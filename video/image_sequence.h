@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Numbered still images as a frame source and sink: "frame_%04d.png" and the like, read and
 // written through OpenImageIO (ifs/image_io.h), so any format it handles can hold the frames.
 #pragma once

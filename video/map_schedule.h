@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The maps of an animated filter (--animate drift, --animate superifs), built ahead of need on a
 // worker thread so that frames keep flowing while the next map is computed.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How a movie's pictures are to be shown: the display matrix a phone writes (ISO BMFF `tkhd`
 // matrix, FFmpeg's AV_PKT_DATA_DISPLAYMATRIX side data) or the older `rotate` tag. FileSource
 // turns every frame upright before the filter sees it, so the fractal is laid over the picture as

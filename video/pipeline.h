@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The video pipeline: decode, filter and encode on three threads joined by bounded queues, so a
 // slow stage sets the pace without the others stalling, and memory stays bounded.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Progress of a long video job, reported by the library through a callback: the library never
 // prints (the command line draws the bar, a GUI could draw its own).
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A V4L2 camera as a frame source, on the kernel API: VIDIOC_QUERYCAP, VIDIOC_ENUM_FMT,
 // VIDIOC_S_FMT, VIDIOC_S_PARM, VIDIOC_REQBUFS, mmap streaming with VIDIOC_QBUF/VIDIOC_DQBUF and
 // VIDIOC_STREAMON/VIDIOC_STREAMOFF. Few buffers and newest-frame-wins for low latency: read()

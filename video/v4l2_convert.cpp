@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "video/v4l2_convert.h"
 
 #include <algorithm>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Pixel formats of V4L2 buffers and their conversions to and from the libraries' 8-bit BGR.
 // Capture side: YUYV, UYVY, NV12, YUV420 (I420), RGB24, BGR24 and MJPEG buffers to BGR, with the
 // driver's row stride (bytesperline) honoured. Output side: BGR to YUYV or YUV420, the formats

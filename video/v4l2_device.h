@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // V4L2 device nodes on the kernel API (linux/videodev2.h): opening one with errno turned into
 // ifsfx::Error, and listing what a device offers (VIDIOC_QUERYCAP, VIDIOC_ENUM_FMT,
 // VIDIOC_ENUM_FRAMESIZES, VIDIOC_ENUM_FRAMEINTERVALS) for `ifsfx cam --list`.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A V4L2 video output device as a frame sink: the kaleidoscope as a webcam for any app, through a
 // v4l2loopback node (`--output /dev/video10`). Frames go out as YUYV or YUV420, the formats
 // browsers and video-call apps accept: with write() where the device takes it (v4l2loopback),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "video/window_sink.h"
 
 #include <cstdlib>

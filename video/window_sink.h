@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A window on the screen as a frame sink (`ifsfx filter --preview`): shows frames at the source's
 // frame rate; closing the window or pressing Esc or q asks the pipeline to stop.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Makes the silhouettes of bench/collage-shapes/ (issue 15): some traced from the photographs and
 // drawings that Debian's opencv-doc package ships, some drawn here by hand, stroke by stroke.
 // Every shape is written as an 8-bit grey PNG, black shape on white, at most 320 pixels a side.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Barnsley's fern coloured by stealing the colours of a photo (paper §4, Fig. 1): the steal map of
 // the fern, with exact top addresses, applied to the photo. The same picture as
 //   ifsfx render barnsley-fern --mode steal --exact --source PHOTO --size WxH -o OUT

@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 // Private to ifs/: per-pixel top addresses on a raster, the common ground of the tops renderer
-// and of both ways of computing a steal map (DESIGN.md §2–3).
+// and of both ways of computing a steal map (docs/design.md §2–3).
 //
 // An address σ1 σ2 σ3 … (most recent map first) is packed into a 64-bit key, σ1 in the top b
 // bits, b = ceil(log2 N): an unsigned compare of two keys is the lexicographic compare of their
@@ -74,12 +75,12 @@ struct ChaosTopsStats {
   int rounds = 0;              // rounds run, the first included
 };
 
-// Fractal tops by the chaos game (DESIGN.md §2): every pixel keeps the largest key of the points
-// that landed in it. Deterministic for a seed, whatever the thread count.
+// Fractal tops by the chaos game (docs/design.md §2): every pixel keeps the largest key of the
+// points that landed in it. Deterministic for a seed, whatever the thread count.
 AddressRaster chaos_tops(const Ifs& F, const Viewport& viewport, const ChaosTopsOptions& options,
                          ChaosTopsStats* stats = nullptr);
 
-// The exact top-address descent (DESIGN.md §3) from every pixel centre of `viewport`.
+// The exact top-address descent (docs/design.md §3) from every pixel centre of `viewport`.
 struct DescentOptions {
   int levels = 2;  // L: symbols followed per pixel
   // Points per mask pixel for the attractor mask before the growth rounds (which add what a low

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A cv::remap table in OpenCV's own fixed point (CV_16SC2 pixel + 1/32-pixel fraction), compacted
 // to the output pixels that read the source: per output row, runs of such pixels, each with its
 // source pixel and bilinear weights. Pixels that read nothing are not stored: they are filled

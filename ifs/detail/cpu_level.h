@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // How IFSFX_CPU is read (ifs/cpu.h), apart from the environment, for the tests.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The image writers behind ifs/image_io.h, for image_io.cpp only. The libraries write every
 // format through OpenImageIO (image_io_oiio.cpp). The light `ifsfx`, which runs `render` to PNG
 // without loading OpenImageIO (its 260 shared libraries cost more start-up than a small render:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The checks the public entry points of one family share, written once (OpenImageIO's IBAprep):
 // every function of the family calls its helper first, so each refuses the same bad input with
 // the same message, naming the library's own parameter ("quality", "threads"), never a

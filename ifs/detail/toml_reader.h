@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reading a preset's TOML tree with one-line errors "FILE:LINE: what": the checks the IFS reader
 // (ifs/preset_toml.cpp) and the superIFS reader (superifs/superifs_file.cpp) share, so that both
 // formats report a misspelt key, a value of the wrong type or a short map row alike.

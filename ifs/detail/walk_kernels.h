@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The chaos-game kernels of the renderers, one table of them per kernel level (ifs/cpu.h): the
 // whole chunk loop of every mode — the walkers and what they plot — compiled once per instruction
 // set, in ifs/walk_kernels_<level>.cpp, each in a namespace of its own (kernel_scalar,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The scalar walker and the plot sinks of every kernel level, included by each
 // ifs/walk_kernels_<level>.cpp INSIDE its own namespace (ifsfx::detail::kernel_<level>), so that
 // every level compiles its own copy with its own instruction set and none is shared with another
@@ -138,11 +139,11 @@ struct TraceSink {
 // that lands on the raster. With Sink::kKeys each lane keeps the address key of its point
 // (ifs/detail/address_raster.h: each step shifts the key right by key_bits and puts the map drawn
 // in the top bits, burn-in included); with Sink::kPalette its palette coordinate
-// c_k = (c_{k−1} + c_σk) / 2 (DESIGN.md §4) in 16-bit fixed point, from 0 at the chunk's start and
-// updated at every step, burn-in and points off the raster included: like the position, it is the
-// walker's own state, so it depends on the lane's own draws only, never on what a worker ran
-// before. Everything the loop reads is copied into locals first, so that the compiler keeps it in
-// registers whatever the sink writes.
+// c_k = (c_{k−1} + c_σk) / 2 (docs/design.md §4) in 16-bit fixed point, from 0 at the chunk's
+// start and updated at every step, burn-in and points off the raster included: like the position,
+// it is the walker's own state, so it depends on the lane's own draws only, never on what a worker
+// ran before. Everything the loop reads is copied into locals first, so that the compiler keeps it
+// in registers whatever the sink writes.
 template <class Sink>
 void walk_scalar(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, Sink& sink) {
   const double *a = w.a, *b = w.b, *c = w.c, *d = w.d, *e = w.e, *f = w.f;

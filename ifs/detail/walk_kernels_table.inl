@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The kernel table of one level, included by ifs/walk_kernels_<level>.cpp inside its namespace
 // after walk_kernels_common.inl and its own walk<Sink>() (see there), with kLevel defined.
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The eight lanes of a chunk as two vectors of four doubles (AVX2 instructions): the walker of the
 // AVX2 level, and of the AVX-512 level for the modes and IFSs where two independent chains of four
 // lanes beat one of eight (walk_kernels_avx512.cpp). Included by those translation units inside

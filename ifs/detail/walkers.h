@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The chaos game of the renderers, baseline side: the fixed split of a point budget into chunks,
 // the seeds of a chunk's lanes, and the tables a WalkSpec points into. The walks themselves are
 // the kernels of walk_kernels.h, chosen per CPU. Private to ifs/.
@@ -29,7 +30,7 @@ inline std::uint64_t chunk_size(std::uint64_t points, std::uint64_t chunk) {
 }
 
 // The tables of one walk — the IFS's maps as structure of arrays, its alias tables (MapPicker),
-// the palette coordinates c_n = n / (N − 1) of its maps in 16-bit fixed point (DESIGN.md §4) —
+// the palette coordinates c_n = n / (N − 1) of its maps in 16-bit fixed point (docs/design.md §4) —
 // and the WalkSpec that points into them, with the viewport's pixel mapping. Not copyable: the
 // spec points into it.
 class WalkTables {

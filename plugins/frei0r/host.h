@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the frei0r plugins need to know about their hosts, and how they talk back to them.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The `ifsfx` frei0r filter: the fractal filter of `ifsfx filter` (paper §6) inside FFmpeg, MLT
 // (melt, Kdenlive, Shotcut) and GStreamer. A thin adapter: the parameters become one
 // video::FractalSettings and every frame goes through one video::FractalEngine, the object

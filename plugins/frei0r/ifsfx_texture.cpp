@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The `ifsfx-texture` frei0r source: a V-variable superfractal texture sequence (paper §5,
 // Fig. 4–5) as a video, the frames of `ifsfx texture --frames` — superifs' TextureSequence does
 // the work; this file only maps parameters and time onto it.

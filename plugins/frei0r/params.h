@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The parameters of a frei0r plugin: one table of names, types, explanations and defaults, and an
 // instance's values, set and read through the frei0r API's untyped pointers. Hosts address a
 // parameter by its position (FFmpeg's "a|b|c") or by its name (melt's name=value, GStreamer's

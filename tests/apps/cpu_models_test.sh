@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The portable ifsfx on other CPUs: run under QEMU's user-mode emulation with a baseline x86-64
 # model (qemu64: SSE2, no AVX) and an AVX2 model (Haswell), it picks the scalar and the AVX2
 # kernels, never dies of an illegal instruction, and renders measure, tops and steal images

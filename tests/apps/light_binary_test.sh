@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The light `ifsfx` (apps/light_dispatch.h): it loads neither OpenImageIO nor the video stack,
 # writes the same PNG pictures and metadata as ifsfx-full, runs render to PNG itself and hands every other
 # command line to ifsfx-full with the same output and exit code.

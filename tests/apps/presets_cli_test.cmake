@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Runs `ifsfx` for one CHECK and fails (message(FATAL_ERROR)) unless the output is the known one.
 #   cmake -DIFSFX=path/to/ifsfx -DCHECK=list|unknown_name|fractint_entry -DWORK=scratch -P this
 file(REMOVE_RECURSE ${WORK})

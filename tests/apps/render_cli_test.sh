@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # End-to-end checks of `ifsfx render` (attractor and measure modes): one CHECK per run.
 #   render_cli_test.sh IFSFX WORKDIR CHECK
 set -euo pipefail

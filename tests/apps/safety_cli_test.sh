@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # End-to-end checks of issue 12 on the real binary: never lose a user's file, never hang, stop on
 # a signal, refuse absurd numbers with one line naming the option. One CHECK per run.
 #   safety_cli_test.sh IFSFX WORKDIR CHECK

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "collage/collage.h"
 
 #include <cmath>
@@ -55,7 +56,7 @@ double reference_collage_distance(const cv::Mat& target, const std::vector<Affin
 
 TEST(collage, filled_triangle_under_sierpinski_maps_is_sqrt3_over_12_away) {
   // W(L) is three half-size triangles; the missing middle triangle's centre is its inradius,
-  // √3/12 of the side, from them (DESIGN.md §6 oracle).
+  // √3/12 of the side, from them (docs/design.md §6 oracle).
   constexpr int size = 128;
   const cv::Mat l = filled_triangle(size);
   const double expected = std::sqrt(3.0) / 12;

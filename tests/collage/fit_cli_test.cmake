@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # One end-to-end check of `ifsfx fit`, chosen by -DCHECK=...; -DIFSFX is the binary, -DWORK a
 # scratch folder. Targets are made with `ifsfx render` so that no image file is needed.
 include(${CMAKE_CURRENT_LIST_DIR}/../common/cli_test.cmake)

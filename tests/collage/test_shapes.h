@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Working rasters and maps with known answers, shared by the collage tests.
 #pragma once
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Helpers of the end-to-end CMake scripts (`cmake -DIFSFX=... -DWORK=... -DCHECK=... -P script`):
 # a fresh scratch folder WORK, and checks of one ifsfx run. Included by tests/*/…_cli_test.cmake.
 file(REMOVE_RECURSE ${WORK})

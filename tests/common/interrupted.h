@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Whether a call ended by a stop request: it threw ifsfx::Error{interrupted} (ifs/cancel.h).
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // IFSs with known answers, built in code so the tests do not depend on preset files.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Byte-for-byte comparison of two images, for the determinism tests: same size, same type and
 // the same bytes in every row (a float image compared this way fails on any last-bit change).
 #pragma once

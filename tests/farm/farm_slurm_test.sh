@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # `ifsfx farm` against a real single-node Slurm (munge + slurmctld + slurmd, started here with this
 # folder's copy of start-local-slurm.sh, at Slurm's default DependencyParameters, and stopped at the
 # end, also on failure). Checks that a sharded run equals one run (FFV1: frames, count, rate, audio

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // What the fuzz harnesses check for one input, shared by the libFuzzer programs (fuzz/*_fuzz.cpp,
 // built by tools/run-fuzz.sh) and by the GoogleTest suites that replay the seed corpus and every
 // input a fuzzer once broke (tests/fuzz/corpus, tests/fuzz/regressions) in the normal builds.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer harness: the native TOML preset reader (tools/run-fuzz.sh).
 #include <cstddef>
 #include <cstdint>

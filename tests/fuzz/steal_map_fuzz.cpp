@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer harness: the steal map file reader, and apply on what it loads (tools/run-fuzz.sh).
 #include <cstddef>
 #include <cstdint>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The superIFS reader's fuzz check (see fuzz_checks.h): a file it reads is valid, and the
 // probabilities of the IFSs are ready for the V-variable step.
 #pragma once

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer harness: the superIFS TOML reader (tools/run-fuzz.sh).
 #include <cstddef>
 #include <cstdint>

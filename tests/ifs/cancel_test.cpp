@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Cooperative cancellation (ifs/cancel.h, issue 12): every long computation of the library
 // honours a stop request with Error{interrupted}.
 #include "ifs/cancel.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The compacted remap against cv::remap itself, the reference: the same bytes for every 8-bit
 // channel count, bilinear and nearest, constant and transparent borders, with pixels on the last
 // column and row, off the source, and in between.

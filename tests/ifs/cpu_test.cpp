@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Kernel levels: what IFSFX_CPU may ask for, and what is refused (apart from the environment).
 #include "ifs/cpu.h"
 

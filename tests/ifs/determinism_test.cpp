@@ -1,4 +1,5 @@
-// Same seed ⇒ same bytes, whatever the thread count (STYLE.md rule 5), in every render mode:
+// SPDX-License-Identifier: Apache-2.0
+// Same seed ⇒ same bytes, whatever the thread count (docs/style.md rule 5), in every render mode:
 // attractor, measure, tops and steal maps, by the chaos game and exactly. IFSs of 2 to 9 maps,
 // sizes and qualities whose point budgets span several chunks of the chaos game (so that with
 // 2 or 3 threads a worker runs more than one chunk, and state a worker carries from one chunk to

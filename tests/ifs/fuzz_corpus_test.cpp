@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fuzz harnesses' checks (tests/fuzz/fuzz_checks.h) on every seed and every input a fuzzer once
 // broke (tests/fuzz/corpus/<reader>, tests/fuzz/regressions/<reader>, the shipped presets), in
 // the normal Release and sanitizer builds: a bug the fuzzers found stays fixed.

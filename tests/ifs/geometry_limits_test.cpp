@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Termination of the computations over IFS geometry (issue 12): absurd IFSs are refused up front
 // or framed in finite, resolvable numbers, and rendered in bounded time.
 #include <cmath>

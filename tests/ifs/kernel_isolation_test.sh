@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The portable binary keeps every instruction beyond baseline x86-64 (SSE2) inside the kernel
 # namespaces that run only after CPUID said yes (ifs/detail/walk_kernels.h): no VEX or EVEX
 # instruction (v-prefixed mnemonics, ymm/zmm/mask registers), no SSE3 to SSE4.2, BMI, LZCNT,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // kernel_levels_check: runs the chaos-game kernels of every level this CPU supports (ifs/cpu.h)
 // on IFSs of 2 to 17 maps, compares every mode's output with the scalar level byte for byte, and
 // prints a hash of each level's outputs and each level's speed on one core. The scalar level's

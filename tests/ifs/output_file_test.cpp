@@ -1,4 +1,5 @@
-// The output policy (DESIGN.md §8): inputs are never outputs, temporaries are fresh and
+// SPDX-License-Identifier: Apache-2.0
+// The output policy (docs/design.md §8): inputs are never outputs, temporaries are fresh and
 // exclusive, the target is replaced only on success, partial results never replace a file.
 #include "ifs/output_file.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // apply: colouring through a steal map by one remap, nearest and bilinear, with a background.
 #include <algorithm>
 

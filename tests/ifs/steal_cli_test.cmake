@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Runs `ifsfx` for one CHECK of the tops/steal command line and fails unless it behaves.
 #   cmake -DIFSFX=path/to/ifsfx -DCHECK=name -DWORK=scratch -P this
 file(REMOVE_RECURSE ${WORK})

@@ -1,4 +1,5 @@
-// The identity oracle (DESIGN.md §3): F = G = a square tiling of the unit square ⇒ T(x) = x ⇒
+// SPDX-License-Identifier: Apache-2.0
+// The identity oracle (docs/design.md §3): F = G = a square tiling of the unit square ⇒ T(x) = x ⇒
 // stealing from a photograph gives the photograph back.
 #include <gtest/gtest.h>
 

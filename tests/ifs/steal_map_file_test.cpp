@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Steal map files: what is saved loads back bit for bit; anything else is refused by name.
 #include <unistd.h>
 

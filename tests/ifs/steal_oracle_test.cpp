@@ -1,4 +1,5 @@
-// The conjugacy and Salem oracles of colour stealing (DESIGN.md §3, issue 3), and bad input.
+// SPDX-License-Identifier: Apache-2.0
+// The conjugacy and Salem oracles of colour stealing (docs/design.md §3, issue 3), and bad input.
 #include <cmath>
 
 #include <gtest/gtest.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // IFSs built in code for the tops and steal map tests, so that they do not depend on presets.
 #pragma once
 

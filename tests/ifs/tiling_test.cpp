@@ -1,5 +1,6 @@
-// The default colouring IFSs tile the unit square (DESIGN.md §3: every source pixel reachable),
-// and fit_to_unit_square puts any attractor on it.
+// SPDX-License-Identifier: Apache-2.0
+// The default colouring IFSs tile the unit square (docs/design.md §3: every source pixel
+// reachable), and fit_to_unit_square puts any attractor on it.
 #include <gtest/gtest.h>
 
 #include "ifs/preset.h"

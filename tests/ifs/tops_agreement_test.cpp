@@ -1,4 +1,5 @@
-// Chaos-game tops against exact tops (DESIGN.md §3: the descent is the test oracle of the
+// SPDX-License-Identifier: Apache-2.0
+// Chaos-game tops against exact tops (docs/design.md §3: the descent is the test oracle of the
 // chaos-game renderer): the same first symbol on ≥ 98 % of the pixels both cover. Pixels that
 // straddle a piece boundary may legitimately differ.
 #include <gtest/gtest.h>

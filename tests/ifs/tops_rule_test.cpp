@@ -1,5 +1,6 @@
-// The tops rule (paper eq. 7, DESIGN.md §2): where pieces overlap, the higher-numbered map is on
-// top. Four maps of factor 0.6 into the corners of the unit square overlap in bands: the first
+// SPDX-License-Identifier: Apache-2.0
+// The tops rule (paper eq. 7, docs/design.md §2): where pieces overlap, the higher-numbered map is
+// on top. Four maps of factor 0.6 into the corners of the unit square overlap in bands: the first
 // symbol of the top address splits the square at 0.4 (the higher maps, right and top, win the
 // bands); with the map order reversed the split moves to 0.6.
 #include <algorithm>

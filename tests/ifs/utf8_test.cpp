@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Metadata text is made valid UTF-8 whatever bytes it came from (issue 12): Latin-1 is read as
 // Latin-1, valid UTF-8 is kept byte for byte.
 #include "ifs/utf8.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every kernel level this CPU runs against the scalar level, byte for byte, in every mode (the
 // points plotted with their maps, keys and palette coordinates; hits; counts; the measure cells;
 // tops of 32 and 64 bits): IFSs of 2 to 9 maps, of the vector kernels' limits (8 and 16 maps) and

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Checks of an installed ifsfx, one CHECK per run:
 #   install_test.sh CHECK SOURCE_DIR BUILD_DIR WORK_DIR BUILT_IFSFX
 # prefix      `cmake --install BUILD_DIR --prefix WORK_DIR/prefix` (the fixture of the next four)
@@ -186,7 +187,8 @@ CPP
     dpkg-deb -c "$dev" | awk '{ print $6 }' >dev-files.txt
     for f in ./usr/bin/ifsfx ./usr/libexec/ifsfx/ifsfx-full ./usr/share/man/man1/ifsfx.1 \
              ./usr/share/bash-completion/completions/ifsfx \
-             ./usr/share/ifsfx/presets/barnsley-fern.toml ./usr/share/doc/ifsfx/README.md; do
+             ./usr/share/ifsfx/presets/barnsley-fern.toml ./usr/share/doc/ifsfx/README.md \
+             ./usr/share/doc/ifsfx/copyright ./usr/share/doc/ifsfx/docs/design.md; do
       grep -qx -- "$f" deb-files.txt || fail "$deb lacks $f"
     done
     # The frei0r plugins (built where frei0r.h is installed) ship with the command.
@@ -202,7 +204,9 @@ CPP
              'pkgconfig/ifsfx\.pc'; do
       grep -q -- "$f\$" dev-files.txt || fail "$dev lacks $f"
     done
-    ! grep -E '^\./usr/(bin|share)/' dev-files.txt || fail "$dev holds the command's files"
+    grep -qx -- ./usr/share/doc/ifsfx-dev/copyright dev-files.txt || fail "$dev lacks its copyright"
+    ! grep -E '^\./usr/(bin|share)/' dev-files.txt | grep -Ev '^\./usr/share/(doc/(ifsfx-dev/.*)?)?$' ||
+      fail "$dev holds the command's files"
     [ "$(dpkg-deb -f "$deb" Package)" = ifsfx ] && [ "$(dpkg-deb -f "$deb" Section)" = graphics ] ||
       fail "fields: $(dpkg-deb -f "$deb")"
     # No maintainer scripts of ours: the control archive holds control and md5sums, and at most

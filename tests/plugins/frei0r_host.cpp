@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A small frei0r host of our own: loads a plugin with dlopen, runs it over raw RGBA frames through
 // the frei0r API alone, and writes the frames it returns — what FFmpeg, MLT and GStreamer do,
 // without them, so that the plugins can run in the sanitizer build and in orders no host offers.

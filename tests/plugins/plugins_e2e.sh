@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # End-to-end tests of the frei0r plugins through the hosts people use them in — FFmpeg, melt (MLT)
 # and gst-launch-1.0 (GStreamer) — and through tests/plugins/frei0r_host (our own host).
 # Usage: plugins_e2e.sh CASE PLUGIN_DIR IFSFX FREI0R_HOST WORKDIR  (registered by CMakeLists.txt)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The V-variable step (eq. 14) against known answers: an IFS alone gives its attractor, pieces
 // are images of previous buffers, at most V distinct sub-shapes, burn-in forgets the start, and
 // threads never change a pixel.
@@ -19,7 +20,7 @@ using testing::paper_fig4;
 using testing::sierpinski_triangle;
 using testing::triangle_corner;
 
-// Slow, plain reference (DESIGN.md §3): the attractor by the deterministic set iteration
+// Slow, plain reference (docs/design.md §3): the attractor by the deterministic set iteration
 // M_{k+1} = ∪ f_m(M_k) from the full raster, a pixel set when the pixel under f_m⁻¹ of its centre
 // meets M_k dilated by r (cv::dilate), iterated until nothing changes.
 cv::Mat reference_attractor(const Ifs& f, const Viewport& vp, int r) {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The superIFS fuzz harness's check on every seed and every input a fuzzer once broke
 // (tests/fuzz/corpus/superifs, tests/fuzz/regressions/superifs, the shipped *.super.toml).
 #include <filesystem>

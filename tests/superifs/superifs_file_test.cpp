@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SuperIFS files: the shipped presets, and bad files rejected with file, line and rule.
 #include "superifs/superifs_file.h"
 

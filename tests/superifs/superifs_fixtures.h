@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // SuperIFSs with known answers for the superifs tests, built in code (no preset files).
 #pragma once
 

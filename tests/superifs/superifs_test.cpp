@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The superIFS model: validation in the manner of validate(Ifs), probabilities, burn-in length.
 #include "superifs/superifs.h"
 

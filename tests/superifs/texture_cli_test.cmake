@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # One end-to-end check of `ifsfx texture`, chosen by -DCHECK=...; -DIFSFX is the binary, -DWORK a
 # scratch folder.
 include(${CMAKE_CURRENT_LIST_DIR}/../common/cli_test.cmake)

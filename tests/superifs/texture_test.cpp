@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Textures: the identity oracle of the steal map through a superIFS, agreement with the IFS core's
 // exact steal map, determinism, sequences and crossfades.
 #include "superifs/texture.h"

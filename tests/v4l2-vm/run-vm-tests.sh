@@ -1,4 +1,5 @@
 #!/bin/bash
+# SPDX-License-Identifier: Apache-2.0
 # run-vm-tests.sh — real V4L2 devices for tests, on a machine whose own kernel has none.
 #
 # Boots Debian 12's stock kernel (extracted from its .deb, never installed) in QEMU, loads the
@@ -37,7 +38,7 @@ while [ $# -gt 0 ]; do
         --cache) CACHE=$2; shift 2 ;;
         --timeout) TIMEOUT=$2; shift 2 ;;
         --) shift; break ;;
-        -h|--help) sed -n '2,25p' "$0"; exit 0 ;;
+        -h|--help) sed -n '3,26p' "$0"; exit 0 ;;
         *) fail "unknown option $1 (usage: $0 [--workdir DIR] [--cache DIR] [--timeout S] -- COMMAND...)" ;;
     esac
 done

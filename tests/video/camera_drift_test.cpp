@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Live drift: the first frame shows the map of time 0, later maps arrive from the worker without
 // the caller ever waiting for them, and a new map fades in rather than cuts.
 #include "video/camera_drift.h"

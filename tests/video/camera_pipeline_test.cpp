@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The live loop of `ifsfx cam` on the host, fed by the synthetic paced camera: frame counts,
 // newest-frame dropping, the stop flag, and the fault path that must keep the recording.
 #include "video/camera_pipeline.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Exact seeking (FrameSource::seek): for random start frames, what a seeked source gives equals a
 // sequential decode byte for byte — index, timestamp and pixels — on clips ffmpeg makes here: H.264
 // with B-frames and an audio track, MPEG-4 part 2 with B-frames, FFV1 at a variable rate, and an

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # End-to-end tests of `ifsfx filter` on real files, checked with ffprobe/ffmpeg as a user would.
 # Usage: filter_e2e.sh CASE IFSFX WORKDIR   (registered with CTest by tests/video/CMakeLists.txt)
 set -euo pipefail

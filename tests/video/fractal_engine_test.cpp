@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "video/fractal_engine.h"
 
 #include <unistd.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Synthetic frames and in-memory sources and sinks shared by the video tests.
 #pragma once
 
@@ -32,7 +33,7 @@ inline cv::Mat test_frame(cv::Size size, std::int64_t index) {
 }
 
 // The identity steal map: every output pixel takes the source at its own centre (what the
-// 4-map tiling as both F and G gives, DESIGN.md §3's oracle).
+// 4-map tiling as both F and G gives, docs/design.md §3's oracle).
 inline StealMap identity_map(cv::Size size) {
   StealMap map;
   map.source_uv.create(size, CV_32FC2);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // V4L2 buffer conversions against OpenCV's own YUV conversions (the reference) — including row
 // padding (bytesperline > width), which OpenCV's calls never see.
 #include "video/v4l2_convert.h"

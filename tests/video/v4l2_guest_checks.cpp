@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks against real kernel V4L2 drivers, run inside the VM of tests/v4l2-vm/run-vm-tests.sh:
 // vivid (a virtual webcam showing 75% colour bars) and v4l2loopback (the virtual webcam that
 // `ifsfx cam --output` feeds). Not part of the host suite: the host kernel has no V4L2.
@@ -361,7 +362,7 @@ TEST_F(VividTest, cam_output_sends_the_filtered_frames_to_the_loopback) {
 
 TEST_F(VividTest, identity_preset_through_the_live_path_returns_the_camera_frames) {
   // F = G = the four quadrant maps of the unit square, shown on the whole frame: T(x) = x
-  // (DESIGN.md §3, identity oracle).
+  // (docs/design.md §3, identity oracle).
   const cv::Size size(320, 180);
   const cv::Mat camera_frame = grab(cap_, size, PixelFormat::yuyv);
   Child cam({ifsfx_, "cam", "--device", cap_, "--size", "320x180", "--output", loop_,
