@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Prints the versions of the programs and libraries the tests run against — the hosts of the
 # plugins, the cluster, the VM, the imaging libraries — with the Debian package each comes from, so
 # that a red run after a Debian point release says at once what moved. Never fails.

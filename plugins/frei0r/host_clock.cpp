@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "plugins/frei0r/host_clock.h"
 
 #include <dlfcn.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The time of each frame, read from a host's clock only where the clock can be trusted.
 //
 // frei0r hands a plugin one number per frame, f0r_update's `time`, and nothing else about the

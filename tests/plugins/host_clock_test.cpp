@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // HostClock: the times hosts really pass (probed in FFmpeg 5.1.9, MLT 7.12, GStreamer 1.22; see
 // plugins_e2e.sh host_times) and the frames a plugin counts when they cannot be used.
 #include "plugins/frei0r/host_clock.h"

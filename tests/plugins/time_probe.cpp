@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // A frei0r filter that only reports its host's clock: each f0r_update prints "time=T" (T as
 // passed, %.17g) on stderr and copies the frame. plugins_e2e.sh host_times runs it in FFmpeg, melt
 // and GStreamer to show what each passes — the facts host_clock.h is built on.
