@@ -72,12 +72,7 @@ PipelineResult run_pipeline(FrameSource& source, FrameSink& sink, const FrameFil
     return options.stop != nullptr && options.stop->load(std::memory_order_relaxed);
   };
 
-  std::int64_t total = -1;
-  if (const std::int64_t count = source.frame_count(); count >= 0) {
-    const std::int64_t end =
-        options.range.last < 0 ? count : std::min(count, options.range.last + 1);
-    total = std::max<std::int64_t>(0, end - options.range.first);
-  }
+  const std::int64_t total = options.range.size_in(source.frame_count());
 
   std::jthread decoder([&] {
     try {
