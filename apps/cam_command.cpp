@@ -72,9 +72,8 @@ void print_formats(const char* direction, const std::vector<video::V4l2Format>& 
       sizes += fmt::format("{}{}x{}{}", sizes.empty() ? "" : (f.stepwise_sizes ? " to " : ", "),
                            s.size.width, s.size.height, rate_list(s.fps, s.stepwise_rates));
     }
-    std::printf("%s\n", fmt::format("  {} {:<4} {}{}{}", direction, video::fourcc_name(f.fourcc),
-                                    f.description, sizes.empty() ? "" : ": ", sizes)
-                            .c_str());
+    fmt::print("  {} {:<4} {}{}{}\n", direction, video::fourcc_name(f.fourcc), f.description,
+               sizes.empty() ? "" : ": ", sizes);
   }
 }
 
@@ -86,13 +85,12 @@ void list_devices() {
   }
   for (const video::V4l2ListEntry& e : devices) {
     if (!e.error.empty()) {
-      std::printf("%s\n", fmt::format("{}: cannot query: {}", e.info.path, e.error).c_str());
+      fmt::print("{}: cannot query: {}\n", e.info.path, e.error);
       continue;
     }
     const video::V4l2DeviceInfo& d = e.info;
-    std::printf("%s\n", fmt::format("{}: {} ({}, {}){}{}", d.path, d.card, d.driver, d.bus,
-                                    d.capture ? ", capture" : "", d.output ? ", output" : "")
-                            .c_str());
+    fmt::print("{}: {} ({}, {}){}{}\n", d.path, d.card, d.driver, d.bus,
+               d.capture ? ", capture" : "", d.output ? ", output" : "");
     print_formats("capture", d.capture_formats);
     print_formats("output ", d.output_formats);
   }
@@ -108,16 +106,9 @@ std::string default_device() {
               "it with --device");
 }
 
-void run_cam(const CamArgs& args) {
-  if (args.list) {
-    list_devices();
-    return;
-  }
-  const cv::Size size = size_option(args.size);
-  const bool window = args.window || (args.output.empty() && args.record.empty());
-  // Fail on a bad output path, pattern or display before the camera is opened and the map
-  // computed (but say "no camera" first when there is none).
-  StopSignals signals;  // from here on, Ctrl-C and SIGTERM end the session
+// Fails on a bad output path, pattern or display before the camera is opened and the map
+// computed (but says "no camera" first when there is none). Returns the device.
+std::string check_cam_args(const CamArgs& args, bool window) {
   video::check_output_name(args.record, "--record");
   if (!args.record.empty()) video::resolve_encoder(args.record, args.codec);
   video::check_filter_options({.mix = args.fractal.settings().mix});  // --view, --background, --mix
@@ -126,61 +117,46 @@ void run_cam(const CamArgs& args) {
   } catch (const Error& e) {
     throw Error(e.kind(), fmt::format("--snapshot: {}", e.what()));
   }
-  const std::string device = args.device.empty() ? default_device() : args.device;
+  std::string device = args.device.empty() ? default_device() : args.device;
   if (window) video::require_display("--window", "run headless with --output or --record");
+  return device;
+}
 
+video::V4l2CaptureOptions capture_options(const CamArgs& args, cv::Size size) {
   video::V4l2CaptureOptions copt;
   copt.size = size;
   copt.fps = args.fps;
   copt.buffers = args.buffers;
   if (!args.format.empty()) copt.formats = {video::parse_pixel_format(args.format, "--format")};
-  video::V4l2Capture camera(device, copt);
-  const cv::Size granted = camera.size();
-  const double fps = camera.fps() > 0 ? camera.fps() : args.fps;
-  if (!args.quiet) {
-    std::fprintf(
-        stderr, "%s\n",
-        fmt::format("cam: {} ({}): {}x{} {} at {:g} fps", device, camera.card(), granted.width,
-                    granted.height, video::fourcc_name(video::fourcc(camera.format())), fps)
-            .c_str());
-  }
+  return copt;
+}
 
-  // The output policy: a recording never replaces an input (the devices, the presets).
+// The output policy: a recording never replaces an input (the devices, the presets).
+OutputOptions cam_output_policy(const CamArgs& args, const std::string& device) {
   OutputOptions output;
   for (const std::string& input :
        {device, args.output, args.fractal.preset, args.fractal.colouring})
     add_preset_input(output.inputs, input);
   if (!args.record.empty()) check_output(args.record, output);
+  return output;
+}
 
-  // The starting map first: a preset that does not load fails before any output is opened.
-  CamRecording recording(args.record.empty() ? "cam-recording.mkv" : args.record,
-                         !args.record.empty(), args.codec, granted, fps, output);
-  Notices notice(args.quiet);
-  CamControls controls({.fractal = &args.fractal,
-                        .fade_frames = args.fade_frames,
-                        .size = granted,
-                        .snapshot = args.snapshot,
-                        .animate = args.animate == Animate::drift},
-                       recording, notice);
+// --output: the virtual webcam, or nothing.
+std::unique_ptr<video::V4l2Output> open_webcam(const CamArgs& args, cv::Size size, double fps) {
+  if (args.output.empty()) return nullptr;
+  return std::make_unique<video::V4l2Output>(
+      args.output, size,
+      video::V4l2OutputOptions{
+          .format = video::parse_pixel_format(args.output_format, "--output-format"), .fps = fps});
+}
 
-  std::vector<FrameSink*> sinks;
-  std::unique_ptr<video::V4l2Output> webcam;
-  if (!args.output.empty()) {
-    webcam = std::make_unique<video::V4l2Output>(
-        args.output, granted,
-        video::V4l2OutputOptions{
-            .format = video::parse_pixel_format(args.output_format, "--output-format"),
-            .fps = fps});
-    sinks.push_back(webcam.get());
-  }
-  if (!args.record.empty()) recording.start();
-  sinks.push_back(&recording);
-
-  std::unique_ptr<CamWindow> win;
-  if (window) win = std::make_unique<CamWindow>();
-  bool quit = false;
-  const auto observer = [&](const Frame& out, const CameraStats& stats) {
-    if (!win) return true;
+// The window's part of each frame: the readout, the keys. Sets `quit` when the window is closed
+// (or q, Esc) and ends the session; without a window, every frame goes on.
+video::CameraObserver window_observer(CamWindow* win, CamControls& controls,
+                                      const CamRecording& recording, const Notices& notice,
+                                      bool& quit) {
+  return [win, &controls, &recording, &notice, &quit](const Frame& out, const CameraStats& stats) {
+    if (win == nullptr) return true;
     controls.poll();
     const LiveFilter& filter = controls.filter();
     const std::string readout =
@@ -194,15 +170,19 @@ void run_cam(const CamArgs& args) {
     controls.key(key, out.image);
     return true;
   };
+}
 
-  std::atomic<bool>& stop = StopSignals::stop_flag();
-  CameraStats stats;
+// The session; a fault ends the recording as a partial movie beside its target (left as it was)
+// and says so.
+CameraStats run_session(video::V4l2Capture& camera, CamControls& controls,
+                        const std::vector<FrameSink*>& sinks, const CamRecording& recording,
+                        const video::CameraLoopOptions& options,
+                        const video::CameraObserver& observer) {
   try {
-    stats = video::run_camera(
-        camera, [&](const Frame& frame) { return controls.filter()(frame); }, sinks,
-        {.max_frames = args.max_frames, .stop = &stop}, observer);
+    return video::run_camera(
+        camera, [&](const Frame& frame) { return controls.filter()(frame); }, sinks, options,
+        observer);
   } catch (const Error& e) {
-    // A fault ends the recording as a partial movie beside its target (left as it was).
     if (!recording.partial().empty()) {
       throw Error(e.kind(), fmt::format("{}; recording kept: {} ({} frames; {} left as it was)",
                                         e.what(), recording.partial().string(), recording.frames(),
@@ -210,25 +190,74 @@ void run_cam(const CamArgs& args) {
     }
     throw;
   }
+}
+
+// The summary (unless --quiet); a session stopped by a signal, not by the window, is an error.
+void report_cam(const CamArgs& args, const CameraStats& stats, const CamControls& controls,
+                const CamRecording& recording, bool stopped) {
   const std::int64_t drift_maps = controls.drift_maps();
   const std::string kept =
       recording.frames() > 0
           ? fmt::format("; recorded {} ({} frames)", recording.path().string(), recording.frames())
           : "";
   if (!args.quiet) {
-    std::fprintf(
-        stderr, "%s\n",
-        fmt::format("cam: {} frames in {:.2f} s ({:.1f} fps), {} dropped ({:.1f}%), "
-                    "latency mean {:.1f} ms, p95 {:.1f} ms{}{}",
-                    stats.frames, stats.seconds, stats.fps(), stats.dropped,
-                    100 * stats.drop_fraction(), 1e3 * stats.latency_mean, 1e3 * stats.latency_p95,
-                    drift_maps > 0 ? fmt::format(", {} drift maps", drift_maps) : "", kept)
-            .c_str());
+    fmt::print(stderr,
+               "cam: {} frames in {:.2f} s ({:.1f} fps), {} dropped ({:.1f}%), latency mean "
+               "{:.1f} ms, p95 {:.1f} ms{}{}\n",
+               stats.frames, stats.seconds, stats.fps(), stats.dropped, 100 * stats.drop_fraction(),
+               1e3 * stats.latency_mean, 1e3 * stats.latency_p95,
+               drift_maps > 0 ? fmt::format(", {} drift maps", drift_maps) : "", kept);
   }
-  if (stop.load() && !quit) {
+  if (stopped) {
     throw Error(ErrorKind::interrupted,
                 fmt::format("cam: interrupted after {} frames{}", stats.frames, kept));
   }
+}
+
+void run_cam(const CamArgs& args) {
+  if (args.list) {
+    list_devices();
+    return;
+  }
+  const cv::Size size = size_option(args.size);
+  const bool window = args.window || (args.output.empty() && args.record.empty());
+  StopSignals signals;  // from here on, Ctrl-C and SIGTERM end the session
+  const std::string device = check_cam_args(args, window);
+
+  video::V4l2Capture camera(device, capture_options(args, size));
+  const cv::Size granted = camera.size();
+  const double fps = camera.fps() > 0 ? camera.fps() : args.fps;
+  if (!args.quiet) {
+    fmt::print(stderr, "cam: {} ({}): {}x{} {} at {:g} fps\n", device, camera.card(), granted.width,
+               granted.height, video::fourcc_name(video::fourcc(camera.format())), fps);
+  }
+  const OutputOptions output = cam_output_policy(args, device);
+
+  // The starting map first: a preset that does not load fails before any output is opened.
+  CamRecording recording(args.record.empty() ? "cam-recording.mkv" : args.record,
+                         !args.record.empty(), args.codec, granted, fps, output);
+  Notices notice(args.quiet);
+  CamControls controls({.fractal = &args.fractal,
+                        .fade_frames = args.fade_frames,
+                        .size = granted,
+                        .snapshot = args.snapshot,
+                        .animate = args.animate == Animate::drift},
+                       recording, notice);
+
+  std::vector<FrameSink*> sinks;
+  const std::unique_ptr<video::V4l2Output> webcam = open_webcam(args, granted, fps);
+  if (webcam) sinks.push_back(webcam.get());
+  if (!args.record.empty()) recording.start();
+  sinks.push_back(&recording);
+
+  std::unique_ptr<CamWindow> win;
+  if (window) win = std::make_unique<CamWindow>();
+  bool quit = false;
+  std::atomic<bool>& stop = StopSignals::stop_flag();
+  const CameraStats stats = run_session(
+      camera, controls, sinks, recording, {.max_frames = args.max_frames, .stop = &stop},
+      window_observer(win.get(), controls, recording, notice, quit));
+  report_cam(args, stats, controls, recording, stop.load() && !quit);
 }
 
 }  // namespace

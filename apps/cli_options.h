@@ -123,8 +123,7 @@ inline std::optional<Box> view_option(const std::string& text, const std::string
 // A library's warnings (IfsPreset::warnings: a Fractint entry accepted because it contracts on
 // average) on stderr, one line each: "ifsfx: warning: ...".
 inline void print_warnings(const std::vector<std::string>& warnings) {
-  for (const std::string& warning : warnings)
-    std::fputs(fmt::format("ifsfx: warning: {}\n", warning).c_str(), stderr);
+  for (const std::string& warning : warnings) fmt::print(stderr, "ifsfx: warning: {}\n", warning);
 }
 
 // load_ifs, and its warnings printed.

@@ -316,7 +316,7 @@ void wait_and_report(const FarmPlan& plan, const farm::Submission& ids) {
           ? (end ? end->state == "COMPLETED" && status.output_written : status.output_written)
           : failed.empty();
   if (ok) {
-    std::printf("%s\n", fmt::format("farm: done -> {}", plan.output).c_str());
+    fmt::print("farm: done -> {}\n", plan.output);
     return;
   }
   if (!failed.empty())
@@ -347,17 +347,13 @@ void submit_and_report(const FarmPlan& plan, const FarmArgs& args, bool with_joi
                        const std::vector<std::size_t>& shards) {
   if (!args.submit) {
     if (args.wait) throw Error(ErrorKind::invalid_argument, "--wait: needs --submit");
-    std::printf("%s\n", fmt::format("farm: {} shards planned in {}; submit with {}/submit.sh or "
-                                    "--submit",
-                                    plan.shards.size(), plan.folder.string(), plan.folder.string())
-                            .c_str());
+    fmt::print("farm: {} shards planned in {}; submit with {}/submit.sh or --submit\n",
+               plan.shards.size(), plan.folder.string(), plan.folder.string());
     return;
   }
   const farm::Submission ids = farm::submit(plan, shards, with_join);
-  std::printf("%s\n",
-              fmt::format("farm: submitted shards {}{}{}", ids.array.empty() ? "(none)" : ids.array,
-                          ids.join.empty() ? "" : ", join ", ids.join)
-                  .c_str());
+  fmt::print("farm: submitted shards {}{}{}\n", ids.array.empty() ? "(none)" : ids.array,
+             ids.join.empty() ? "" : ", join ", ids.join);
   std::fflush(stdout);
   if (args.wait) wait_and_report(plan, ids);
 }
@@ -389,8 +385,7 @@ void run_status(const fs::path& folder) {
         what = "not run";
         break;
     }
-    std::printf("%s\n",
-                fmt::format("shard {} frames {}-{}: {}", i, span.first, span.last, what).c_str());
+    fmt::print("shard {} frames {}-{}: {}\n", i, span.first, span.last, what);
   }
   std::string join;
   if (plan.kind == JobKind::filter)
@@ -399,10 +394,8 @@ void run_status(const fs::path& folder) {
                            ? "PENDING, never to run (`ifsfx farm resume` cancels it)"
                            : status.join_state.value_or("not known to Slurm"),
                        status.output_written ? "written" : "not written");
-  std::printf("%s\n", fmt::format("{} shards: {} done, {} running or pending, {} failed, {} not "
-                                  "run{}",
-                                  status.shards.size(), done, queued, failed, not_run, join)
-                          .c_str());
+  fmt::print("{} shards: {} done, {} running or pending, {} failed, {} not run{}\n",
+             status.shards.size(), done, queued, failed, not_run, join);
 }
 
 void run_resume(const fs::path& folder, const FarmArgs& args) {
@@ -429,9 +422,7 @@ void run_resume(const fs::path& folder, const FarmArgs& args) {
   }
   FarmArgs submit = args;
   submit.submit = true;
-  std::printf("%s\n",
-              fmt::format("farm: resubmitting {} of {} shards", missing.size(), plan.shards.size())
-                  .c_str());
+  fmt::print("farm: resubmitting {} of {} shards\n", missing.size(), plan.shards.size());
   submit_and_report(plan, submit, plan.kind == JobKind::filter, missing);
 }
 
@@ -460,10 +451,8 @@ void run_join(const fs::path& folder) {
     }
   }
   const farm::JoinResult r = farm::join_segments(options);
-  std::printf("%s\n", fmt::format("farm join: {} segments, {} packets, {:.2f} s, {:.1f} MB -> {}",
-                                  options.segments.size(), r.video_packets, r.seconds,
-                                  r.bytes / 1e6, plan.output)
-                          .c_str());
+  fmt::print("farm join: {} segments, {} packets, {:.2f} s, {:.1f} MB -> {}\n",
+             options.segments.size(), r.video_packets, r.seconds, r.bytes / 1e6, plan.output);
 }
 
 }  // namespace

@@ -102,13 +102,9 @@ double finite_or_nan(double x) {
   return std::isfinite(x) ? x : std::numeric_limits<double>::quiet_NaN();
 }
 
-void run_fit(const FitArgs& args) {
-  const std::filesystem::path output = args.output;
-  const PresetFormat format = preset_format(output);
-  // The output policy: neither output replaces the target image, and they differ.
-  StopSignals signals;
-  OutputOptions policy{.cancel = StopSignals::token()};
-  policy.inputs.add(args.target);
+// The outputs under the policy, checked before any work; the number of maps.
+void check_fit_outputs(const FitArgs& args, const std::filesystem::path& output,
+                       const OutputOptions& policy) {
   check_output(output, policy);
   if (!args.preview.empty()) {
     check_writable_image(args.preview, policy);
@@ -120,13 +116,9 @@ void run_fit(const FitArgs& args) {
   if (args.maps < 1 || args.maps > 32)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("-n: the number of maps must be in 1..32 (got {})", args.maps));
+}
 
-  collage::TargetOptions target_options;
-  target_options.threshold = args.threshold;
-  target_options.invert = args.invert;
-  const cv::Mat mask = collage::load_target(args.target, target_options);
-  const cv::Mat raster = collage::working_raster(mask, {.size = working_size(args.size)});
-
+collage::FitOptions fit_options(const FitArgs& args, const CancelToken& cancel) {
   collage::FitOptions options;
   options.maps = args.maps;
   options.seed = args.seed;
@@ -134,41 +126,57 @@ void run_fit(const FitArgs& args) {
   options.max_seconds = args.max_seconds;
   options.max_evaluations = args.max_evaluations;
   options.threads = args.threads;
-  options.cancel = policy.cancel;
+  options.cancel = cancel;
   options.name = valid_utf8(std::filesystem::path(args.target).stem().string());
-  auto last_print = std::chrono::steady_clock::now() - std::chrono::seconds(1);
-  std::optional<collage::FitPhase> last_phase;
-  if (args.progress)
-    options.progress = [&](const collage::FitProgress& p) {
-      // Every change of phase is shown; within a phase, five lines a second at most.
-      const auto now = std::chrono::steady_clock::now();
-      if (p.phase == last_phase && now - last_print < std::chrono::milliseconds(200)) return;
-      last_print = now;
-      last_phase = p.phase;
-      const auto number = [](double x, int digits) {
-        return std::isfinite(x) && x > 0 ? fmt::format("{:.{}f}", x, digits) : std::string("-");
-      };
-      std::fputs(fmt::format("\r{:<9}  run {:>3}  evaluations {:>8}  objective {:>7}  "
-                             "best IoU {:>5}  {:.1f} s ",
-                             to_string(p.phase), p.run + 1, p.evaluations, number(p.best, 5),
-                             number(p.best_iou, 3), p.seconds)
-                     .c_str(),
-                 stderr);
-    };
-  const collage::FitResult result = [&] {
-    try {
-      return collage::fit(raster, options);
-    } catch (...) {
-      if (args.progress) std::fputs("\n", stderr);  // the error goes on a line of its own
-      throw;
-    }
-  }();
-  if (args.progress) std::fputs("\n", stderr);
-  const collage::CollageReport& r = result.report;
+  return options;
+}
 
+// --progress: one line on stderr, redrawn in place. Every change of phase is shown; within a
+// phase, five lines a second at most.
+class FitProgressLine {
+ public:
+  void operator()(const collage::FitProgress& p) {
+    const auto now = std::chrono::steady_clock::now();
+    if (p.phase == last_phase_ && now - last_print_ < std::chrono::milliseconds(200)) return;
+    last_print_ = now;
+    last_phase_ = p.phase;
+    const auto number = [](double x, int digits) {
+      return std::isfinite(x) && x > 0 ? fmt::format("{:.{}f}", x, digits) : std::string("-");
+    };
+    fmt::print(stderr,
+               "\r{:<9}  run {:>3}  evaluations {:>8}  objective {:>7}  best IoU {:>5}  {:.1f} s ",
+               to_string(p.phase), p.run + 1, p.evaluations, number(p.best, 5),
+               number(p.best_iou, 3), p.seconds);
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_print_ =
+      std::chrono::steady_clock::now() - std::chrono::seconds(1);
+  std::optional<collage::FitPhase> last_phase_;
+};
+
+// The fit, with the progress line (if any) ended before the result or the error is printed.
+collage::FitResult fit_with_progress(const cv::Mat& raster, collage::FitOptions options,
+                                     bool progress) {
+  FitProgressLine line;
+  if (progress) options.progress = [&line](const collage::FitProgress& p) { line(p); };
+  try {
+    collage::FitResult result = collage::fit(raster, options);
+    if (progress) std::fputs("\n", stderr);
+    return result;
+  } catch (...) {
+    if (progress) std::fputs("\n", stderr);  // the error goes on a line of its own
+    throw;
+  }
+}
+
+// The preset and its preview appear together or not at all (a stop during the preview).
+void write_fit_outputs(const FitArgs& args, const std::filesystem::path& output,
+                       PresetFormat format, const OutputOptions& policy, const cv::Mat& raster,
+                       const collage::FitResult& result) {
+  const collage::CollageReport& r = result.report;
   const std::string summary = fmt::format("fitted by ifsfx fit to {}: IoU {:.3f}, s {:.3f}",
                                           args.target, r.iou, r.contraction);
-  // The preset and its preview appear together or not at all (a stop during the preview).
   std::vector<OutputFile> staged;
   staged.emplace_back(output, policy);
   write_file(staged.back(), format == PresetFormat::toml ? to_toml(result.ifs, summary)
@@ -180,75 +188,99 @@ void run_fit(const FitArgs& args) {
                                      {.quality = 256, .seed = args.seed, .threads = args.threads}));
   }
   commit_together(staged);
+}
 
-  const bool holds = r.bound_holds();
-  if (args.json) {
-    nlohmann::json maps = nlohmann::json::array();
-    for (const auto& m : result.ifs.maps) maps.push_back(m.coefficients());
-    nlohmann::json parts = nlohmann::json::array();
-    for (const auto& part : r.parts)
-      parts.push_back({{"area", part.area},
-                       {"centre", {part.centre.x, part.centre.y}},
-                       {"covered", part.covered}});
-    const nlohmann::json report = {
-        {"target", valid_utf8(args.target)},
-        {"output", valid_utf8(args.output)},
-        {"maps", args.maps},
-        {"size", raster.cols},
-        {"seed", args.seed},
-        {"runs", result.runs},
-        {"evaluations", result.evaluations},
-        {"seconds", result.seconds},
-        {"time_capped", result.time_capped},
-        {"collage_distance", r.collage_distance},
-        {"contraction", r.contraction},
-        {"lower_bound", r.lower_bound},
-        {"upper_bound", finite_or_nan(r.upper_bound)},
-        {"hausdorff", finite_or_nan(r.hausdorff)},
-        {"raster_error", r.raster_error},
-        {"bound_holds", holds},
-        {"iou", r.iou},
-        {"collage_iou", r.collage_iou},
-        {"pixel", r.pixel},
-        {"clipped", r.clipped},
-        {"init", args.init == collage::Initialisation::moments ? "moments" : "search"},
-        {"parts", parts},
-        {"ifs",
-         {{"name", result.ifs.name}, {"maps", maps}, {"probabilities", result.ifs.probabilities}}},
-    };
-    std::printf("%s\n",
-                report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
-    return;
-  }
+void print_json_report(const FitArgs& args, const cv::Mat& raster,
+                       const collage::FitResult& result) {
+  const collage::CollageReport& r = result.report;
+  nlohmann::json maps = nlohmann::json::array();
+  for (const auto& m : result.ifs.maps) maps.push_back(m.coefficients());
+  nlohmann::json parts = nlohmann::json::array();
+  for (const auto& part : r.parts)
+    parts.push_back({{"area", part.area},
+                     {"centre", {part.centre.x, part.centre.y}},
+                     {"covered", part.covered}});
+  const nlohmann::json report = {
+      {"target", valid_utf8(args.target)},
+      {"output", valid_utf8(args.output)},
+      {"maps", args.maps},
+      {"size", raster.cols},
+      {"seed", args.seed},
+      {"runs", result.runs},
+      {"evaluations", result.evaluations},
+      {"seconds", result.seconds},
+      {"time_capped", result.time_capped},
+      {"collage_distance", r.collage_distance},
+      {"contraction", r.contraction},
+      {"lower_bound", r.lower_bound},
+      {"upper_bound", finite_or_nan(r.upper_bound)},
+      {"hausdorff", finite_or_nan(r.hausdorff)},
+      {"raster_error", r.raster_error},
+      {"bound_holds", r.bound_holds()},
+      {"iou", r.iou},
+      {"collage_iou", r.collage_iou},
+      {"pixel", r.pixel},
+      {"clipped", r.clipped},
+      {"init", args.init == collage::Initialisation::moments ? "moments" : "search"},
+      {"parts", parts},
+      {"ifs",
+       {{"name", result.ifs.name}, {"maps", maps}, {"probabilities", result.ifs.probabilities}}},
+  };
+  std::printf("%s\n", report.dump(2, ' ', false, nlohmann::json::error_handler_t::replace).c_str());
+}
+
+void print_text_report(const FitArgs& args, const cv::Mat& raster,
+                       const collage::FitResult& result) {
+  const collage::CollageReport& r = result.report;
   const double px = 1 / r.pixel;
-  std::printf(
-      "%s", fmt::format(
-                "{} -> {}: {} maps on a {}x{} working raster; {} runs, {} evaluations, {:.1f} s{}\n"
-                "  distances in units of the working square's side (1 pixel = {:.4f})\n"
-                "  collage distance h(L, W(L))   {:.4f}  ({:.1f} px)\n"
-                "  contraction s                 {:.4f}\n"
-                "  collage theorem               {:.4f} <= h(L, A) <= {:.4f}\n"
-                "  measured h(L, A)              {:.4f}  ({:.1f} px, +-{:.1f} px raster){}\n"
-                "  IoU(L, A)                     {:.3f}  (collage IoU(L, W(L)) {:.3f})\n",
-                args.target, args.output, args.maps, raster.cols, raster.rows, result.runs,
-                result.evaluations, result.seconds,
-                result.time_capped ? " (stopped by --max-seconds)" : "", r.pixel,
-                r.collage_distance, r.collage_distance * px, r.contraction, r.lower_bound,
-                r.upper_bound, r.hausdorff, r.hausdorff * px, r.raster_error * px,
-                holds ? "" : "  ABOVE THE BOUND: please report this as a bug", r.iou, r.collage_iou)
-                .c_str());
+  fmt::print(
+      "{} -> {}: {} maps on a {}x{} working raster; {} runs, {} evaluations, {:.1f} s{}\n"
+      "  distances in units of the working square's side (1 pixel = {:.4f})\n"
+      "  collage distance h(L, W(L))   {:.4f}  ({:.1f} px)\n"
+      "  contraction s                 {:.4f}\n"
+      "  collage theorem               {:.4f} <= h(L, A) <= {:.4f}\n"
+      "  measured h(L, A)              {:.4f}  ({:.1f} px, +-{:.1f} px raster){}\n"
+      "  IoU(L, A)                     {:.3f}  (collage IoU(L, W(L)) {:.3f})\n",
+      args.target, args.output, args.maps, raster.cols, raster.rows, result.runs,
+      result.evaluations, result.seconds, result.time_capped ? " (stopped by --max-seconds)" : "",
+      r.pixel, r.collage_distance, r.collage_distance * px, r.contraction, r.lower_bound,
+      r.upper_bound, r.hausdorff, r.hausdorff * px, r.raster_error * px,
+      r.bound_holds() ? "" : "  ABOVE THE BOUND: please report this as a bug", r.iou,
+      r.collage_iou);
   // Components of L the attractor leaves (mostly) out: too small for a map of their own, and
   // not reached by a neighbour's.
   for (const auto& part : r.parts)
     if (part.covered < 0.5)
-      std::printf("%s", fmt::format("  part not covered: {} px around ({:.3f}, {:.3f}), {:.0f}% "
-                                    "of it in A\n",
-                                    part.area, part.centre.x, part.centre.y, 100 * part.covered)
-                            .c_str());
+      fmt::print("  part not covered: {} px around ({:.3f}, {:.3f}), {:.0f}% of it in A\n",
+                 part.area, part.centre.x, part.centre.y, 100 * part.covered);
   if (r.clipped)
     std::printf(
         "  note: the attractor reaches beyond the measuring canvas; h(L, A) is a lower "
         "estimate\n");
+}
+
+void run_fit(const FitArgs& args) {
+  const std::filesystem::path output = args.output;
+  const PresetFormat format = preset_format(output);
+  // The output policy: neither output replaces the target image, and they differ.
+  StopSignals signals;
+  OutputOptions policy{.cancel = StopSignals::token()};
+  policy.inputs.add(args.target);
+  check_fit_outputs(args, output, policy);
+
+  collage::TargetOptions target_options;
+  target_options.threshold = args.threshold;
+  target_options.invert = args.invert;
+  const cv::Mat mask = collage::load_target(args.target, target_options);
+  const cv::Mat raster = collage::working_raster(mask, {.size = working_size(args.size)});
+
+  const collage::FitResult result =
+      fit_with_progress(raster, fit_options(args, policy.cancel), args.progress);
+  write_fit_outputs(args, output, format, policy, raster, result);
+  if (args.json)
+    print_json_report(args, raster, result);
+  else
+    print_text_report(args, raster, result);
 }
 
 }  // namespace

@@ -164,10 +164,8 @@ void run_render(const RenderArgs& args) {
           ? fmt::format("{:.1f} M points in {:.3f} s ({:.0f} Mpts/s)", stats.points / 1e6,
                         stats.seconds, stats.points / 1e6 / std::max(stats.seconds, 1e-9))
           : fmt::format("{} in {:.3f} s", args.exact ? "exact descent" : "rendered", stats.seconds);
-  std::printf("%s\n", fmt::format("{} ({}, {}x{}): {}, coverage {:.1f}% -> {}", preset.ifs.name,
-                                  mode_name(args.mode), size.width, size.height, work,
-                                  100 * stats.coverage, args.output)
-                          .c_str());
+  fmt::print("{} ({}, {}x{}): {}, coverage {:.1f}% -> {}\n", preset.ifs.name, mode_name(args.mode),
+             size.width, size.height, work, 100 * stats.coverage, args.output);
 }
 
 }  // namespace

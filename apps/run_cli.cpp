@@ -42,13 +42,13 @@ int run_cli(CLI::App& app, int argc, char** argv) {
     std::fputs(e.what(), stdout);
     return 0;
   } catch (const CLI::ParseError& e) {
-    std::fputs(fmt::format("ifsfx: {}\n", e.what()).c_str(), stderr);
+    fmt::print(stderr, "ifsfx: {}\n", e.what());
     return 2;
   } catch (const Error& e) {
-    std::fputs(fmt::format("ifsfx: {}\n", with_flag_names(e.what())).c_str(), stderr);
+    fmt::print(stderr, "ifsfx: {}\n", with_flag_names(e.what()));
     return exit_code(e.kind());
   } catch (const std::exception& e) {
-    std::fputs(fmt::format("ifsfx: internal error: {}\n", e.what()).c_str(), stderr);
+    fmt::print(stderr, "ifsfx: internal error: {}\n", e.what());
     return 1;
   }
   return 0;

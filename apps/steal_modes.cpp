@@ -147,16 +147,13 @@ cv::Mat steal_image(const Ifs& F, cv::Size size, const RenderOptions& options,
                                  {.background = background_scalar(args.background, source.depth()),
                                   .threads = options.threads});
   if (!args.quiet)
-    std::printf(
-        "%s\n",
-        fmt::format("steal map{}: {} levels; {:.2f}% of pixels on the attractor{}",
-                    args.exact ? " (exact)" : " (chaos game)", ss.levels, 100 * ss.coverage,
-                    args.exact ? std::string()
-                               : fmt::format(" ({:.2f}% hit by points, {} reached by "
-                                             "Hutchinson passes, {} filled from "
-                                             "neighbours, {} rounds)",
-                                             100 * ss.hit, ss.propagated, ss.filled, ss.rounds))
-            .c_str());
+    fmt::print("steal map{}: {} levels; {:.2f}% of pixels on the attractor{}\n",
+               args.exact ? " (exact)" : " (chaos game)", ss.levels, 100 * ss.coverage,
+               args.exact ? std::string()
+                          : fmt::format(" ({:.2f}% hit by points, {} reached by "
+                                        "Hutchinson passes, {} filled from "
+                                        "neighbours, {} rounds)",
+                                        100 * ss.hit, ss.propagated, ss.filled, ss.rounds));
   if (stats) {
     stats->points = ss.points;
     stats->seconds = ss.seconds;

@@ -98,12 +98,9 @@ void run_texture(const TextureArgs& args) {
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!args.quiet)
-    std::printf("%s\n",
-                fmt::format("{} ({}, V = {}, {}x{}): {} steps, {} frame{} in {:.3f} s -> {}", name,
-                            to_string(args.mode), args.count, size.width, size.height,
-                            textures.steps_done(), args.frames, args.frames == 1 ? "" : "s",
-                            seconds, args.output)
-                    .c_str());
+    fmt::print("{} ({}, V = {}, {}x{}): {} steps, {} frame{} in {:.3f} s -> {}\n", name,
+               to_string(args.mode), args.count, size.width, size.height, textures.steps_done(),
+               args.frames, args.frames == 1 ? "" : "s", seconds, args.output);
 }
 
 }  // namespace

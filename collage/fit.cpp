@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
@@ -394,22 +395,42 @@ std::vector<AffineMap> kicked(const std::vector<AffineMap>& best, const Pool& po
 // pixel for the factors and distances of a fit.
 constexpr int kPolishIterations = 5;
 
-// The search initialisation's stages and their shares of the budget (time and evaluations
-// alike): the pool of searched maps (search_pool: at most a quarter of the time), runs that
-// choose N maps from the pool and descend one map at a time (to 45%), CMA-ES and ICP on all maps
-// at once (to 50%), and a descent on the attractor's picture W^k(L) (the rest).
-void fit_from_search(Fitting& fitting) {
+// The start of run `run` of the greedy choice (run 0) and the next-best ones: each addition drawn
+// among the best few. Nothing when that choice was tried before.
+std::optional<std::vector<AffineMap>> chosen_start(Fitting& fitting, const Pool& pool, int run,
+                                                   Clock::time_point deadline,
+                                                   std::vector<std::vector<std::size_t>>& tried) {
+  const FitOptions& options = fitting.options;
+  fitting.report(FitPhase::search, run, fitting.best_objective);
+  SelectOptions select;
+  select.spread = run == 0 ? 0 : 2;
+  select.seed = stream_seed(options.seed, static_cast<std::uint64_t>(run));
+  select.deadline = deadline;
+  select.cancel = options.cancel;
+  auto chosen = select_maps(fitting.objective, pool.footprints, options.maps, select);
+  std::sort(chosen.begin(), chosen.end());
+  if (std::find(tried.begin(), tried.end(), chosen) != tried.end()) return std::nullopt;
+  tried.push_back(chosen);
+  std::vector<AffineMap> start;
+  for (std::size_t i : chosen) start.push_back(pool.maps[i]);
+  return start;
+}
+
+// The best maps of the runs that choose N maps from the pool and descend one map at a time, and
+// the number of runs.
+struct Runs {
+  std::vector<AffineMap> best;
+  int run = 0;
+};
+
+// Runs until 45% of the budget: the greedy choice first, then the next-best ones (up to
+// options.restarts), then kicks of the best maps so far, each descended map by map.
+Runs choose_and_descend(Fitting& fitting, const Pool& pool, DescentOptions& descent) {
   const FitOptions& options = fitting.options;
   Budget& budget = fitting.budget;
-  const CollageObjective& objective = fitting.objective;
-  const Pool pool = search_pool(fitting, coarse_raster(fitting.target), objective);
   std::vector<std::vector<std::size_t>> tried;
-  std::vector<AffineMap> best;
+  Runs runs;
   double best_value = std::numeric_limits<double>::infinity();
-  DescentOptions descent;
-  descent.threads = options.threads;
-  descent.cancel = options.cancel;
-  descent.deadline = budget.at(0.45);
   int run = 0;
   for (;; ++run) {
     // The first run always happens, so that a fit has an answer however small its budget.
@@ -418,53 +439,61 @@ void fit_from_search(Fitting& fitting) {
       break;
     std::vector<AffineMap> start;
     if (run <= options.restarts) {
-      // The greedy choice first, then the next-best ones: each addition drawn among the best few.
-      fitting.report(FitPhase::search, run, fitting.best_objective);
-      SelectOptions select;
-      select.spread = run == 0 ? 0 : 2;
-      select.seed = stream_seed(options.seed, static_cast<std::uint64_t>(run));
-      select.deadline = descent.deadline;
-      select.cancel = options.cancel;
-      auto chosen = select_maps(objective, pool.footprints, options.maps, select);
-      std::sort(chosen.begin(), chosen.end());
-      if (std::find(tried.begin(), tried.end(), chosen) != tried.end()) continue;
-      tried.push_back(chosen);
-      for (std::size_t i : chosen) start.push_back(pool.maps[i]);
+      auto chosen = chosen_start(fitting, pool, run, descent.deadline, tried);
+      if (!chosen) continue;
+      start = std::move(*chosen);
     } else {
-      start = kicked(best, pool, options.seed, run);
+      start = kicked(runs.best, pool, options.seed, run);
     }
     fitting.report(FitPhase::refine, run, fitting.best_objective);
     // A move costs one map's image: N of them make one evaluation.
     descent.max_evaluations =
         std::max(12L, (budget.evaluations_at(0.45) - budget.evaluations) * options.maps);
-    const DescentResult descended = descend_each_map(objective, start, descent);
+    const DescentResult descended = descend_each_map(fitting.objective, start, descent);
     budget.evaluations += descended.evaluations / options.maps;
     fitting.best_objective = std::min(fitting.best_objective, descended.value);
     // Render only what may beat the best attractor: objective and IoU go together closely.
     if (descended.value < 1.05 * best_value) fitting.chooser.consider(descended.maps);
     if (descended.value < best_value) {
       best_value = descended.value;
-      best = descended.maps;
+      runs.best = descended.maps;
     }
     fitting.report(FitPhase::refine, run, descended.value);
   }
-  if (best.empty()) return;  // not even one run: the budget is spent
+  runs.run = run;
+  return runs;
+}
 
-  // All maps at once: CMA-ES on the collage objective, then ICP (each kept only if its
-  // attractor is better).
-  if (!budget.expired())
-    fitting.refine(run, best, 0.005, std::max(2L, budget.evaluations_at(0.5) - budget.evaluations),
-                   budget.at(0.5));
+// A move maps W^k(L) again: k evaluations. Sweep by sweep, so that the progress goes on; a sweep
+// that moves no map ends it, as the next one would repeat it exactly.
+DescentResult polish_sweeps(Fitting& fitting, std::vector<AffineMap> start, DescentOptions& polish,
+                            int sweeps, int run) {
+  Budget& budget = fitting.budget;
+  DescentResult polished{std::move(start)};
+  for (int sweep = 0; sweep < sweeps; ++sweep) {
+    polish.max_evaluations = std::max(12L, budget.evaluations_left() / kPolishIterations);
+    DescentResult step = descend_each_map(fitting.objective, polished.maps, polish);
+    budget.evaluations += step.evaluations * kPolishIterations;
+    const bool moved = step.maps != polished.maps;
+    polished = std::move(step);
+    fitting.report(FitPhase::refine, run, fitting.best_objective);
+    if (!moved || polished.deadline_reached || budget.evaluations_left() < 2) break;
+  }
+  return polished;
+}
 
-  // The attractor itself: descend on 1 − IoU(L, W^k(L)) from the best attractor so far; while
-  // time is left, kick the polished maps (as above), descend on the collage and polish again,
-  // going on from whichever polish was best.
+// The attractor itself: descend on 1 − IoU(L, W^k(L)) from the best attractor so far; while
+// time is left, kick the polished maps (as the runs do), descend on the collage and polish
+// again, going on from whichever polish was best. Runs are counted on from `run`.
+void polish_attractor(Fitting& fitting, const Pool& pool, DescentOptions& descent, int run) {
+  const FitOptions& options = fitting.options;
+  Budget& budget = fitting.budget;
   DescentOptions polish = descent;
   polish.iterations = kPolishIterations;
   polish.linear_step = 0.01;
   polish.pixel_step = 0.5;
   polish.halvings = 3;
-  polish.sweeps = 1;  // one at a time, below
+  polish.sweeps = 1;  // one at a time, in polish_sweeps
   polish.deadline = budget.at(1.0, 2 * fitting.chooser.reserve());
   descent.deadline = polish.deadline;
   std::vector<AffineMap> current = fitting.chooser.result.ifs.maps;
@@ -476,23 +505,13 @@ void fit_from_search(Fitting& fitting) {
     if (kick > 0) {
       descent.max_evaluations = std::max(12L, budget.evaluations_left() * options.maps);
       const DescentResult moved =
-          descend_each_map(objective, kicked(current, pool, options.seed, run), descent);
+          descend_each_map(fitting.objective, kicked(current, pool, options.seed, run), descent);
       budget.evaluations += moved.evaluations / options.maps;
       start = moved.maps;
     }
-    // A move maps W^k(L) again: k evaluations. Sweep by sweep (8 for the first polish, 2 after
-    // a kick), so that the progress goes on; a sweep that moves no map ends it, as the next one
-    // would repeat it exactly.
-    DescentResult polished{start};
-    for (int sweep = 0; sweep < (kick == 0 ? 8 : 2); ++sweep) {
-      polish.max_evaluations = std::max(12L, budget.evaluations_left() / kPolishIterations);
-      DescentResult step = descend_each_map(objective, polished.maps, polish);
-      budget.evaluations += step.evaluations * kPolishIterations;
-      const bool moved = step.maps != polished.maps;
-      polished = std::move(step);
-      fitting.report(FitPhase::refine, run, fitting.best_objective);
-      if (!moved || polished.deadline_reached || budget.evaluations_left() < 2) break;
-    }
+    // 8 sweeps for the first polish, 2 after a kick.
+    const DescentResult polished =
+        polish_sweeps(fitting, std::move(start), polish, kick == 0 ? 8 : 2, run);
     if (polished.value < current_value) {
       current_value = polished.value;
       current = polished.maps;
@@ -501,6 +520,29 @@ void fit_from_search(Fitting& fitting) {
   }
   fitting.chooser.result.runs = run;
   if (Clock::now() >= polish.deadline) budget.capped = true;
+}
+
+// The search initialisation's stages and their shares of the budget (time and evaluations
+// alike): the pool of searched maps (search_pool: at most a quarter of the time), runs that
+// choose N maps from the pool and descend one map at a time (to 45%), CMA-ES and ICP on all maps
+// at once (to 50%), and a descent on the attractor's picture W^k(L) (the rest).
+void fit_from_search(Fitting& fitting) {
+  const FitOptions& options = fitting.options;
+  Budget& budget = fitting.budget;
+  const Pool pool = search_pool(fitting, coarse_raster(fitting.target), fitting.objective);
+  DescentOptions descent;
+  descent.threads = options.threads;
+  descent.cancel = options.cancel;
+  descent.deadline = budget.at(0.45);
+  const Runs runs = choose_and_descend(fitting, pool, descent);
+  if (runs.best.empty()) return;  // not even one run: the budget is spent
+
+  // All maps at once: CMA-ES on the collage objective, then ICP (each kept only if its
+  // attractor is better).
+  if (!budget.expired())
+    fitting.refine(runs.run, runs.best, 0.005,
+                   std::max(2L, budget.evaluations_at(0.5) - budget.evaluations), budget.at(0.5));
+  polish_attractor(fitting, pool, descent, runs.run);
 }
 
 }  // namespace

@@ -142,13 +142,17 @@ struct Scored {
   int angle = 0, i = 0, j = 0;  // grid indices, for keeping coarse winners apart
 };
 
-// The best distinct maps for one piece.
-std::vector<Candidate> search_piece(const PieceScorer& scorer, Point mu_l, Point mu_p,
-                                    double area_ratio, int size, const SearchOptions& o) {
-  const AffineMap to_pixel = plane_to_pixel(size);
-  const AffineMap to_plane = *to_pixel.inverse();
+constexpr double kHalfLog2 = 0.5 * std::numbers::ln2;
+
+bool by_score(const Scored& a, const Scored& b) {
+  return a.score < b.score;
+}
+
+// Every pose of the coarse grid (angles, reflections, scales within a factor 4 of the piece's
+// area, shears) that contracts enough, scored coarsely, best first.
+std::vector<Scored> coarse_grid(const PieceScorer& scorer, Point mu_l, Point mu_p,
+                                double area_ratio, const SearchOptions& o) {
   // Pixel coordinates flip y; a map's contraction and |det| are the same in both frames.
-  const double half_log2 = 0.5 * std::numbers::ln2;
   const double log_a = 0.5 * std::log(area_ratio);
   std::vector<Scored> coarse;
   for (int t = 0; t < o.angles; ++t) {
@@ -162,8 +166,8 @@ std::vector<Candidate> search_piece(const PieceScorer& scorer, Point mu_l, Point
           for (int k = 0; k < o.shears; ++k) {
             Scored c;
             c.pose = {theta,
-                      log_a + i * half_log2,
-                      log_a + j * half_log2,
+                      log_a + i * kHalfLog2,
+                      log_a + j * kHalfLog2,
                       o.shears > 1 ? -0.5 + static_cast<double>(k) / (o.shears - 1) : 0.0,
                       0,
                       0,
@@ -176,11 +180,13 @@ std::vector<Candidate> search_piece(const PieceScorer& scorer, Point mu_l, Point
           }
         }
   }
-  std::stable_sort(coarse.begin(), coarse.end(),
-                   [](const Scored& a, const Scored& b) { return a.score < b.score; });
+  std::stable_sort(coarse.begin(), coarse.end(), by_score);
+  return coarse;
+}
 
-  // Coarse winners, kept apart: no two with the same reflection within one grid step of angle
-  // and scales.
+// Coarse winners, kept apart: no two with the same reflection within one grid step of angle
+// and scales.
+std::vector<Scored> winners_apart(const std::vector<Scored>& coarse, const SearchOptions& o) {
   std::vector<Scored> winners;
   for (const auto& c : coarse) {
     if (std::ssize(winners) >= o.polished) break;
@@ -191,12 +197,17 @@ std::vector<Candidate> search_piece(const PieceScorer& scorer, Point mu_l, Point
     });
     if (!near) winners.push_back(c);
   }
+  return winners;
+}
 
-  // Compass search from each winner over (θ, ln sx, ln sy, k, tx, ty), on the smooth score.
+// Compass search from each winner over (θ, ln sx, ln sy, k, tx, ty), on the smooth score; best
+// first after.
+void polish_winners(const PieceScorer& scorer, Point mu_l, Point mu_p, const SearchOptions& o,
+                    std::vector<Scored>& winners) {
   const double angle_step = std::numbers::pi / std::max(o.angles, 1);
   for (auto& w : winners) {
     if (std::chrono::steady_clock::now() >= o.deadline) break;  // the rest keep coarse scores
-    std::array<double, 6> step = {angle_step, half_log2 / 2, half_log2 / 2, 0.125, 1.0, 1.0};
+    std::array<double, 6> step = {angle_step, kHalfLog2 / 2, kHalfLog2 / 2, 0.125, 1.0, 1.0};
     w.score = scorer(w.pose.map(mu_l, mu_p), false);
     for (int halvings = 0, evaluations = 0; halvings < 5 && evaluations < 240;) {
       o.cancel.check("fit");
@@ -224,8 +235,16 @@ std::vector<Candidate> search_piece(const PieceScorer& scorer, Point mu_l, Point
       }
     }
   }
-  std::stable_sort(winners.begin(), winners.end(),
-                   [](const Scored& a, const Scored& b) { return a.score < b.score; });
+  std::stable_sort(winners.begin(), winners.end(), by_score);
+}
+
+// The best distinct maps for one piece.
+std::vector<Candidate> search_piece(const PieceScorer& scorer, Point mu_l, Point mu_p,
+                                    double area_ratio, int size, const SearchOptions& o) {
+  const AffineMap to_pixel = plane_to_pixel(size);
+  const AffineMap to_plane = *to_pixel.inverse();
+  std::vector<Scored> winners = winners_apart(coarse_grid(scorer, mu_l, mu_p, area_ratio, o), o);
+  polish_winners(scorer, mu_l, mu_p, o, winners);
 
   // Distinct maps: polishing may bring two winners to the same place.
   std::vector<Candidate> kept;

@@ -59,33 +59,26 @@ Viewport mask_viewport(const Box& bounds, const Viewport& out) {
   return vp;
 }
 
-}  // namespace
+// The attractor as a raster on the mask grid `mvp`: the pixels that chaos-game points reached,
+// holes closed by the coverage policy. A pixel is set when it meets A, so the raster is already a
+// conservative cover of A (the design's warning about erosion is for raster warps iterated with
+// nearest lookups, which this is not). Dilating it further would let a higher map take points
+// whose preimage lies up to a pixel outside A and shift every piece boundary by that much: the
+// identity oracle sees it at once.
+cv::Mat attractor_raster(const Ifs& F, const Viewport& mvp, const DescentOptions& options,
+                         ChaosTopsStats* mask_stats) {
+  return chaos_tops(F, mvp,
+                    {.quality = options.quality,
+                     .seed = options.seed,
+                     .threads = options.threads,
+                     .key_bits = 64,  // full keys: the Hutchinson passes need precise points
+                     .cancel = options.cancel},
+                    mask_stats)
+      .coverage();
+}
 
-Descent exact_descent(const Ifs& F, const Ifs* G, const Viewport& viewport,
-                      const DescentOptions& options, ChaosTopsStats* mask_stats) {
-  const int n_maps = static_cast<int>(F.size());
-  const int levels = std::clamp(options.levels, 1, kMaxLevels);
-
-  // 1. The attractor as a raster: the pixels that chaos-game points reached, holes closed by
-  //    the coverage policy. A pixel is set when it meets A, so the raster is already a
-  //    conservative cover of A (the design's warning about erosion is for raster warps iterated
-  //    with nearest lookups, which this is not). Dilating it further would let a higher map take
-  //    points whose preimage lies up to a pixel outside A and shift every piece boundary by that
-  //    much: the identity oracle sees it at once.
-  const Viewport mvp = mask_viewport(attractor_bounds(F, options.seed, options.cancel), viewport);
-  const cv::Mat attractor =
-      chaos_tops(F, mvp,
-                 {.quality = options.quality,
-                  .seed = options.seed,
-                  .threads = options.threads,
-                  .key_bits = 64,  // full keys: the Hutchinson passes need precise points
-                  .cancel = options.cancel},
-                 mask_stats)
-          .coverage();
-  const cv::Mat& lookup = attractor;
-
-  // 2. The maps in mask pixel coordinates: h_n = P ∘ f_n⁻¹ ∘ P⁻¹.
-  const AffineMap to_mask = mvp.plane_to_pixel();
+// The maps in mask pixel coordinates: h_n = P ∘ f_n⁻¹ ∘ P⁻¹.
+std::vector<Preimage> mask_preimages(const Ifs& F, const AffineMap& to_mask) {
   const AffineMap from_mask = *to_mask.inverse(0);
   std::vector<Preimage> pre(F.size());
   for (std::size_t n = 0; n < F.size(); ++n) {
@@ -97,19 +90,39 @@ Descent exact_descent(const Ifs& F, const Ifs* G, const Viewport& viewport,
       pre[n].forward = f;
     }
   }
+  return pre;
+}
 
+// What the descent of each pixel reads: the attractor's raster on its mask grid, and F's maps
+// seen from the mask's pixel coordinates.
+struct Mask {
+  Viewport viewport;
+  cv::Mat attractor;
+  AffineMap to_mask;  // plane to mask pixel
+  std::vector<Preimage> pre;
+};
+
+// An output of `viewport`'s size with no pixel covered yet (and T's raster when G is given).
+Descent empty_descent(const Ifs& F, const Ifs* G, const Viewport& viewport) {
   Descent out;
   out.tops.viewport = viewport;
   out.tops.bits = symbol_bits(F.size());
   out.tops.keys.assign(static_cast<std::size_t>(viewport.size.area()), 0);
   if (G) out.uv = cv::Mat(viewport.size, CV_32FC2, cv::Scalar::all(0));
+  return out;
+}
+
+// The top address of each pixel centre of `viewport` (and T(x) with G), by bands of rows.
+void descend_pixels(const Ifs* G, const Mask& mask, const Viewport& viewport, int levels,
+                    const DescentOptions& options, Descent& out) {
+  const int n_maps = static_cast<int>(mask.pre.size());
+  const cv::Mat& attractor = mask.attractor;
+  const cv::Mat& lookup = attractor;
+  const std::vector<Preimage>& pre = mask.pre;
   const int key_symbols = std::min(levels, out.tops.symbols());
   const int bits = out.tops.bits;
-  const int mw = mvp.size.width, mh = mvp.size.height;
-  const double fw = mw, fh = mh;
-  const AffineMap pixel_to_plane_out = *viewport.plane_to_pixel().inverse(0);
-  const AffineMap out_to_mask = to_mask.compose(pixel_to_plane_out);
-
+  const double fw = mask.viewport.size.width, fh = mask.viewport.size.height;
+  const AffineMap out_to_mask = mask.to_mask.compose(*viewport.plane_to_pixel().inverse(0));
   auto in_lookup = [&](Point p) {
     if (!(p.x >= 0 && p.x < fw && p.y >= 0 && p.y < fh)) return false;
     return lookup.at<std::uint8_t>(static_cast<int>(p.y), static_cast<int>(p.x)) != 0;
@@ -183,6 +196,23 @@ Descent exact_descent(const Ifs& F, const Ifs* G, const Viewport& viewport,
       }
     }
   });
+}
+
+}  // namespace
+
+Descent exact_descent(const Ifs& F, const Ifs* G, const Viewport& viewport,
+                      const DescentOptions& options, ChaosTopsStats* mask_stats) {
+  const int levels = std::clamp(options.levels, 1, kMaxLevels);
+  // 1. The attractor as a raster (a conservative cover of A).
+  Mask mask;
+  mask.viewport = mask_viewport(attractor_bounds(F, options.seed, options.cancel), viewport);
+  mask.attractor = attractor_raster(F, mask.viewport, options, mask_stats);
+  // 2. The maps in mask pixel coordinates.
+  mask.to_mask = mask.viewport.plane_to_pixel();
+  mask.pre = mask_preimages(F, mask.to_mask);
+  // 3. The descent from each pixel centre.
+  Descent out = empty_descent(F, G, viewport);
+  descend_pixels(G, mask, viewport, levels, options, out);
   return out;
 }
 

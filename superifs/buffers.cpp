@@ -240,29 +240,59 @@ StepChoices Buffers::draw_choices() const {
   return c;
 }
 
+// What a step makes: K'_v and, with densities, μ'_v and the colour masses, from the smoothed μ_v
+// and colour masses it reads.
+struct Buffers::Next {
+  std::vector<cv::Mat> masks;
+  std::vector<cv::Mat> smooth, smooth_colour, density, colour;
+};
+
 void Buffers::step() {
   const StepChoices choices = draw_choices();
-  const std::size_t v_count = masks_.size(), m_count = super_.maps();
+  const std::size_t v_count = masks_.size();
   const cv::Size size = viewport_.size;
-  const int bands = band_count(size);
-  std::vector<cv::Mat> next(v_count);
-  for (auto& k : next) k.create(size, CV_8UC1);
-  std::vector<cv::Mat> smooth, smooth_colour, next_density, next_colour;
+  Next next;
+  next.masks.resize(v_count);
+  for (auto& k : next.masks) k.create(size, CV_8UC1);
   if (options_.density) {
-    for (auto* mats : {&smooth, &smooth_colour, &next_density, &next_colour}) {
+    for (auto* mats : {&next.smooth, &next.smooth_colour, &next.density, &next.colour}) {
       mats->resize(v_count);
       for (cv::Mat& m : *mats) m.create(size, CV_32FC1);
     }
-    parallel_for(
-        v_count * static_cast<std::size_t>(bands), options_.threads, [&](std::size_t chunk, int) {
-          options_.cancel.check("superIFS step");
-          const std::size_t v = chunk / static_cast<std::size_t>(bands);
-          const int row0 = static_cast<int>(chunk % static_cast<std::size_t>(bands)) * band_rows;
-          const int row1 = std::min(size.height, row0 + band_rows);
-          box_rows(densities_[v], dilation_, row0, row1, smooth[v]);
-          box_rows(colour_masses_[v], dilation_, row0, row1, smooth_colour[v]);
-        });
+    smooth_densities(next);
   }
+  paint_next(choices, next);
+  take_next(choices, next);
+}
+
+// The densities and colour masses averaged over the dilation's window, by bands of rows.
+void Buffers::smooth_densities(Next& next) const {
+  const std::size_t v_count = masks_.size();
+  const cv::Size size = viewport_.size;
+  const int bands = band_count(size);
+  std::vector<cv::Mat>& smooth = next.smooth;
+  std::vector<cv::Mat>& smooth_colour = next.smooth_colour;
+  parallel_for(
+      v_count * static_cast<std::size_t>(bands), options_.threads, [&](std::size_t chunk, int) {
+        options_.cancel.check("superIFS step");
+        const std::size_t v = chunk / static_cast<std::size_t>(bands);
+        const int row0 = static_cast<int>(chunk % static_cast<std::size_t>(bands)) * band_rows;
+        const int row1 = std::min(size.height, row0 + band_rows);
+        box_rows(densities_[v], dilation_, row0, row1, smooth[v]);
+        box_rows(colour_masses_[v], dilation_, row0, row1, smooth_colour[v]);
+      });
+}
+
+// K'_v (and μ'_v with the colour masses) from the buffers the choices draw on, by bands of rows.
+void Buffers::paint_next(const StepChoices& choices, Next& buffers) const {
+  const std::size_t v_count = masks_.size(), m_count = super_.maps();
+  const cv::Size size = viewport_.size;
+  const int bands = band_count(size);
+  std::vector<cv::Mat>& next = buffers.masks;
+  const std::vector<cv::Mat>& smooth = buffers.smooth;
+  const std::vector<cv::Mat>& smooth_colour = buffers.smooth_colour;
+  std::vector<cv::Mat>& next_density = buffers.density;
+  std::vector<cv::Mat>& next_colour = buffers.colour;
   // c_m of map m: its place on the palette.
   std::vector<double> map_coordinate(m_count, 0.0);
   for (std::size_t m = 0; m < m_count && m_count > 1; ++m)
@@ -322,6 +352,14 @@ void Buffers::step() {
           }
         }
       });
+}
+
+// The new buffers become the current ones; the step is counted (and kept in the history).
+void Buffers::take_next(const StepChoices& choices, Next& buffers) {
+  const std::size_t v_count = masks_.size();
+  std::vector<cv::Mat>& next = buffers.masks;
+  std::vector<cv::Mat>& next_density = buffers.density;
+  std::vector<cv::Mat>& next_colour = buffers.colour;
   if (options_.density) {
     for (std::size_t v = 0; v < v_count; ++v) {
       // Mass that left the rectangle is put back by normalising: μ_v stays a probability.

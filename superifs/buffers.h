@@ -145,8 +145,12 @@ class Buffers {
   int dilation() const { return dilation_; }
 
  private:
+  struct Next;  // the buffers a step makes (buffers.cpp)
   StepChoices draw_choices() const;
   void dilate_current();
+  void smooth_densities(Next& next) const;
+  void paint_next(const StepChoices& choices, Next& next) const;
+  void take_next(const StepChoices& choices, Next& next);
 
   SuperIfs super_;
   BufferOptions options_;

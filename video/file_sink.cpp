@@ -282,6 +282,68 @@ struct FileSink::Impl {
     check_av(avio_closep(&format->pb), ErrorKind::io, what(), "cannot finish the file");
     format.reset();
   }
+
+  // The encoder for `options` in `container`, opened: its size, clock, rate and pixel format.
+  void open_encoder(const FileSinkOptions& options, const AVOutputFormat* container,
+                    const AVCodec* encoder) {
+    codec.reset(avcodec_alloc_context3(encoder));
+    AVCodecContext* c = codec.get();
+    c->width = options.size.width;
+    c->height = options.size.height;
+    timing = timing_for(path, container, encoder, options.timing);
+    rate = supported_rate(encoder, options.frame_rate);
+    c->time_base = timing == FrameTiming::constant
+                       ? AVRational{rate.den, rate.num}
+                       : keep_time_base(encoder, options.time_base, rate);
+    c->framerate = AVRational{rate.num, rate.den};
+    c->sample_aspect_ratio = AVRational{1, 1};
+    c->pix_fmt = pick_pixel_format(encoder);
+    if (const cv::Size fit = encodable_size(path, options.codec, options.size);
+        fit != options.size) {
+      const cv::Size block = chroma_block(c->pix_fmt);
+      throw Error(
+          ErrorKind::invalid_argument,
+          fmt::format("{}: {} in {} needs a width that is a multiple of {} and a height that "
+                      "is a multiple of {} (got {}x{}; {}x{} would do)",
+                      what(), encoder->name, av_get_pix_fmt_name(c->pix_fmt), block.width,
+                      block.height, c->width, c->height, fit.width, fit.height));
+    }
+    if (c->pix_fmt == AV_PIX_FMT_YUVJ420P) c->color_range = AVCOL_RANGE_JPEG;
+    c->thread_count = detail::codec_threads(options.threads);
+    if (encoder->id == AV_CODEC_ID_MPEG4) {
+      c->flags |= AV_CODEC_FLAG_QSCALE;
+      c->global_quality = 3 * FF_QP2LAMBDA;
+    }
+    if (container->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
+    check_av(
+        avcodec_open2(c, encoder, nullptr), ErrorKind::unsupported, what(),
+        fmt::format("cannot open the {} encoder at {}x{}", encoder->name, c->width, c->height));
+  }
+
+  // The video stream, with the encoder's clock, rate and parameters.
+  void add_video_stream() {
+    stream = avformat_new_stream(format.get(), nullptr);
+    if (stream == nullptr) throw Error(ErrorKind::io, fmt::format("{}: out of memory", what()));
+    stream->time_base = codec->time_base;
+    stream->avg_frame_rate = codec->framerate;
+    stream->r_frame_rate = codec->framerate;
+    check_av(avcodec_parameters_from_context(stream->codecpar, codec.get()), ErrorKind::io, what(),
+             "cannot set the stream parameters");
+  }
+
+  // The frame the encoder takes, and the conversion from BGR into it.
+  void prepare_conversion() {
+    const AVCodecContext* c = codec.get();
+    frame->format = c->pix_fmt;
+    frame->width = c->width;
+    frame->height = c->height;
+    check_av(av_frame_get_buffer(frame.get(), 0), ErrorKind::io, what(), "out of memory");
+    sws.reset(sws_getContext(c->width, c->height, AV_PIX_FMT_BGR24, c->width, c->height, c->pix_fmt,
+                             SWS_BICUBIC, nullptr, nullptr, nullptr));
+    if (!sws)
+      throw Error(ErrorKind::unsupported, fmt::format("{}: cannot convert BGR to {}", what(),
+                                                      av_get_pix_fmt_name(c->pix_fmt)));
+  }
 };
 
 FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& options)
@@ -309,43 +371,8 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
   if (std::string_view(container->name) == "avi")
     raw->avoid_negative_ts = AVFMT_AVOID_NEG_TS_DISABLED;
 
-  s.codec.reset(avcodec_alloc_context3(encoder));
-  AVCodecContext* c = s.codec.get();
-  c->width = options.size.width;
-  c->height = options.size.height;
-  s.timing = timing_for(path, container, encoder, options.timing);
-  s.rate = supported_rate(encoder, options.frame_rate);
-  c->time_base = s.timing == FrameTiming::constant
-                     ? AVRational{s.rate.den, s.rate.num}
-                     : keep_time_base(encoder, options.time_base, s.rate);
-  c->framerate = AVRational{s.rate.num, s.rate.den};
-  c->sample_aspect_ratio = AVRational{1, 1};
-  c->pix_fmt = pick_pixel_format(encoder);
-  if (const cv::Size fit = encodable_size(path, options.codec, options.size); fit != options.size) {
-    const cv::Size block = chroma_block(c->pix_fmt);
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("{}: {} in {} needs a width that is a multiple of {} and a height that "
-                            "is a multiple of {} (got {}x{}; {}x{} would do)",
-                            s.what(), encoder->name, av_get_pix_fmt_name(c->pix_fmt), block.width,
-                            block.height, c->width, c->height, fit.width, fit.height));
-  }
-  if (c->pix_fmt == AV_PIX_FMT_YUVJ420P) c->color_range = AVCOL_RANGE_JPEG;
-  c->thread_count = detail::codec_threads(options.threads);
-  if (encoder->id == AV_CODEC_ID_MPEG4) {
-    c->flags |= AV_CODEC_FLAG_QSCALE;
-    c->global_quality = 3 * FF_QP2LAMBDA;
-  }
-  if (container->flags & AVFMT_GLOBALHEADER) c->flags |= AV_CODEC_FLAG_GLOBAL_HEADER;
-  check_av(avcodec_open2(c, encoder, nullptr), ErrorKind::unsupported, s.what(),
-           fmt::format("cannot open the {} encoder at {}x{}", encoder->name, c->width, c->height));
-
-  s.stream = avformat_new_stream(raw, nullptr);
-  if (s.stream == nullptr) throw Error(ErrorKind::io, fmt::format("{}: out of memory", s.what()));
-  s.stream->time_base = c->time_base;
-  s.stream->avg_frame_rate = c->framerate;
-  s.stream->r_frame_rate = c->framerate;
-  check_av(avcodec_parameters_from_context(s.stream->codecpar, c), ErrorKind::io, s.what(),
-           "cannot set the stream parameters");
+  s.open_encoder(options, container, encoder);
+  s.add_video_stream();
 
   if (options.audio_from) {
     s.audio = std::make_unique<detail::AudioCopy>(*options.audio_from, raw, s.what());
@@ -354,15 +381,7 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
   s.audio_origin = options.audio_origin;
   s.source_clock = options.source_clock;
 
-  s.frame->format = c->pix_fmt;
-  s.frame->width = c->width;
-  s.frame->height = c->height;
-  check_av(av_frame_get_buffer(s.frame.get(), 0), ErrorKind::io, s.what(), "out of memory");
-  s.sws.reset(sws_getContext(c->width, c->height, AV_PIX_FMT_BGR24, c->width, c->height, c->pix_fmt,
-                             SWS_BICUBIC, nullptr, nullptr, nullptr));
-  if (!s.sws)
-    throw Error(ErrorKind::unsupported, fmt::format("{}: cannot convert BGR to {}", s.what(),
-                                                    av_get_pix_fmt_name(c->pix_fmt)));
+  s.prepare_conversion();
   // Open the temporary file last: every check that can fail without touching the disk is done.
   s.out.emplace(path, options.output);
   try {

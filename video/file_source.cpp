@@ -412,4 +412,9 @@ const std::filesystem::path& FileSource::path() const {
   return impl_->path;
 }
 
+std::optional<AudioTrack> FileSource::audio() const {
+  if (!has_audio()) return std::nullopt;
+  return AudioTrack{.file = path(), .origin = start_time()};
+}
+
 }  // namespace ifsfx::video

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "video/frame_io.h"
 #include "video/orientation.h"
@@ -53,6 +54,9 @@ class FileSource final : public FrameSource {
   // The container's frame count (or duration × rate); -1 when it says neither.
   std::int64_t frame_count() const override;
   std::string name() const override;
+  std::vector<std::filesystem::path> files() const override { return {path()}; }
+  // The file's own sound track, from start_time(), when it has one.
+  std::optional<AudioTrack> audio() const override;
 
   // The nominal frame rate as ffmpeg guesses it (av_guess_frame_rate: the stream's base rate, so
   // a clip with dropped frames keeps its 30/1, not its average); 25/1 when the file gives none.

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -43,6 +44,13 @@ struct Frame {
   Rational time_base{0, 1};
 };
 
+// A sound track that goes with a source's frames: the file that holds it, and the time on that
+// file's clock that Frame::timestamp 0 stands for.
+struct AudioTrack {
+  std::filesystem::path file;
+  double origin = 0;
+};
+
 class FrameSource {
  public:
   virtual ~FrameSource() = default;
@@ -69,6 +77,11 @@ class FrameSource {
   virtual Rational time_base() const { return {0, 1}; }
   virtual std::int64_t frame_count() const { return -1; }  // -1 when unknown (cameras)
   virtual std::string name() const = 0;                    // path or device, for messages
+  // The files the frames are read from (a movie file, every file of an image sequence), which no
+  // output may replace; none for a device.
+  virtual std::vector<std::filesystem::path> files() const { return {}; }
+  // The sound track to copy into a movie of these frames (a movie file's); none by default.
+  virtual std::optional<AudioTrack> audio() const { return std::nullopt; }
 };
 
 class FrameSink {

@@ -53,7 +53,7 @@ class ImageSequenceSource final : public FrameSource {
   std::int64_t frame_count() const override { return static_cast<std::int64_t>(numbers_.size()); }
   std::string name() const override { return pattern_; }
   // The files of the sequence, in order (they are the command's inputs).
-  std::vector<std::filesystem::path> files() const;
+  std::vector<std::filesystem::path> files() const override;
 
  private:
   std::string pattern_;

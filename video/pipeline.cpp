@@ -42,6 +42,144 @@ class FirstError {
   std::exception_ptr error_;
 };
 
+using Clock = std::chrono::steady_clock;
+
+// What the three stages share: the queues between them, the first error, the stop.
+struct Stages {
+  explicit Stages(const PipelineOptions& o)
+      : options(o), decoded(o.queue_depth), filtered(o.queue_depth) {}
+  bool stop_requested() const {
+    return options.stop != nullptr && options.stop->load(std::memory_order_relaxed);
+  }
+
+  const PipelineOptions& options;
+  BoundedQueue<Frame> decoded;
+  BoundedQueue<Frame> filtered;
+  FirstError error;
+  std::atomic<bool> interrupted{false};
+};
+
+// The decode thread: the frames of the range into `decoded`.
+void decode(Stages& s, FrameSource& source) {
+  const FrameRange& range = s.options.range;
+  try {
+    // Frames before the range: passed over without making their images (a movie file seeks).
+    const bool started = range.first == 0 || source.seek(range.first);
+    while (started) {
+      if (s.stop_requested()) {
+        s.interrupted = true;
+        break;
+      }
+      std::optional<Frame> frame = source.read();
+      if (!frame) break;
+      if (frame->index < range.first) continue;
+      if (!range.contains(frame->index)) break;
+      const bool last = range.last >= 0 && frame->index >= range.last;
+      if (!s.decoded.push(std::move(*frame)) || last) break;
+    }
+  } catch (...) {
+    s.error.set(std::current_exception());
+  }
+  s.decoded.finish();
+}
+
+// The filter thread: `decoded` through the filter into `filtered`, in order.
+void filter_frames(Stages& s, const FrameFilter& filter) {
+  try {
+    while (std::optional<Frame> frame = s.decoded.pop()) {
+      if (s.stop_requested()) {  // the output will be abandoned: no need to drain the queues
+        s.interrupted = true;
+        s.decoded.cancel();
+        break;
+      }
+      cv::Mat image = filter(*frame);
+      Frame out = std::move(*frame);  // index and time as the source gave them
+      out.image = std::move(image);
+      if (!s.filtered.push(std::move(out))) break;
+    }
+  } catch (...) {
+    s.error.set(std::current_exception());
+    s.decoded.cancel();  // the decoder may be waiting for room
+  }
+  s.filtered.finish();
+}
+
+// The progress reports: one every progress_interval seconds, and the last.
+class Reporter {
+ public:
+  Reporter(const PipelineOptions& options, std::int64_t total, Clock::time_point start)
+      : options_(options), total_(total), start_(start), last_(Clock::now()) {}
+
+  void at_interval(std::int64_t done) {
+    if (std::chrono::duration<double>(Clock::now() - last_).count() >= options_.progress_interval) {
+      last_ = Clock::now();
+      report(done, false);
+    }
+  }
+  void report(std::int64_t done, bool finished) const {
+    if (!options_.progress) return;
+    Progress p;
+    p.done = done;
+    p.total = total_;
+    p.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+    p.finished = finished;
+    options_.progress(p);
+  }
+
+ private:
+  const PipelineOptions& options_;
+  std::int64_t total_;
+  Clock::time_point start_;
+  Clock::time_point last_;
+};
+
+// The encode stage, on the calling thread: `filtered` into the sink.
+void encode(Stages& s, FrameSink& sink, Reporter& reporter, PipelineResult& result) {
+  try {
+    while (std::optional<Frame> frame = s.filtered.pop()) {
+      if (s.stop_requested()) {
+        s.interrupted = true;
+        s.filtered.cancel();
+        s.decoded.cancel();
+        break;
+      }
+      sink.write(*frame);
+      ++result.frames_written;
+      reporter.at_interval(result.frames_written);
+    }
+  } catch (...) {
+    s.error.set(std::current_exception());
+    s.filtered.cancel();
+    s.decoded.cancel();
+  }
+}
+
+// The first error of the stages, if any. A stage that saw the stop request through a
+// cancellation (an animation's map being built) was stopped, not failed.
+std::exception_ptr stage_error(Stages& s) {
+  std::exception_ptr first = s.error.get();
+  if (first && s.stop_requested()) {
+    try {
+      std::rethrow_exception(first);
+    } catch (const Error& e) {
+      if (e.kind() == ErrorKind::interrupted) first = nullptr, s.interrupted = true;
+    } catch (...) {
+    }
+  }
+  return first;
+}
+
+// Rethrows `error`, saying where the frames written were kept, if anywhere.
+[[noreturn]] void rethrow_with_partial(std::exception_ptr error, const PipelineResult& result) {
+  if (result.partial.empty()) std::rethrow_exception(error);
+  try {
+    std::rethrow_exception(error);
+  } catch (const Error& e) {
+    throw Error(e.kind(), fmt::format("{}; {} frames kept in {}", e.what(), result.frames_written,
+                                      result.partial.string()));
+  }
+}
+
 }  // namespace
 
 FrameRange parse_frame_range(const std::string& text, const std::string& what) {
@@ -63,113 +201,20 @@ FrameRange parse_frame_range(const std::string& text, const std::string& what) {
 
 PipelineResult run_pipeline(FrameSource& source, FrameSink& sink, const FrameFilter& filter,
                             const PipelineOptions& options) {
-  using clock = std::chrono::steady_clock;
-  const auto start = clock::now();
-  BoundedQueue<Frame> decoded(options.queue_depth);
-  BoundedQueue<Frame> filtered(options.queue_depth);
-  FirstError error;
-  std::atomic<bool> interrupted{false};
-  auto stop_requested = [&] {
-    return options.stop != nullptr && options.stop->load(std::memory_order_relaxed);
-  };
+  const auto start = Clock::now();
+  Stages stages(options);
+  Reporter reporter(options, options.range.size_in(source.frame_count()), start);
 
-  std::int64_t total = -1;
-  if (const std::int64_t count = source.frame_count(); count >= 0) {
-    const std::int64_t end =
-        options.range.last < 0 ? count : std::min(count, options.range.last + 1);
-    total = std::max<std::int64_t>(0, end - options.range.first);
-  }
-
-  std::jthread decoder([&] {
-    try {
-      // Frames before the range: passed over without making their images (a movie file seeks).
-      const bool started = options.range.first == 0 || source.seek(options.range.first);
-      while (started) {
-        if (stop_requested()) {
-          interrupted = true;
-          break;
-        }
-        std::optional<Frame> frame = source.read();
-        if (!frame) break;
-        if (frame->index < options.range.first) continue;
-        if (!options.range.contains(frame->index)) break;
-        const bool last = options.range.last >= 0 && frame->index >= options.range.last;
-        if (!decoded.push(std::move(*frame)) || last) break;
-      }
-    } catch (...) {
-      error.set(std::current_exception());
-    }
-    decoded.finish();
-  });
-
-  std::jthread filterer([&] {
-    try {
-      while (std::optional<Frame> frame = decoded.pop()) {
-        if (stop_requested()) {  // the output will be abandoned: no need to drain the queues
-          interrupted = true;
-          decoded.cancel();
-          break;
-        }
-        cv::Mat image = filter(*frame);
-        Frame out = std::move(*frame);  // index and time as the source gave them
-        out.image = std::move(image);
-        if (!filtered.push(std::move(out))) break;
-      }
-    } catch (...) {
-      error.set(std::current_exception());
-      decoded.cancel();  // the decoder may be waiting for room
-    }
-    filtered.finish();
-  });
-
+  std::jthread decoder([&] { decode(stages, source); });
+  std::jthread filterer([&] { filter_frames(stages, filter); });
   PipelineResult result;
-  auto report = [&](bool finished) {
-    if (!options.progress) return;
-    Progress p;
-    p.done = result.frames_written;
-    p.total = total;
-    p.seconds = std::chrono::duration<double>(clock::now() - start).count();
-    p.finished = finished;
-    options.progress(p);
-  };
-  auto last_report = clock::now();
-  try {
-    while (std::optional<Frame> frame = filtered.pop()) {
-      if (stop_requested()) {
-        interrupted = true;
-        filtered.cancel();
-        decoded.cancel();
-        break;
-      }
-      sink.write(*frame);
-      ++result.frames_written;
-      if (std::chrono::duration<double>(clock::now() - last_report).count() >=
-          options.progress_interval) {
-        last_report = clock::now();
-        report(false);
-      }
-    }
-  } catch (...) {
-    error.set(std::current_exception());
-    filtered.cancel();
-    decoded.cancel();
-  }
+  encode(stages, sink, reporter, result);
   decoder.join();
   filterer.join();
 
-  std::exception_ptr first = error.get();
-  // A stage that saw the stop request through a cancellation (an animation's map being built)
-  // was stopped, not failed.
-  if (first && stop_requested()) {
-    try {
-      std::rethrow_exception(first);
-    } catch (const Error& e) {
-      if (e.kind() == ErrorKind::interrupted) first = nullptr, interrupted = true;
-    } catch (...) {
-    }
-  }
-  result.interrupted = interrupted;
-  if (!first && !interrupted) {
+  std::exception_ptr first = stage_error(stages);
+  result.interrupted = stages.interrupted;
+  if (!first && !result.interrupted) {
     try {
       sink.close();
     } catch (...) {
@@ -180,17 +225,9 @@ PipelineResult run_pipeline(FrameSource& source, FrameSink& sink, const FrameFil
     // apart where that is useful.
     result.partial = sink.abandon();
   }
-  result.seconds = std::chrono::duration<double>(clock::now() - start).count();
-  if (first) {
-    if (result.partial.empty()) std::rethrow_exception(first);
-    try {
-      std::rethrow_exception(first);
-    } catch (const Error& e) {
-      throw Error(e.kind(), fmt::format("{}; {} frames kept in {}", e.what(), result.frames_written,
-                                        result.partial.string()));
-    }
-  }
-  report(true);
+  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (first) rethrow_with_partial(first, result);
+  reporter.report(result.frames_written, true);
   return result;
 }
 

@@ -3,6 +3,7 @@
 // slow stage sets the pace without the others stalling, and memory stays bounded.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
@@ -19,6 +20,11 @@ struct FrameRange {
   std::int64_t first = 0;
   std::int64_t last = -1;
   bool contains(std::int64_t i) const { return i >= first && (last < 0 || i <= last); }
+  // How many of a source's `count` frames the range holds; -1 when the count is not known (-1).
+  std::int64_t size_in(std::int64_t count) const {
+    if (count < 0) return -1;
+    return std::max<std::int64_t>(0, (last < 0 ? count : std::min(count, last + 1)) - first);
+  }
 };
 
 // Parses "START:END" (both included), "START:" or ":END" (the --frames option); throws

@@ -54,6 +54,102 @@ std::string offered_list(const std::vector<V4l2Format>& formats) {
   return list.empty() ? "none" : list;
 }
 
+// A device this class can capture from: a capture device with mmap streaming.
+void check_capture_device(const std::string& device, const V4l2DeviceInfo& info) {
+  if (!info.capture) {
+    throw Error(ErrorKind::unsupported, fmt::format("{}: not a video capture device ({}, {})",
+                                                    device, info.driver, info.card));
+  }
+  if (!info.streaming) {
+    throw Error(ErrorKind::unsupported,
+                fmt::format("{}: device does not support mmap streaming ({})", device, info.card));
+  }
+}
+
+// The format: the first preferred one offered at the requested size and rate, else the first
+// preferred one offered at all.
+const V4l2Format& choose_format(const std::string& device, const V4l2DeviceInfo& info,
+                                const V4l2CaptureOptions& options) {
+  const std::vector<PixelFormat>& wanted =
+      options.formats.empty() ? kDefaultFormats : options.formats;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (PixelFormat p : wanted) {
+      const auto it = std::find_if(
+          info.capture_formats.begin(), info.capture_formats.end(),
+          [&](const V4l2Format& f) { return pixel_format_from_fourcc(f.fourcc) == p; });
+      if (it == info.capture_formats.end()) continue;
+      if (pass == 1 || offers(*it, options.size, options.fps)) return *it;
+    }
+  }
+  std::string asked;
+  for (PixelFormat p : wanted) asked += (asked.empty() ? "" : ", ") + fourcc_name(fourcc(p));
+  throw Error(ErrorKind::unsupported,
+              fmt::format("{}: pixel format not supported: asked for {} (device offers {})", device,
+                          asked, offered_list(info.capture_formats)));
+}
+
+// Sets the format at `size` (VIDIOC_S_FMT); returns the layout the driver granted, which must be
+// one we convert, progressive.
+FrameLayout set_format(int fd, const std::string& device, const V4l2Format& chosen, cv::Size size) {
+  v4l2_format fmt{};
+  fmt.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+  fmt.fmt.pix.width = static_cast<std::uint32_t>(size.width);
+  fmt.fmt.pix.height = static_cast<std::uint32_t>(size.height);
+  fmt.fmt.pix.pixelformat = chosen.fourcc;
+  fmt.fmt.pix.field = V4L2_FIELD_NONE;
+  if (xioctl(fd, VIDIOC_S_FMT, &fmt) != 0) {
+    if (errno == EINVAL) {
+      throw Error(ErrorKind::unsupported,
+                  fmt::format("{}: format {} {}x{} not supported (VIDIOC_S_FMT: EINVAL)", device,
+                              fourcc_name(chosen.fourcc), size.width, size.height));
+    }
+    throw_errno(device, "VIDIOC_S_FMT", errno);
+  }
+  const auto granted = pixel_format_from_fourcc(fmt.fmt.pix.pixelformat);
+  if (!granted) {
+    throw Error(ErrorKind::unsupported,
+                fmt::format("{}: driver switched to pixel format {}, which we cannot convert",
+                            device, fourcc_name(fmt.fmt.pix.pixelformat)));
+  }
+  if (fmt.fmt.pix.field != V4L2_FIELD_NONE && fmt.fmt.pix.field != V4L2_FIELD_ANY) {
+    throw Error(ErrorKind::unsupported,
+                fmt::format("{}: interlaced video not supported (field order {})", device,
+                            fmt.fmt.pix.field));
+  }
+  return {*granted,
+          {static_cast<int>(fmt.fmt.pix.width), static_cast<int>(fmt.fmt.pix.height)},
+          *granted == PixelFormat::mjpeg ? 0 : fmt.fmt.pix.bytesperline};
+}
+
+// The frame rate: asked for with S_PARM where the driver takes it, then read back; 0 when the
+// driver does not say.
+double set_frame_rate(int fd, const std::string& device, double fps) {
+  v4l2_streamparm parm{};
+  parm.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+  if (xioctl(fd, VIDIOC_G_PARM, &parm) != 0) return 0;
+  if (fps > 0 && (parm.parm.capture.capability & V4L2_CAP_TIMEPERFRAME) != 0) {
+    parm.parm.capture.timeperframe.numerator = 1000;
+    parm.parm.capture.timeperframe.denominator =
+        static_cast<std::uint32_t>(std::lround(fps * 1000));
+    if (xioctl(fd, VIDIOC_S_PARM, &parm) != 0) throw_errno(device, "VIDIOC_S_PARM", errno);
+  }
+  const v4l2_fract t = parm.parm.capture.timeperframe;
+  return t.numerator == 0 ? 0.0 : static_cast<double>(t.denominator) / t.numerator;
+}
+
+// Capture time: the driver's timestamp where it is on CLOCK_MONOTONIC (the steady clock's clock
+// on Linux), so latency includes the time the frame waited in the driver; else the moment of
+// dequeue.
+Clock::time_point capture_time(const v4l2_buffer& b, Clock::time_point dequeued) {
+  if ((b.flags & V4L2_BUF_FLAG_TIMESTAMP_MASK) == V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC &&
+      (b.timestamp.tv_sec != 0 || b.timestamp.tv_usec != 0)) {
+    const Clock::time_point stamped{std::chrono::duration_cast<Clock::duration>(
+        std::chrono::seconds(b.timestamp.tv_sec) + std::chrono::microseconds(b.timestamp.tv_usec))};
+    if (stamped <= dequeued && dequeued - stamped < std::chrono::seconds(10)) return stamped;
+  }
+  return dequeued;
+}
+
 }  // namespace
 
 struct V4l2Capture::Impl {
@@ -84,6 +180,41 @@ struct V4l2Capture::Impl {
     if (xioctl(fd.get(), VIDIOC_QBUF, &b) != 0) throw_errno(path, "VIDIOC_QBUF", errno);
   }
 
+  // Waits for the device to be readable; returns what poll() saw (revents).
+  short wait() {
+    for (;;) {
+      pollfd p{fd.get(), POLLIN, 0};
+      const int r = ::poll(&p, 1, timeout_ms);
+      if (r < 0) {
+        if (errno == EINTR) continue;  // a signal: the caller checks its own stop flag per frame
+        throw_errno(path, "poll", errno);
+      }
+      if (r == 0) {
+        throw Error(ErrorKind::device,
+                    fmt::format("{}: no frame for {} ms: camera stalled or disconnected", path,
+                                timeout_ms));
+      }
+      return p.revents;
+    }
+  }
+
+  // Drain: keep the newest filled buffer, hand older ones straight back (they are drops).
+  std::optional<v4l2_buffer> dequeue_newest() {
+    std::optional<v4l2_buffer> newest;
+    for (;;) {
+      v4l2_buffer b{};
+      b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
+      b.memory = V4L2_MEMORY_MMAP;
+      if (xioctl(fd.get(), VIDIOC_DQBUF, &b) != 0) {
+        if (errno == EAGAIN) break;
+        throw_errno(path, "VIDIOC_DQBUF", errno);
+      }
+      if (newest) queue(newest->index);
+      newest = b;
+    }
+    return newest;
+  }
+
   void stop() noexcept {
     if (streaming) {
       int type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
@@ -106,14 +237,7 @@ V4l2Capture::V4l2Capture(const std::string& device, const V4l2CaptureOptions& op
   }
   const V4l2DeviceInfo info = query_v4l2_device(device);
   m.card = info.card;
-  if (!info.capture) {
-    throw Error(ErrorKind::unsupported, fmt::format("{}: not a video capture device ({}, {})",
-                                                    device, info.driver, info.card));
-  }
-  if (!info.streaming) {
-    throw Error(ErrorKind::unsupported,
-                fmt::format("{}: device does not support mmap streaming ({})", device, info.card));
-  }
+  check_capture_device(device, info);
   m.fd = detail::open_v4l2(device);
   const int fd = m.fd.get();
 
@@ -121,75 +245,8 @@ V4l2Capture::V4l2Capture(const std::string& device, const V4l2CaptureOptions& op
     int input = options.input;
     if (xioctl(fd, VIDIOC_S_INPUT, &input) != 0) throw_errno(device, "VIDIOC_S_INPUT", errno);
   }
-
-  // Pick the format: the first preferred one offered at the requested size and rate, else the
-  // first preferred one offered at all.
-  const std::vector<PixelFormat>& wanted =
-      options.formats.empty() ? kDefaultFormats : options.formats;
-  const V4l2Format* chosen = nullptr;
-  for (int pass = 0; pass < 2 && chosen == nullptr; ++pass) {
-    for (PixelFormat p : wanted) {
-      const auto it = std::find_if(
-          info.capture_formats.begin(), info.capture_formats.end(),
-          [&](const V4l2Format& f) { return pixel_format_from_fourcc(f.fourcc) == p; });
-      if (it == info.capture_formats.end()) continue;
-      if (pass == 1 || offers(*it, options.size, options.fps)) {
-        chosen = &*it;
-        break;
-      }
-    }
-  }
-  if (chosen == nullptr) {
-    std::string asked;
-    for (PixelFormat p : wanted) asked += (asked.empty() ? "" : ", ") + fourcc_name(fourcc(p));
-    throw Error(ErrorKind::unsupported,
-                fmt::format("{}: pixel format not supported: asked for {} (device offers {})",
-                            device, asked, offered_list(info.capture_formats)));
-  }
-
-  v4l2_format fmt{};
-  fmt.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-  fmt.fmt.pix.width = static_cast<std::uint32_t>(options.size.width);
-  fmt.fmt.pix.height = static_cast<std::uint32_t>(options.size.height);
-  fmt.fmt.pix.pixelformat = chosen->fourcc;
-  fmt.fmt.pix.field = V4L2_FIELD_NONE;
-  if (xioctl(fd, VIDIOC_S_FMT, &fmt) != 0) {
-    if (errno == EINVAL) {
-      throw Error(
-          ErrorKind::unsupported,
-          fmt::format("{}: format {} {}x{} not supported (VIDIOC_S_FMT: EINVAL)", device,
-                      fourcc_name(chosen->fourcc), options.size.width, options.size.height));
-    }
-    throw_errno(device, "VIDIOC_S_FMT", errno);
-  }
-  const auto granted = pixel_format_from_fourcc(fmt.fmt.pix.pixelformat);
-  if (!granted) {
-    throw Error(ErrorKind::unsupported,
-                fmt::format("{}: driver switched to pixel format {}, which we cannot convert",
-                            device, fourcc_name(fmt.fmt.pix.pixelformat)));
-  }
-  if (fmt.fmt.pix.field != V4L2_FIELD_NONE && fmt.fmt.pix.field != V4L2_FIELD_ANY) {
-    throw Error(ErrorKind::unsupported,
-                fmt::format("{}: interlaced video not supported (field order {})", device,
-                            fmt.fmt.pix.field));
-  }
-  m.layout = {*granted,
-              {static_cast<int>(fmt.fmt.pix.width), static_cast<int>(fmt.fmt.pix.height)},
-              *granted == PixelFormat::mjpeg ? 0 : fmt.fmt.pix.bytesperline};
-
-  // Frame rate: asked for with S_PARM where the driver takes it, then read back.
-  v4l2_streamparm parm{};
-  parm.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-  if (xioctl(fd, VIDIOC_G_PARM, &parm) == 0) {
-    if (options.fps > 0 && (parm.parm.capture.capability & V4L2_CAP_TIMEPERFRAME) != 0) {
-      parm.parm.capture.timeperframe.numerator = 1000;
-      parm.parm.capture.timeperframe.denominator =
-          static_cast<std::uint32_t>(std::lround(options.fps * 1000));
-      if (xioctl(fd, VIDIOC_S_PARM, &parm) != 0) throw_errno(device, "VIDIOC_S_PARM", errno);
-    }
-    const v4l2_fract t = parm.parm.capture.timeperframe;
-    m.fps = t.numerator == 0 ? 0.0 : static_cast<double>(t.denominator) / t.numerator;
-  }
+  m.layout = set_format(fd, device, choose_format(device, info, options), options.size);
+  m.fps = set_frame_rate(fd, device, options.fps);
 
   detail::map_buffers(fd, device, V4L2_BUF_TYPE_VIDEO_CAPTURE,
                       static_cast<std::uint32_t>(options.buffers), m.buffers);
@@ -212,33 +269,11 @@ std::optional<Frame> V4l2Capture::read() {
   }
   int bad = 0;
   for (;;) {
-    pollfd p{fd, POLLIN, 0};
-    const int r = ::poll(&p, 1, m.timeout_ms);
-    if (r < 0) {
-      if (errno == EINTR) continue;  // a signal: the caller checks its own stop flag per frame
-      throw_errno(m.path, "poll", errno);
-    }
-    if (r == 0) {
-      throw Error(ErrorKind::device,
-                  fmt::format("{}: no frame for {} ms: camera stalled or disconnected", m.path,
-                              m.timeout_ms));
-    }
-    // Drain: keep the newest filled buffer, hand older ones straight back (they are drops).
-    std::optional<v4l2_buffer> newest;
-    for (;;) {
-      v4l2_buffer b{};
-      b.type = V4L2_BUF_TYPE_VIDEO_CAPTURE;
-      b.memory = V4L2_MEMORY_MMAP;
-      if (xioctl(fd, VIDIOC_DQBUF, &b) != 0) {
-        if (errno == EAGAIN) break;
-        throw_errno(m.path, "VIDIOC_DQBUF", errno);
-      }
-      if (newest) m.queue(newest->index);
-      newest = b;
-    }
+    const short revents = m.wait();
+    const std::optional<v4l2_buffer> newest = m.dequeue_newest();
     const Clock::time_point dequeued = Clock::now();
     if (!newest) {
-      if ((p.revents & (POLLERR | POLLHUP | POLLNVAL)) != 0) {
+      if ((revents & (POLLERR | POLLHUP | POLLNVAL)) != 0) {
         throw Error(ErrorKind::device,
                     fmt::format("{}: device reported an error while streaming", m.path));
       }
@@ -270,18 +305,7 @@ std::optional<Frame> V4l2Capture::read() {
     }
     m.queue(b.index);
     frame.index = static_cast<std::int64_t>(b.sequence - *m.first_sequence);
-    // Capture time: the driver's timestamp where it is on CLOCK_MONOTONIC (the steady clock's
-    // clock on Linux), so latency includes the time the frame waited in the driver; else the
-    // moment of dequeue.
-    Clock::time_point captured = dequeued;
-    if ((b.flags & V4L2_BUF_FLAG_TIMESTAMP_MASK) == V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC &&
-        (b.timestamp.tv_sec != 0 || b.timestamp.tv_usec != 0)) {
-      const Clock::time_point stamped{std::chrono::duration_cast<Clock::duration>(
-          std::chrono::seconds(b.timestamp.tv_sec) +
-          std::chrono::microseconds(b.timestamp.tv_usec))};
-      if (stamped <= dequeued && dequeued - stamped < std::chrono::seconds(10)) captured = stamped;
-    }
-    frame.timestamp = std::chrono::duration<double>(captured - m.origin).count();
+    frame.timestamp = std::chrono::duration<double>(capture_time(b, dequeued) - m.origin).count();
     ++m.returned;
     return frame;
   }
