@@ -117,12 +117,8 @@ void apply(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out) {
   out.create(map.size(), source.type());
   const cv::Mat continuous = source.isContinuous() ? source : source.clone();
   // Bands of rows on our own workers: a fixed split, so the bytes never depend on the threads.
-  const auto bands = static_cast<std::size_t>((out.rows + kBand - 1) / kBand);
-  parallel_for(bands, map.options.threads, [&](std::size_t band, int) {
-    apply_rows(map, continuous, out,
-               cv::Range(static_cast<int>(band) * kBand,
-                         std::min(out.rows, static_cast<int>(band + 1) * kBand)));
-  });
+  parallel_rows(out.rows, kBand, map.options.threads,
+                [&](cv::Range rows) { apply_rows(map, continuous, out, rows); });
 }
 
 cv::Mat apply(const StealMap& map, const cv::Mat& source, const ApplyOptions& options) {

@@ -16,10 +16,6 @@ namespace {
 // Rows per chunk of work. Fixed, so that the split never depends on the thread count.
 constexpr int band_rows = 16;
 
-int band_count(cv::Size size) {
-  return (size.height + band_rows - 1) / band_rows;
-}
-
 // The plane → continuous pixel coordinates map of a viewport (y up in the plane, rows down).
 AffineMap plane_to_pixel(const Viewport& vp) {
   const double sx = vp.size.width / vp.view.width();
@@ -209,18 +205,12 @@ void Buffers::set_masks(const std::vector<cv::Mat>& masks) {
 
 void Buffers::dilate_current() {
   const std::size_t v_count = masks_.size();
-  const int bands = band_count(viewport_.size);
   dilated_.assign(v_count, BitMask());
   for (auto& d : dilated_) d.resize(viewport_.size);
-  parallel_for(v_count * static_cast<std::size_t>(bands), options_.threads,
-               [&](std::size_t chunk, int) {
-                 options_.cancel.check("superIFS step");
-                 const std::size_t v = chunk / static_cast<std::size_t>(bands);
-                 const int band = static_cast<int>(chunk % static_cast<std::size_t>(bands));
-                 const int row0 = band * band_rows;
-                 const int row1 = std::min(viewport_.size.height, row0 + band_rows);
-                 dilate_rows(masks_[v], dilation_, row0, row1, dilated_[v]);
-               });
+  parallel_rows(v_count, viewport_.size.height, band_rows, options_.threads, options_.cancel,
+                "superIFS step", [&](std::size_t v, cv::Range rows) {
+                  dilate_rows(masks_[v], dilation_, rows.start, rows.end, dilated_[v]);
+                });
 }
 
 StepChoices Buffers::draw_choices() const {
@@ -243,7 +233,6 @@ void Buffers::step() {
   const StepChoices choices = draw_choices();
   const std::size_t v_count = masks_.size(), m_count = super_.maps();
   const cv::Size size = viewport_.size;
-  const int bands = band_count(size);
   std::vector<cv::Mat> next(v_count);
   for (auto& k : next) k.create(size, CV_8UC1);
   std::vector<cv::Mat> smooth, smooth_colour, next_density, next_colour;
@@ -252,26 +241,20 @@ void Buffers::step() {
       mats->resize(v_count);
       for (cv::Mat& m : *mats) m.create(size, CV_32FC1);
     }
-    parallel_for(
-        v_count * static_cast<std::size_t>(bands), options_.threads, [&](std::size_t chunk, int) {
-          options_.cancel.check("superIFS step");
-          const std::size_t v = chunk / static_cast<std::size_t>(bands);
-          const int row0 = static_cast<int>(chunk % static_cast<std::size_t>(bands)) * band_rows;
-          const int row1 = std::min(size.height, row0 + band_rows);
-          box_rows(densities_[v], dilation_, row0, row1, smooth[v]);
-          box_rows(colour_masses_[v], dilation_, row0, row1, smooth_colour[v]);
-        });
+    parallel_rows(v_count, size.height, band_rows, options_.threads, options_.cancel,
+                  "superIFS step", [&](std::size_t v, cv::Range rows) {
+                    box_rows(densities_[v], dilation_, rows.start, rows.end, smooth[v]);
+                    box_rows(colour_masses_[v], dilation_, rows.start, rows.end, smooth_colour[v]);
+                  });
   }
   // c_m of map m: its place on the palette.
   std::vector<double> map_coordinate(m_count, 0.0);
   for (std::size_t m = 0; m < m_count && m_count > 1; ++m)
     map_coordinate[m] = static_cast<double>(m) / static_cast<double>(m_count - 1);
-  parallel_for(
-      v_count * static_cast<std::size_t>(bands), options_.threads, [&](std::size_t chunk, int) {
-        options_.cancel.check("superIFS step");
-        const std::size_t v = chunk / static_cast<std::size_t>(bands);
-        const int row0 = static_cast<int>(chunk % static_cast<std::size_t>(bands)) * band_rows;
-        const int row1 = std::min(size.height, row0 + band_rows);
+  parallel_rows(
+      v_count, size.height, band_rows, options_.threads, options_.cancel, "superIFS step",
+      [&](std::size_t v, cv::Range rows) {
+        const int row0 = rows.start, row1 = rows.end;
         const std::uint32_t n = choices.ifs[v];
         const std::uint32_t* source = &choices.source[v * m_count];
         for (int row = row0; row < row1; ++row) {

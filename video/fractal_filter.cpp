@@ -15,15 +15,6 @@ namespace {
 
 constexpr int band_rows = 32;  // rows per work chunk: fixed, so the split never depends on threads
 
-std::size_t bands(int rows) {
-  return static_cast<std::size_t>((rows + band_rows - 1) / band_rows);
-}
-
-cv::Range band(std::size_t chunk, int rows) {
-  const int r0 = static_cast<int>(chunk) * band_rows;
-  return {r0, std::min(rows, r0 + band_rows)};
-}
-
 // The precondition of the remap (check_apply_source), and the filter's own: a table with a
 // transparent border over 8-bit BGR or BGRA frames.
 void check_frame(const cv::Mat& frame, const PreparedStealMap& table) {
@@ -117,8 +108,7 @@ void filter_frame(const cv::Mat& input, const PreparedStealMap& table, const Fil
   const cv::Size size = table.size();
   const cv::Mat original = needs_original(frame, options) ? original_at(frame, size) : cv::Mat();
   out.create(size, frame.type());
-  parallel_for(bands(size.height), options.threads, [&](std::size_t chunk, int) {
-    const cv::Range rows = band(chunk, size.height);
+  parallel_rows(size.height, band_rows, options.threads, [&](cv::Range rows) {
     fill_background(original, options, out, rows);
     apply_rows(table, frame, out, rows);
     if (options.mix > 0) {
@@ -150,8 +140,7 @@ void filter_frame(const cv::Mat& input, const PreparedStealMap& from, const Prep
   const cv::Mat original = needs_original(frame, options) ? original_at(frame, size) : cv::Mat();
   out.create(size, frame.type());
   cv::Mat second(size, frame.type());
-  parallel_for(bands(size.height), options.threads, [&](std::size_t chunk, int) {
-    const cv::Range rows = band(chunk, size.height);
+  parallel_rows(size.height, band_rows, options.threads, [&](cv::Range rows) {
     fill_background(original, options, out, rows);
     fill_background(original, options, second, rows);
     apply_rows(from, frame, out, rows);
