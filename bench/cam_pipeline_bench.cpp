@@ -59,7 +59,8 @@ struct Setup {
 
 void BM_cam_fixed_map(benchmark::State& state) {
   const Setup setup;
-  const RemapTable table = make_remap_table(compute_steal_map(setup.F, setup.G, kSize, {}), kSize);
+  const PreparedStealMap table =
+      prepare_filter(compute_steal_map(setup.F, setup.G, kSize, {}), kSize);
   for (auto _ : state) {
     SyntheticCamera camera({.size = kSize, .fps = kFps});
     NullSink sink;

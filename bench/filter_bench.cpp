@@ -35,7 +35,7 @@ void fixed_map(benchmark::State& state, Interpolation interpolation) {
   const Ifs fern = load_ifs("barnsley-fern").ifs;
   const StealMap map =
       compute_steal_map(fern, default_colouring(fern.size()), size, {.quality = 8});
-  const RemapTable table = make_remap_table(map, size, interpolation);
+  const PreparedStealMap table = prepare_filter(map, size, interpolation);
   const cv::Mat frame = test_frame(size);
   cv::Mat out;
   for (auto _ : state) {
@@ -84,7 +84,7 @@ void BM_filter_drift(benchmark::State& state) {
   MapSchedule schedule(
       [&](std::int64_t k) {
         const Ifs now = drift(fern, static_cast<double>(k) * interval / 30.0, drift_options);
-        return make_remap_table(compute_steal_map(now, G, size, o), size);
+        return prepare_filter(compute_steal_map(now, G, size, o), size);
       },
       interval);
   const cv::Mat frame = test_frame(size);

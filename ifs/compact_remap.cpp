@@ -165,10 +165,7 @@ void fixed_point_maps(cv::Size size, bool nearest, int threads,
     frac.release();
   else
     frac.create(size, CV_16UC1);
-  const auto parts = static_cast<std::size_t>((size.height + kPartRows - 1) / kPartRows);
-  parallel_for(parts, threads, [&](std::size_t k, int) {
-    const cv::Range rows(static_cast<int>(k) * kPartRows,
-                         std::min(size.height, static_cast<int>(k + 1) * kPartRows));
+  parallel_rows(size.height, kPartRows, threads, [&](cv::Range rows) {
     cv::Mat band(rows.size(), size.width, CV_32FC2);
     for (int r = rows.start; r < rows.end; ++r) fill_row(r, band.ptr<cv::Vec2f>(r - rows.start));
     cv::Mat band_xy = xy.rowRange(rows), band_frac;
@@ -191,9 +188,9 @@ std::optional<CompactRemap> compact_remap(const cv::Mat& xy, const cv::Mat& frac
   const auto parts = static_cast<std::size_t>((xy.rows + kPartRows - 1) / kPartRows);
   std::vector<Part> part(parts);
   std::vector<char> whole(parts, 1);
-  parallel_for(parts, threads, [&](std::size_t k, int) {
-    const int r0 = static_cast<int>(k) * kPartRows, r1 = std::min(xy.rows, r0 + kPartRows);
-    whole[k] = compact_rows(xy, frac, source_size, border, r0, r1, part[k]) ? 1 : 0;
+  parallel_rows(xy.rows, kPartRows, threads, [&](cv::Range rows) {
+    const auto k = static_cast<std::size_t>(rows.start / kPartRows);
+    whole[k] = compact_rows(xy, frac, source_size, border, rows.start, rows.end, part[k]) ? 1 : 0;
   });
   if (std::find(whole.begin(), whole.end(), 0) != whole.end()) return std::nullopt;
 

@@ -62,4 +62,28 @@ void parallel_for(std::size_t chunks, int threads,
   if (error) std::rethrow_exception(error);
 }
 
+void parallel_rows(std::size_t planes, int rows, int band, int threads, const CancelToken& cancel,
+                   const char* what,
+                   const std::function<void(std::size_t plane, cv::Range rows)>& fn) {
+  if (band < 1)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("row band: must be at least 1 row (got {})", band));
+  const auto bands = static_cast<std::size_t>((std::max(rows, 0) + band - 1) / band);
+  parallel_for(planes * bands, threads, [&](std::size_t chunk, int) {
+    cancel.check(what);
+    const int row0 = static_cast<int>(chunk % bands) * band;
+    fn(chunk / bands, cv::Range(row0, std::min(rows, row0 + band)));
+  });
+}
+
+void parallel_rows(int rows, int band, int threads, const CancelToken& cancel, const char* what,
+                   const std::function<void(cv::Range rows)>& fn) {
+  parallel_rows(1, rows, band, threads, cancel, what,
+                [&](std::size_t, cv::Range range) { fn(range); });
+}
+
+void parallel_rows(int rows, int band, int threads, const std::function<void(cv::Range rows)>& fn) {
+  parallel_rows(rows, band, threads, CancelToken(), "rows", fn);
+}
+
 }  // namespace ifsfx

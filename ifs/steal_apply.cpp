@@ -2,6 +2,8 @@
 // apply: colouring an image through a steal map, one cv::remap (docs/design.md §3: T depends on F,
 // G and the grid only, so a video filter prepares the map once and remaps every frame).
 #include <algorithm>
+#include <cmath>
+#include <optional>
 
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
@@ -50,15 +52,23 @@ void check_source(const cv::Mat& source) {
 PreparedStealMap prepare_apply(const StealMap& map, cv::Size source_size,
                                const ApplyOptions& options) {
   check_map(map);
-  if (source_size.width <= 0 || source_size.height <= 0 || source_size.width >= 32767 ||
+  // A transparent border keeps a covered pixel a 1/32 pixel step inside the last column and row,
+  // which needs a source of two pixels a side.
+  const int smallest = options.border == RemapBorder::transparent ? 2 : 1;
+  if (source_size.width < smallest || source_size.height < smallest || source_size.width >= 32767 ||
       source_size.height >= 32767)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("source size: 1 to 32766 pixels a side (got {}x{})", source_size.width,
+                fmt::format("source size: {} to 32766 pixels a side{} (got {}x{})", smallest,
+                            smallest == 2 ? " under a transparent border" : "", source_size.width,
                             source_size.height));
   // Normalised (u, v) to source pixels: (u·W − 0.5, v·H − 0.5). Covered pixels are clamped to the
-  // image (the edge pixel is repeated, never mixed with the background); uncovered ones are sent
-  // two pixels off it, where BORDER_CONSTANT gives the background.
+  // image (the edge pixel is repeated, never mixed with what lies off it): under a constant border
+  // onto the last column and row, under a transparent one a fixed-point step (1/32 pixel) inside
+  // them, where cv::remap would otherwise leave the pixel untouched. Uncovered pixels, and any
+  // whose point is not finite, are sent two pixels off the source, where the border decides.
   const float w = static_cast<float>(source_size.width), h = static_cast<float>(source_size.height);
+  const float inside = options.border == RemapBorder::transparent ? 1.0f / 32 : 0.0f;
+  const float x_max = w - 1 - inside, y_max = h - 1 - inside;
   PreparedStealMap out;
   out.source_size = source_size;
   out.options = options;
@@ -69,18 +79,19 @@ PreparedStealMap prepare_apply(const StealMap& map, cv::Size source_size,
         const auto* uv = map.source_uv.ptr<cv::Vec2f>(r);
         const auto* cov = map.coverage.ptr<std::uint8_t>(r);
         for (int c = 0; c < width; ++c)
-          out_row[c] = cov[c] == 0 ? cv::Vec2f(-2, -2)
-                                   : cv::Vec2f(std::clamp(uv[c][0] * w - 0.5f, 0.0f, w - 1),
-                                               std::clamp(uv[c][1] * h - 0.5f, 0.0f, h - 1));
+          out_row[c] = cov[c] == 0 || !std::isfinite(uv[c][0]) || !std::isfinite(uv[c][1])
+                           ? cv::Vec2f(-2, -2)
+                           : cv::Vec2f(std::clamp(uv[c][0] * w - 0.5f, 0.0f, x_max),
+                                       std::clamp(uv[c][1] * h - 0.5f, 0.0f, y_max));
       },
       out.xy, out.frac);
-  if (auto compact = detail::compact_remap(out.xy, out.frac, source_size,
-                                           detail::RemapBorder::constant, options.threads))
+  if (auto compact =
+          detail::compact_remap(out.xy, out.frac, source_size, options.border, options.threads))
     out.compact = std::make_shared<const detail::CompactRemap>(std::move(*compact));
   return out;
 }
 
-void apply(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out) {
+void check_apply_source(const PreparedStealMap& map, const cv::Mat& source) {
   check_source(source);
   if (source.size() != map.source_size)
     throw Error(
@@ -88,34 +99,33 @@ void apply(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out) {
         fmt::format("source image: must be the size the steal map was prepared for "
                     "({}x{}) (got {}x{})",
                     map.source_size.width, map.source_size.height, source.cols, source.rows));
-  out.create(map.xy.size(), source.type());
+}
+
+void apply_rows(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out, cv::Range rows) {
+  const bool constant = map.options.border == RemapBorder::constant;
+  if (map.compact && detail::compact_remap_supports(source.type()) && source.isContinuous())
+    return detail::remap_rows(*map.compact, source, out, rows,
+                              constant ? std::optional(map.options.background) : std::nullopt);
+  cv::Mat dst = out.rowRange(rows);
+  cv::remap(
+      source, dst, map.xy.rowRange(rows), map.frac.empty() ? cv::Mat() : map.frac.rowRange(rows),
+      map.options.interpolation == Interpolation::nearest ? cv::INTER_NEAREST : cv::INTER_LINEAR,
+      constant ? cv::BORDER_CONSTANT : cv::BORDER_TRANSPARENT, map.options.background);
+}
+
+void apply(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out) {
+  check_apply_source(map, source);
+  out.create(map.size(), source.type());
+  const cv::Mat continuous = source.isContinuous() ? source : source.clone();
   // Bands of rows on our own workers: a fixed split, so the bytes never depend on the threads.
-  const auto bands = static_cast<std::size_t>((out.rows + kBand - 1) / kBand);
-  const auto band_rows = [&](std::size_t band) {
-    return cv::Range(static_cast<int>(band) * kBand,
-                     std::min(out.rows, static_cast<int>(band + 1) * kBand));
-  };
-  if (map.compact && detail::compact_remap_supports(source.type())) {
-    const cv::Mat continuous = source.isContinuous() ? source : source.clone();
-    parallel_for(bands, map.options.threads, [&](std::size_t band, int) {
-      detail::remap_rows(*map.compact, continuous, out, band_rows(band), map.options.background);
-    });
-    return;
-  }
-  const int interpolation =
-      map.options.interpolation == Interpolation::nearest ? cv::INTER_NEAREST : cv::INTER_LINEAR;
-  parallel_for(bands, map.options.threads, [&](std::size_t band, int) {
-    const cv::Range rows = band_rows(band);
-    cv::Mat dst = out.rowRange(rows);
-    const cv::Mat frac = map.frac.empty() ? cv::Mat() : map.frac.rowRange(rows);
-    cv::remap(source, dst, map.xy.rowRange(rows), frac, interpolation, cv::BORDER_CONSTANT,
-              map.options.background);
-  });
+  parallel_rows(out.rows, kBand, map.options.threads,
+                [&](cv::Range rows) { apply_rows(map, continuous, out, rows); });
 }
 
 cv::Mat apply(const StealMap& map, const cv::Mat& source, const ApplyOptions& options) {
   check_source(source);
   cv::Mat out;
+  if (options.border == RemapBorder::transparent) out = cv::Mat::zeros(map.size(), source.type());
   apply(prepare_apply(map, source.size(), options), source, out);
   return out;
 }

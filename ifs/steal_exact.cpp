@@ -133,11 +133,9 @@ void descend_pixels(const Ifs* G, const Mask& mask, const Viewport& viewport, in
   };
 
   constexpr int kBand = 8;
-  const std::size_t bands = static_cast<std::size_t>((viewport.size.height + kBand - 1) / kBand);
-  parallel_for(bands, options.threads, [&](std::size_t band, int) {
+  parallel_rows(viewport.size.height, kBand, options.threads, [&](cv::Range rows) {
     std::array<std::uint32_t, kMaxLevels> sigma{};
-    const int row_end = std::min(viewport.size.height, static_cast<int>(band + 1) * kBand);
-    for (int row = static_cast<int>(band) * kBand; row < row_end; ++row) {
+    for (int row = rows.start; row < rows.end; ++row) {
       options.cancel.check("exact descent");  // a row is W·L·N lookups at most
       for (int col = 0; col < viewport.size.width; ++col) {
         // The pixel centre, exact, in mask pixel coordinates.

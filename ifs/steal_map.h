@@ -83,20 +83,35 @@ Ifs fit_to_unit_square(const Ifs& g);
 
 enum class Interpolation { nearest, bilinear };
 
+// What a remap does with an output pixel that reads nothing from the source (off the attractor),
+// as cv::remap's border mode says.
+enum class RemapBorder {
+  constant,     // cv::BORDER_CONSTANT: the pixel gets ApplyOptions::background
+  transparent,  // cv::BORDER_TRANSPARENT: the pixel (and any whose bilinear square leaves the
+                // source) keeps what the output held: the video filter draws its background or
+                // the original frame there first
+};
+
 struct ApplyOptions {
   Interpolation interpolation = Interpolation::bilinear;
-  cv::Scalar background = cv::Scalar::all(0);  // colour of uncovered pixels
-  int threads = 0;                             // 0 = all cores
+  RemapBorder border = RemapBorder::constant;
+  // Colour of the pixels that read nothing under a constant border: per channel, in the source's
+  // channel order and value range (default black).
+  cv::Scalar background = cv::Scalar::all(0);
+  int threads = 0;  // workers that prepare and remap; 0 = all cores
 };
 
 // Colours the map's pixels from `source` (any size, CV_8UC3/CV_8UC4/CV_16U/CV_32F): returns an
-// image of the map's size and the source's type.
+// image of the map's size and the source's type (under a transparent border, zero where the map
+// reads nothing).
 cv::Mat apply(const StealMap& map, const cv::Mat& source, const ApplyOptions& options = {});
 
-// A steal map made ready for sources of one size: the fixed-point remap tables (cv::convertMaps)
-// with uncovered pixels sent off the image, computed once and reused for every frame. 8-bit
-// sources go through `compact`, the same table reduced to the covered pixels (the bytes
-// cv::remap gives, on our own workers); other types through cv::remap.
+// A steal map made ready for sources of one size: the fixed-point remap tables (cv::convertMaps),
+// computed once and reused for every frame — the one remap of `apply`, the video filter, the
+// camera and the frei0r plugins. Covered pixels read the source clamped inside it; uncovered ones
+// are sent off it, where options.border decides. 8-bit sources go through `compact`, the same
+// table reduced to the covered pixels (the bytes cv::remap gives, on our own workers); other
+// types through cv::remap.
 //   const auto prepared = prepare_apply(T, frame.size());
 //   for (...) apply(prepared, frame, out);
 struct PreparedStealMap {
@@ -104,13 +119,29 @@ struct PreparedStealMap {
   ApplyOptions options;
   cv::Mat xy;    // CV_16SC2: integer source pixel per output pixel
   cv::Mat frac;  // CV_16UC1: bilinear sub-pixel index (empty for nearest)
-  std::shared_ptr<const detail::CompactRemap> compact;  // null for a source below 2×2
+  // Null where the table needs cv::remap's general border handling (a source below 2×2).
+  std::shared_ptr<const detail::CompactRemap> compact;
+
+  cv::Size size() const { return xy.size(); }  // the output's, the map's
 };
+// Throws Error{invalid_argument} for an empty or malformed map, or a source size outside 1 to
+// 32766 pixels a side (2 to 32766 under a transparent border).
 PreparedStealMap prepare_apply(const StealMap& map, cv::Size source_size,
                                const ApplyOptions& options = {});
-// Colours into `out` (reallocated only when its size or type differ). Throws
-// Error{invalid_argument} when the source's size is not the prepared one.
+
+// The precondition of every remap through a prepared map: a non-empty source of 1 to 4 channels
+// of 8/16-bit integers or floats, of the size the map was prepared for. Throws
+// Error{invalid_argument} or Error{unsupported} "source image: ...".
+void check_apply_source(const PreparedStealMap& map, const cv::Mat& source);
+
+// Colours into `out` (reallocated only when its size or type differ; under a transparent border
+// the pixels that read nothing keep what it held). Checks the source (check_apply_source).
 void apply(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out);
+
+// Output rows `rows` only, on the calling thread, for a caller that runs its own bands of rows
+// (the video filter draws its background, remaps and blends band by band). The caller has checked
+// the source (check_apply_source) and made `out` of map.size() and the source's type.
+void apply_rows(const PreparedStealMap& map, const cv::Mat& source, cv::Mat& out, cv::Range rows);
 
 // save/load: a versioned binary file; load throws Error{io} or Error{unsupported} for a file that
 // is not a steal map, of another version, truncated, or corrupt (a coverage byte other than 0 and

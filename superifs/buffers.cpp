@@ -17,10 +17,6 @@ namespace {
 // Rows per chunk of work. Fixed, so that the split never depends on the thread count.
 constexpr int band_rows = 16;
 
-int band_count(cv::Size size) {
-  return (size.height + band_rows - 1) / band_rows;
-}
-
 // The plane → continuous pixel coordinates map of a viewport (y up in the plane, rows down).
 AffineMap plane_to_pixel(const Viewport& vp) {
   const double sx = vp.size.width / vp.view.width();
@@ -210,18 +206,12 @@ void Buffers::set_masks(const std::vector<cv::Mat>& masks) {
 
 void Buffers::dilate_current() {
   const std::size_t v_count = masks_.size();
-  const int bands = band_count(viewport_.size);
   dilated_.assign(v_count, BitMask());
   for (auto& d : dilated_) d.resize(viewport_.size);
-  parallel_for(v_count * static_cast<std::size_t>(bands), options_.threads,
-               [&](std::size_t chunk, int) {
-                 options_.cancel.check("superIFS step");
-                 const std::size_t v = chunk / static_cast<std::size_t>(bands);
-                 const int band = static_cast<int>(chunk % static_cast<std::size_t>(bands));
-                 const int row0 = band * band_rows;
-                 const int row1 = std::min(viewport_.size.height, row0 + band_rows);
-                 dilate_rows(masks_[v], dilation_, row0, row1, dilated_[v]);
-               });
+  parallel_rows(v_count, viewport_.size.height, band_rows, options_.threads, options_.cancel,
+                "superIFS step", [&](std::size_t v, cv::Range rows) {
+                  dilate_rows(masks_[v], dilation_, rows.start, rows.end, dilated_[v]);
+                });
 }
 
 StepChoices Buffers::draw_choices() const {
@@ -267,27 +257,18 @@ void Buffers::step() {
 
 // The densities and colour masses averaged over the dilation's window, by bands of rows.
 void Buffers::smooth_densities(Next& next) const {
-  const std::size_t v_count = masks_.size();
-  const cv::Size size = viewport_.size;
-  const int bands = band_count(size);
-  std::vector<cv::Mat>& smooth = next.smooth;
-  std::vector<cv::Mat>& smooth_colour = next.smooth_colour;
-  parallel_for(
-      v_count * static_cast<std::size_t>(bands), options_.threads, [&](std::size_t chunk, int) {
-        options_.cancel.check("superIFS step");
-        const std::size_t v = chunk / static_cast<std::size_t>(bands);
-        const int row0 = static_cast<int>(chunk % static_cast<std::size_t>(bands)) * band_rows;
-        const int row1 = std::min(size.height, row0 + band_rows);
-        box_rows(densities_[v], dilation_, row0, row1, smooth[v]);
-        box_rows(colour_masses_[v], dilation_, row0, row1, smooth_colour[v]);
-      });
+  parallel_rows(masks_.size(), viewport_.size.height, band_rows, options_.threads, options_.cancel,
+                "superIFS step", [&](std::size_t v, cv::Range rows) {
+                  box_rows(densities_[v], dilation_, rows.start, rows.end, next.smooth[v]);
+                  box_rows(colour_masses_[v], dilation_, rows.start, rows.end,
+                           next.smooth_colour[v]);
+                });
 }
 
 // K'_v (and μ'_v with the colour masses) from the buffers the choices draw on, by bands of rows.
 void Buffers::paint_next(const StepChoices& choices, Next& buffers) const {
   const std::size_t v_count = masks_.size(), m_count = super_.maps();
   const cv::Size size = viewport_.size;
-  const int bands = band_count(size);
   std::vector<cv::Mat>& next = buffers.masks;
   const std::vector<cv::Mat>& smooth = buffers.smooth;
   const std::vector<cv::Mat>& smooth_colour = buffers.smooth_colour;
@@ -297,12 +278,10 @@ void Buffers::paint_next(const StepChoices& choices, Next& buffers) const {
   std::vector<double> map_coordinate(m_count, 0.0);
   for (std::size_t m = 0; m < m_count && m_count > 1; ++m)
     map_coordinate[m] = static_cast<double>(m) / static_cast<double>(m_count - 1);
-  parallel_for(
-      v_count * static_cast<std::size_t>(bands), options_.threads, [&](std::size_t chunk, int) {
-        options_.cancel.check("superIFS step");
-        const std::size_t v = chunk / static_cast<std::size_t>(bands);
-        const int row0 = static_cast<int>(chunk % static_cast<std::size_t>(bands)) * band_rows;
-        const int row1 = std::min(size.height, row0 + band_rows);
+  parallel_rows(
+      v_count, size.height, band_rows, options_.threads, options_.cancel, "superIFS step",
+      [&](std::size_t v, cv::Range rows) {
+        const int row0 = rows.start, row1 = rows.end;
         const std::uint32_t n = choices.ifs[v];
         const std::uint32_t* source = &choices.source[v * m_count];
         for (int row = row0; row < row1; ++row) {

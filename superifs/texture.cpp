@@ -131,14 +131,11 @@ cv::Mat render_tops(const Buffers& buffers, std::size_t v) {
   const cv::Size size = buffers.size();
   const double m_count = static_cast<double>(buffers.super().maps());
   cv::Mat index(size, CV_8UC1, cv::Scalar(0));
-  const auto bands = static_cast<std::size_t>((size.height + band_rows - 1) / band_rows);
   const cv::Mat& mask = buffers.mask(v);
   const Descent descent(buffers);
-  parallel_for(bands, buffers.threads(), [&](std::size_t band, int) {
-    buffers.cancel().check("texture");
+  const auto band = [&](cv::Range rows) {
     std::vector<Symbol> word(descent.levels.size());
-    const int row0 = static_cast<int>(band) * band_rows;
-    for (int row = row0; row < std::min(size.height, row0 + band_rows); ++row) {
+    for (int row = rows.start; row < rows.end; ++row) {
       for (int col = 0; col < size.width; ++col) {
         if (!mask.at<std::uint8_t>(row, col)) continue;
         Point z;
@@ -152,7 +149,8 @@ cv::Mat render_tops(const Buffers& buffers, std::size_t v) {
         index.at<std::uint8_t>(row, col) = static_cast<std::uint8_t>(1 + std::floor(t * 254.999));
       }
     }
-  });
+  };
+  parallel_rows(size.height, band_rows, buffers.threads(), buffers.cancel(), "texture", band);
   cv::Mat colour;
   cv::applyColorMap(index, colour, cv::COLORMAP_TURBO);
   colour.setTo(cv::Scalar::all(0), mask == 0);
@@ -265,13 +263,10 @@ StealMap steal_map(const Buffers& buffers, std::size_t v) {
   StealMap map;
   map.coverage = buffers.mask(v).clone();
   map.source_uv.create(size, CV_32FC2);
-  const auto bands = static_cast<std::size_t>((size.height + band_rows - 1) / band_rows);
   const Descent descent(buffers);
-  parallel_for(bands, buffers.threads(), [&](std::size_t band, int) {
-    buffers.cancel().check("texture");
+  const auto band = [&](cv::Range rows) {
     std::vector<Symbol> word(descent.levels.size());
-    const int row0 = static_cast<int>(band) * band_rows;
-    for (int row = row0; row < std::min(size.height, row0 + band_rows); ++row) {
+    for (int row = rows.start; row < rows.end; ++row) {
       auto* uv = map.source_uv.ptr<cv::Vec2f>(row);
       const std::uint8_t* covered = map.coverage.ptr<std::uint8_t>(row);
       for (int col = 0; col < size.width; ++col) {
@@ -288,7 +283,8 @@ StealMap steal_map(const Buffers& buffers, std::size_t v) {
         uv[col] = {static_cast<float>(t.x), static_cast<float>(1.0 - t.y)};
       }
     }
-  });
+  };
+  parallel_rows(size.height, band_rows, buffers.threads(), buffers.cancel(), "texture", band);
   return map;
 }
 

@@ -15,7 +15,7 @@ LiveDrift::LiveDrift(const Ifs& base, const Ifs& colouring, cv::Size size,
                                  size_, options_.map.margin);
   }
   if (options_.fade_frames < 1) options_.fade_frames = 1;
-  current_ = std::make_shared<const RemapTable>(build(0));
+  current_ = std::make_shared<const PreparedStealMap>(build(0));
   previous_ = current_;
   fade_ = options_.fade_frames;
   built_ = 1;
@@ -25,16 +25,16 @@ LiveDrift::~LiveDrift() {
   if (pending_.valid()) pending_.wait();
 }
 
-RemapTable LiveDrift::build(double t) const {
+PreparedStealMap LiveDrift::build(double t) const {
   const Ifs now = drift(base_, t, options_.drift);
-  return make_remap_table(compute_steal_map(now, colouring_, size_, options_.map), size_,
-                          options_.interpolation, options_.map.threads);
+  return prepare_filter(compute_steal_map(now, colouring_, size_, options_.map), size_,
+                        options_.interpolation, options_.map.threads);
 }
 
 cv::Mat LiveDrift::filter(const cv::Mat& frame, double t, const FilterOptions& options) {
   if (pending_.valid() && pending_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
     previous_ = current_;
-    current_ = std::make_shared<const RemapTable>(pending_.get());  // rethrows a failed build
+    current_ = std::make_shared<const PreparedStealMap>(pending_.get());  // rethrows a failed build
     fade_ = 0;
     ++built_;
   }

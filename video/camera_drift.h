@@ -46,13 +46,13 @@ class LiveDrift {
   std::int64_t maps_built() const { return built_; }
 
  private:
-  RemapTable build(double t) const;
+  PreparedStealMap build(double t) const;
 
   Ifs base_, colouring_;
   cv::Size size_;
   LiveDriftOptions options_;
-  std::shared_ptr<const RemapTable> previous_, current_;
-  std::future<RemapTable> pending_;
+  std::shared_ptr<const PreparedStealMap> previous_, current_;
+  std::future<PreparedStealMap> pending_;
   int fade_ = 0;
   std::int64_t built_ = 0;
 };

@@ -84,7 +84,7 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
   const Interpolation interpolation = s.interpolation;
   switch (s.animate) {
     case Animate::none:
-      table_ = std::make_shared<const RemapTable>(make_remap_table(
+      table_ = std::make_shared<const PreparedStealMap>(prepare_filter(
           compute_steal_map(F_, G_, size, map_options), frame_size, interpolation, threads));
       return;
     case Animate::drift: {
@@ -96,8 +96,8 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
           [=, F = F_, G = G_, drift_options = drift_options(), interval = s.keyframe_interval,
            fps = frame_rate](std::int64_t k) {
             const Ifs now = drift(F, static_cast<double>(k) * interval / fps, drift_options);
-            return make_remap_table(compute_steal_map(now, G, size, map_options), frame_size,
-                                    interpolation, threads);
+            return prepare_filter(compute_steal_map(now, G, size, map_options), frame_size,
+                                  interpolation, threads);
           },
           s.keyframe_interval);
       return;
@@ -115,8 +115,8 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
       sequence_ = std::make_shared<TextureSequence>(super_, size, t);
       schedule_ = std::make_unique<MapSchedule>(
           [=, sequence = sequence_](std::int64_t k) {
-            return make_remap_table(sequence->map_at(std::max<std::int64_t>(k, 0)), frame_size,
-                                    interpolation, threads);
+            return prepare_filter(sequence->map_at(std::max<std::int64_t>(k, 0)), frame_size,
+                                  interpolation, threads);
           },
           s.keyframe_interval);
       return;

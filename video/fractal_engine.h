@@ -139,10 +139,10 @@ class FractalEngine {
   std::string name_;
   std::vector<std::string> warnings_;
   Ifs F_, G_;
-  SuperIfs super_;                             // animate superifs
-  std::shared_ptr<TextureSequence> sequence_;  // animate superifs
-  std::shared_ptr<const RemapTable> table_;    // animate none
-  std::unique_ptr<MapSchedule> schedule_;      // animate drift or superifs
+  SuperIfs super_;                                 // animate superifs
+  std::shared_ptr<TextureSequence> sequence_;      // animate superifs
+  std::shared_ptr<const PreparedStealMap> table_;  // animate none
+  std::unique_ptr<MapSchedule> schedule_;          // animate drift or superifs
 };
 
 }  // namespace ifsfx::video

@@ -2,13 +2,11 @@
 #include "video/fractal_filter.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
 
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
-#include "ifs/detail/compact_remap.h"
 #include "ifs/error.h"
 #include "ifs/parallel.h"
 
@@ -18,25 +16,17 @@ namespace {
 
 constexpr int band_rows = 32;  // rows per work chunk: fixed, so the split never depends on threads
 
-// Far outside any source: with BORDER_TRANSPARENT the remap leaves such pixels untouched.
-constexpr float outside = -16384.0f;
-
-std::size_t bands(int rows) {
-  return static_cast<std::size_t>((rows + band_rows - 1) / band_rows);
-}
-
-cv::Range band(std::size_t chunk, int rows) {
-  const int r0 = static_cast<int>(chunk) * band_rows;
-  return {r0, std::min(rows, r0 + band_rows)};
-}
-
-void check_frame(const cv::Mat& frame, const RemapTable& table) {
-  if ((frame.type() != CV_8UC3 && frame.type() != CV_8UC4) || frame.size() != table.source_size)
+// The precondition of the remap (check_apply_source), and the filter's own: a table with a
+// transparent border over 8-bit BGR or BGRA frames.
+void check_frame(const cv::Mat& frame, const PreparedStealMap& table) {
+  check_apply_source(table, frame);
+  if (table.options.border != RemapBorder::transparent)
+    throw Error(ErrorKind::invalid_argument,
+                "fractal filter: needs a map prepared with a transparent border (got constant)");
+  if (frame.type() != CV_8UC3 && frame.type() != CV_8UC4)
     throw Error(
         ErrorKind::invalid_argument,
-        fmt::format("fractal filter: frame must be {}x{} 8-bit BGR or BGRA (got {}x{}, type {})",
-                    table.source_size.width, table.source_size.height, frame.cols, frame.rows,
-                    frame.type()));
+        fmt::format("fractal filter: frame must be 8-bit BGR or BGRA (got type {})", frame.type()));
 }
 
 // The original frame is needed at the output size for the mix, the original background and the
@@ -61,20 +51,6 @@ cv::Mat original_at(const cv::Mat& frame, cv::Size size) {
   cv::Mat resized;
   cv::resize(frame, resized, size, 0, 0, cv::INTER_AREA);
   return resized;
-}
-
-// One band of output rows through one table, over the background already in `out`: through the
-// compact table where it serves the frame (the covered pixels only, no OpenCV thread pool inside
-// our bands), else cv::remap; the bytes are the same.
-void remap_band(const cv::Mat& frame, const RemapTable& table, cv::Mat& out, cv::Range rows) {
-  if (table.compact && detail::compact_remap_supports(frame.type()) && frame.isContinuous())
-    return detail::remap_rows(*table.compact, frame, out, rows, std::nullopt);
-  cv::Mat dst = out.rowRange(rows);
-  const int mode =
-      table.interpolation == Interpolation::nearest ? cv::INTER_NEAREST : cv::INTER_LINEAR;
-  cv::remap(frame, dst, table.xy.rowRange(rows),
-            table.fraction.empty() ? cv::Mat() : table.fraction.rowRange(rows), mode,
-            cv::BORDER_TRANSPARENT);
 }
 
 void fill_background(const cv::Mat& original, const FilterOptions& options, cv::Mat& out,
@@ -111,56 +87,21 @@ Background parse_background(const std::string& text, const std::string& what) {
       fmt::format("{}: expected black, white, original, #rrggbb or R,G,B (got '{}')", what, text));
 }
 
-RemapTable make_remap_table(const StealMap& map, cv::Size source_size, Interpolation interpolation,
-                            int threads) {
-  if (map.empty() || map.source_uv.type() != CV_32FC2 || map.coverage.type() != CV_8UC1 ||
-      map.source_uv.size() != map.coverage.size())
-    throw Error(ErrorKind::invalid_argument,
-                "fractal filter: steal map must be CV_32FC2 coordinates with a CV_8UC1 coverage "
-                "of the same size");
-  if (source_size.width < 2 || source_size.height < 2)
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("fractal filter: frames must be at least 2x2 (got {}x{})",
-                            source_size.width, source_size.height));
-  const cv::Size size = map.size();
-  const float w = static_cast<float>(source_size.width);
-  const float h = static_cast<float>(source_size.height);
-  // The remap's fixed point has 1/32 pixel steps; staying a step inside the last column and row
-  // keeps bilinear lookups of edge pixels within the source, where a transparent border would
-  // otherwise drop them.
-  const float x_max = w - 1.0f - 1.0f / 32;
-  const float y_max = h - 1.0f - 1.0f / 32;
-  RemapTable table;
-  table.source_size = source_size;
-  table.interpolation = interpolation;
-  detail::fixed_point_maps(
-      size, interpolation == Interpolation::nearest, threads,
-      [&](int r, cv::Vec2f* out) {
-        const auto* uv = map.source_uv.ptr<cv::Vec2f>(r);
-        const auto* covered = map.coverage.ptr<std::uint8_t>(r);
-        for (int c = 0; c < size.width; ++c) {
-          if (covered[c] == 0 || !std::isfinite(uv[c][0]) || !std::isfinite(uv[c][1])) {
-            out[c] = {outside, outside};
-            continue;
-          }
-          out[c] = {std::clamp(uv[c][0] * w - 0.5f, 0.0f, x_max),
-                    std::clamp(uv[c][1] * h - 0.5f, 0.0f, y_max)};
-        }
-      },
-      table.xy, table.fraction);
-  if (auto compact = detail::compact_remap(table.xy, table.fraction, source_size,
-                                           detail::RemapBorder::transparent, threads))
-    table.compact = std::make_shared<const detail::CompactRemap>(std::move(*compact));
-  return table;
+PreparedStealMap prepare_filter(const StealMap& map, cv::Size frame_size,
+                                Interpolation interpolation, int threads) {
+  return prepare_apply(
+      map, frame_size,
+      {.interpolation = interpolation, .border = RemapBorder::transparent, .threads = threads});
 }
 
-cv::Mat filter_frame(const cv::Mat& frame, const RemapTable& table, const FilterOptions& options) {
+cv::Mat filter_frame(const cv::Mat& frame, const PreparedStealMap& table,
+                     const FilterOptions& options) {
   cv::Mat out;
   filter_frame(frame, table, options, out);
   return out;
 }
 
-void filter_frame(const cv::Mat& input, const RemapTable& table, const FilterOptions& options,
+void filter_frame(const cv::Mat& input, const PreparedStealMap& table, const FilterOptions& options,
                   cv::Mat& out) {
   check_frame(input, table);
   const cv::Mat frame = input.data == out.data ? input.clone() : input;  // in place
@@ -168,10 +109,9 @@ void filter_frame(const cv::Mat& input, const RemapTable& table, const FilterOpt
   const cv::Size size = table.size();
   const cv::Mat original = needs_original(frame, options) ? original_at(frame, size) : cv::Mat();
   out.create(size, frame.type());
-  parallel_for(bands(size.height), options.threads, [&](std::size_t chunk, int) {
-    const cv::Range rows = band(chunk, size.height);
+  parallel_rows(size.height, band_rows, options.threads, [&](cv::Range rows) {
     fill_background(original, options, out, rows);
-    remap_band(frame, table, out, rows);
+    apply_rows(table, frame, out, rows);
     if (options.mix > 0) {
       cv::Mat dst = out.rowRange(rows);
       cv::addWeighted(dst, 1 - options.mix, original.rowRange(rows), options.mix, 0, dst);
@@ -180,15 +120,15 @@ void filter_frame(const cv::Mat& input, const RemapTable& table, const FilterOpt
   });
 }
 
-cv::Mat filter_frame(const cv::Mat& frame, const RemapTable& from, const RemapTable& to, double t,
-                     const FilterOptions& options) {
+cv::Mat filter_frame(const cv::Mat& frame, const PreparedStealMap& from, const PreparedStealMap& to,
+                     double t, const FilterOptions& options) {
   cv::Mat out;
   filter_frame(frame, from, to, t, options, out);
   return out;
 }
 
-void filter_frame(const cv::Mat& input, const RemapTable& from, const RemapTable& to, double t,
-                  const FilterOptions& options, cv::Mat& out) {
+void filter_frame(const cv::Mat& input, const PreparedStealMap& from, const PreparedStealMap& to,
+                  double t, const FilterOptions& options, cv::Mat& out) {
   check_frame(input, from);
   check_frame(input, to);
   const cv::Mat frame = input.data == out.data ? input.clone() : input;  // in place
@@ -201,12 +141,11 @@ void filter_frame(const cv::Mat& input, const RemapTable& from, const RemapTable
   const cv::Mat original = needs_original(frame, options) ? original_at(frame, size) : cv::Mat();
   out.create(size, frame.type());
   cv::Mat second(size, frame.type());
-  parallel_for(bands(size.height), options.threads, [&](std::size_t chunk, int) {
-    const cv::Range rows = band(chunk, size.height);
+  parallel_rows(size.height, band_rows, options.threads, [&](cv::Range rows) {
     fill_background(original, options, out, rows);
     fill_background(original, options, second, rows);
-    remap_band(frame, from, out, rows);
-    remap_band(frame, to, second, rows);
+    apply_rows(from, frame, out, rows);
+    apply_rows(to, frame, second, rows);
     cv::Mat dst = out.rowRange(rows);
     cv::addWeighted(dst, 1 - t, second.rowRange(rows), t, 0, dst);
     if (options.mix > 0)

@@ -5,15 +5,9 @@
 // then one remap, plus the optional blend with the original frame.
 #pragma once
 
-#include <memory>
-
 #include <opencv2/core.hpp>
 
 #include "ifs/steal_map.h"
-
-namespace ifsfx::detail {
-struct CompactRemap;  // ifs/detail/compact_remap.h
-}
 
 namespace ifsfx::video {
 
@@ -44,43 +38,32 @@ struct FilterOptions {
 // Checks the options: mix in [0, 1]; throws Error{invalid_argument} naming --mix.
 void check_filter_options(const FilterOptions& options);
 
-// A steal map as a remap table for sources of one size: fixed-point pixel coordinates
-// (cv::convertMaps), with uncovered pixels pointing outside the source so that one remap with a
-// transparent border leaves the background in place.
-struct RemapTable {
-  cv::Mat xy;            // CV_16SC2: integer source pixel per output pixel
-  cv::Mat fraction;      // CV_16UC1: sub-pixel position (bilinear), empty for nearest
-  cv::Size source_size;  // the frame size the table was made for
-  Interpolation interpolation = Interpolation::bilinear;
-  // The same table compacted to the covered pixels (null where it cannot be): 8-bit frames are
-  // remapped through it on our own bands, byte for byte what cv::remap gives from xy/fraction.
-  std::shared_ptr<const detail::CompactRemap> compact;
-
-  cv::Size size() const { return xy.size(); }
-};
-
-// Source pixel (x, y) = (u·W − 0.5, v·H − 0.5) for a W×H source (steal_map.h's convention),
-// clamped inside the source so that edge pixels stay on it under bilinear lookup.
-RemapTable make_remap_table(const StealMap& map, cv::Size source_size,
-                            Interpolation interpolation = Interpolation::bilinear, int threads = 0);
+// The steal map prepared for frames of `frame_size` with a transparent border, so that one remap
+// over the background drawn first leaves it where the attractor does not reach: prepare_apply
+// (ifs/steal_map.h) with {interpolation, RemapBorder::transparent, threads}.
+PreparedStealMap prepare_filter(const StealMap& map, cv::Size frame_size,
+                                Interpolation interpolation = Interpolation::bilinear,
+                                int threads = 0);
 
 // The filtered frame: `frame` (of table.source_size) coloured through the table, of the table's
 // size and the frame's type. Frames are CV_8UC3 (BGR) or CV_8UC4, whose fourth channel (alpha) is
-// not stolen but passed through from the same place of the original frame.
-//   auto table = make_remap_table(T, frame.size());
+// not stolen but passed through from the same place of the original frame. The table has a
+// transparent border (prepare_filter); throws Error{invalid_argument} otherwise, and for a frame
+// check_apply_source refuses or of another type.
+//   auto table = prepare_filter(T, frame.size());
 //   cv::Mat out = filter_frame(frame, table);
-cv::Mat filter_frame(const cv::Mat& frame, const RemapTable& table,
+cv::Mat filter_frame(const cv::Mat& frame, const PreparedStealMap& table,
                      const FilterOptions& options = {});
 // The same into `out`, reallocated only when its size or type differ: a host's frame buffer
 // wrapped in a cv::Mat is written in place.
-void filter_frame(const cv::Mat& frame, const RemapTable& table, const FilterOptions& options,
+void filter_frame(const cv::Mat& frame, const PreparedStealMap& table, const FilterOptions& options,
                   cv::Mat& out);
 
 // A cross-fade between two tables of the same size: (1 − t)·through `from` + t·through `to`, for
 // animations that change the map (a superIFS step, drift keyframes).
-cv::Mat filter_frame(const cv::Mat& frame, const RemapTable& from, const RemapTable& to, double t,
-                     const FilterOptions& options = {});
-void filter_frame(const cv::Mat& frame, const RemapTable& from, const RemapTable& to, double t,
-                  const FilterOptions& options, cv::Mat& out);
+cv::Mat filter_frame(const cv::Mat& frame, const PreparedStealMap& from, const PreparedStealMap& to,
+                     double t, const FilterOptions& options = {});
+void filter_frame(const cv::Mat& frame, const PreparedStealMap& from, const PreparedStealMap& to,
+                  double t, const FilterOptions& options, cv::Mat& out);
 
 }  // namespace ifsfx::video

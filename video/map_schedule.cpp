@@ -26,8 +26,9 @@ MapSchedule::~MapSchedule() {
 std::shared_future<MapSchedule::Table>& MapSchedule::keyframe(std::int64_t k) {
   auto it = keyframes_.find(k);
   if (it == keyframes_.end()) {
-    auto future = std::async(std::launch::async,
-                             [this, k] { return std::make_shared<const RemapTable>(builder_(k)); });
+    auto future = std::async(std::launch::async, [this, k] {
+      return std::make_shared<const PreparedStealMap>(builder_(k));
+    });
     it = keyframes_.emplace(k, future.share()).first;
   }
   return it->second;

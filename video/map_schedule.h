@@ -22,7 +22,7 @@ namespace ifsfx::video {
 
 class MapSchedule {
  public:
-  using Builder = std::function<RemapTable(std::int64_t keyframe)>;
+  using Builder = std::function<PreparedStealMap(std::int64_t keyframe)>;
 
   // `interval` = K, frames between keyframes (≥ 1). The builder runs on worker threads, at most
   // `lookahead` keyframes ahead of the one shown; it must be safe to call concurrently.
@@ -32,7 +32,7 @@ class MapSchedule {
   MapSchedule& operator=(const MapSchedule&) = delete;
 
   struct Blend {
-    std::shared_ptr<const RemapTable> from, to;
+    std::shared_ptr<const PreparedStealMap> from, to;
     double t = 0;  // weight of `to`
   };
   // The maps of source frame `frame`. Rethrows a builder's error.
@@ -45,7 +45,7 @@ class MapSchedule {
   std::int64_t stalls() const { return stalls_; }
 
  private:
-  using Table = std::shared_ptr<const RemapTable>;
+  using Table = std::shared_ptr<const PreparedStealMap>;
   std::shared_future<Table>& keyframe(std::int64_t k);
 
   Builder builder_;

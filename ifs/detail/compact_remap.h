@@ -14,13 +14,9 @@
 
 #include <opencv2/core.hpp>
 
-namespace ifsfx::detail {
+#include "ifs/steal_map.h"  // RemapBorder
 
-// What cv::remap does with a pixel whose neighbours lie off the source.
-enum class RemapBorder {
-  constant,     // BORDER_CONSTANT: a pixel that reads nothing gets the background
-  transparent,  // BORDER_TRANSPARENT: a pixel whose bilinear square leaves the source is untouched
-};
+namespace ifsfx::detail {
 
 struct CompactRemap {
   struct Run {

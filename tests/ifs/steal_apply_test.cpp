@@ -114,6 +114,36 @@ TEST(steal_apply, prepared_tables_are_one_convert_maps_for_any_thread_count) {
   }
 }
 
+// The video filter's border: a pixel that reads nothing keeps what the output held, for 8-bit
+// sources (through the compact table) and float ones (cv::remap) alike.
+TEST(steal_apply, transparent_border_keeps_the_output_where_the_map_reads_nothing) {
+  const cv::Mat grey = (cv::Mat_<std::uint8_t>(2, 4) << 0, 100, 200, 250, 0, 100, 200, 250);
+  for (const int depth : {CV_8U, CV_32F}) {
+    cv::Mat source;
+    grey.convertTo(source, depth);
+    const PreparedStealMap prepared = prepare_apply(one_pixel_map(0.5f, 0.5f), source.size(),
+                                                    {.border = RemapBorder::transparent});
+    cv::Mat out(1, 2, depth, cv::Scalar(77));
+    apply(prepared, source, out);
+    cv::Mat bytes;
+    out.convertTo(bytes, CV_8U);
+    EXPECT_EQ(bytes.at<std::uint8_t>(0, 0), 150) << depth;
+    EXPECT_EQ(bytes.at<std::uint8_t>(0, 1), 77) << depth;
+  }
+}
+
+TEST(steal_apply, a_transparent_border_needs_a_source_of_two_pixels_a_side) {
+  EXPECT_NO_THROW(prepare_apply(one_pixel_map(0.5f, 0.5f), {4, 1}));
+  try {
+    prepare_apply(one_pixel_map(0.5f, 0.5f), {4, 1}, {.border = RemapBorder::transparent});
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
+    EXPECT_STREQ(e.what(),
+                 "source size: 2 to 32766 pixels a side under a transparent border (got 4x1)");
+  }
+}
+
 TEST(steal_apply, empty_source_is_refused) {
   EXPECT_THROW(apply(one_pixel_map(0.5f, 0.5f), cv::Mat()), Error);
 }

@@ -36,8 +36,8 @@ TEST(camera_drift, the_first_frame_shows_the_map_of_time_zero) {
   LiveDrift live(x.F, x.G, x.size, x.options);
   StealMapOptions map = x.options.map;
   map.view = fit_view(attractor_bounds(x.F, map.seed), x.size, map.margin);
-  const RemapTable table =
-      make_remap_table(compute_steal_map(drift(x.F, 0, x.options.drift), x.G, x.size, map), x.size);
+  const PreparedStealMap table =
+      prepare_filter(compute_steal_map(drift(x.F, 0, x.options.drift), x.G, x.size, map), x.size);
   const cv::Mat got = live.filter(x.frame, 0.5);
   EXPECT_EQ(cv::norm(got, filter_frame(x.frame, table), cv::NORM_INF), 0);
 }
@@ -61,8 +61,8 @@ TEST(camera_drift, new_maps_arrive_from_the_worker_without_waiting) {
   StealMapOptions map = x.options.map;
   map.view = fit_view(attractor_bounds(x.F, map.seed), x.size, map.margin);
   const cv::Mat drifted = filter_frame(
-      x.frame, make_remap_table(compute_steal_map(drift(x.F, t, x.options.drift), x.G, x.size, map),
-                                x.size));
+      x.frame,
+      prepare_filter(compute_steal_map(drift(x.F, t, x.options.drift), x.G, x.size, map), x.size));
   ASSERT_GT(cv::norm(drifted, first, cv::NORM_L1), 0) << "the drift at t = 0.5 moved no pixel";
   EXPECT_EQ(cv::norm(now, drifted, cv::NORM_INF), 0) << "the drifted map never showed";
 }

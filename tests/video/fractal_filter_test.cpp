@@ -17,7 +17,7 @@ TEST(fractal_filter, identity_map_returns_the_frame) {
   const cv::Size size{97, 61};
   const cv::Mat frame = test_frame(size, 3);
   for (Interpolation mode : {Interpolation::bilinear, Interpolation::nearest}) {
-    const RemapTable table = make_remap_table(identity_map(size), size, mode);
+    const PreparedStealMap table = prepare_filter(identity_map(size), size, mode);
     const cv::Mat out = filter_frame(frame, table);
     // Inside, exactly the frame; the last column and row sit 1/32 px inside the source edge.
     const cv::Rect inner(0, 0, size.width - 1, size.height - 1);
@@ -41,7 +41,7 @@ TEST(fractal_filter, four_channel_frames_pass_their_alpha_through) {
   cv::randu(alpha, 0, 256);
   cv::Mat bgra;
   cv::merge(std::vector<cv::Mat>{bgr, alpha}, bgra);
-  const RemapTable table = make_remap_table(map, size, Interpolation::nearest);
+  const PreparedStealMap table = prepare_filter(map, size, Interpolation::nearest);
   const FilterOptions options{.mix = 0.25, .background = {BackgroundKind::colour, {10, 20, 30}}};
   cv::Mat out(size, CV_8UC4, cv::Scalar::all(7));  // written in place
   const std::uint8_t* buffer = out.data;
@@ -64,7 +64,7 @@ TEST(fractal_filter, mirror_map_flips_the_frame) {
   const cv::Mat frame = test_frame(size, 0);
   cv::Mat flipped;
   cv::flip(frame, flipped, 1);
-  const cv::Mat out = filter_frame(frame, make_remap_table(map, size, Interpolation::nearest));
+  const cv::Mat out = filter_frame(frame, prepare_filter(map, size, Interpolation::nearest));
   EXPECT_EQ(cv::norm(out, flipped, cv::NORM_INF), 0.0);
 }
 
@@ -73,7 +73,7 @@ TEST(fractal_filter, map_of_another_size_resamples_the_frame) {
   // takes the frame at its own centre, i.e. between four frame pixels (their mean, bilinear).
   const cv::Size frame_size{40, 20}, out_size{20, 10};
   const cv::Mat frame = test_frame(frame_size, 1);
-  const cv::Mat out = filter_frame(frame, make_remap_table(identity_map(out_size), frame_size));
+  const cv::Mat out = filter_frame(frame, prepare_filter(identity_map(out_size), frame_size));
   ASSERT_EQ(out.size(), out_size);
   cv::Mat expected;
   cv::resize(frame, expected, out_size, 0, 0, cv::INTER_AREA);
@@ -86,7 +86,7 @@ TEST(fractal_filter, uncovered_pixels_take_the_background) {
   StealMap map = identity_map(size);
   map.coverage(cv::Rect(0, 0, 16, 24)).setTo(0);  // left half off the attractor
   const cv::Mat frame = test_frame(size, 2);
-  const RemapTable table = make_remap_table(map, size);
+  const PreparedStealMap table = prepare_filter(map, size);
   const cv::Rect left(0, 0, 16, 24), right(16, 0, 15, 23);
 
   FilterOptions colour;
@@ -108,7 +108,7 @@ TEST(fractal_filter, mix_blends_the_original_frame) {
   StealMap map = identity_map(size);
   map.coverage.setTo(0);  // all black fractal, so the mix is A · frame
   const cv::Mat frame = test_frame(size, 4);
-  const RemapTable table = make_remap_table(map, size);
+  const PreparedStealMap table = prepare_filter(map, size);
   FilterOptions o;
   o.mix = 1;
   EXPECT_EQ(cv::norm(filter_frame(frame, table, o), frame, cv::NORM_INF), 0.0);
@@ -125,8 +125,8 @@ TEST(fractal_filter, cross_fade_weights_the_two_maps) {
   const cv::Mat frame = test_frame(size, 5);
   StealMap dark = identity_map(size);
   dark.coverage.setTo(0);
-  const RemapTable a = make_remap_table(identity_map(size), size);
-  const RemapTable b = make_remap_table(dark, size);
+  const PreparedStealMap a = prepare_filter(identity_map(size), size);
+  const PreparedStealMap b = prepare_filter(dark, size);
   EXPECT_EQ(cv::norm(filter_frame(frame, a, b, 0.0), filter_frame(frame, a), cv::NORM_INF), 0.0);
   EXPECT_EQ(cv::norm(filter_frame(frame, a, b, 1.0), filter_frame(frame, b), cv::NORM_INF), 0.0);
   cv::Mat quarter;
@@ -151,10 +151,10 @@ TEST(fractal_filter, compact_table_gives_the_bytes_of_cv_remap) {
     cv::Mat frame = test_frame(size, 4);
     if (type == CV_8UC4) cv::cvtColor(frame, frame, cv::COLOR_BGR2BGRA);
     for (const Interpolation mode : {Interpolation::bilinear, Interpolation::nearest}) {
-      const RemapTable table = make_remap_table(map, size, mode);
-      const RemapTable second = make_remap_table(other, size, mode);
+      const PreparedStealMap table = prepare_filter(map, size, mode);
+      const PreparedStealMap second = prepare_filter(other, size, mode);
       ASSERT_TRUE(table.compact) << "no compact table: the test would prove nothing";
-      RemapTable plain = table, plain_second = second;
+      PreparedStealMap plain = table, plain_second = second;
       plain.compact.reset();
       plain_second.compact.reset();
       for (const BackgroundKind kind : {BackgroundKind::colour, BackgroundKind::original})
@@ -186,21 +186,40 @@ TEST(fractal_filter, thread_count_does_not_change_pixels) {
   one.threads = 1;
   many.threads = 7;
   EXPECT_EQ(
-      cv::norm(filter_frame(frame, make_remap_table(map, size, Interpolation::bilinear, 1), one),
-               filter_frame(frame, make_remap_table(map, size, Interpolation::bilinear, 7), many),
+      cv::norm(filter_frame(frame, prepare_filter(map, size, Interpolation::bilinear, 1), one),
+               filter_frame(frame, prepare_filter(map, size, Interpolation::bilinear, 7), many),
                cv::NORM_INF),
       0.0);
 }
 
 TEST(fractal_filter, frame_of_the_wrong_size_is_refused) {
-  const RemapTable table = make_remap_table(identity_map({16, 16}), {16, 16});
+  const PreparedStealMap table = prepare_filter(identity_map({16, 16}), {16, 16});
   try {
     filter_frame(test_frame({17, 16}, 0), table);
     FAIL();
   } catch (const Error& e) {
     EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
     EXPECT_STREQ(e.what(),
-                 "fractal filter: frame must be 16x16 8-bit BGR or BGRA (got 17x16, type 16)");
+                 "source image: must be the size the steal map was prepared for (16x16) (got "
+                 "17x16)");
+  }
+}
+
+TEST(fractal_filter, refuses_other_frame_types_and_a_map_with_a_constant_border) {
+  const StealMap map = identity_map({16, 16});
+  try {
+    filter_frame(cv::Mat(16, 16, CV_8UC1, cv::Scalar(1)), prepare_filter(map, {16, 16}));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(), "fractal filter: frame must be 8-bit BGR or BGRA (got type 0)");
+  }
+  try {
+    filter_frame(test_frame({16, 16}, 0), prepare_apply(map, {16, 16}));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
+    EXPECT_STREQ(e.what(),
+                 "fractal filter: needs a map prepared with a transparent border (got constant)");
   }
 }
 

@@ -14,13 +14,13 @@ namespace ifsfx::video {
 namespace {
 
 // A table whose every pixel takes the source at column k: identifies keyframe k in a 1-row map.
-RemapTable table_for(std::int64_t k) {
+PreparedStealMap table_for(std::int64_t k) {
   StealMap map = testing::identity_map({1, 1});
   map.source_uv.at<cv::Vec2f>(0, 0) = {(static_cast<float>(k) + 0.5f) / 64, 0.5f};
-  return make_remap_table(map, {64, 2}, Interpolation::nearest);
+  return prepare_filter(map, {64, 2}, Interpolation::nearest);
 }
 
-std::int64_t keyframe_of(const RemapTable& t) {
+std::int64_t keyframe_of(const PreparedStealMap& t) {
   return t.xy.at<cv::Vec2s>(0, 0)[0];
 }
 
@@ -58,7 +58,7 @@ TEST(map_schedule, starting_mid_way_gives_the_same_maps) {
 
 TEST(map_schedule, builder_error_reaches_the_caller) {
   MapSchedule schedule(
-      [](std::int64_t k) -> RemapTable {
+      [](std::int64_t k) -> PreparedStealMap {
         if (k == 2) throw Error(ErrorKind::invalid_ifs, "drift: map went wrong");
         return table_for(k);
       },

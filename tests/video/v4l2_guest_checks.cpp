@@ -180,8 +180,8 @@ class VividTest : public ::testing::Test {
                                  const StealMapOptions& o) {
     const Ifs F = load_ifs(preset).ifs;
     const Ifs G = default_colouring(F.size());
-    const RemapTable table =
-        make_remap_table(compute_steal_map(F, G, frame.size(), o), frame.size());
+    const PreparedStealMap table =
+        prepare_filter(compute_steal_map(F, G, frame.size(), o), frame.size());
     return filter_frame(frame, table);
   }
 
