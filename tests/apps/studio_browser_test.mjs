@@ -77,6 +77,27 @@ try {
   await page.keyboard.press('Control+Shift+z');
   check(JSON.stringify(await fields()) === JSON.stringify(after), 'Ctrl-Shift-Z redoes the drag');
 
+  // A corner of map 3 rotates and scales it about its centre: a, b, c, d change, e, f follow so
+  // that the centre's image stays; Shift + a corner shears it. Each is one undo step.
+  const beforeCorner = await fields();
+  for (const shift of [false, true]) {
+    const k = await page.evaluate(() => window.studio.handle(2, 'corner', 2));
+    if (shift) await page.keyboard.down('Shift');
+    await page.mouse.move(k.x, k.y);
+    await page.mouse.down();
+    for (let i = 1; i <= 5; i++) await page.mouse.move(k.x + 4 * i, k.y + 3 * i);
+    await page.mouse.up();
+    if (shift) await page.keyboard.up('Shift');
+    await drawn(await page.evaluate(() => window.studio.seq));
+  }
+  const cornered = await fields();
+  check([0, 1, 2, 3].every((j) => cornered[2][j] !== beforeCorner[2][j]),
+        `corners change a, b, c, d of map 3 (${beforeCorner[2].slice(0, 4)} -> ${cornered[2].slice(0, 4)})`);
+  await page.keyboard.press('Control+z');
+  await page.keyboard.press('Control+z');
+  check(JSON.stringify(await fields()) === JSON.stringify(beforeCorner), 'two Ctrl-Z undo both corner drags');
+  await drawn(await page.evaluate(() => window.studio.seq));
+
   // Save, and the command line renders what was saved.
   await page.fill('#file', 'dragged.toml');
   await page.click('#save');
