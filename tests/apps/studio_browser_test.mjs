@@ -127,7 +127,7 @@ try {
 
   // Latency: 50 moves of map 1's translate handle at 768x768 in tops mode, each waiting for its
   // picture: from the pointer event to the picture on the canvas.
-  await page.evaluate(() => { window.studio.latencies.length = 0; });
+  await page.evaluate(() => { window.studio.latencies.length = 0; window.studio.renderMs.length = 0; });
   const g = await page.evaluate(() => window.studio.handle(2, 'centre'));
   await page.mouse.move(g.x, g.y);
   await page.mouse.down();
@@ -138,6 +138,8 @@ try {
   await page.mouse.up();
   const ms = (await page.evaluate(() => window.studio.latencies)).sort((a, b) => a - b);
   const q = (p) => ms[Math.min(ms.length - 1, Math.floor(p * ms.length))];
+  const r = (await page.evaluate(() => window.studio.renderMs)).sort((a, b) => a - b);
+  console.log(`of which the server's render: p50 ${r[Math.floor(r.length / 2)].toFixed(1)} ms, p95 ${r[Math.min(r.length - 1, Math.floor(0.95 * r.length))].toFixed(1)} ms; load average ${(await import('node:os')).loadavg()[0].toFixed(1)} on ${(await import('node:os')).cpus().length} cores`);
   console.log(`drag-to-pixels latency, tops 768x768, ${ms.length} moves: p50 ${q(0.5).toFixed(1)} ms, p95 ${q(0.95).toFixed(1)} ms, max ${ms[ms.length - 1].toFixed(1)} ms`);
 } finally {
   await browser.close();

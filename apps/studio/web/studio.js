@@ -16,7 +16,7 @@ let picture = null;     // the last ImageBitmap drawn
 let pictureView = null; // [x0, y0, x1, y1] of that picture
 const undoStack = [];
 const redoStack = [];
-const stats = { seq: 0, drawnSeq: 0, latencies: [], errors: 0 };
+const stats = { seq: 0, drawnSeq: 0, latencies: [], renderMs: [], errors: 0 };
 window.studio = stats;
 
 async function api(path, options = {}) {
@@ -267,6 +267,7 @@ async function render(eventTime = performance.now()) {
     stats.drawnSeq = seq;
     draw();
     stats.latencies.push(performance.now() - eventTime);
+    stats.renderMs.push(Number(res.headers.get('X-Ifsfx-Render-Ms')));
     status(`${state.name}: ${state.maps.length} maps, rendered in ${res.headers.get('X-Ifsfx-Render-Ms')} ms`);
   } catch (e) {
     if (e.name !== 'AbortError') status(String(e), true);
