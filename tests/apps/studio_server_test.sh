@@ -19,8 +19,8 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 pass() { echo "ok: $*"; }
 
 pid=
-start_studio() {
-  TMPDIR="$work/tmp" "$ifsfx" studio barnsley-fern --folder "$work/folder" >"$work/stdout" 2>"$work/stderr" &
+start_studio() {  # start_studio [PRESET]
+  TMPDIR="$work/tmp" "$ifsfx" studio "${1:-barnsley-fern}" --folder "$work/folder" >"$work/stdout" 2>"$work/stderr" &
   pid=$!
   url=
   for _ in $(seq 100); do
@@ -96,25 +96,31 @@ code GET "/api/preset?name=barnsley-fern" "${auth[@]}" >/dev/null
 preset=$(cat "$work/body")
 c=$(code POST /api/save "${auth[@]}" --data "${preset/#\{/\{\"file\": \"fern.toml\",}")
 [[ $c == 200 && -f folder/fern.toml ]] && pass "save: fern.toml" || fail "save: $c $(cat "$work/body")"
-for args in "tops 256x256" "attractor 200x160" "steal 256x256"; do
-  read -r mode size <<<"$args"
+cp "$web/sample.png" folder/photo.png
+for args in "tops 256x256" "attractor 200x160" "steal 256x256 sample" "steal 128x96 photo.png"; do
+  read -r mode size source <<<"$args"
   extra=""; cli=()
   if [[ $mode == steal ]]; then
-    extra='"source": "sample",'
+    extra="\"source\": \"$source\","
     cli=(--source "$web/sample.png")
+    [[ $source == sample ]] || cli=(--source "folder/$source")
   fi
   c=$(code POST /api/render "${auth[@]}" \
     --data "${preset/#\{/\{$extra \"mode\": \"$mode\", \"size\": \"$size\",}")
   cp "$work/body" "$work/studio-$mode.png"
   "$ifsfx" render folder/fern.toml --mode "$mode" --size "$size" "${cli[@]}" -q -o "$work/cli-$mode.png"
   [[ $c == 200 ]] && cmp -s "$work/studio-$mode.png" "$work/cli-$mode.png" &&
-    pass "$mode $size: the studio's PNG is ifsfx render's, byte for byte" ||
+    pass "$mode $size $source: the studio's PNG is ifsfx render's, byte for byte" ||
     fail "$mode $size: $c, PNGs differ ($(head -c 200 "$work/body" | tr -d '\0'))"
 done
 
 # The output policy of save: plain names in --folder, never over an input
 c=$(code POST /api/save "${auth[@]}" --data "${preset/#\{/\{\"file\": \"../out.toml\",}"); [[ $c == 400 && ! -e out.toml ]] && pass "save ../out.toml: 400" || fail "save ../out.toml: $c"
 c=$(code POST /api/save "${auth[@]}" --data "${preset/#\{/\{\"file\": \"fern.png\",}"); [[ $c == 400 ]] && pass "save fern.png: 400" || fail "save fern.png: $c"
+c=$(code POST /api/render "${auth[@]}" --data "${preset/#\{/\{\"mode\": \"steal\", \"source\": \"../x.png\",}"); [[ $c == 400 ]] && pass "source ../x.png: 400" || fail "source ../x.png: $c"
+ln -s /etc/hostname folder/link.png
+c=$(code POST /api/render "${auth[@]}" --data "${preset/#\{/\{\"mode\": \"steal\", \"source\": \"link.png\",}"); [[ $c == 400 ]] && pass "source leading out of the folder: 400" || fail "source leading out of the folder: $c"
+rm folder/link.png
 
 # A newer render cancels the one in flight: the first answers 409
 curl -s -o /dev/null -w '%{http_code}' "${auth[@]}" -X POST "$base/api/render" \
@@ -127,7 +133,9 @@ wait $first
   fail "cancel: first $(cat "$work/first"), second $c"
 
 stop_check INT 130
-start_studio
+# Never over an input: the preset the studio was started with
+start_studio "$work/folder/fern.toml"
+c=$(code POST /api/save "${auth[@]}" --data "${preset/#\{/\{\"file\": \"fern.toml\",}"); [[ $c == 400 ]] && pass "save over the opened preset: 400 ($(cat "$work/body"))" || fail "save over the opened preset: $c"
 # SIGTERM in the middle of a long render
 curl -s -o /dev/null "-H" "X-Ifsfx-Token: $token" -X POST "$base/api/render" \
   --data "${preset/#\{/\{\"mode\": \"measure\", \"size\": \"2048x2048\", \"quality\": 4000,}" &
