@@ -122,8 +122,7 @@ function renderTable() {
       const td = document.createElement('td');
       const input = document.createElement('input');
       input.name = `${name}${i}`;
-      input.type = 'number';
-      input.step = 'any';
+      input.inputMode = 'decimal';  // text: a number field's spinner would hide digits
       input.value = k < 6 ? fmt(m[k]) : (state.probabilities.length === n ? fmt(state.probabilities[i]) : '');
       if (k === 6 && state.probabilities.length !== n) input.placeholder = 'auto';
       input.onchange = () => {
