@@ -9,6 +9,7 @@
 
 #include "apps/cli_options.h"
 #include "apps/commands.h"
+#include "apps/render_metadata.h"
 #include "apps/steal_modes.h"
 #include "apps/stop_signals.h"
 #include "ifs/error.h"
@@ -144,14 +145,7 @@ void run_render(const RenderArgs& args) {
   WriteOptions write;
   write.bits = args.bits;
   write.smallest = args.smallest;
-  write.metadata = {
-      {"ifsfx:preset", preset.text},
-      {"ifsfx:preset_name", preset.ifs.name},
-      {"ifsfx:mode", mode_name(args.mode)},
-      {"ifsfx:seed", std::to_string(args.seed)},
-      {"ifsfx:view",
-       fmt::format("{},{},{},{}", stats.view.x0, stats.view.y0, stats.view.x1, stats.view.y1)},
-  };
+  write.metadata = render_metadata(preset, mode_name(args.mode), args.seed, stats.view);
   OutputFile image_file(args.output, output);
   write_image(image_file, image, write);
   staged.push_back(std::move(image_file));

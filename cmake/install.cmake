@@ -60,6 +60,7 @@ install(FILES ${IFSFX_MAN_PAGE} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 install(FILES ${IFSFX_COMPLETION} DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions
         RENAME ifsfx)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/presets/ DESTINATION ${CMAKE_INSTALL_DATADIR}/ifsfx/presets)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/apps/studio/web/ DESTINATION ${CMAKE_INSTALL_DATADIR}/ifsfx/studio)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)
 # Debian wants /usr/share/doc/PACKAGE/copyright in every package: the machine-readable copyright

@@ -66,6 +66,10 @@ bool encode(png_structp png, png_infop info, const Layout& layout, png_bytepp ro
   if (setjmp(png_jmpbuf(png))) return false;
   png_set_IHDR(png, info, layout.width, layout.height, layout.bit_depth, layout.colour_type,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  // OpenImageIO writes the image's origin (0, 0) as an oFFs chunk: so does this writer, so that
+  // both binaries' PNGs are the same bytes (`ifsfx studio` renders in ifsfx-full and promises the
+  // bytes of `ifsfx render`, tests/apps/studio_server_test.sh).
+  png_set_oFFs(png, info, 0, 0, PNG_OFFSET_PIXEL);
   if (text_count > 0) png_set_text(png, info, text, text_count);
   // The fastest write filters every row by its left neighbour alone (PNG_FILTER_SUB) instead of
   // trying the five filters per row: half the time of a 1080p write; files 1 % (fern) to 8 %

@@ -25,7 +25,13 @@ packages=(
   gstreamer1.0-plugins-bad gstreamer1.0-libav
   # `ifsfx farm` is tested against a real single-node Slurm (tests/farm/start-local-slurm.sh)
   slurmctld slurmd slurm-client munge
+  # `ifsfx studio`: its HTTP server; its tests: curl, and the page in a real headless browser,
+  # Debian's chromium driven by playwright-core from npm (installed by the test setup into the
+  # build tree, tests/apps/studio_node_setup.sh)
+  libcpp-httplib-dev curl chromium nodejs
 )
+# npm: Debian's package, unless a node from elsewhere (NodeSource) brings its own npm.
+command -v npm >/dev/null || packages+=(npm)
 
 missing=()
 for p in "${packages[@]}"; do
