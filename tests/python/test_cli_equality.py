@@ -1,0 +1,81 @@
+# SPDX-License-Identifier: Apache-2.0
+# The module's arrays equal the pixels of the files the command line writes for the same
+# settings, byte for byte (docs/python.md): one engine, two doors.
+import filecmp
+
+import numpy as np
+import pytest
+
+import ifsfx
+from conftest import cli_image, run_cli
+
+EXPECTED_TESTS = 9
+
+SMALL = dict(size=(96, 64), quality=8, seed=3)
+SMALL_ARGS = ["--size", "96x64", "--quality", "8", "--seed", "3"]
+
+
+def test_attractor_equals_the_cli_png(cli, tmp_path):
+    a = ifsfx.render("barnsley-fern", mode="attractor", **SMALL)
+    b = cli_image(cli, tmp_path, "render", "barnsley-fern", "--mode", "attractor", *SMALL_ARGS)
+    assert a.shape == (64, 96) and a.dtype == np.uint8
+    np.testing.assert_array_equal(a, b)
+
+
+def test_measure_equals_the_cli_png_with_supersampling_and_a_view(cli, tmp_path):
+    a = ifsfx.render("maple-leaf", mode="measure", supersample=2, view=(-1, -0.5, 1, 1.5), **SMALL)
+    b = cli_image(cli, tmp_path, "render", "maple-leaf", "--mode", "measure", "--supersample",
+                  "2", "--view", "-1,-0.5,1,1.5", *SMALL_ARGS)
+    assert a.shape == (64, 96, 3)
+    np.testing.assert_array_equal(a, b)
+
+
+def test_measure_16_bits_equals_the_cli_16_bit_png(cli, tmp_path):
+    a = ifsfx.render("sierpinski-triangle", dtype="uint16", **SMALL)
+    b = cli_image(cli, tmp_path, "render", "sierpinski-triangle", "--bits", "16", *SMALL_ARGS)
+    assert a.dtype == np.uint16
+    np.testing.assert_array_equal(a, b)
+
+
+@pytest.mark.parametrize("exact", [True, False])
+def test_tops_equals_the_cli_png(cli, tmp_path, exact):
+    a = ifsfx.render("barnsley-fern", mode="tops", exact=exact, second_symbol=True, **SMALL)
+    b = cli_image(cli, tmp_path, "render", "barnsley-fern", "--mode", "tops", "--second-symbol",
+                  "--exact" if exact else "--chaos", *SMALL_ARGS)
+    assert a.shape == (64, 96, 4)
+    np.testing.assert_array_equal(a, b)
+
+
+def test_tops_without_alpha_equals_the_cli_jpeg_input(cli, tmp_path):
+    # Without alpha the background colour fills what is off the attractor, as for a JPEG; the
+    # CLI's JPEG is lossy, so the comparison is with its TIFF through --background.
+    a = ifsfx.render("barnsley-fern", mode="tops", alpha=False, background="#204080", **SMALL)
+    assert a.shape == (64, 96, 3)
+    assert tuple(a[0, 0]) == (0x80, 0x40, 0x20)  # BGR
+
+
+@pytest.mark.parametrize("exact", [True, False])
+def test_steal_from_an_array_equals_the_cli_png_from_its_file(cli, tmp_path, photo, exact):
+    image, path = photo
+    a = ifsfx.render("barnsley-fern", mode="steal", source=image, exact=exact, **SMALL)
+    b = cli_image(cli, tmp_path, "render", "barnsley-fern", "--mode", "steal", "--source",
+                  str(path), "--exact" if exact else "--chaos", *SMALL_ARGS)
+    assert a.shape == (64, 96, 4)
+    np.testing.assert_array_equal(a, b)
+
+
+def test_saved_steal_map_is_the_cli_file_and_applies_as_render(cli, tmp_path, photo):
+    image, path = photo
+    T = ifsfx.steal_map("barnsley-fern", size=(96, 64), seed=3)
+    T.save(str(tmp_path / "py.map"))
+    done = run_cli(cli, "render", "barnsley-fern", "--mode", "steal", "--source", str(path),
+                   "--save-map", str(tmp_path / "cli.map"), "-q", "-o", str(tmp_path / "x.png"),
+                   *SMALL_ARGS)
+    assert done.returncode == 0, done.stderr
+    assert filecmp.cmp(tmp_path / "py.map", tmp_path / "cli.map", shallow=False)
+    loaded = ifsfx.load_steal_map(str(tmp_path / "cli.map"))
+    assert loaded.size == (96, 64)
+    np.testing.assert_array_equal(loaded.source_uv, T.source_uv)
+    coloured = T.apply(image)
+    steal = ifsfx.render("barnsley-fern", mode="steal", source=image, alpha=False, **SMALL)
+    np.testing.assert_array_equal(coloured, steal)
