@@ -25,8 +25,8 @@ def test_malformed_preset_is_a_value_error_with_the_cli_message(cli, tmp_path):
     with pytest.raises(ValueError) as raised:
         ifsfx.load_preset(str(bad))
     assert str(raised.value).startswith(f"{bad}:1:")
-    assert str(raised.value) == cli_message(cli, "presets", str(bad)) or str(
-        raised.value) == cli_message(cli, "render", str(bad), "-o", str(tmp_path / "x.png"))
+    assert str(raised.value) == cli_message(cli, "render", str(bad), "-o",
+                                            str(tmp_path / "x.png"))
 
 
 def test_unknown_preset_name_is_a_value_error_with_the_cli_message(cli, tmp_path):
@@ -77,8 +77,6 @@ def test_presets_lists_the_shipped_names_and_loads_each_kind(tmp_path):
     fern = ifsfx.load_preset("barnsley-fern")
     assert len(fern) == 4 and fern.maps.shape == (4, 6)
     assert abs(sum(fern.probabilities) - 1) < 1e-12
-    again = ifsfx.load_preset(str(tmp_path / "fern.toml") if False else "barnsley-fern")
-    np.testing.assert_array_equal(again.maps, fern.maps)
     toml = tmp_path / "fern.toml"
     toml.write_text(fern.to_toml())
     np.testing.assert_array_equal(ifsfx.load_preset(str(toml)).maps, fern.maps)

@@ -39,12 +39,14 @@ def interrupted_after(delay, work):
 
 def test_sigint_during_a_render_raises_keyboard_interrupt_within_half_a_second():
     latency = interrupted_after(0.3, lambda: ifsfx.render("barnsley-fern", **LONG))
+    print(f"render: KeyboardInterrupt {latency * 1000:.0f} ms after SIGINT")
     assert latency < 0.5, f"KeyboardInterrupt {latency:.3f} s after SIGINT"
 
 
 def test_sigint_during_a_steal_map_raises_keyboard_interrupt_within_half_a_second():
     latency = interrupted_after(0.3, lambda: ifsfx.steal_map(
-        "barnsley-fern", size=(4096, 4096), exact=False, quality=20000, threads=1))
+        "barnsley-fern", size=(1024, 1024), exact=False, quality=200000, threads=1))
+    print(f"steal_map: KeyboardInterrupt {latency * 1000:.0f} ms after SIGINT")
     assert latency < 0.5, f"KeyboardInterrupt {latency:.3f} s after SIGINT"
 
 
@@ -65,7 +67,9 @@ def test_another_python_thread_runs_during_a_render():
     worker.join()
     seconds = time.monotonic() - start
     assert seconds > 0.2, f"the render took {seconds:.3f} s: too short to tell"
-    assert ticks >= 0.5 * seconds / 0.005 * 0.5, f"{ticks} ticks in {seconds:.3f} s"
+    # Each tick sleeps 5 ms; a quarter of the ticks that fit is plenty on a loaded machine, and
+    # far more than the one or two a held GIL would allow.
+    assert ticks >= 0.25 * seconds / 0.005, f"{ticks} ticks in {seconds:.3f} s"
 
 
 def test_two_threads_render_at_once_and_get_the_single_thread_bytes():
