@@ -92,9 +92,7 @@ probabilities, and where it came from. Made by load_preset() or from an (N, 6) a
 )doc")
       .def(py::init(&from_arrays), py::arg("maps"), py::arg("probabilities") = py::none(),
            py::arg("name") = "", py::arg("allow_expansive") = false,
-           R"doc(Ifs(maps, probabilities=None, name="", allow_expansive=False)
-
-maps: (N, 6) array of a, b, c, d, e, f per map (Barnsley's and Fractint's order).
+           R"doc(maps: (N, 6) array of a, b, c, d, e, f per map (Barnsley's and Fractint's order).
 probabilities: N weights (normalised), default None: proportional to |det| with a floor.
 allow_expansive: default False; True accepts maps of factor >= 1 when the IFS contracts
 on average. Raises ValueError for maps that do not contract, bad probabilities, NaN.)doc")
@@ -131,10 +129,9 @@ on average. Raises ValueError for maps that do not contract, bad probabilities, 
         return fmt::format("<ifsfx.Ifs '{}': {} maps from {}>", p.ifs.name, p.ifs.size(), p.origin);
       });
 
-  m.def("load_preset", &load, py::arg("spec"), py::arg("allow_expansive") = false,
-        R"doc(load_preset(spec, allow_expansive=False) -> Ifs
-
-A shipped name ("barnsley-fern", see presets()), a .toml or .ifs path, or "FILE.ifs:NAME"
+  m.def(
+      "load_preset", &load, py::arg("spec"), py::arg("allow_expansive") = false,
+      R"doc(A shipped name ("barnsley-fern", see presets()), a .toml or .ifs path, or "FILE.ifs:NAME"
 for one entry of a Fractint file. Raises ValueError for an unknown name or a malformed preset
 (the message names the file and line), FileNotFoundError for a missing file. A Fractint entry
 that contracts only on average is accepted with a UserWarning.)doc");
@@ -145,9 +142,7 @@ that contracts only on average is accepted with a UserWarning.)doc");
         for (const PresetSummary& p : list_shipped_presets()) names.push_back(p.name);
         return names;
       },
-      R"doc(presets() -> list[str]
-
-The names of the shipped IFS presets, as `ifsfx presets` lists them.)doc");
+      R"doc(The names of the shipped IFS presets, as `ifsfx presets` lists them.)doc");
 }
 
 }  // namespace ifsfx::python

@@ -133,21 +133,17 @@ cv::Mat source_arg(const py::handle& source, py::object& keep, const std::string
 
 void bind_render(py::module_& m) {
   const RenderOptions defaults;
-  m.def("render", &render, py::arg("preset"), py::kw_only(), py::arg("mode") = "measure",
-        py::arg("size") = py::make_tuple(1024, 1024), py::arg("view") = py::none(),
-        py::arg("margin") = defaults.margin, py::arg("quality") = defaults.quality,
-        py::arg("supersample") = defaults.supersample, py::arg("gamma") = defaults.gamma,
-        py::arg("brightness") = defaults.brightness, py::arg("seed") = defaults.seed,
-        py::arg("threads") = defaults.threads, py::arg("exact") = true,
-        py::arg("second_symbol") = false, py::arg("source") = py::none(),
-        py::arg("colouring") = py::none(), py::arg("background") = "black", py::arg("alpha") = true,
-        py::arg("dtype") = "uint8", py::arg("allow_expansive") = false,
-        R"doc(render(preset, *, mode="measure", size=(1024, 1024), view=None, margin=0.05,
-       quality=64, supersample=1, gamma=2.2, brightness=4, seed=1, threads=0, exact=True,
-       second_symbol=False, source=None, colouring=None, background="black", alpha=True,
-       dtype="uint8", allow_expansive=False) -> numpy.ndarray
-
-An IFS rendered as `ifsfx render PRESET -o OUT.png` renders it, as an array equal to the PNG's
+  m.def(
+      "render", &render, py::arg("preset"), py::kw_only(), py::arg("mode") = "measure",
+      py::arg("size") = py::make_tuple(1024, 1024), py::arg("view") = py::none(),
+      py::arg("margin") = defaults.margin, py::arg("quality") = defaults.quality,
+      py::arg("supersample") = defaults.supersample, py::arg("gamma") = defaults.gamma,
+      py::arg("brightness") = defaults.brightness, py::arg("seed") = defaults.seed,
+      py::arg("threads") = defaults.threads, py::arg("exact") = true,
+      py::arg("second_symbol") = false, py::arg("source") = py::none(),
+      py::arg("colouring") = py::none(), py::arg("background") = "black", py::arg("alpha") = true,
+      py::arg("dtype") = "uint8", py::arg("allow_expansive") = false,
+      R"doc(An IFS rendered as `ifsfx render PRESET -o OUT.png` renders it, as an array equal to the PNG's
 pixels (BGR order, like cv2). The GIL is released while it works; Ctrl-C stops it
 (KeyboardInterrupt).
 
@@ -183,9 +179,7 @@ files.)doc");
         return to_array(run_released([&](const CancelToken&) { return read_image(path).pixels; }));
       },
       py::arg("path"),
-      R"doc(read_image(path) -> numpy.ndarray
-
-Any image OpenImageIO reads, as stored (uint8, uint16 or float32; BGR, BGRA or grey), alpha
+      R"doc(Any image OpenImageIO reads, as stored (uint8, uint16 or float32; BGR, BGRA or grey), alpha
 straight. Raises FileNotFoundError or OSError naming the path.)doc");
   m.def(
       "write_image",
@@ -197,9 +191,7 @@ straight. Raises FileNotFoundError or OSError naming the path.)doc");
         });
       },
       py::arg("path"), py::arg("image"), py::arg("bits") = 8,
-      R"doc(write_image(path, image, bits=8)
-
-Writes an H×W×C array (BGR order) in the format of path's extension (.png, .tif, .exr, .jpg),
+      R"doc(Writes an H×W×C array (BGR order) in the format of path's extension (.png, .tif, .exr, .jpg),
 `bits` 8 (default) or 16 per channel for PNG and TIFF, through a temporary file renamed into
 place when complete.)doc");
 }

@@ -73,12 +73,10 @@ it colours any number of images or frames by one remap each:
           "size",
           [](const StealMap& map) { return py::make_tuple(map.size().width, map.size().height); },
           "(width, height)")
-      .def("apply", &apply_map, py::arg("image"), py::kw_only(), py::arg("background") = "black",
-           py::arg("interpolation") = "bilinear", py::arg("threads") = 0,
-           R"doc(apply(image, *, background="black", interpolation="bilinear", threads=0)
-    -> numpy.ndarray
-
-The map's pixels coloured from `image` (any size; H×W×C uint8, uint16 or float32, BGR like
+      .def(
+          "apply", &apply_map, py::arg("image"), py::kw_only(), py::arg("background") = "black",
+          py::arg("interpolation") = "bilinear", py::arg("threads") = 0,
+          R"doc(The map's pixels coloured from `image` (any size; H×W×C uint8, uint16 or float32, BGR like
 cv2): an array of the map's size and the image's dtype and channels, `background` ("black",
 "white", "#rrggbb" or (R, G, B)) off the attractor, as `ifsfx apply MAP IMAGE -o OUT.jpg`.
 interpolation: "bilinear" (default) or "nearest". threads: default 0 = all cores.)doc")
@@ -98,32 +96,24 @@ interpolation: "bilinear" (default) or "nearest". threads: default 0 = all cores
       });
 
   const StealMapOptions d;
-  m.def("steal_map", &compute, py::arg("preset"), py::kw_only(),
-        py::arg("size") = py::make_tuple(1024, 1024), py::arg("colouring") = py::none(),
-        py::arg("view") = py::none(), py::arg("margin") = d.margin, py::arg("exact") = true,
-        py::arg("quality") = d.quality, py::arg("seed") = d.seed, py::arg("threads") = d.threads,
-        py::arg("allow_expansive") = false,
-        R"doc(steal_map(preset, *, size=(1024, 1024), colouring=None, view=None, margin=0.05,
-          exact=True, quality=64, seed=1, threads=0, allow_expansive=False) -> StealMap
-
-The steal map of `preset` (drawing IFS F) through `colouring` (a preset with as many maps,
+  m.def(
+      "steal_map", &compute, py::arg("preset"), py::kw_only(),
+      py::arg("size") = py::make_tuple(1024, 1024), py::arg("colouring") = py::none(),
+      py::arg("view") = py::none(), py::arg("margin") = d.margin, py::arg("exact") = true,
+      py::arg("quality") = d.quality, py::arg("seed") = d.seed, py::arg("threads") = d.threads,
+      py::arg("allow_expansive") = false,
+      R"doc(The steal map of `preset` (drawing IFS F) through `colouring` (a preset with as many maps,
 default None: a tiling of the source), as `ifsfx render --mode steal --save-map` computes it.
 exact: the exact per-pixel descent (default) or the chaos game (False, `quality` points per
 pixel). The GIL is released; Ctrl-C stops it.)doc");
   m.def(
       "load_steal_map", [](const std::string& path) { return load_steal_map(path); },
       py::arg("path"),
-      R"doc(load_steal_map(path) -> StealMap
-
-A map saved by StealMap.save() or `ifsfx render --save-map`. Raises FileNotFoundError, or
+      R"doc(A map saved by StealMap.save() or `ifsfx render --save-map`. Raises FileNotFoundError, or
 OSError/ValueError for a file that is not a steal map.)doc");
   m.def("apply", &apply_map, py::arg("map"), py::arg("image"), py::kw_only(),
         py::arg("background") = "black", py::arg("interpolation") = "bilinear",
-        py::arg("threads") = 0,
-        R"doc(apply(map, image, *, background="black", interpolation="bilinear", threads=0)
-    -> numpy.ndarray
-
-map.apply(image, ...): see StealMap.apply.)doc");
+        py::arg("threads") = 0, R"doc(map.apply(image, ...): see StealMap.apply.)doc");
 }
 
 }  // namespace ifsfx::python

@@ -116,11 +116,7 @@ void bind_texture(py::module_& m) {
       py::arg("mode") = "attractor", py::arg("source") = py::none(), py::arg("seed") = d.seed,
       py::arg("threads") = d.threads, py::arg("frame") = 0, py::arg("crossfade") = 1,
       py::arg("dtype") = "uint8",
-      R"doc(texture(superpreset, *, size=(1024, 1024), buffers=3, steps=0, buffer=1,
-        mode="attractor", source=None, seed=1, threads=0, frame=0, crossfade=1,
-        dtype="uint8") -> numpy.ndarray
-
-A V-variable superfractal texture, as `ifsfx texture SUPERPRESET -o OUT.png` writes it (frame 0)
+      R"doc(A V-variable superfractal texture, as `ifsfx texture SUPERPRESET -o OUT.png` writes it (frame 0)
 or as frame `frame` + 1 of `--frames N --crossfade K -o tex_%04d.png`.
 
 superpreset: a shipped superIFS name (paper-fig4, carpet-lace, ...) or a .super.toml path.
@@ -149,11 +145,7 @@ dtype: "uint8" (default), "uint16" or "float32". The GIL is released; Ctrl-C sto
       py::arg("mode") = "attractor", py::arg("source") = py::none(), py::arg("seed") = d.seed,
       py::arg("threads") = d.threads, py::arg("frames") = py::none(), py::arg("crossfade") = 1,
       py::arg("dtype") = "uint8", py::arg("first") = 0,
-      R"doc(textures(superpreset, *, size=(1024, 1024), buffers=3, steps=0, buffer=1,
-         mode="attractor", source=None, seed=1, threads=0, frames=None, crossfade=1,
-         dtype="uint8", first=0) -> TextureFrames
-
-An iterator over the frames of a texture sequence, one further V-variable step per
+      R"doc(An iterator over the frames of a texture sequence, one further V-variable step per
 `crossfade` frames, from frame `first` (default 0); `frames` of them, default None: endless.
 Frame j equals texture(..., frame=j). The burn-in runs here; each frame after it is one step.)doc");
 }
