@@ -107,7 +107,10 @@ default None: a tiling of the source), as `ifsfx render --mode steal --save-map`
 exact: the exact per-pixel descent (default) or the chaos game (False, `quality` points per
 pixel). The GIL is released; Ctrl-C stops it.)doc");
   m.def(
-      "load_steal_map", [](const std::string& path) { return load_steal_map(path); },
+      "load_steal_map",
+      [](const std::string& path) {
+        return run_released([&](const CancelToken&) { return load_steal_map(path); });
+      },
       py::arg("path"),
       R"doc(A map saved by StealMap.save() or `ifsfx render --save-map`. Raises FileNotFoundError, or
 OSError/ValueError for a file that is not a steal map.)doc");
