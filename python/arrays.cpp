@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <fmt/format.h>
+#include <opencv2/imgproc.hpp>
 
 #include "ifs/error.h"
 
@@ -79,6 +80,13 @@ py::array to_array(cv::Mat mat) {
   auto* keep = new cv::Mat(mat);
   py::capsule owner(keep, [](void* p) { delete static_cast<cv::Mat*>(p); });
   return py::array(dtype, shape, {}, keep->data, owner);
+}
+
+cv::Mat swap_red_blue(const cv::Mat& image, bool rgb) {
+  if (!rgb || (image.channels() != 3 && image.channels() != 4)) return image;
+  cv::Mat out;
+  cv::cvtColor(image, out, image.channels() == 3 ? cv::COLOR_BGR2RGB : cv::COLOR_BGRA2RGBA);
+  return out;
 }
 
 int depth_of(const py::object& dtype, int fallback) {

@@ -29,6 +29,11 @@ MatView to_mat(const py::handle& object, const std::string& what);
 // H×W×C otherwise; CV_8U, CV_16U, CV_32F, CV_32S, CV_64F.
 py::array to_array(cv::Mat mat);
 
+// The image with its red and blue channels swapped (BGR <-> RGB, BGRA <-> RGBA) when `rgb` and
+// it has 3 or 4 channels; else the image itself. The `rgb=True` keyword of the calls that take or
+// give colour images.
+cv::Mat swap_red_blue(const cv::Mat& image, bool rgb);
+
 // The OpenCV depth for a dtype given as a NumPy dtype, a type (numpy.uint8) or a name ("uint8",
 // "uint16", "float32"); None gives `fallback`. Throws Error{invalid_argument} naming "dtype".
 int depth_of(const py::object& dtype, int fallback);

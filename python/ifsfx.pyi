@@ -65,9 +65,10 @@ def render(
     alpha: bool = True,
     dtype: _DType = "uint8",
     allow_expansive: bool = False,
+    rgb: bool = False,
 ) -> _Image: ...
-def read_image(path: str) -> _Image: ...
-def write_image(path: str, image: _Image, bits: int = 8) -> None: ...
+def read_image(path: str, *, rgb: bool = False) -> _Image: ...
+def write_image(path: str, image: _Image, bits: int = 8, *, rgb: bool = False) -> None: ...
 
 class StealMap:
     @property
@@ -83,6 +84,7 @@ class StealMap:
         background: _Colour = "black",
         interpolation: Literal["bilinear", "nearest"] = "bilinear",
         threads: int = 0,
+        rgb: bool = False,
     ) -> _Image: ...
     def save(self, path: str) -> None: ...
 
@@ -107,6 +109,7 @@ def apply(
     background: _Colour = "black",
     interpolation: Literal["bilinear", "nearest"] = "bilinear",
     threads: int = 0,
+    rgb: bool = False,
 ) -> _Image: ...
 
 class TextureFrames(Iterator[_Image]):
@@ -127,6 +130,7 @@ def texture(
     frame: int = 0,
     crossfade: int = 1,
     dtype: _DType = "uint8",
+    rgb: bool = False,
 ) -> _Image: ...
 def textures(
     superpreset: str,
@@ -143,4 +147,5 @@ def textures(
     crossfade: int = 1,
     dtype: _DType = "uint8",
     first: int = 0,
+    rgb: bool = False,
 ) -> TextureFrames: ...

@@ -74,7 +74,7 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
                  double gamma, double brightness, std::uint64_t seed, int threads, bool exact,
                  bool second_symbol, const py::object& source, const py::object& colouring,
                  const py::object& background, bool alpha, const py::object& dtype,
-                 bool allow_expansive) {
+                 bool allow_expansive, bool rgb) {
   const Mode mode = mode_arg(mode_name);
   const cv::Size pixels = size_arg(size);
   const Sampling s =
@@ -93,7 +93,7 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
   const Rgb bg = colour_arg(background);
   const IfsPreset F = preset_arg(preset, allow_expansive);
   py::object keep;
-  const cv::Mat src = steal ? source_arg(source, keep, "source") : cv::Mat();
+  const cv::Mat src = steal ? source_arg(source, keep, "source", rgb) : cv::Mat();
   const Ifs G =
       steal ? load_colouring(colouring.is_none() ? std::string() : colouring.cast<std::string>(),
                              F.ifs, "colouring")
@@ -114,12 +114,12 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
         apply(map, src, {.background = background_scalar(bg, src.depth()), .threads = threads});
     return with_coverage_alpha(coloured, map.coverage, alpha);
   });
-  return to_array(to_depth(image, depth_of(dtype, CV_8U)));
+  return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
 }
 
 }  // namespace
 
-cv::Mat source_arg(const py::handle& source, py::object& keep, const std::string& what) {
+cv::Mat source_arg(const py::handle& source, py::object& keep, const std::string& what, bool rgb) {
   if (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__")) {
     const std::string path = py::isinstance<py::str>(source)
                                  ? source.cast<std::string>()
@@ -128,7 +128,7 @@ cv::Mat source_arg(const py::handle& source, py::object& keep, const std::string
   }
   MatView view = to_mat(source, what);
   keep = view.owner;
-  return view.mat;
+  return swap_red_blue(view.mat, rgb);
 }
 
 void bind_render(py::module_& m) {
@@ -142,7 +142,7 @@ void bind_render(py::module_& m) {
       py::arg("threads") = defaults.threads, py::arg("exact") = true,
       py::arg("second_symbol") = false, py::arg("source") = py::none(),
       py::arg("colouring") = py::none(), py::arg("background") = "black", py::arg("alpha") = true,
-      py::arg("dtype") = "uint8", py::arg("allow_expansive") = false,
+      py::arg("dtype") = "uint8", py::arg("allow_expansive") = false, py::arg("rgb") = false,
       R"doc(An IFS rendered as `ifsfx render PRESET -o OUT.png` renders it, as an array equal to the PNG's
 pixels (BGR order, like cv2). The GIL is released while it works; Ctrl-C stops it
 (KeyboardInterrupt).
@@ -168,6 +168,7 @@ background: tops and steal: colour off the attractor ("black", "white", "#rrggbb
     (R, G, B)), default "black"; alpha is 0 there.
 alpha: tops and steal: keep the coverage as an alpha channel (as PNG), default True.
 dtype: "uint8" (default, as an 8-bit PNG), "uint16" (as a 16-bit PNG) or "float32" (in [0, 1]).
+rgb: False (default): arrays in and out in BGR(A) order, like cv2; True: RGB(A).
 allow_expansive: accept maps of factor >= 1 when the IFS contracts on average, default False.
 
 Raises ValueError for bad input (with the library's message), FileNotFoundError/OSError for
@@ -175,23 +176,25 @@ files.)doc");
 
   m.def(
       "read_image",
-      [](const std::string& path) {
-        return to_array(run_released([&](const CancelToken&) { return read_image(path).pixels; }));
+      [](const std::string& path, bool rgb) {
+        return to_array(swap_red_blue(
+            run_released([&](const CancelToken&) { return read_image(path).pixels; }), rgb));
       },
-      py::arg("path"),
+      py::arg("path"), py::kw_only(), py::arg("rgb") = false,
       R"doc(Any image OpenImageIO reads, as stored (uint8, uint16 or float32; BGR, BGRA or grey), alpha
-straight. Raises FileNotFoundError or OSError naming the path.)doc");
+straight; rgb=True gives RGB(A) order. Raises FileNotFoundError or OSError naming the path.)doc");
   m.def(
       "write_image",
-      [](const std::string& path, const py::object& image, int bits) {
+      [](const std::string& path, const py::object& image, int bits, bool rgb) {
         const MatView view = to_mat(image, "image");
+        const cv::Mat pixels = swap_red_blue(view.mat, rgb);
         run_released([&](const CancelToken& cancel) {
-          write_image(path, view.mat, {.bits = bits, .output = {.cancel = cancel}});
+          write_image(path, pixels, {.bits = bits, .output = {.cancel = cancel}});
           return 0;
         });
       },
-      py::arg("path"), py::arg("image"), py::arg("bits") = 8,
-      R"doc(Writes an H×W×C array (BGR order) in the format of path's extension (.png, .tif, .exr, .jpg),
+      py::arg("path"), py::arg("image"), py::arg("bits") = 8, py::kw_only(), py::arg("rgb") = false,
+      R"doc(Writes an H×W×C array (BGR order, RGB with rgb=True) in the format of path's extension (.png, .tif, .exr, .jpg),
 `bits` 8 (default) or 16 per channel for PNG and TIFF, through a temporary file renamed into
 place when complete.)doc");
 }

@@ -14,7 +14,9 @@ namespace py = pybind11;
 
 void bind_render(py::module_& m);
 
-// A source argument: an image array (borrowed, no copy) or a path read by read_image.
-cv::Mat source_arg(const py::handle& source, py::object& keep, const std::string& what);
+// A source argument: an image array (borrowed, no copy; its red and blue swapped with `rgb`) or a
+// path read by read_image (BGR whatever `rgb` says).
+cv::Mat source_arg(const py::handle& source, py::object& keep, const std::string& what,
+                   bool rgb = false);
 
 }  // namespace ifsfx::python

@@ -42,14 +42,15 @@ StealMap compute(const py::object& preset, const py::object& size, const py::obj
 // apply() of `ifsfx apply`: the map's pixels coloured from `image`, the image's dtype and
 // channels, `background` where the map is not covered.
 py::array apply_map(const StealMap& map, const py::object& image, const py::object& background,
-                    const std::string& interpolation, int threads) {
-  const MatView source = to_mat(image, "image");
+                    const std::string& interpolation, int threads, bool rgb) {
+  const MatView view = to_mat(image, "image");
+  const cv::Mat source = swap_red_blue(view.mat, rgb);
   const ApplyOptions options{
       .interpolation = interpolation_arg(interpolation),
-      .background = background_scalar(colour_arg(background), source.mat.depth()),
+      .background = background_scalar(colour_arg(background), source.depth()),
       .threads = threads};
-  return to_array(
-      run_released([&](const CancelToken&) { return apply(map, source.mat, options); }));
+  return to_array(swap_red_blue(
+      run_released([&](const CancelToken&) { return apply(map, source, options); }), rgb));
 }
 
 }  // namespace
@@ -75,11 +76,12 @@ it colours any number of images or frames by one remap each:
           "(width, height)")
       .def(
           "apply", &apply_map, py::arg("image"), py::kw_only(), py::arg("background") = "black",
-          py::arg("interpolation") = "bilinear", py::arg("threads") = 0,
+          py::arg("interpolation") = "bilinear", py::arg("threads") = 0, py::arg("rgb") = false,
           R"doc(The map's pixels coloured from `image` (any size; H×W×C uint8, uint16 or float32, BGR like
 cv2): an array of the map's size and the image's dtype and channels, `background` ("black",
 "white", "#rrggbb" or (R, G, B)) off the attractor, as `ifsfx apply MAP IMAGE -o OUT.jpg`.
-interpolation: "bilinear" (default) or "nearest". threads: default 0 = all cores.)doc")
+interpolation: "bilinear" (default) or "nearest". threads: default 0 = all cores.
+rgb: False (default): BGR(A) in and out, like cv2; True: RGB(A).)doc")
       .def(
           "save",
           [](const StealMap& map, const std::string& path) {
@@ -116,7 +118,8 @@ pixel). The GIL is released; Ctrl-C stops it.)doc");
 OSError/ValueError for a file that is not a steal map.)doc");
   m.def("apply", &apply_map, py::arg("map"), py::arg("image"), py::kw_only(),
         py::arg("background") = "black", py::arg("interpolation") = "bilinear",
-        py::arg("threads") = 0, R"doc(map.apply(image, ...): see StealMap.apply.)doc");
+        py::arg("threads") = 0, py::arg("rgb") = false,
+        R"doc(map.apply(image, ...): see StealMap.apply.)doc");
 }
 
 }  // namespace ifsfx::python

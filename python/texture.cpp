@@ -28,6 +28,7 @@ struct TextureFrames {
   std::optional<std::int64_t> end;  // none: endless
   int crossfade = 1;
   int depth = CV_8U;
+  bool rgb = false;  // frames in RGB order
 };
 
 // The settings `ifsfx texture` checks (apps/texture_options.cpp), with the keywords' names.
@@ -50,7 +51,7 @@ void check_texture_args(int buffers, int buffer, int crossfade, TextureMode mode
 TextureFrames start(const std::string& superpreset, const py::object& size, int buffers, int steps,
                     int buffer, const std::string& mode_name, const py::object& source,
                     std::uint64_t seed, int threads, int crossfade, const py::object& dtype,
-                    std::int64_t first, std::optional<std::int64_t> count) {
+                    std::int64_t first, std::optional<std::int64_t> count, bool rgb) {
   const cv::Size pixels = size_arg(size);
   const TextureMode mode = parse_texture_mode(mode_name, "mode");
   check_texture_args(buffers, buffer, crossfade, mode, source);
@@ -65,7 +66,7 @@ TextureFrames start(const std::string& superpreset, const py::object& size, int 
                          .mode = mode,
                          .seed = seed,
                          .threads = threads};
-  if (!source.is_none()) options.source = source_arg(source, keep, "source").clone();
+  if (!source.is_none()) options.source = source_arg(source, keep, "source", rgb).clone();
   const SuperIfsPreset preset =
       run_released([&](const CancelToken&) { return load_superifs(superpreset); });
   // The sequence keeps the token: a later frame's work polls a flag that is never set.
@@ -79,7 +80,8 @@ TextureFrames start(const std::string& superpreset, const py::object& size, int 
           .next = first,
           .end = count ? std::optional(first + *count) : std::nullopt,
           .crossfade = crossfade,
-          .depth = depth_of(dtype, CV_8U)};
+          .depth = depth_of(dtype, CV_8U),
+          .rgb = rgb};
 }
 
 py::array frame(TextureFrames& frames) {
@@ -87,7 +89,7 @@ py::array frame(TextureFrames& frames) {
     return frames.sequence->frame_at(position_of_frame(frames.next, frames.crossfade)).clone();
   });
   ++frames.next;
-  return to_array(to_depth(image, frames.depth));
+  return to_array(swap_red_blue(to_depth(image, frames.depth), frames.rgb));
 }
 
 }  // namespace
@@ -106,16 +108,16 @@ void bind_texture(py::module_& m) {
       "texture",
       [](const std::string& superpreset, const py::object& size, int buffers, int steps, int buffer,
          const std::string& mode, const py::object& source, std::uint64_t seed, int threads,
-         std::int64_t frame_index, int crossfade, const py::object& dtype) {
+         std::int64_t frame_index, int crossfade, const py::object& dtype, bool rgb) {
         TextureFrames frames = start(superpreset, size, buffers, steps, buffer, mode, source, seed,
-                                     threads, crossfade, dtype, frame_index, 1);
+                                     threads, crossfade, dtype, frame_index, 1, rgb);
         return frame(frames);
       },
       py::arg("superpreset"), py::kw_only(), py::arg("size") = py::make_tuple(1024, 1024),
       py::arg("buffers") = d.count, py::arg("steps") = d.steps, py::arg("buffer") = 1,
       py::arg("mode") = "attractor", py::arg("source") = py::none(), py::arg("seed") = d.seed,
       py::arg("threads") = d.threads, py::arg("frame") = 0, py::arg("crossfade") = 1,
-      py::arg("dtype") = "uint8",
+      py::arg("dtype") = "uint8", py::arg("rgb") = false,
       R"doc(A V-variable superfractal texture, as `ifsfx texture SUPERPRESET -o OUT.png` writes it (frame 0)
 or as frame `frame` + 1 of `--frames N --crossfade K -o tex_%04d.png`.
 
@@ -126,25 +128,26 @@ mode: "attractor" (H×W), "tops", "measure" (H×W×3) or "steal" (colours from `
 image array or a path). seed: default 1. threads: default 0 = all cores.
 frame, crossfade: frame j shows texture j // crossfade blended towards the next by
 (j % crossfade) / crossfade; defaults 0 and 1.
-dtype: "uint8" (default), "uint16" or "float32". The GIL is released; Ctrl-C stops it.)doc");
+dtype: "uint8" (default), "uint16" or "float32". rgb: False (default): BGR like cv2, True: RGB
+(the source too, when an array). The GIL is released; Ctrl-C stops it.)doc");
 
   m.def(
       "textures",
       [](const std::string& superpreset, const py::object& size, int buffers, int steps, int buffer,
          const std::string& mode, const py::object& source, std::uint64_t seed, int threads,
          std::optional<std::int64_t> frames, int crossfade, const py::object& dtype,
-         std::int64_t first) {
+         std::int64_t first, bool rgb) {
         if (frames && *frames < 0)
           throw Error(ErrorKind::invalid_argument,
                       fmt::format("frames: must be ≥ 0 (got {})", *frames));
         return start(superpreset, size, buffers, steps, buffer, mode, source, seed, threads,
-                     crossfade, dtype, first, frames);
+                     crossfade, dtype, first, frames, rgb);
       },
       py::arg("superpreset"), py::kw_only(), py::arg("size") = py::make_tuple(1024, 1024),
       py::arg("buffers") = d.count, py::arg("steps") = d.steps, py::arg("buffer") = 1,
       py::arg("mode") = "attractor", py::arg("source") = py::none(), py::arg("seed") = d.seed,
       py::arg("threads") = d.threads, py::arg("frames") = py::none(), py::arg("crossfade") = 1,
-      py::arg("dtype") = "uint8", py::arg("first") = 0,
+      py::arg("dtype") = "uint8", py::arg("first") = 0, py::arg("rgb") = false,
       R"doc(An iterator over the frames of a texture sequence, one further V-variable step per
 `crossfade` frames, from frame `first` (default 0); `frames` of them, default None: endless.
 Frame j equals texture(..., frame=j). The burn-in runs here; each frame after it is one step.)doc");

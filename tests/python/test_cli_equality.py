@@ -9,7 +9,7 @@ import pytest
 import ifsfx
 from conftest import cli_image, run_cli
 
-EXPECTED_TESTS = 9
+EXPECTED_TESTS = 10
 
 SMALL = dict(size=(96, 64), quality=8, seed=3)
 SMALL_ARGS = ["--size", "96x64", "--quality", "8", "--seed", "3"]
@@ -80,3 +80,16 @@ def test_saved_steal_map_is_the_cli_file_and_applies_as_render(cli, tmp_path, ph
     coloured = T.apply(image)
     steal = ifsfx.render("barnsley-fern", mode="steal", source=image, alpha=False, **SMALL)
     np.testing.assert_array_equal(coloured, steal)
+
+
+def test_rgb_flag_swaps_red_and_blue_in_and_out(photo, tmp_path):
+    image, path = photo
+    bgr = ifsfx.render("barnsley-fern", mode="steal", source=image, **SMALL)
+    rgb = ifsfx.render("barnsley-fern", mode="steal", source=image[:, :, ::-1], rgb=True, **SMALL)
+    np.testing.assert_array_equal(rgb, bgr[:, :, [2, 1, 0, 3]])
+    # A path is read as the file holds it whatever rgb says; only the result is swapped.
+    from_file = ifsfx.render("barnsley-fern", mode="steal", source=str(path), rgb=True, **SMALL)
+    np.testing.assert_array_equal(from_file, rgb)
+    np.testing.assert_array_equal(ifsfx.read_image(str(path), rgb=True), image[:, :, ::-1])
+    T = ifsfx.steal_map("barnsley-fern", size=(96, 64), seed=3)
+    np.testing.assert_array_equal(T.apply(image[:, :, ::-1], rgb=True), T.apply(image)[:, :, ::-1])
