@@ -2,6 +2,8 @@
 # The Debian packages, made by `cpack -G DEB` in a build tree (tools/build-deb.sh):
 #   ifsfx_<version>_amd64.deb      component runtime: the command, man page, completion, presets
 #   ifsfx-dev_<version>_amd64.deb  component dev: headers, static libraries, CMake package, ifsfx.pc
+#   python3-ifsfx_<version>_amd64.deb  component python: the Python module and its stubs in
+#                                  /usr/lib/python3/dist-packages (when built: IFSFX_BUILD_PYTHON)
 # Two packages, as Debian splits a tool from its development files: whoever wants the command
 # gets only the shared libraries it runs on (OpenCV, OpenImageIO, FFmpeg's, ...), its Depends read
 # from the binary by dpkg-shlibdeps; whoever builds against the libraries gets the -dev packages
@@ -44,5 +46,25 @@ superfractals (superifs), collage fitting (collage) and the video filter
 (video), as static libraries with their headers, a CMake package
 (find_package(ifsfx CONFIG): targets ifsfx::ifs, ...) and a pkg-config
 file (ifsfx).")
+
+# The Python module, as Debian packages one: python3-NAME, section python, for the interpreter
+# version it was built against (its file name carries the ABI tag), NumPy at run time.
+if(TARGET ifsfx_python)
+  list(APPEND CPACK_COMPONENTS_ALL python)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_NAME python3-ifsfx)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_SECTION python)
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_SHLIBDEPS ON)
+  set(python_next ${Python3_VERSION_MAJOR}.${Python3_VERSION_MINOR})
+  math(EXPR python_next_minor "${Python3_VERSION_MINOR} + 1")
+  set(CPACK_DEBIAN_PYTHON_PACKAGE_DEPENDS
+      "python3 (>= ${python_next}~), python3 (<< ${Python3_VERSION_MAJOR}.${python_next_minor}), \
+python3-numpy")
+  set(CPACK_COMPONENT_PYTHON_DESCRIPTION
+      "turn images and video into fractals (Python 3 module)
+The ifsfx engine on NumPy arrays: IFS rendering by the chaos game (attractor,
+invariant measure), fractal tops, colour stealing through steal maps and
+V-variable superfractal textures, with the results of the ifsfx command.
+Long computations release the GIL and stop on Ctrl-C.")
+endif()
 
 include(CPack)

@@ -4,6 +4,7 @@
 # CPack into build/deb/:
 #   ifsfx_VERSION_ARCH.deb      the command, its man page, bash completion and the presets
 #   ifsfx-dev_VERSION_ARCH.deb  headers, static libraries, CMake package and pkg-config file
+#   python3-ifsfx_VERSION_ARCH.deb  the Python module (when pybind11-dev is installed; docs/python.md)
 # Then, as root:  apt install ./build/deb/ifsfx_*.deb   (and ./build/deb/ifsfx-dev_*.deb)
 set -euo pipefail
 cd "$(dirname "$0")/.."

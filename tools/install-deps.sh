@@ -12,6 +12,8 @@ packages=(
   libopencv-dev libopenimageio-dev libpng-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  # the Python module (python/): pybind11 and Python's headers; NumPy and pytest for its tests
+  pybind11-dev python3-dev python3-numpy python3-pytest
   # runtime tools and data: ffmpeg/ffprobe (audio remux, tests), OpenCV's sample clips and images;
   # groff-base checks the man page
   ffmpeg opencv-doc openimageio-tools groff-base

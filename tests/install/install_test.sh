@@ -44,6 +44,21 @@ expect_command() {
   cd ..
 }
 
+# expect_python DIR: the module installed in DIR imports from another folder and renders the
+# array the built command's PNG holds.
+expect_python() {
+  local dir=$1
+  mkdir -p python && cd python
+  "$built_ifsfx" render maple-leaf --size 96x64 --quality 8 --seed 3 -q -o built-leaf.png
+  PYTHONPATH=$dir /usr/bin/python3 -c '
+import numpy as np, ifsfx
+a = ifsfx.render("maple-leaf", size=(96, 64), quality=8, seed=3)
+assert ifsfx.__file__.startswith("'"$dir"'"), ifsfx.__file__
+assert np.array_equal(a, ifsfx.read_image("built-leaf.png")), "pixels differ"
+' || fail "the Python module installed in $dir"
+  cd ..
+}
+
 case "$check" in
   prefix)
     mkdir -p "$work" && cd "$work" && rm -rf "$prefix"
@@ -56,6 +71,10 @@ case "$check" in
     expect_command "$prefix/bin/ifsfx"
     # The copies of the shipped presets are presets the command reads.
     [ -f "$prefix/share/ifsfx/presets/barnsley-fern.toml" ] || fail "no presets in share/ifsfx"
+    if [ -d "$prefix/lib/python3/dist-packages" ]; then
+      [ -f "$prefix/lib/python3/dist-packages/ifsfx.pyi" ] || fail "no ifsfx.pyi beside the module"
+      expect_python "$prefix/lib/python3/dist-packages"
+    fi
     "$prefix/bin/ifsfx" render "$prefix/share/ifsfx/presets/koch-curve.toml" --size 64x32 \
       --quality 4 -q -o koch.png || fail "render of an installed preset file"
     # The man page: every command and every option of its --help, and no roff warnings.
@@ -229,6 +248,20 @@ CPP
         fail "Depends lacks $owner (for $lib): $depends"
     done
     dpkg-deb -f "$dev" Depends | grep -q 'libopencv-dev' || fail "$dev Depends: $(dpkg-deb -f "$dev")"
+    # The Python module (built when pybind11 is installed) in its own package, python3-ifsfx.
+    python_deb=python3-ifsfx_${version}_$arch.deb
+    if ls "$build"/python/ifsfx.cpython-*.so >/dev/null 2>&1; then
+      [ -f "$python_deb" ] || fail "packages: $(ls ./*.deb)"
+      dpkg-deb -c "$python_deb" | awk '{ print $6 }' >python-files.txt
+      grep -qx './usr/lib/python3/dist-packages/ifsfx.pyi' python-files.txt &&
+        grep -q '^\./usr/lib/python3/dist-packages/ifsfx\.cpython-.*\.so$' python-files.txt ||
+        fail "$python_deb: $(cat python-files.txt)"
+      [ "$(dpkg-deb -f "$python_deb" Section)" = python ] || fail "fields: $(dpkg-deb -f "$python_deb")"
+      dpkg-deb -f "$python_deb" Depends | grep -q 'python3-numpy' ||
+        fail "$python_deb Depends: $(dpkg-deb -f "$python_deb" Depends)"
+      dpkg-deb -x "$python_deb" root
+      expect_python "$PWD/root/usr/lib/python3/dist-packages"
+    fi
     # Unpacked into a scratch root: the command runs from there, with no library path.
     dpkg-deb -x "$deb" root && dpkg-deb -x "$dev" root
     expect_command "$PWD/root/usr/bin/ifsfx"

@@ -1,0 +1,127 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "python/options.h"
+
+#include <cctype>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "ifs/error.h"
+
+namespace ifsfx::python {
+
+Sampling sampling(const py::object& view, double margin, double quality, int supersample,
+                  double gamma, double brightness, std::uint64_t seed, int threads, bool exact) {
+  return {.view = view_arg(view),
+          .margin = margin,
+          .quality = quality,
+          .supersample = supersample,
+          .gamma = gamma,
+          .brightness = brightness,
+          .seed = seed,
+          .threads = threads,
+          .exact = exact};
+}
+
+RenderOptions render_options(const Sampling& s, const CancelToken& cancel) {
+  return {.view = s.view,
+          .margin = s.margin,
+          .quality = s.quality,
+          .supersample = s.supersample,
+          .gamma = s.gamma,
+          .brightness = s.brightness,
+          .seed = s.seed,
+          .threads = s.threads,
+          .cancel = cancel};
+}
+
+TopsOptions tops_options(const Sampling& s, const CancelToken& cancel) {
+  return {.view = s.view,
+          .margin = s.margin,
+          .exact = s.exact,
+          .quality = s.quality,
+          .seed = s.seed,
+          .threads = s.threads,
+          .cancel = cancel};
+}
+
+StealMapOptions steal_map_options(const Sampling& s, const CancelToken& cancel) {
+  return {.view = s.view,
+          .margin = s.margin,
+          .exact = s.exact,
+          .quality = s.quality,
+          .seed = s.seed,
+          .threads = s.threads,
+          .cancel = cancel};
+}
+
+cv::Size size_arg(const py::object& size, const std::string& what) {
+  if (py::isinstance<py::str>(size)) return parse_size(size.cast<std::string>(), what);
+  if (py::isinstance<py::sequence>(size) && py::len(size) == 2) {
+    const py::sequence wh = size.cast<py::sequence>();
+    if (py::isinstance<py::int_>(wh[0]) && py::isinstance<py::int_>(wh[1]))
+      return parse_size(fmt::format("{}x{}", wh[0].cast<long long>(), wh[1].cast<long long>()),
+                        what);
+  }
+  throw Error(ErrorKind::invalid_argument,
+              fmt::format("{}: a size is (width, height) or \"WxH\" (got {})", what,
+                          std::string(py::repr(size))));
+}
+
+std::optional<Box> view_arg(const py::object& view, const std::string& what) {
+  if (view.is_none()) return std::nullopt;
+  if (py::isinstance<py::str>(view)) return parse_box(view.cast<std::string>(), what);
+  if (py::isinstance<py::sequence>(view) && py::len(view) == 4) {
+    const py::sequence v = view.cast<py::sequence>();
+    // Through parse_box, so that a bad rectangle gets the CLI's message.
+    return parse_box(fmt::format("{:.17g},{:.17g},{:.17g},{:.17g}", v[0].cast<double>(),
+                                 v[1].cast<double>(), v[2].cast<double>(), v[3].cast<double>()),
+                     what);
+  }
+  throw Error(ErrorKind::invalid_argument,
+              fmt::format("{}: a view is (x0, y0, x1, y1) or \"x0,y0,x1,y1\" (got {})", what,
+                          std::string(py::repr(view))));
+}
+
+Rgb colour_arg(const py::object& colour, const std::string& what) {
+  const auto fail = [&] {
+    return Error(ErrorKind::invalid_argument,
+                 fmt::format("{}: a colour is black, white, #rrggbb or (R, G, B) with 0..255 "
+                             "(got {})",
+                             what, std::string(py::repr(colour))));
+  };
+  if (py::isinstance<py::str>(colour)) {
+    std::string t = colour.cast<std::string>();
+    for (auto& ch : t) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    if (t == "black") return {0, 0, 0};
+    if (t == "white") return {1, 1, 1};
+    if (t.size() != 7 || t[0] != '#') throw fail();
+    int v[3];
+    for (int i = 0; i < 3; ++i) {
+      const std::string hex = t.substr(1 + 2 * static_cast<std::size_t>(i), 2);
+      if (!std::isxdigit(static_cast<unsigned char>(hex[0])) ||
+          !std::isxdigit(static_cast<unsigned char>(hex[1])))
+        throw fail();
+      v[i] = std::stoi(hex, nullptr, 16);
+    }
+    return {v[0] / 255.0, v[1] / 255.0, v[2] / 255.0};
+  }
+  if (py::isinstance<py::sequence>(colour) && py::len(colour) == 3) {
+    const py::sequence rgb = colour.cast<py::sequence>();
+    int v[3];
+    for (int i = 0; i < 3; ++i) {
+      if (!py::isinstance<py::int_>(rgb[i])) throw fail();
+      v[i] = rgb[i].cast<int>();
+      if (v[i] < 0 || v[i] > 255) throw fail();
+    }
+    return {v[0] / 255.0, v[1] / 255.0, v[2] / 255.0};
+  }
+  throw fail();
+}
+
+cv::Scalar background_scalar(const Rgb& colour, int depth) {
+  const double full = depth == CV_8U ? 255.0 : depth == CV_16U ? 65535.0 : 1.0;
+  return {colour.b * full, colour.g * full, colour.r * full, 0};
+}
+
+}  // namespace ifsfx::python

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: Apache-2.0
+// The one place where Python keyword arguments become the library's options structs. Every
+// binding that samples an IFS (render, steal_map) collects its keywords into a Sampling and asks
+// for the struct it calls with; the defaults shown in the docstrings are the library's own
+// (kDefault below reads them from the structs), so the two never drift apart.
+#pragma once
+
+#include <optional>
+#include <string>
+
+#include <pybind11/pybind11.h>
+#include <opencv2/core.hpp>
+
+#include "ifs/cancel.h"
+#include "ifs/ifs.h"
+#include "ifs/render.h"
+#include "ifs/steal_map.h"
+#include "ifs/tops.h"
+#include "ifs/view.h"
+
+namespace ifsfx::python {
+
+namespace py = pybind11;
+
+// The keywords shared by the sampling entry points, as the CLI's `render` options.
+struct Sampling {
+  std::optional<Box> view;  // view=: None (auto-framed), (x0, y0, x1, y1) or "x0,y0,x1,y1"
+  double margin = RenderOptions{}.margin;
+  double quality = RenderOptions{}.quality;
+  int supersample = RenderOptions{}.supersample;
+  double gamma = RenderOptions{}.gamma;
+  double brightness = RenderOptions{}.brightness;
+  std::uint64_t seed = RenderOptions{}.seed;
+  int threads = RenderOptions{}.threads;
+  bool exact = true;  // tops and steal: the exact descent (the CLI's default), or the chaos game
+};
+
+// The keywords as a Sampling; `view` is parsed and checked here.
+Sampling sampling(const py::object& view, double margin, double quality, int supersample,
+                  double gamma, double brightness, std::uint64_t seed, int threads, bool exact);
+
+RenderOptions render_options(const Sampling& s, const CancelToken& cancel);
+TopsOptions tops_options(const Sampling& s, const CancelToken& cancel);
+StealMapOptions steal_map_options(const Sampling& s, const CancelToken& cancel);
+
+// size=: (width, height) or "WxH", 1..32768 a side (parse_size's checks and message).
+cv::Size size_arg(const py::object& size, const std::string& what = "size");
+// view=: None, a 4-sequence of numbers or "x0,y0,x1,y1".
+std::optional<Box> view_arg(const py::object& view, const std::string& what = "view");
+// background=: "black", "white", "#rrggbb" or (R, G, B) with 0..255, as the CLI's --background.
+Rgb colour_arg(const py::object& colour, const std::string& what = "background");
+// The colour as a cv::Scalar in BGR(A) order at `depth`'s full scale, alpha 0 (as the CLI).
+cv::Scalar background_scalar(const Rgb& colour, int depth);
+
+}  // namespace ifsfx::python

@@ -1,0 +1,202 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "python/render.h"
+
+#include <string>
+
+#include <fmt/format.h>
+#include <opencv2/imgproc.hpp>
+
+#include "ifs/error.h"
+#include "ifs/image_io.h"
+#include "ifs/preset.h"
+#include "ifs/render.h"
+#include "ifs/steal_map.h"
+#include "ifs/tops.h"
+#include "python/arrays.h"
+#include "python/errors.h"
+#include "python/options.h"
+#include "python/presets.h"
+
+namespace ifsfx::python {
+namespace {
+
+enum class Mode { attractor, measure, tops, steal };
+
+Mode mode_arg(const std::string& mode) {
+  if (mode == "attractor") return Mode::attractor;
+  if (mode == "measure") return Mode::measure;
+  if (mode == "tops") return Mode::tops;
+  if (mode == "steal") return Mode::steal;
+  throw Error(ErrorKind::invalid_argument,
+              fmt::format("mode: attractor, measure, tops or steal (got '{}')", mode));
+}
+
+// `ifsfx render --mode tops` (apps/steal_modes.cpp tops_image): the view framed first from the
+// attractor's bounds, the background colour off the attractor, alpha = coverage when kept.
+cv::Mat tops_image(const Ifs& F, cv::Size size, const Sampling& s, bool second_symbol,
+                   const Rgb& background, bool alpha, const CancelToken& cancel) {
+  TopsOptions tops = tops_options(s, cancel);
+  tops.second_symbol = second_symbol;
+  if (!tops.view) tops.view = fit_view(attractor_bounds(F, s.seed, cancel), size, s.margin);
+  cv::Mat image = render_tops(F, size, tops);  // BGRA float, alpha = coverage
+  cv::Mat coverage;
+  cv::extractChannel(image, coverage, 3);
+  image.setTo(background_scalar(background, CV_32F), coverage == 0);
+  if (!alpha) cv::cvtColor(image, image, cv::COLOR_BGRA2BGR);
+  return image;
+}
+
+// The coloured pixels with the coverage as alpha (apps/steal_modes.cpp with_coverage_alpha), or
+// without alpha.
+cv::Mat with_coverage_alpha(const cv::Mat& coloured, const cv::Mat& coverage, bool alpha) {
+  if (!alpha) {
+    if (coloured.channels() != 4) return coloured;
+    cv::Mat bgr;
+    cv::cvtColor(coloured, bgr, cv::COLOR_BGRA2BGR);
+    return bgr;
+  }
+  if (coloured.channels() == 4) return coloured;  // the source's alpha, 0 off the attractor
+  cv::Mat bgr = coloured;
+  if (coloured.channels() == 1) cv::cvtColor(coloured, bgr, cv::COLOR_GRAY2BGR);
+  cv::Mat a;
+  const double full = bgr.depth() == CV_8U ? 1.0 : bgr.depth() == CV_16U ? 257.0 : 1.0 / 255;
+  coverage.convertTo(a, bgr.depth(), full);
+  std::vector<cv::Mat> planes;
+  cv::split(bgr, planes);
+  planes.push_back(a);
+  cv::Mat out;
+  cv::merge(planes, out);
+  return out;
+}
+
+py::array render(const py::object& preset, const std::string& mode_name, const py::object& size,
+                 const py::object& view, double margin, double quality, int supersample,
+                 double gamma, double brightness, std::uint64_t seed, int threads, bool exact,
+                 bool second_symbol, const py::object& source, const py::object& colouring,
+                 const py::object& background, bool alpha, const py::object& dtype,
+                 bool allow_expansive, bool rgb) {
+  const Mode mode = mode_arg(mode_name);
+  const cv::Size pixels = size_arg(size);
+  const Sampling s =
+      sampling(view, margin, quality, supersample, gamma, brightness, seed, threads, exact);
+  const auto refuse = [&](bool given, const char* option, const char* modes) {
+    if (given)
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("{}: only with mode {} (got mode {})", option, modes, mode_name));
+  };
+  const bool tops = mode == Mode::tops, steal = mode == Mode::steal;
+  refuse(!steal && !source.is_none(), "source", "steal");
+  refuse(!steal && !colouring.is_none(), "colouring", "steal");
+  refuse(!tops && second_symbol, "second_symbol", "tops");
+  if (steal && source.is_none())
+    throw Error(ErrorKind::invalid_argument, "source: mode steal needs a source image");
+  const Rgb bg = colour_arg(background);
+  const IfsPreset F = preset_arg(preset, allow_expansive);
+  py::object keep;
+  const cv::Mat src = steal ? source_arg(source, keep, "source", rgb) : cv::Mat();
+  const Ifs G =
+      steal ? load_colouring(colouring.is_none() ? std::string() : colouring.cast<std::string>(),
+                             F.ifs, "colouring")
+            : Ifs{};
+  const cv::Mat image = run_released([&](const CancelToken& cancel) {
+    switch (mode) {
+      case Mode::attractor:
+        return render_attractor(F.ifs, pixels, render_options(s, cancel));
+      case Mode::measure:
+        return render_measure(F.ifs, pixels, render_options(s, cancel));
+      case Mode::tops:
+        return tops_image(F.ifs, pixels, s, second_symbol, bg, alpha, cancel);
+      case Mode::steal:
+        break;
+    }
+    const StealMap map = compute_steal_map(F.ifs, G, pixels, steal_map_options(s, cancel));
+    const cv::Mat coloured =
+        apply(map, src, {.background = background_scalar(bg, src.depth()), .threads = threads});
+    return with_coverage_alpha(coloured, map.coverage, alpha);
+  });
+  return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
+}
+
+}  // namespace
+
+cv::Mat source_arg(const py::handle& source, py::object& keep, const std::string& what, bool rgb) {
+  if (py::isinstance<py::str>(source) || py::hasattr(source, "__fspath__")) {
+    const std::string path = py::isinstance<py::str>(source)
+                                 ? source.cast<std::string>()
+                                 : py::str(source.attr("__fspath__")()).cast<std::string>();
+    return run_released([&](const CancelToken&) { return read_image(path).pixels; });
+  }
+  MatView view = to_mat(source, what);
+  keep = view.owner;
+  return swap_red_blue(view.mat, rgb);
+}
+
+void bind_render(py::module_& m) {
+  const RenderOptions defaults;
+  m.def(
+      "render", &render, py::arg("preset"), py::kw_only(), py::arg("mode") = "measure",
+      py::arg("size") = py::make_tuple(1024, 1024), py::arg("view") = py::none(),
+      py::arg("margin") = defaults.margin, py::arg("quality") = defaults.quality,
+      py::arg("supersample") = defaults.supersample, py::arg("gamma") = defaults.gamma,
+      py::arg("brightness") = defaults.brightness, py::arg("seed") = defaults.seed,
+      py::arg("threads") = defaults.threads, py::arg("exact") = true,
+      py::arg("second_symbol") = false, py::arg("source") = py::none(),
+      py::arg("colouring") = py::none(), py::arg("background") = "black", py::arg("alpha") = true,
+      py::arg("dtype") = "uint8", py::arg("allow_expansive") = false, py::arg("rgb") = false,
+      R"doc(An IFS rendered as `ifsfx render PRESET -o OUT.png` renders it, as an array equal to the PNG's
+pixels (BGR order, like cv2). The GIL is released while it works; Ctrl-C stops it
+(KeyboardInterrupt).
+
+preset: a shipped name, a .toml/.ifs path, "FILE.ifs:NAME", or an Ifs.
+mode: "attractor" (the set: H×W, 255 on it), "measure" (log-density of the invariant
+    measure, coloured by map: H×W×3), "tops" (each pixel coloured by the first symbol of its
+    top address: H×W×4, or ×3 with alpha=False), "steal" (colours stolen from `source`:
+    its channels, plus alpha).
+size: (width, height) or "WxH", default (1024, 1024).
+view: plane rectangle (x0, y0, x1, y1) shown, default None: the attractor, auto-framed
+    with `margin` (default 0.05, fraction of the larger side).
+quality: chaos-game points per output pixel, default 64.
+supersample: measure mode: render at K times the size and box-filter down, default 1.
+gamma, brightness: measure mode's tone map, defaults 2.2 and 4.
+seed: default 1; the same seed gives the same array for any thread count.
+threads: default 0 = all cores.
+exact: tops and steal: the exact per-pixel descent (default True) or the chaos game (False).
+second_symbol: tops mode: mix in the second symbol's colour, default False.
+source: steal mode: the image (an H×W×C uint8/uint16/float32 array, or a path).
+colouring: steal mode: colouring IFS preset with as many maps, default None: a tiling.
+background: tops and steal: colour off the attractor ("black", "white", "#rrggbb" or
+    (R, G, B)), default "black"; alpha is 0 there.
+alpha: tops and steal: keep the coverage as an alpha channel (as PNG), default True.
+dtype: "uint8" (default, as an 8-bit PNG), "uint16" (as a 16-bit PNG) or "float32" (in [0, 1]).
+rgb: False (default): arrays in and out in BGR(A) order, like cv2; True: RGB(A).
+allow_expansive: accept maps of factor >= 1 when the IFS contracts on average, default False.
+
+Raises ValueError for bad input (with the library's message), FileNotFoundError/OSError for
+files.)doc");
+
+  m.def(
+      "read_image",
+      [](const std::string& path, bool rgb) {
+        return to_array(swap_red_blue(
+            run_released([&](const CancelToken&) { return read_image(path).pixels; }), rgb));
+      },
+      py::arg("path"), py::kw_only(), py::arg("rgb") = false,
+      R"doc(Any image OpenImageIO reads, as stored (uint8, uint16 or float32; BGR, BGRA or grey), alpha
+straight; rgb=True gives RGB(A) order. Raises FileNotFoundError or OSError naming the path.)doc");
+  m.def(
+      "write_image",
+      [](const std::string& path, const py::object& image, int bits, bool rgb) {
+        const MatView view = to_mat(image, "image");
+        const cv::Mat pixels = swap_red_blue(view.mat, rgb);
+        run_released([&](const CancelToken& cancel) {
+          write_image(path, pixels, {.bits = bits, .output = {.cancel = cancel}});
+          return 0;
+        });
+      },
+      py::arg("path"), py::arg("image"), py::arg("bits") = 8, py::kw_only(), py::arg("rgb") = false,
+      R"doc(Writes an H×W×C array (BGR order, RGB with rgb=True) in the format of path's extension (.png, .tif, .exr, .jpg),
+`bits` 8 (default) or 16 per channel for PNG and TIFF, through a temporary file renamed into
+place when complete.)doc");
+}
+
+}  // namespace ifsfx::python
