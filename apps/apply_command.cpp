@@ -42,7 +42,8 @@ void run_apply(const ApplyArgs& args) {
   options.interpolation = args.nearest ? Interpolation::nearest : Interpolation::bilinear;
   options.background = background_scalar(background, source.depth());
   options.threads = args.threads;
-  const cv::Mat out = with_coverage_alpha(apply(map, source, options), map.coverage, args.output);
+  const cv::Mat out =
+      with_coverage_alpha(apply(map, source, options), map.coverage, format_has_alpha(args.output));
   write_image(args.output, out, write);
 }
 

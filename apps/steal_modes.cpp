@@ -58,34 +58,6 @@ bool format_has_alpha(const std::string& path) {
   return ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr";
 }
 
-cv::Scalar background_scalar(const Rgb& colour, int depth) {
-  const double full = depth == CV_8U ? 255.0 : depth == CV_16U ? 65535.0 : 1.0;
-  return {colour.b * full, colour.g * full, colour.r * full, 0};
-}
-
-cv::Mat with_coverage_alpha(const cv::Mat& coloured, const cv::Mat& coverage,
-                            const std::string& output) {
-  const bool alpha = format_has_alpha(output);
-  if (!alpha) {
-    if (coloured.channels() != 4) return coloured;
-    cv::Mat bgr;
-    cv::cvtColor(coloured, bgr, cv::COLOR_BGRA2BGR);
-    return bgr;
-  }
-  if (coloured.channels() == 4) return coloured;  // the source's alpha, 0 off the attractor
-  cv::Mat bgr = coloured;
-  if (coloured.channels() == 1) cv::cvtColor(coloured, bgr, cv::COLOR_GRAY2BGR);
-  cv::Mat a;
-  const double full = bgr.depth() == CV_8U ? 1.0 : bgr.depth() == CV_16U ? 257.0 : 1.0 / 255;
-  coverage.convertTo(a, bgr.depth(), full);
-  std::vector<cv::Mat> planes;
-  cv::split(bgr, planes);
-  planes.push_back(a);
-  cv::Mat out;
-  cv::merge(planes, out);
-  return out;
-}
-
 cv::Mat tops_image(const Ifs& F, cv::Size size, const RenderOptions& options, bool exact,
                    bool second_symbol, const Rgb& background, const std::string& output,
                    RenderStats* stats) {
@@ -160,7 +132,7 @@ cv::Mat steal_image(const Ifs& F, cv::Size size, const RenderOptions& options,
     stats->coverage = ss.coverage;
     stats->view = ss.view;
   }
-  return with_coverage_alpha(coloured, map.coverage, output);
+  return with_coverage_alpha(coloured, map.coverage, format_has_alpha(output));
 }
 
 }  // namespace ifsfx::app

@@ -12,6 +12,7 @@
 #include "ifs/ifs.h"
 #include "ifs/output_file.h"
 #include "ifs/render.h"
+#include "ifs/steal_picture.h"
 
 namespace ifsfx::app {
 
@@ -42,13 +43,5 @@ cv::Mat tops_image(const Ifs& F, cv::Size size, const RenderOptions& options, bo
 cv::Mat steal_image(const Ifs& F, cv::Size size, const RenderOptions& options,
                     const StealModeArgs& args, const std::string& output,
                     std::vector<OutputFile>& staged, RenderStats* stats);
-
-// An image of the map's pixels from `coloured` (the source's depth) and `coverage` ready for
-// `output`: with an alpha channel of the coverage where the format has one.
-cv::Mat with_coverage_alpha(const cv::Mat& coloured, const cv::Mat& coverage,
-                            const std::string& output);
-
-// The background colour as a cv::Scalar in BGR(A) order for images of `depth`, alpha 0.
-cv::Scalar background_scalar(const Rgb& colour, int depth);
 
 }  // namespace ifsfx::app

@@ -119,9 +119,4 @@ Rgb colour_arg(const py::object& colour, const std::string& what) {
   throw fail();
 }
 
-cv::Scalar background_scalar(const Rgb& colour, int depth) {
-  const double full = depth == CV_8U ? 255.0 : depth == CV_16U ? 65535.0 : 1.0;
-  return {colour.b * full, colour.g * full, colour.r * full, 0};
-}
-
 }  // namespace ifsfx::python

@@ -49,7 +49,5 @@ cv::Size size_arg(const py::object& size, const std::string& what = "size");
 std::optional<Box> view_arg(const py::object& view, const std::string& what = "view");
 // background=: "black", "white", "#rrggbb" or (R, G, B) with 0..255, as the CLI's --background.
 Rgb colour_arg(const py::object& colour, const std::string& what = "background");
-// The colour as a cv::Scalar in BGR(A) order at `depth`'s full scale, alpha 0 (as the CLI).
-cv::Scalar background_scalar(const Rgb& colour, int depth);
 
 }  // namespace ifsfx::python

@@ -11,6 +11,7 @@
 #include "ifs/preset.h"
 #include "ifs/render.h"
 #include "ifs/steal_map.h"
+#include "ifs/steal_picture.h"
 #include "ifs/tops.h"
 #include "python/arrays.h"
 #include "python/errors.h"
@@ -44,29 +45,6 @@ cv::Mat tops_image(const Ifs& F, cv::Size size, const Sampling& s, bool second_s
   image.setTo(background_scalar(background, CV_32F), coverage == 0);
   if (!alpha) cv::cvtColor(image, image, cv::COLOR_BGRA2BGR);
   return image;
-}
-
-// The coloured pixels with the coverage as alpha (apps/steal_modes.cpp with_coverage_alpha), or
-// without alpha.
-cv::Mat with_coverage_alpha(const cv::Mat& coloured, const cv::Mat& coverage, bool alpha) {
-  if (!alpha) {
-    if (coloured.channels() != 4) return coloured;
-    cv::Mat bgr;
-    cv::cvtColor(coloured, bgr, cv::COLOR_BGRA2BGR);
-    return bgr;
-  }
-  if (coloured.channels() == 4) return coloured;  // the source's alpha, 0 off the attractor
-  cv::Mat bgr = coloured;
-  if (coloured.channels() == 1) cv::cvtColor(coloured, bgr, cv::COLOR_GRAY2BGR);
-  cv::Mat a;
-  const double full = bgr.depth() == CV_8U ? 1.0 : bgr.depth() == CV_16U ? 257.0 : 1.0 / 255;
-  coverage.convertTo(a, bgr.depth(), full);
-  std::vector<cv::Mat> planes;
-  cv::split(bgr, planes);
-  planes.push_back(a);
-  cv::Mat out;
-  cv::merge(planes, out);
-  return out;
 }
 
 py::array render(const py::object& preset, const std::string& mode_name, const py::object& size,

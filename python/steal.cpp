@@ -9,6 +9,7 @@
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"
+#include "ifs/steal_picture.h"
 #include "python/arrays.h"
 #include "python/errors.h"
 #include "python/options.h"
