@@ -70,9 +70,21 @@ void box_rows(const cv::Mat& density, int r, int row0, int row1, cv::Mat& out) {
     float* dst = out.ptr<float>(row);
     double sum = 0;
     int lo = 0, hi = -1;  // the running window [lo, hi] of columns
+    int filled = 0;       // columns of the window with mass
     for (int c = 0; c < w; ++c) {
-      while (hi < std::min(w - 1, c + r)) sum += column[static_cast<std::size_t>(++hi)];
-      while (lo < c - r) sum -= column[static_cast<std::size_t>(lo++)];
+      while (hi < std::min(w - 1, c + r)) {
+        const double add = column[static_cast<std::size_t>(++hi)];
+        sum += add;
+        filled += add != 0;
+      }
+      while (lo < c - r) {
+        const double drop = column[static_cast<std::size_t>(lo++)];
+        sum -= drop;
+        filled -= drop != 0;
+      }
+      // A running difference leaves a residue (~1e-20) once the mass has left the window; an
+      // empty window is exactly 0, so the measure's support stays the mask (same reach).
+      if (filled == 0) sum = 0;
       dst[c] = static_cast<float>(sum / ((hi - lo + 1) * (k1 - k0 + 1)));
     }
   }

@@ -117,7 +117,7 @@ int default_steps(const SuperIfs& super, cv::Size size) {
   if (!(s > 0)) return 1;
   // s^k · pixels < 1/8  ⇔  k > log(8 · pixels) / −log(s). An eighth rather than one pixel: the
   // conservative lookup adds up to a pixel or two a step, and that margin must decay as well
-  // before two different starts give the same raster (buffers_test burn_in_forgets_...).
+  // before two different starts agree to within a pixel (buffers_test burn_in_forgets_...).
   const double k = std::floor(std::log(8 * pixels) / -std::log(s)) + 1;
   return static_cast<int>(std::clamp(k, 1.0, 500.0));
 }
