@@ -82,7 +82,7 @@ case "$check" in
     # Ctrl-C mid-run: exit 130, whole files only (each the full run's), no temporary left; the
     # same command again completes the dataset.
     make_categories
-    args=(dataset render cats --weights w.csv --size 128x128 --iterations 20000 --instances 50
+    args=(dataset render cats --weights w.csv --size 128x128 --iterations 200000 --instances 50
       --threads 1 -q)
     "$ifsfx" "${args[@]}" -o full
     "$ifsfx" "${args[@]}" -o db 2>err.txt &
