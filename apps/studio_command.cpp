@@ -264,13 +264,21 @@ class Studio {
                      "default-src 'self'; img-src 'self' blob: data:; connect-src 'self'");
       res.set_content(read_whole(web_ / "index.html"), "text/html; charset=utf-8");
     });
-    const std::vector<std::pair<std::string, std::string>> files{
-        {"studio.js", "text/javascript"}, {"studio.css", "text/css"}, {"sample.png", "image/png"}};
-    for (const auto& [name, type] : files)
-      server_.Get("/" + name, [this, name = name, type = type](const httplib::Request&,
-                                                               httplib::Response& res) {
-        res.set_content(read_whole(web_ / name), type.c_str());
-      });
+    // The page's other files (its ES modules, styles and the sample source): plain names of the
+    // web folder only.
+    server_.Get(R"(/([a-z][a-z0-9_-]*)\.(js|css|png))",
+                [this](const httplib::Request& req, httplib::Response& res) {
+                  const fs::path path = web_ / (req.matches[1].str() + "." + req.matches[2].str());
+                  std::error_code ec;
+                  if (!fs::is_regular_file(path, ec)) {
+                    send_error(res, 404, fmt::format("{}: no such file", req.path));
+                    return;
+                  }
+                  const std::string ext = req.matches[2].str();
+                  res.set_content(read_whole(path), ext == "js"    ? "text/javascript"
+                                                    : ext == "css" ? "text/css"
+                                                                   : "image/png");
+                });
 
     server_.Get("/api/presets", [](const httplib::Request&, httplib::Response& res) {
       guarded(res, [&] {

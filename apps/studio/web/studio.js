@@ -4,8 +4,9 @@
 // cancels that one. Coordinates: "plane" is the IFS plane (y up), "pixels" the canvas's own
 // pixels (y down), through the view rectangle of the last picture.
 
-const token = new URLSearchParams(location.search).get('token') || '';
-const $ = (id) => document.getElementById(id);
+import { $, api, getJson, status, token } from './api.js';
+import { apply, defaultProbabilities, factor, frameOf, moved, rotatedScaled, sheared } from './geometry.js';
+
 const canvas = $('canvas');
 const ctx = canvas.getContext('2d');
 
@@ -19,35 +20,9 @@ const redoStack = [];
 const stats = { seq: 0, drawnSeq: 0, latencies: [], renderMs: [], errors: 0 };
 window.studio = stats;
 
-async function api(path, options = {}) {
-  const headers = Object.assign({ 'X-Ifsfx-Token': token }, options.headers || {});
-  if (options.body) headers['Content-Type'] = 'application/json';
-  return fetch(path, Object.assign({}, options, { headers }));
-}
-
-function status(text, error = false) {
-  $('status').textContent = text;
-  $('status').className = error ? 'error' : '';
-}
-
-// ---- the mathematics the page needs to draw and drag (the renders are the server's) ----
-
-const apply = (m, p) => [m[0] * p[0] + m[1] * p[1] + m[4], m[2] * p[0] + m[3] * p[1] + m[5]];
-
-// The largest singular value of [[a b][c d]]: the map's contraction factor.
-function factor(m) {
-  const t = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] + m[3] * m[3];
-  const det = m[0] * m[3] - m[1] * m[2];
-  return Math.sqrt((t + Math.sqrt(Math.max(t * t - 4 * det * det, 0))) / 2);
-}
-
 // The frame: the view rectangle, as plane points; corners 0..3 counter-clockwise from (x0, y0).
 function frame() {
-  const v = lockedView ? lockedView.split(',').map(Number) : pictureView || [0, 0, 1, 1];
-  return {
-    corners: [[v[0], v[1]], [v[2], v[1]], [v[2], v[3]], [v[0], v[3]]],
-    centre: [(v[0] + v[2]) / 2, (v[1] + v[3]) / 2],
-  };
+  return frameOf(lockedView ? lockedView.split(',').map(Number) : pictureView || [0, 0, 1, 1]);
 }
 
 function toPixels(p) {
@@ -96,14 +71,6 @@ function draw() {
 
 function fmt(x) { return String(Number(x.toPrecision(6))); }
 
-function defaultProbabilities() {
-  const dets = state.maps.map((m) => Math.abs(m[0] * m[3] - m[1] * m[2]));
-  const top = Math.max(...dets);
-  const w = dets.map((d) => Math.max(d, 0.01 * top) || 1);
-  const sum = w.reduce((a, b) => a + b, 0);
-  return w.map((x) => x / sum);
-}
-
 function renderTable() {
   const body = document.querySelector('#maps tbody');
   body.textContent = '';
@@ -131,7 +98,7 @@ function renderTable() {
         edit(() => {
           if (k < 6) state.maps[i][k] = value;
           else {
-            if (state.probabilities.length !== n) state.probabilities = defaultProbabilities();
+            if (state.probabilities.length !== n) state.probabilities = defaultProbabilities(state.maps);
             state.probabilities[i] = value;
           }
         });
@@ -320,40 +287,10 @@ canvas.addEventListener('pointerdown', (event) => {
 canvas.addEventListener('pointermove', (event) => {
   if (!drag) return;
   const p = toPlane(canvasPoint(event));
-  const m0 = drag.m0;
-  const f = frame();
-  const q = f.centre;
-  let m;
-  if (drag.kind === 'centre') {  // translate: e, f follow the pointer
-    m = [m0[0], m0[1], m0[2], m0[3], m0[4] + p[0] - drag.start[0], m0[5] + p[1] - drag.start[1]];
-  } else {
-    const Q = apply(m0, q);  // the image of the frame's centre stays put
-    const dk = [f.corners[drag.corner][0] - q[0], f.corners[drag.corner][1] - q[1]];
-    const target = [p[0] - Q[0], p[1] - Q[1]];
-    let L;
-    if (event.shiftKey) {
-      // Shear: the corner goes to the pointer, the corner beside it on its horizontal edge stays.
-      const k2 = drag.corner ^ 1;
-      const d2 = [f.corners[k2][0] - q[0], f.corners[k2][1] - q[1]];
-      const w2 = [m0[0] * d2[0] + m0[1] * d2[1], m0[2] * d2[0] + m0[3] * d2[1]];
-      const det = dk[0] * d2[1] - d2[0] * dk[1];
-      if (Math.abs(det) < 1e-12) return;
-      // L = W · D⁻¹ with D = [dk d2], W = [target w2]
-      const inv = [d2[1] / det, -d2[0] / det, -dk[1] / det, dk[0] / det];
-      L = [target[0] * inv[0] + w2[0] * inv[2], target[0] * inv[1] + w2[0] * inv[3],
-           target[1] * inv[0] + w2[1] * inv[2], target[1] * inv[1] + w2[1] * inv[3]];
-    } else {
-      // Rotate and scale about the centre's image: multiply by the complex ratio of the corner's
-      // new and old offsets.
-      const old = [m0[0] * dk[0] + m0[1] * dk[1], m0[2] * dk[0] + m0[3] * dk[1]];
-      const n2 = old[0] * old[0] + old[1] * old[1];
-      if (n2 < 1e-18) return;
-      const zr = (target[0] * old[0] + target[1] * old[1]) / n2;
-      const zi = (target[1] * old[0] - target[0] * old[1]) / n2;
-      L = [zr * m0[0] - zi * m0[2], zr * m0[1] - zi * m0[3], zi * m0[0] + zr * m0[2], zi * m0[1] + zr * m0[3]];
-    }
-    m = [L[0], L[1], L[2], L[3], Q[0] - (L[0] * q[0] + L[1] * q[1]), Q[1] - (L[2] * q[0] + L[3] * q[1])];
-  }
+  const m = drag.kind === 'centre' ? moved(drag.m0, drag.start, p)
+          : event.shiftKey ? sheared(drag.m0, frame(), drag.corner, p)
+          : rotatedScaled(drag.m0, frame(), drag.corner, p);
+  if (!m) return;
   if (!drag.moved) { undoStack.push(drag.before); redoStack.length = 0; drag.moved = true; }
   state.maps[drag.map] = m;
   changed(event.timeStamp);
@@ -374,17 +311,10 @@ function open(preset) {
   changed();
 }
 
-async function json(path) {
-  const res = await api(path);
-  const body = await res.json();
-  if (!res.ok) throw new Error(body.error);
-  return body;
-}
-
 async function start() {
   if (!token) { status('open the URL that `ifsfx studio` printed: it carries the token', true); return; }
   const [presets, sources, initial] = await Promise.all([
-    json('/api/presets'), json('/api/sources'), json('/api/preset')]);
+    getJson('/api/presets'), getJson('/api/sources'), getJson('/api/preset')]);
   const select = $('preset');
   for (const p of [{ name: initial.name, description: 'opened' }, ...presets]) {
     const o = document.createElement('option');
@@ -399,7 +329,7 @@ async function start() {
   }
   select.onchange = async () => {
     try {
-      const preset = await json(select.value ? `/api/preset?name=${encodeURIComponent(select.value)}` : '/api/preset');
+      const preset = await getJson(select.value ? `/api/preset?name=${encodeURIComponent(select.value)}` : '/api/preset');
       undoStack.push(snapshot());
       redoStack.length = 0;
       open(preset);
