@@ -72,3 +72,19 @@ export function defaultProbabilities(maps) {
   const sum = w.reduce((a, b) => a + b, 0);
   return w.map((x) => x / sum);
 }
+
+// Mirror: the same parallelogram, its inside flipped left to right (f ∘ R, R the reflection of
+// the frame about its vertical centre line x = cx).
+export function flipped(m, f) {
+  const cx = f.centre[0];
+  return [-m[0], m[1], -m[2], m[3], m[4] + 2 * m[0] * cx, m[5] + 2 * m[2] * cx];
+}
+
+// The map moved by (dx, dy) in its plane.
+export const shifted = (m, dx, dy) => [m[0], m[1], m[2], m[3], m[4] + dx, m[5] + dy];
+
+// A half-size map of the frame onto its own middle: f(q) = q, q the frame's centre.
+export function middleMap(f, scale = 0.5) {
+  const q = f.centre;
+  return [scale, 0, 0, scale, q[0] * (1 - scale), q[1] * (1 - scale)];
+}

@@ -1,367 +1,539 @@
 // SPDX-License-Identifier: Apache-2.0
-// ifsfx studio, the page (docs/studio.md). It holds the preset being edited and sends all of it
-// with every render: the server keeps no state but the render in flight, and a newer request
-// cancels that one. Coordinates: "plane" is the IFS plane (y up), "pixels" the canvas's own
-// pixels (y down), through the view rectangle of the last picture.
-
-import { $, api, getJson, status, token } from './api.js';
-import { apply, defaultProbabilities, factor, frameOf, moved, rotatedScaled, sheared } from './geometry.js';
+// ifsfx studio, the page (docs/studio.md). It holds the document being edited (the preset, and
+// the colouring IFS of colour stealing) and sends all of it with every render: the server keeps
+// no state but the renders in flight. Coordinates: "plane" is the IFS plane (y up), "pixels" the
+// canvas's own pixels (y down), through the view (view.js); the maps are drawn as the
+// parallelograms they make of the frame, the view rectangle the document was framed with (it
+// stays put under pan and zoom, so that the handles do not jump).
+import { $, api, getJson, postJson, status, token } from './api.js';
+import { defaultProbabilities, flipped, frameOf, middleMap, shifted } from './geometry.js';
+import { LiveRenderer } from './live.js';
+import { canvasPoint, dragged, drawMaps, handleClientPoint, hitHandle } from './overlay.js';
+import { SourcePanel } from './source.js';
+import { renderColouringTable, renderMapsTable, updateRow } from './table.js';
+import { View } from './view.js';
 
 const canvas = $('canvas');
 const ctx = canvas.getContext('2d');
+const view = new View(canvas);
+const kMaxUpload = 32 << 20;  // the server's cap (apps/studio_folder.h)
 
-let state = { name: 'studio', description: '', maps: [], probabilities: [], colours: [] };
+// The document: what Save writes (the preset, and NAME.colouring.toml when colouring is set).
+let doc = { name: 'studio', description: '', maps: [], probabilities: [], colours: [],
+            colouring: null, allow_expansive: false };
 let selected = 0;
-let lockedView = null;  // "x0,y0,x1,y1" sent with each render once framed, so handles stay put
-let picture = null;     // the last ImageBitmap drawn
-let pictureView = null; // [x0, y0, x1, y1] of that picture
+let frame = null;       // frameOf(frameRect): where the maps are drawn from
+let frameRect = null;   // [x0, y0, x1, y1]: the view the document was framed with
+let picture = null;     // {canvas, view, full}: the last picture, drawn where its view lies
+let usedColouring = null;  // G as the server fitted it (X-Ifsfx-Colouring)
+let openedFile = null;  // the folder file the document came from
 const undoStack = [];
 const redoStack = [];
-const stats = { seq: 0, drawnSeq: 0, latencies: [], renderMs: [], errors: 0 };
+const defaults = new Map();  // N → {colours, colouring}: the server's palette and tiling for N maps
+const stats = { seq: 0, drawnSeq: 0, latencies: [], fullLatencies: [], renderMs: [],
+                fullRenderMs: [], errors: 0 };
 window.studio = stats;
 
-// The frame: the view rectangle, as plane points; corners 0..3 counter-clockwise from (x0, y0).
-function frame() {
-  return frameOf(lockedView ? lockedView.split(',').map(Number) : pictureView || [0, 0, 1, 1]);
+// ---- the document's defaults for N maps (the server computes them) ----
+
+function defaultsFor(n) {
+  if (!defaults.has(n)) {
+    defaults.set(n, null);
+    getJson(`/api/defaults?maps=${n}`).then((d) => {
+      defaults.set(n, d);
+      refresh();
+    }).catch((e) => status(e.message, true));
+  }
+  return defaults.get(n);
 }
 
-function toPixels(p) {
-  const v = pictureView || [0, 0, 1, 1];
-  return [(p[0] - v[0]) * canvas.width / (v[2] - v[0]),
-          (v[3] - p[1]) * canvas.height / (v[3] - v[1])];
-}
-function toPlane(px) {
-  const v = pictureView || [0, 0, 1, 1];
-  return [v[0] + px[0] * (v[2] - v[0]) / canvas.width,
-          v[3] - px[1] * (v[3] - v[1]) / canvas.height];
+function colourOf(i) {
+  const n = doc.maps.length;
+  if (doc.colours.length === n) return doc.colours[i];
+  const d = defaultsFor(n);
+  return d ? d.colours[i] : '#888888';
 }
 
-function mapColour(i, n) {
-  if (state.colours.length === n) return state.colours[i];
-  return `hsl(${Math.round(360 * i / Math.max(n, 1))}, 90%, 60%)`;
+// G as shown and edited: the document's, or the default tiling for N maps.
+function colouringShown() {
+  if (doc.colouring) return doc.colouring;
+  const d = defaultsFor(doc.maps.length);
+  return d ? d.colouring : null;
 }
 
 // ---- drawing ----
 
+const surface = {
+  ctx,
+  get frame() { return frame; },
+  toPixels: (p) => view.toPixels(p),
+  toPlane: (px) => view.toPlane(px),
+  get scale() { return canvas.width / canvas.getBoundingClientRect().width || 1; },
+};
+
 function draw() {
   ctx.clearRect(0, 0, canvas.width, canvas.height);
-  if (picture) ctx.drawImage(picture, 0, 0, canvas.width, canvas.height);
-  const f = frame();
-  state.maps.forEach((m, i) => {
-    const pts = f.corners.map((c) => toPixels(apply(m, c)));
-    ctx.strokeStyle = mapColour(i, state.maps.length);
-    ctx.lineWidth = i === selected ? 2.5 : 1.2;
-    ctx.setLineDash(i === selected ? [] : [5, 4]);
-    ctx.beginPath();
-    pts.forEach((p, k) => (k ? ctx.lineTo(p[0], p[1]) : ctx.moveTo(p[0], p[1])));
-    ctx.closePath();
-    ctx.stroke();
-    ctx.setLineDash([]);
-    ctx.fillStyle = ctx.strokeStyle;
-    pts.forEach((p, k) => ctx.fillRect(p[0] - 4, p[1] - 4, 8, 8) || (k === 0 && ctx.strokeRect(p[0] - 7, p[1] - 7, 14, 14)));
-    const c = toPixels(apply(m, f.centre));
-    ctx.beginPath();
-    ctx.arc(c[0], c[1], 6, 0, 2 * Math.PI);
-    ctx.fill();
-    ctx.fillStyle = '#000';
-    ctx.font = 'bold 10px sans-serif';
-    ctx.fillText(String(i + 1), c[0] - 3, c[1] + 4);
-  });
+  if (picture && view.framed) {
+    const v = picture.view;
+    const a = view.toPixels([v[0], v[3]]);
+    const b = view.toPixels([v[2], v[1]]);
+    ctx.imageSmoothingEnabled = true;
+    ctx.drawImage(picture.canvas, a[0], a[1], b[0] - a[0], b[1] - a[1]);
+  }
+  if (frame) drawMaps(surface, doc.maps, colourOf, selected);
 }
 
-function fmt(x) { return String(Number(x.toPrecision(6))); }
+const steal = () => $('mode').value === 'steal';
 
-function renderTable() {
-  const body = document.querySelector('#maps tbody');
-  body.textContent = '';
-  const n = state.maps.length;
-  state.maps.forEach((m, i) => {
-    const tr = document.createElement('tr');
-    tr.dataset.map = i;
-    if (i === selected) tr.className = 'selected';
-    const head = document.createElement('td');
-    head.innerHTML = `<span class="swatch"></span> ${i + 1}`;
-    head.firstChild.style.background = mapColour(i, n);
-    head.onclick = () => { selected = i; renderTable(); draw(); };
-    tr.appendChild(head);
-    const fields = ['a', 'b', 'c', 'd', 'e', 'f', 'p'];
-    fields.forEach((name, k) => {
-      const td = document.createElement('td');
-      const input = document.createElement('input');
-      input.name = `${name}${i}`;
-      input.inputMode = 'decimal';  // text: a number field's spinner would hide digits
-      input.value = k < 6 ? fmt(m[k]) : (state.probabilities.length === n ? fmt(state.probabilities[i]) : '');
-      if (k === 6 && state.probabilities.length !== n) input.placeholder = 'auto';
-      input.onchange = () => {
-        const value = Number(input.value);
-        if (input.value === '' || !Number.isFinite(value)) { renderTable(); return; }
-        edit(() => {
-          if (k < 6) state.maps[i][k] = value;
-          else {
-            if (state.probabilities.length !== n) state.probabilities = defaultProbabilities(state.maps);
-            state.probabilities[i] = value;
-          }
-        });
-      };
-      td.appendChild(input);
-      tr.appendChild(td);
-    });
-    const fac = factor(m);
-    const ftd = document.createElement('td');
-    ftd.className = fac >= 1 ? 'warn factor' : 'factor';
-    ftd.textContent = fac >= 1 ? `${fac.toFixed(3)} ⚠ ≥ 1` : fac.toFixed(3);
-    if (fac >= 1) ftd.title = 'This map does not contract: the IFS has no attractor unless it contracts on average';
-    tr.appendChild(ftd);
-    const actions = document.createElement('td');
-    for (const [label, title, action] of [['↑', 'Move up', () => move(i, -1)],
-                                          ['↓', 'Move down', () => move(i, 1)],
-                                          ['✕', 'Delete', () => remove(i)]]) {
-      const b = document.createElement('button');
-      b.textContent = label;
-      b.title = title;
-      b.onclick = action;
-      actions.appendChild(b);
-    }
-    tr.appendChild(actions);
-    body.appendChild(tr);
+function renderTables() {
+  renderMapsTable(document.querySelector('#maps tbody'), doc, selected, colourOf, {
+    select: (i) => { selected = i; refresh(); },
+    set: (i, k, v) => edit(() => {
+      if (k < 6) doc.maps[i][k] = v;
+      else {
+        if (doc.probabilities.length !== doc.maps.length) doc.probabilities = defaultProbabilities(doc.maps);
+        doc.probabilities[i] = v;
+      }
+    }),
+    colour: (i, c) => edit(() => {
+      const n = doc.maps.length;
+      if (doc.colours.length !== n) doc.colours = Array.from({ length: n }, (_, j) => colourOf(j));
+      doc.colours[i] = c;
+    }),
+    move, duplicate, remove,
+    flip: (i) => edit(() => { doc.maps[i] = flipped(doc.maps[i], frame || frameOf([0, 0, 1, 1])); }),
+    restore: refresh,
   });
+  $('colouring-panel').hidden = !steal();
+  const g = colouringShown();
+  if (steal() && g) {
+    renderColouringTable(document.querySelector('#colouring tbody'), g, selected, colourOf, {
+      select: (i) => { selected = i; refresh(); },
+      set: (i, k, v) => edit(() => { ensureColouring()[i][k] = v; }),
+      restore: refresh,
+    });
+  }
+  $('colouring-state').textContent = doc.colouring
+    ? 'edited: saved beside the preset as NAME.colouring.toml'
+    : `the default tiling for ${doc.maps.length} maps`;
+  $('reset-colouring').disabled = !doc.colouring;
+}
+
+function refresh() {
+  renderTables();
+  draw();
+  if (steal()) source.draw();
 }
 
 // ---- edits, undo and redo ----
 
-const snapshot = () => JSON.stringify(state);
+const snapshot = () => JSON.stringify(doc);
 
-function edit(change) {
-  undoStack.push(snapshot());
+function pushUndo(before = snapshot()) {
+  undoStack.push(before);
   redoStack.length = 0;
+}
+
+function edit(change, eventTime) {
+  pushUndo();
   change();
-  changed();
+  changed(eventTime);
 }
 
-function changed(eventTime) {
-  renderTable();
+function changed(eventTime, interactive = false) {
+  selected = Math.max(0, Math.min(selected, doc.maps.length - 1));
+  renderer.changed(eventTime, interactive);  // the request first, the page after
+  refresh();
+}
+
+// One map moved during a drag (of the IFS, or of the colouring with `prefix` 'g'): the request
+// first, then only that map's fields and the drawings.
+function dragChanged(eventTime, prefix, i, m) {
+  renderer.changed(eventTime, true);
+  const table = prefix ? '#colouring tbody' : '#maps tbody';
+  updateRow(document.querySelector(table), prefix, i, m);
   draw();
-  render(eventTime);
+  if (steal()) source.draw();
 }
 
-function undo() {
-  if (!undoStack.length) return;
-  redoStack.push(snapshot());
-  state = JSON.parse(undoStack.pop());
-  selected = Math.min(selected, state.maps.length - 1);
+function restore(from, to) {
+  if (!from.length) return;
+  to.push(snapshot());
+  doc = JSON.parse(from.pop());
   changed();
 }
-function redo() {
-  if (!redoStack.length) return;
-  undoStack.push(snapshot());
-  state = JSON.parse(redoStack.pop());
-  selected = Math.min(selected, state.maps.length - 1);
-  changed();
+const undo = () => restore(undoStack, redoStack);
+const redo = () => restore(redoStack, undoStack);
+
+function ensureColouring() {
+  if (!doc.colouring) doc.colouring = JSON.parse(JSON.stringify(colouringShown()));
+  return doc.colouring;
 }
 
-function each(list, i, action) { if (list.length === state.maps.length) action(list); }
+// The lists that follow the maps (probabilities, colours, the colouring's pieces), when set.
+function lists() {
+  const n = doc.maps.length;
+  return [doc.probabilities, doc.colours, doc.colouring || []].filter((l) => l.length === n);
+}
 
 function move(i, by) {
   const j = i + by;
-  if (j < 0 || j >= state.maps.length) return;
+  if (j < 0 || j >= doc.maps.length) return;
   edit(() => {
-    for (const list of [state.probabilities, state.colours])
-      each(list, i, (l) => ([l[i], l[j]] = [l[j], l[i]]));
-    [state.maps[i], state.maps[j]] = [state.maps[j], state.maps[i]];
+    for (const l of [...lists(), doc.maps]) [l[i], l[j]] = [l[j], l[i]];
     selected = j;
   });
 }
 
-function remove(i) {
-  if (state.maps.length <= 1) { status('an IFS needs at least one map', true); return; }
+function duplicate(i) {
+  if (doc.maps.length >= 64) { status('at most 64 maps', true); return; }
   edit(() => {
-    for (const list of [state.probabilities, state.colours]) each(list, i, (l) => l.splice(i, 1));
-    state.maps.splice(i, 1);
-    selected = Math.min(selected, state.maps.length - 1);
+    const w = frameRect ? frameRect[2] - frameRect[0] : 1;
+    for (const l of lists()) l.splice(i + 1, 0, JSON.parse(JSON.stringify(l[i])));
+    if (doc.probabilities.length === doc.maps.length + 1) doc.probabilities[i + 1] = doc.probabilities[i];
+    doc.maps.splice(i + 1, 0, shifted(doc.maps[i], 0.04 * w, -0.04 * w));  // beside it, visible
+    selected = i + 1;
+  });
+}
+
+function remove(i) {
+  if (doc.maps.length <= 1) { status('an IFS needs at least one map', true); return; }
+  edit(() => {
+    for (const l of [...lists(), doc.maps]) l.splice(i, 1);
+    selected = Math.min(selected, doc.maps.length - 1);
   });
 }
 
 function add() {
+  if (doc.maps.length >= 64) { status('at most 64 maps', true); return; }
   edit(() => {
-    const q = frame().centre;
-    const n = state.maps.length;
-    if (state.probabilities.length === n) state.probabilities.push(1 / (n + 1));
-    if (state.colours.length === n) state.colours.push('#ffffff');
-    state.maps.push([0.5, 0, 0, 0.5, q[0] * 0.5, q[1] * 0.5]);  // f(q) = q: half size, centred
+    const n = doc.maps.length;
+    if (doc.probabilities.length === n) doc.probabilities.push(1 / (n + 1));
+    if (doc.colours.length === n) doc.colours.push('#ffffff');
+    if (doc.colouring && doc.colouring.length === n) doc.colouring.push(middleMap(frameOf([0, 0, 1, 1]), 0.25));
+    doc.maps.push(middleMap(frame || frameOf([0, 0, 1, 1])));
     selected = n;
   });
 }
 
-// ---- rendering: each edit sends the preset; a newer request cancels the one in flight ----
-
-let controller = null;
+// ---- the live picture ----
 
 function requestBody() {
-  const body = {
-    name: state.name, description: state.description, maps: state.maps,
-    mode: $('mode').value, size: $('size').value,
-  };
-  if (state.probabilities.length) body.probabilities = state.probabilities;
-  if (state.colours.length) body.colours = state.colours;
-  if (body.mode === 'steal') body.source = $('source').value || 'sample';
-  if (lockedView) body.view = lockedView;
+  const body = { name: doc.name, description: doc.description, maps: doc.maps, mode: $('mode').value };
+  if (doc.probabilities.length) body.probabilities = doc.probabilities;
+  if (doc.colours.length) body.colours = doc.colours;
+  if (doc.allow_expansive) body.allow_expansive = true;
+  if (body.mode === 'steal') {
+    body.source = $('source').value || 'sample';
+    if (doc.colouring) body.colouring = doc.colouring;
+  }
+  if (view.framed) body.view = view.text();
   return body;
 }
 
-async function render(eventTime = performance.now()) {
-  const seq = ++stats.seq;
-  if (controller) controller.abort();
-  controller = new AbortController();
-  try {
-    const res = await api('/api/render', {
-      method: 'POST', body: JSON.stringify(requestBody()), signal: controller.signal,
-    });
-    if (res.status === 409) return;  // a newer request took over
-    if (!res.ok) {
-      stats.errors++;
-      status((await res.json()).error, true);
-      return;
+const pictureCanvas = document.createElement('canvas');
+const renderer = new LiveRenderer({
+  body: requestBody,
+  size: () => $('size').value.split('x').map(Number),
+  stats,
+  fail: (message) => status(message, true),
+  show: (p) => {
+    if (pictureCanvas.width !== p.width || pictureCanvas.height !== p.height) {
+      pictureCanvas.width = p.width;
+      pictureCanvas.height = p.height;
     }
-    const view = res.headers.get('X-Ifsfx-View');
-    const bitmap = await createImageBitmap(await res.blob());
-    if (seq < stats.drawnSeq) return;
-    const [w, h] = $('size').value.split('x').map(Number);
-    if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; }
-    picture = bitmap;
-    pictureView = view.split(',').map(Number);
-    if (!lockedView) lockedView = view;
-    stats.drawnSeq = seq;
+    pictureCanvas.getContext('2d').putImageData(p.image, 0, 0);
+    picture = { canvas: pictureCanvas, view: p.view, full: p.full };
+    if (!view.framed) {  // the server framed the attractor: the frame and the view from now on
+      view.rect = p.view.slice();
+      frameRect = p.view.slice();
+      frame = frameOf(frameRect);
+      renderTables();
+    }
+    usedColouring = p.colouring;
     draw();
-    stats.latencies.push(performance.now() - eventTime);
-    stats.renderMs.push(Number(res.headers.get('X-Ifsfx-Render-Ms')));
-    status(`${state.name}: ${state.maps.length} maps, rendered in ${res.headers.get('X-Ifsfx-Render-Ms')} ms`);
-  } catch (e) {
-    if (e.name !== 'AbortError') status(String(e), true);
-  }
-}
-
-// ---- dragging handles ----
-
-let drag = null;
-
-function canvasPoint(event) {
-  const r = canvas.getBoundingClientRect();
-  return [(event.clientX - r.left) * canvas.width / r.width,
-          (event.clientY - r.top) * canvas.height / r.height];
-}
-
-// The handle under a canvas point: {map, kind: 'centre' | 'corner', corner}.
-function hit(px) {
-  const f = frame();
-  const near = (p) => Math.hypot(p[0] - px[0], p[1] - px[1]) <= 9 * canvas.width / canvas.getBoundingClientRect().width;
-  const order = [selected, ...state.maps.keys()];
-  for (const i of order) {
-    const m = state.maps[i];
-    if (near(toPixels(apply(m, f.centre)))) return { map: i, kind: 'centre' };
-    for (let k = 0; k < 4; k++)
-      if (near(toPixels(apply(m, f.corners[k])))) return { map: i, kind: 'corner', corner: k };
-  }
-  return null;
-}
-
-// Where a handle of map i is, in the page's (client) coordinates: for tests and scripts.
-stats.handle = (i, kind = 'centre', corner = 0) => {
-  const f = frame();
-  const p = toPixels(apply(state.maps[i], kind === 'centre' ? f.centre : f.corners[corner]));
-  const r = canvas.getBoundingClientRect();
-  return { x: r.left + p[0] * r.width / canvas.width, y: r.top + p[1] * r.height / canvas.height };
-};
+    if (steal()) source.draw();
+    if (p.full) {
+      status(`${doc.name}: ${doc.maps.length} maps; ${$('mode').value} ${p.width}x${p.height} ` +
+             `rendered in ${p.renderMs} ms`);
+    }
+  },
+});
+// The stats the tests and bench/studio_latency.mjs read.
+Object.defineProperty(stats, 'seq', { get: () => renderer.version });
+stats.settled = () => renderer.settled();
 stats.state = () => JSON.parse(snapshot());
+stats.view = () => view.rect && view.rect.slice();
+stats.handle = (i, kind = 'centre', corner = 0) =>
+  handleClientPoint(surface, canvas, doc.maps[i], kind, corner);
+stats.sourceHandle = (i, kind = 'centre', corner = 0) => source.handle(i, kind, corner);
+
+// ---- the canvas: drag a handle, or pan (empty space, the middle button) and zoom (the wheel) ----
+
+let gesture = null;
 
 canvas.addEventListener('pointerdown', (event) => {
-  const h = hit(canvasPoint(event));
-  if (!h) return;
+  if (!frame) return;
+  const px = canvasPoint(canvas, event);
+  const h = event.button === 0 ? hitHandle(surface, doc.maps, selected, px) : null;
   canvas.setPointerCapture(event.pointerId);
-  selected = h.map;
-  drag = Object.assign(h, { before: snapshot(), start: toPlane(canvasPoint(event)),
-                            map: h.map, m0: state.maps[h.map].slice(), moved: false });
-  renderTable();
-  draw();
+  if (h && h.kind === 'flip') {
+    edit(() => { doc.maps[h.map] = flipped(doc.maps[h.map], frame); }, event.timeStamp);
+    return;
+  }
+  if (h) {
+    selected = h.map;
+    gesture = Object.assign(h, { type: 'map', before: snapshot(), start: view.toPlane(px),
+                                 m0: doc.maps[h.map].slice(), moved: false });
+    refresh();
+  } else if (event.button === 0 || event.button === 1) {
+    event.preventDefault();
+    gesture = { type: 'pan', last: px };
+    canvas.classList.add('panning');
+  }
 });
 
-canvas.addEventListener('pointermove', (event) => {
-  if (!drag) return;
-  const p = toPlane(canvasPoint(event));
-  const m = drag.kind === 'centre' ? moved(drag.m0, drag.start, p)
-          : event.shiftKey ? sheared(drag.m0, frame(), drag.corner, p)
-          : rotatedScaled(drag.m0, frame(), drag.corner, p);
+function pointerMoved(event) {
+  if (!gesture) return;
+  const px = canvasPoint(canvas, event);
+  if (gesture.type === 'pan') {
+    view.panBy(px[0] - gesture.last[0], px[1] - gesture.last[1]);
+    gesture.last = px;
+    draw();
+    renderer.changed(event.timeStamp, true);
+    return;
+  }
+  const m = dragged(surface, gesture, gesture.m0, gesture.start, view.toPlane(px), event.shiftKey);
   if (!m) return;
-  if (!drag.moved) { undoStack.push(drag.before); redoStack.length = 0; drag.moved = true; }
-  state.maps[drag.map] = m;
-  changed(event.timeStamp);
+  if (!gesture.moved) { pushUndo(gesture.before); gesture.moved = true; }
+  doc.maps[gesture.map] = m;
+  dragChanged(event.timeStamp, '', gesture.map, m);
+}
+
+// Chrome delivers pointerrawupdate as the pointer moves, pointermove only at the next animation
+// frame (up to 16 ms later): a drag follows the first where there is one.
+let rawUpdates = false;
+canvas.addEventListener('pointerrawupdate', (event) => { rawUpdates = true; pointerMoved(event); });
+canvas.addEventListener('pointermove', (event) => { if (!rawUpdates) pointerMoved(event); });
+
+function endGesture() {
+  if (!gesture) return;
+  gesture = null;
+  canvas.classList.remove('panning');
+  renderer.rest();
+}
+canvas.addEventListener('pointerup', endGesture);
+canvas.addEventListener('pointercancel', endGesture);
+canvas.addEventListener('auxclick', (event) => event.preventDefault());
+
+canvas.addEventListener('wheel', (event) => {
+  if (!view.framed) return;
+  event.preventDefault();
+  const delta = event.deltaMode === 1 ? event.deltaY * 40 : event.deltaY;  // lines to pixels
+  view.zoomAt(canvasPoint(canvas, event), Math.exp(-delta * 0.0015));
+  draw();
+  renderer.changed(event.timeStamp, true);
+}, { passive: false });
+
+// ---- colour stealing: the source and the colouring IFS on it ----
+
+let sourceBefore = null;
+const source = new SourcePanel($('source-canvas'), {
+  maps: colouringShown,
+  used: () => usedColouring,
+  colour: colourOf,
+  selected: () => selected,
+  select: (i) => { selected = i; refresh(); },
+  begin: () => {
+    sourceBefore = snapshot();
+    return JSON.parse(JSON.stringify(colouringShown()));
+  },
+  drag: (g, eventTime, i) => {
+    if (sourceBefore) { pushUndo(sourceBefore); sourceBefore = null; renderTables(); }
+    doc.colouring = g;
+    dragChanged(eventTime, 'g', i, g[i]);
+  },
+  end: () => { sourceBefore = null; renderer.rest(); },
+  flip: (i) => edit(() => { ensureColouring()[i] = flipped(ensureColouring()[i], frameOf([0, 0, 1, 1])); }),
 });
 
-const endDrag = () => { drag = null; };
-canvas.addEventListener('pointerup', endDrag);
-canvas.addEventListener('pointercancel', endDrag);
+async function showSource() {
+  if (!steal()) return;
+  try {
+    await source.load($('source').value || 'sample');
+    $('source-size').textContent = source.sourceSize ? `${source.sourceSize} pixels` : '';
+  } catch (e) { status(e.message, true); }
+}
 
-// ---- the rest of the page ----
+function sanitisedName(name) {
+  const plain = name.replace(/[^A-Za-z0-9_.+ -]/g, '-').replace(/\.\.+/g, '.').replace(/^[^A-Za-z0-9_]+/, '');
+  return plain || 'dropped.png';
+}
+
+async function upload(file) {
+  if (file.size > kMaxUpload) {
+    status(`${file.name}: at most ${kMaxUpload >> 20} MiB (got ${file.size} bytes)`, true);
+    return;
+  }
+  status(`uploading ${file.name}…`);
+  try {
+    const res = await api(`/api/upload?name=${encodeURIComponent(sanitisedName(file.name))}`, {
+      method: 'POST', body: file, headers: { 'Content-Type': 'application/octet-stream' },
+    });
+    const answer = await res.json();
+    if (!res.ok) throw new Error(answer.error);
+    await listSources(answer.saved);
+    $('mode').value = 'steal';
+    status(`${answer.saved}: saved in the folder; it is the source now`);
+    modeChanged();
+  } catch (e) { status(e.message, true); }
+}
+
+// ---- presets: shipped, the folder's .toml files and Fractint entries ----
+
+function option(text, value, title = '') {
+  const o = document.createElement('option');
+  o.textContent = text;
+  o.value = JSON.stringify(value);
+  if (title) o.title = title;
+  return o;
+}
+
+async function listPresets(initialName) {
+  const [shipped, folder] = await Promise.all([getJson('/api/presets'), getJson('/api/folder')]);
+  const select = $('preset');
+  const keep = select.value;
+  select.textContent = '';
+  if (initialName) select.appendChild(option(`${initialName} (opened)`, { initial: true }));
+  const group = (label) => {
+    const g = document.createElement('optgroup');
+    g.label = label;
+    select.appendChild(g);
+    return g;
+  };
+  const s = group('Shipped');
+  for (const p of shipped) s.appendChild(option(`${p.name} (${p.maps} maps)`, { name: p.name }, p.description));
+  const f = group('Folder');
+  const unusable = [];
+  for (const p of folder) {
+    const label = p.entry !== undefined ? `${p.file}: ${p.entry}` : p.file;
+    const o = option(p.problem ? `${label} — unusable` : `${label} (${p.maps} maps)`,
+                     { file: p.file, entry: p.entry }, p.problem || p.description);
+    o.disabled = Boolean(p.problem);
+    f.appendChild(o);
+    if (p.problem) unusable.push([label, p.problem]);
+  }
+  if (!folder.length) f.appendChild(Object.assign(option('(no .toml or .ifs file)', {}), { disabled: true }));
+  if (keep) select.value = keep;
+  const list = $('unusable-list');
+  list.textContent = '';
+  for (const [label, problem] of unusable) {
+    const li = document.createElement('li');
+    const b = document.createElement('b');
+    b.textContent = label;
+    li.append(b, `: ${problem}`);
+    list.appendChild(li);
+  }
+  $('unusable').hidden = !unusable.length;
+  $('unusable-count').textContent = `${unusable.length} unusable preset${unusable.length === 1 ? '' : 's'} in the folder`;
+}
+
+async function listSources(choose) {
+  const sources = await getJson('/api/sources');
+  const select = $('source');
+  const keep = choose || select.value;
+  select.textContent = '';
+  for (const s of sources) {
+    const o = document.createElement('option');
+    o.value = o.textContent = s;
+    select.appendChild(o);
+  }
+  if (keep && sources.includes(keep)) select.value = keep;
+}
 
 function open(preset) {
-  state = { name: preset.name, description: preset.description || '', maps: preset.maps,
-            probabilities: preset.probabilities || [], colours: preset.colours || [] };
+  doc = { name: preset.name, description: preset.description || '', maps: preset.maps,
+          probabilities: preset.probabilities || [], colours: preset.colours || [],
+          colouring: preset.colouring || null, allow_expansive: Boolean(preset.allow_expansive) };
   selected = 0;
-  lockedView = null;
-  $('file').value = `${preset.name}.toml`;
+  view.rect = null;
+  frame = frameRect = null;
+  picture = null;
+  openedFile = preset.file || null;
+  $('file').value = openedFile === `${preset.name}.toml` ? `${preset.name}-2.toml` : `${preset.name}.toml`;
+  if (preset.warnings && preset.warnings.length) status(preset.warnings.join('; '));
   changed();
+}
+
+async function openSelected() {
+  const which = JSON.parse($('preset').value || '{}');
+  const query = which.initial ? '' : which.name ? `?name=${encodeURIComponent(which.name)}`
+    : `?file=${encodeURIComponent(which.file)}` + (which.entry !== undefined ? `&entry=${encodeURIComponent(which.entry)}` : '');
+  try {
+    const preset = await getJson(`/api/preset${query}`);
+    pushUndo();
+    open(preset);
+  } catch (e) { status(e.message, true); }
+}
+
+async function save() {
+  const body = Object.assign(requestBody(), { file: $('file').value });
+  if (doc.colouring) body.colouring = doc.colouring;
+  try {
+    const answer = await postJson('/api/save', body);
+    status(`saved ${answer.saved}` + (answer.colouring ? ` and its colouring ${answer.colouring}` : ''));
+    await listPresets();
+  } catch (e) { status(e.message, true); }
+}
+
+function modeChanged() {
+  $('source-label').hidden = !steal();
+  refresh();
+  showSource();
+  renderer.changed();
 }
 
 async function start() {
   if (!token) { status('open the URL that `ifsfx studio` printed: it carries the token', true); return; }
-  const [presets, sources, initial] = await Promise.all([
-    getJson('/api/presets'), getJson('/api/sources'), getJson('/api/preset')]);
-  const select = $('preset');
-  for (const p of [{ name: initial.name, description: 'opened' }, ...presets]) {
-    const o = document.createElement('option');
-    o.value = p.name === initial.name && p.description === 'opened' ? '' : p.name;
-    o.textContent = `${p.name}${p.maps ? ` (${p.maps} maps)` : ''}`;
-    select.appendChild(o);
-  }
-  for (const s of sources) {
-    const o = document.createElement('option');
-    o.value = o.textContent = s;
-    $('source').appendChild(o);
-  }
-  select.onchange = async () => {
-    try {
-      const preset = await getJson(select.value ? `/api/preset?name=${encodeURIComponent(select.value)}` : '/api/preset');
-      undoStack.push(snapshot());
-      redoStack.length = 0;
-      open(preset);
-    } catch (e) { status(String(e.message), true); }
-  };
-  const modeChanged = () => {
-    $('source-label').style.display = $('mode').value === 'steal' ? '' : 'none';
-    render();
-  };
+  const initial = await getJson('/api/preset');
+  await Promise.all([listPresets(initial.name), listSources()]);
+  $('preset').onchange = openSelected;
   $('mode').onchange = modeChanged;
-  $('source').onchange = () => render();
-  $('size').onchange = () => { lockedView = null; render(); };
-  $('reframe').onclick = () => { lockedView = null; render(); };
+  $('source').onchange = () => { showSource(); renderer.changed(); };
+  $('size').onchange = () => {
+    const [w, h] = $('size').value.split('x').map(Number);
+    canvas.width = w;
+    canvas.height = h;
+    draw();
+    renderer.changed();
+  };
+  $('reframe').onclick = () => { view.rect = null; frame = frameRect = null; renderer.changed(); };
+  $('reset-view').onclick = () => {
+    if (!frameRect) return;
+    view.rect = frameRect.slice();
+    draw();
+    renderer.changed();
+  };
   $('undo').onclick = undo;
   $('redo').onclick = redo;
   $('add').onclick = add;
   $('save').onclick = save;
-  $('source-label').style.display = 'none';
+  $('reset-colouring').onclick = () => edit(() => { doc.colouring = null; });
+  $('upload').onchange = () => { if ($('upload').files[0]) upload($('upload').files[0]); };
+  document.addEventListener('dragover', (e) => { e.preventDefault(); document.body.classList.add('dropping'); });
+  document.addEventListener('dragleave', () => document.body.classList.remove('dropping'));
+  document.addEventListener('drop', (e) => {
+    e.preventDefault();
+    document.body.classList.remove('dropping');
+    const file = e.dataTransfer.files[0];
+    if (file) upload(file);
+  });
+  $('source-label').hidden = true;
   open(initial);
 }
 
-async function save() {
-  const res = await api('/api/save', {
-    method: 'POST', body: JSON.stringify(Object.assign(requestBody(), { file: $('file').value })),
-  });
-  const body = await res.json();
-  if (res.ok) status(`saved ${body.saved}`);
-  else status(body.error, true);
-}
-
 document.addEventListener('keydown', (event) => {
-  if (event.target.tagName === 'INPUT') return;
+  if (event.target.tagName === 'INPUT' || event.target.tagName === 'SELECT') return;
   const key = event.key.toLowerCase();
   if ((event.ctrlKey || event.metaKey) && key === 'z') {
     event.preventDefault();
