@@ -261,6 +261,9 @@ class Studio {
 
   fs::path source_path(const std::string& name) const {
     if (name == "sample") return web_ / "sample.png";
+    if (!is_image_name(name))
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("source: an image of --folder (got '{}')", name));
     return folder_file(folder_, name, true);
   }
 
@@ -388,7 +391,8 @@ class Studio {
           const IfsPreset preset = open_folder_preset(folder_, file, req.get_param_value("entry"));
           add_input(folder_file(folder_, file, true));
           json body = preset_to_json(preset);
-          body["file"] = file;
+          body["origin_file"] = file;
+          if (preset.format == PresetFormat::fractint) body["origin_entry"] = preset.ifs.name;
           if (preset.format == PresetFormat::toml) attach_colouring(body, file, preset.ifs);
           res.set_content(body.dump(), "application/json");
           return;
@@ -432,7 +436,14 @@ class Studio {
     // with X-Ifsfx-Size (what is sent) and X-Ifsfx-Source-Size (the file's own).
     server_.Get("/api/source", [this](const httplib::Request& req, httplib::Response& res) {
       guarded(res, [&] {
-        const cv::Mat image = read_image(source_path(req.get_param_value("name"))).pixels;
+        cv::Mat image;
+        try {
+          image = read_image(source_path(req.get_param_value("name"))).pixels;
+        } catch (const Error& e) {
+          // A file of the folder that is no readable image: the request's fault, not the server's.
+          if (e.kind() != ErrorKind::io) throw;
+          throw Error(ErrorKind::invalid_argument, e.what());
+        }
         const double scale =
             std::min(1.0, kSourcePreview / static_cast<double>(std::max(image.cols, image.rows)));
         cv::Mat shown = image;
@@ -534,7 +545,7 @@ class Studio {
         throw Error(ErrorKind::invalid_ifs, fmt::format("{}: one map per map of {} (got {} for {})",
                                                         cname, file, g.ifs.size(), F.size()));
       body["colouring"] = maps_to_json(g.ifs);
-      body["colouring_file"] = cname;
+      body["origin_colouring"] = cname;
     } catch (const Error& e) {
       body["warnings"].push_back(fmt::format("colouring not used: {}", e.what()));
     }

@@ -127,7 +127,9 @@ function refresh() {
 
 // ---- edits, undo and redo ----
 
-const snapshot = () => JSON.stringify(doc);
+// An undo step: the document and the frame its maps were drawn on (opening a preset frames it
+// anew; undoing that goes back to the old frame too).
+const snapshot = () => JSON.stringify({ doc, frame: frameRect });
 
 function pushUndo(before = snapshot()) {
   undoStack.push(before);
@@ -159,7 +161,15 @@ function dragChanged(eventTime, prefix, i, m) {
 function restore(from, to) {
   if (!from.length) return;
   to.push(snapshot());
-  doc = JSON.parse(from.pop());
+  const step = JSON.parse(from.pop());
+  if (step.doc.name !== doc.name) $('file').value = `${step.doc.name}.toml`;
+  doc = step.doc;
+  if (JSON.stringify(step.frame) !== JSON.stringify(frameRect)) {
+    frameRect = step.frame;
+    frame = frameRect && frameOf(frameRect);
+    view.rect = frameRect && frameRect.slice();
+    picture = null;
+  }
   changed();
 }
 const undo = () => restore(undoStack, redoStack);
@@ -262,7 +272,8 @@ const renderer = new LiveRenderer({
 // The stats the tests and bench/studio_latency.mjs read.
 Object.defineProperty(stats, 'seq', { get: () => renderer.version });
 stats.settled = () => renderer.settled();
-stats.state = () => JSON.parse(snapshot());
+stats.picture = () => (picture ? picture.canvas.toDataURL('image/png') : null);
+stats.state = () => JSON.parse(JSON.stringify(doc));
 stats.view = () => view.rect && view.rect.slice();
 stats.handle = (i, kind = 'centre', corner = 0) =>
   handleClientPoint(surface, canvas, doc.maps[i], kind, corner);
@@ -321,6 +332,7 @@ function endGesture() {
   gesture = null;
   canvas.classList.remove('panning');
   renderer.rest();
+  refresh();
 }
 canvas.addEventListener('pointerup', endGesture);
 canvas.addEventListener('pointercancel', endGesture);
@@ -349,11 +361,15 @@ const source = new SourcePanel($('source-canvas'), {
     return JSON.parse(JSON.stringify(colouringShown()));
   },
   drag: (g, eventTime, i) => {
-    if (sourceBefore) { pushUndo(sourceBefore); sourceBefore = null; renderTables(); }
     doc.colouring = g;
+    if (sourceBefore) {  // the first move: an undo step, and the table of the edited colouring
+      pushUndo(sourceBefore);
+      sourceBefore = null;
+      renderTables();
+    }
     dragChanged(eventTime, 'g', i, g[i]);
   },
-  end: () => { sourceBefore = null; renderer.rest(); },
+  end: () => { sourceBefore = null; renderer.rest(); refresh(); },
   flip: (i) => edit(() => { ensureColouring()[i] = flipped(ensureColouring()[i], frameOf([0, 0, 1, 1])); }),
 });
 
@@ -402,9 +418,13 @@ function option(text, value, title = '') {
 async function listPresets(initialName) {
   const [shipped, folder] = await Promise.all([getJson('/api/presets'), getJson('/api/folder')]);
   const select = $('preset');
-  const keep = select.value;
+  const first = select.querySelector('option[data-initial]');
   select.textContent = '';
-  if (initialName) select.appendChild(option(`${initialName} (opened)`, { initial: true }));
+  // A menu rather than a state: it shows "Open a preset…" again after each choice.
+  select.appendChild(Object.assign(option('Open a preset…', {}), { selected: true }));
+  const initial = first || option(`${initialName} (command line)`, { initial: true });
+  initial.dataset.initial = '';
+  select.appendChild(initial);
   const group = (label) => {
     const g = document.createElement('optgroup');
     g.label = label;
@@ -424,7 +444,6 @@ async function listPresets(initialName) {
     if (p.problem) unusable.push([label, p.problem]);
   }
   if (!folder.length) f.appendChild(Object.assign(option('(no .toml or .ifs file)', {}), { disabled: true }));
-  if (keep) select.value = keep;
   const list = $('unusable-list');
   list.textContent = '';
   for (const [label, problem] of unusable) {
@@ -459,7 +478,7 @@ function open(preset) {
   view.rect = null;
   frame = frameRect = null;
   picture = null;
-  openedFile = preset.file || null;
+  openedFile = preset.origin_file || null;
   $('file').value = openedFile === `${preset.name}.toml` ? `${preset.name}-2.toml` : `${preset.name}.toml`;
   if (preset.warnings && preset.warnings.length) status(preset.warnings.join('; '));
   changed();
@@ -467,6 +486,8 @@ function open(preset) {
 
 async function openSelected() {
   const which = JSON.parse($('preset').value || '{}');
+  $('preset').selectedIndex = 0;
+  if (!which.initial && !which.name && !which.file) return;
   const query = which.initial ? '' : which.name ? `?name=${encodeURIComponent(which.name)}`
     : `?file=${encodeURIComponent(which.file)}` + (which.entry !== undefined ? `&entry=${encodeURIComponent(which.entry)}` : '');
   try {

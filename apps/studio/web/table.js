@@ -69,7 +69,7 @@ export function renderMapsTable(tbody, doc, selected, colourOf, on) {
     actions.className = 'actions';
     for (const [label, title, action] of [['↑', 'Move up (lower tops priority)', () => on.move(i, -1)],
                                           ['↓', 'Move down (higher tops priority)', () => on.move(i, 1)],
-                                          ['⧉', 'Duplicate', () => on.duplicate(i)],
+                                          ['+', 'Duplicate', () => on.duplicate(i)],
                                           ['⇋', 'Flip (mirror) left to right', () => on.flip(i)],
                                           ['✕', 'Delete', () => on.remove(i)]]) {
       const b = document.createElement('button');
