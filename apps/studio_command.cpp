@@ -533,7 +533,7 @@ class Studio {
   }
 
   // NAME.colouring.toml beside a folder preset NAME.toml, as the preset's "colouring" when it has
-  // as many maps; a warning in the preset otherwise.
+  // as many maps (an input then, as the preset); a warning in the preset otherwise.
   void attach_colouring(json& body, const std::string& file, const Ifs& F) {
     const std::string cname = colouring_file_name(file);
     std::error_code ec;

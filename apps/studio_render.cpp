@@ -17,6 +17,7 @@
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
+#include "ifs/parallel.h"
 #include "ifs/steal_map.h"
 
 namespace ifsfx::app {
@@ -160,6 +161,14 @@ StudioRender studio_render_from_json(
       bad_field("quality", fmt::format("must be in (0, {}]", kMaxQuality), body["quality"].dump());
   }
   r.options.view = view_option(text(body, "view", ""), "view");
+  if (body.contains("threads")) {
+    // `ifsfx render --threads`: the same pixels for any count (docs/design.md §7).
+    const double threads = number(body["threads"], "threads");
+    if (threads < 0 || threads > kMaxThreads || threads != std::floor(threads))
+      bad_field("threads", fmt::format("must be 0 (all cores) to {}", kMaxThreads),
+                body["threads"].dump());
+    r.options.threads = static_cast<int>(threads);
+  }
   if (body.contains("exact")) {
     if (!body["exact"].is_boolean())
       bad_field("exact", "must be true or false", body["exact"].dump());

@@ -11,7 +11,7 @@
 //    "colouring": [[a, b, c, d, e, f], ...],  // steal mode, optional: G on the source's unit
 //                                // square (default: the tiling default_colouring(N))
 //    "view": "x0,y0,x1,y1",      // optional: the plane rectangle shown (default: auto-framed)
-//    "seed": 1, "quality": 64, "exact": true,                                     // optional
+//    "seed": 1, "quality": 64, "exact": true, "threads": 0,                       // optional
 //    "format": "png" | "rgba"}   // the file's bytes (default), or raw pixels for the live view
 #pragma once
 
