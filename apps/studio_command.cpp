@@ -508,7 +508,8 @@ class Studio {
         write_file(files.back(), preset.text);
         json answer{{"saved", name}};
         const std::string cname = colouring_file_name(name);
-        if (const auto g = colouring_preset(body, fs::path(cname).stem().stem().string())) {
+        const std::string stem = name.substr(0, name.size() - 5);
+        if (const auto g = colouring_preset(body, stem + "-colouring")) {
           colouring_from_json(body, preset.ifs);  // the count and the fit checked as a render would
           files.emplace_back(folder_file(folder_, cname, false), policy);
           write_file(files.back(), g->text);

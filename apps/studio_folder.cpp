@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cctype>
 #include <random>
-#include <regex>
 #include <vector>
 
 #include <fmt/format.h>
@@ -52,11 +51,23 @@ json summary_row(const std::string& file, const PresetSummary& s) {
           {"problem", s.problem}};
 }
 
+// ASCII letters, digits, `_ . + -` and spaces, starting with a letter, a digit or `_`, without
+// `..`.
+bool plain_name(const std::string& name) {
+  const auto word = [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+  };
+  if (name.empty() || name.size() > 200 || !word(name[0]) || name.find("..") != std::string::npos)
+    return false;
+  return std::all_of(name.begin(), name.end(), [&](char c) {
+    return word(c) || c == '.' || c == '+' || c == ' ' || c == '-';
+  });
+}
+
 }  // namespace
 
 fs::path folder_file(const fs::path& folder, const std::string& name, bool must_exist) {
-  static const std::regex plain("[A-Za-z0-9_][A-Za-z0-9_.+ -]*");
-  if (name.size() > 200 || !std::regex_match(name, plain) || name.find("..") != std::string::npos)
+  if (!plain_name(name))
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("file: a plain name in --folder (got '{}')", name));
   const fs::path path = folder / name;

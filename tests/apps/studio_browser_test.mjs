@@ -230,6 +230,7 @@ try {
   check(await page.evaluate(() => /only 2-D IFSs are supported/.test(document.getElementById('unusable-list').textContent)),
         'the unusable entry is listed with its reason');
   await page.selectOption('#preset', triangle[2]);
+  await page.waitForFunction(() => window.studio.state().name !== 'barnsley-fern', null, { timeout: 30000 });
   await settled(page);
   s = await state(page);
   check(s.name === 'triangle' && s.maps.length === 3 && JSON.stringify(s.maps[1]) === '[0.5,0,0,0.5,0.5,0]',

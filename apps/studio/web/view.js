@@ -22,10 +22,13 @@ export class View {
             v[3] - px[1] * (v[3] - v[1]) / this.canvas.height];
   }
 
-  // Zoom by `factor` (> 1: closer) about the canvas point px, which keeps its plane point.
+  // Zoom by `factor` (> 1: closer) about the canvas point px, which keeps its plane point; not
+  // below 1e-9 or above 1e9 plane units across (doubles would run out of digits first).
   zoomAt(px, factor) {
     const p = this.toPlane(px);
     const v = this.rect;
+    const width = (v[2] - v[0]) / factor;
+    if (!(width > 1e-9 && width < 1e9)) return;
     this.rect = [p[0] - (p[0] - v[0]) / factor, p[1] - (p[1] - v[1]) / factor,
                  p[0] + (v[2] - p[0]) / factor, p[1] + (v[3] - p[1]) / factor];
   }
