@@ -153,21 +153,21 @@ StudioRender studio_render_from_json(
     const double seed = number(body["seed"], "seed");
     if (seed < 0 || seed != std::floor(seed) || seed > 9e15)
       bad_field("seed", "must be a whole number >= 0", body["seed"].dump());
-    r.options.seed = static_cast<std::uint64_t>(seed);
+    r.options.sampling.seed = static_cast<std::uint64_t>(seed);
   }
   if (body.contains("quality")) {
-    r.options.quality = number(body["quality"], "quality");
-    if (!(r.options.quality > 0 && r.options.quality <= kMaxQuality))
+    r.options.sampling.quality = number(body["quality"], "quality");
+    if (!(r.options.sampling.quality > 0 && r.options.sampling.quality <= kMaxQuality))
       bad_field("quality", fmt::format("must be in (0, {}]", kMaxQuality), body["quality"].dump());
   }
-  r.options.view = view_option(text(body, "view", ""), "view");
+  r.options.sampling.view = view_option(text(body, "view", ""), "view");
   if (body.contains("threads")) {
     // `ifsfx render --threads`: the same pixels for any count (docs/design.md §7).
     const double threads = number(body["threads"], "threads");
     if (threads < 0 || threads > kMaxThreads || threads != std::floor(threads))
       bad_field("threads", fmt::format("must be 0 (all cores) to {}", kMaxThreads),
                 body["threads"].dump());
-    r.options.threads = static_cast<int>(threads);
+    r.options.sampling.threads = static_cast<int>(threads);
   }
   if (body.contains("exact")) {
     if (!body["exact"].is_boolean())
@@ -207,7 +207,7 @@ StudioPicture render_picture(const StudioRender& r, CancelToken cancel,
   };
   const auto start = Clock::now();
   RenderOptions options = r.options;
-  options.cancel = cancel;
+  options.sampling.cancel = cancel;
   const std::string output = (scratch / "render.png").string();  // the format of the picture
   const Rgb background = colour_option("black");
   RenderStats stats;
@@ -218,12 +218,12 @@ StudioPicture render_picture(const StudioRender& r, CancelToken cancel,
   } else if (r.mode == "measure") {
     image = render_measure(r.preset.ifs, r.size, options, &stats);
   } else if (r.mode == "tops") {
-    image = tops_image(r.preset.ifs, r.size, options, r.exact, false, background, output, &stats);
+    image = tops_image(r.preset.ifs, r.size, {.sampling = options.sampling, .exact = r.exact},
+                       background, output, &stats);
   } else {
-    image = steal_image(r.preset.ifs, r.size, options,
+    image = steal_image(r.preset.ifs, r.size, {.sampling = options.sampling, .exact = r.exact},
                         {.source = r.source.string(),
                          .colouring_ifs = r.colouring,
-                         .exact = r.exact,
                          .background = background,
                          .quiet = true,
                          .output = {.cancel = cancel}},
@@ -235,7 +235,7 @@ StudioPicture render_picture(const StudioRender& r, CancelToken cancel,
     picture.bytes = rgba_bytes(image);
   } else {
     WriteOptions write;
-    write.metadata = render_metadata(r.preset, r.mode, options.seed, stats.view);
+    write.metadata = render_metadata(r.preset, r.mode, options.sampling.seed, stats.view);
     // Written under the output policy's temporary name and read back, never committed: the
     // destructor removes it.
     OutputFile file(output, {.cancel = cancel});
