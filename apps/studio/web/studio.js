@@ -5,7 +5,8 @@
 // canvas's own pixels (y down), through the view (view.js); the maps are drawn as the
 // parallelograms they make of the frame, the view rectangle the document was framed with (it
 // stays put under pan and zoom, so that the handles do not jump).
-import { $, api, getJson, postJson, status, token } from './api.js';
+import { $, getJson, postJson, status, token } from './api.js';
+import { listPresets, listSources, uploadImage } from './folder.js';
 import { defaultProbabilities, flipped, frameOf, middleMap, shifted } from './geometry.js';
 import { LiveRenderer } from './live.js';
 import { canvasPoint, dragged, drawMaps, handleClientPoint, hitHandle } from './overlay.js';
@@ -16,7 +17,6 @@ import { View } from './view.js';
 const canvas = $('canvas');
 const ctx = canvas.getContext('2d');
 const view = new View(canvas);
-const kMaxUpload = 32 << 20;  // the server's cap (apps/studio_folder.h)
 
 // The document: what Save writes (the preset, and NAME.colouring.toml when colouring is set).
 let doc = { name: 'studio', description: '', maps: [], probabilities: [], colours: [],
@@ -381,93 +381,15 @@ async function showSource() {
   } catch (e) { status(e.message, true); }
 }
 
-function sanitisedName(name) {
-  const plain = name.replace(/[^A-Za-z0-9_.+ -]/g, '-').replace(/\.\.+/g, '.').replace(/^[^A-Za-z0-9_]+/, '');
-  return plain || 'dropped.png';
-}
-
 async function upload(file) {
-  if (file.size > kMaxUpload) {
-    status(`${file.name}: at most ${kMaxUpload >> 20} MiB (got ${file.size} bytes)`, true);
-    return;
-  }
   status(`uploading ${file.name}…`);
   try {
-    const res = await api(`/api/upload?name=${encodeURIComponent(sanitisedName(file.name))}`, {
-      method: 'POST', body: file, headers: { 'Content-Type': 'application/octet-stream' },
-    });
-    const answer = await res.json();
-    if (!res.ok) throw new Error(answer.error);
-    await listSources(answer.saved);
+    const saved = await uploadImage(file);
+    await listSources(saved);
     $('mode').value = 'steal';
-    status(`${answer.saved}: saved in the folder; it is the source now`);
+    status(`${saved}: saved in the folder; it is the source now`);
     modeChanged();
   } catch (e) { status(e.message, true); }
-}
-
-// ---- presets: shipped, the folder's .toml files and Fractint entries ----
-
-function option(text, value, title = '') {
-  const o = document.createElement('option');
-  o.textContent = text;
-  o.value = JSON.stringify(value);
-  if (title) o.title = title;
-  return o;
-}
-
-async function listPresets(initialName) {
-  const [shipped, folder] = await Promise.all([getJson('/api/presets'), getJson('/api/folder')]);
-  const select = $('preset');
-  const first = select.querySelector('option[data-initial]');
-  select.textContent = '';
-  // A menu rather than a state: it shows "Open a preset…" again after each choice.
-  select.appendChild(Object.assign(option('Open a preset…', {}), { selected: true }));
-  const initial = first || option(`${initialName} (command line)`, { initial: true });
-  initial.dataset.initial = '';
-  select.appendChild(initial);
-  const group = (label) => {
-    const g = document.createElement('optgroup');
-    g.label = label;
-    select.appendChild(g);
-    return g;
-  };
-  const s = group('Shipped');
-  for (const p of shipped) s.appendChild(option(`${p.name} (${p.maps} maps)`, { name: p.name }, p.description));
-  const f = group('Folder');
-  const unusable = [];
-  for (const p of folder) {
-    const label = p.entry !== undefined ? `${p.file}: ${p.entry}` : p.file;
-    const o = option(p.problem ? `${label} — unusable` : `${label} (${p.maps} maps)`,
-                     { file: p.file, entry: p.entry }, p.problem || p.description);
-    o.disabled = Boolean(p.problem);
-    f.appendChild(o);
-    if (p.problem) unusable.push([label, p.problem]);
-  }
-  if (!folder.length) f.appendChild(Object.assign(option('(no .toml or .ifs file)', {}), { disabled: true }));
-  const list = $('unusable-list');
-  list.textContent = '';
-  for (const [label, problem] of unusable) {
-    const li = document.createElement('li');
-    const b = document.createElement('b');
-    b.textContent = label;
-    li.append(b, `: ${problem}`);
-    list.appendChild(li);
-  }
-  $('unusable').hidden = !unusable.length;
-  $('unusable-count').textContent = `${unusable.length} unusable preset${unusable.length === 1 ? '' : 's'} in the folder`;
-}
-
-async function listSources(choose) {
-  const sources = await getJson('/api/sources');
-  const select = $('source');
-  const keep = choose || select.value;
-  select.textContent = '';
-  for (const s of sources) {
-    const o = document.createElement('option');
-    o.value = o.textContent = s;
-    select.appendChild(o);
-  }
-  if (keep && sources.includes(keep)) select.value = keep;
 }
 
 function open(preset) {
