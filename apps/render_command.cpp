@@ -10,6 +10,7 @@
 #include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "apps/render_metadata.h"
+#include "apps/render_picture.h"
 #include "apps/steal_modes.h"
 #include "apps/stop_signals.h"
 #include "ifs/error.h"
@@ -21,7 +22,7 @@
 namespace ifsfx::app {
 namespace {
 
-enum class Mode { attractor, measure, tops, steal };
+using Mode = RenderMode;
 
 struct RenderArgs {
   std::string preset;
@@ -50,27 +51,13 @@ struct RenderArgs {
   std::string background;
 };
 
-const char* mode_name(Mode mode) {
-  switch (mode) {
-    case Mode::attractor:
-      return "attractor";
-    case Mode::measure:
-      return "measure";
-    case Mode::tops:
-      return "tops";
-    case Mode::steal:
-      return "steal";
-  }
-  return "measure";
-}
-
 // The tops/steal options are refused in the modes that would ignore them.
 void check_mode_options(const RenderArgs& args) {
   const auto refuse = [&](bool given, const char* option, const char* modes) {
     if (given)
       throw Error(ErrorKind::invalid_argument,
                   fmt::format("{}: only with --mode {} (got --mode {})", option, modes,
-                              mode_name(args.mode)));
+                              to_string(args.mode)));
   };
   const bool tops = args.mode == Mode::tops, steal = args.mode == Mode::steal;
   refuse(!steal && !args.source.empty(), "--source", "steal");
@@ -116,36 +103,23 @@ void run_render(const RenderArgs& args) {
   options.cancel = output.cancel;
 
   RenderStats stats;
-  cv::Mat image;
   std::vector<OutputFile> staged;  // put in place together at the end (the image, the map)
-  switch (args.mode) {
-    case Mode::attractor:
-      image = render_attractor(preset.ifs, size, options, &stats);
-      break;
-    case Mode::measure:
-      image = render_measure(preset.ifs, size, options, &stats);
-      break;
-    case Mode::tops:
-      image = tops_image(preset.ifs, size, options, args.exact, args.second_symbol, background,
-                         args.output, &stats);
-      break;
-    case Mode::steal:
-      image = steal_image(preset.ifs, size, options,
-                          {.source = args.source,
-                           .colouring = args.colouring,
-                           .exact = args.exact,
-                           .save_map = args.save_map,
-                           .background = background,
-                           .quiet = args.quiet,
-                           .output = output},
-                          args.output, staged, &stats);
-      break;
-  }
+  const cv::Mat image = render_picture(preset.ifs, size, options,
+                                       {.mode = args.mode,
+                                        .second_symbol = args.second_symbol,
+                                        .steal = {.source = args.source,
+                                                  .colouring = args.colouring,
+                                                  .exact = args.exact,
+                                                  .save_map = args.save_map,
+                                                  .background = background,
+                                                  .quiet = args.quiet,
+                                                  .output = output}},
+                                       args.output, staged, &stats);
 
   WriteOptions write;
   write.bits = args.bits;
   write.smallest = args.smallest;
-  write.metadata = render_metadata(preset, mode_name(args.mode), args.seed, stats.view);
+  write.metadata = render_metadata(preset, to_string(args.mode), args.seed, stats.view);
   OutputFile image_file(args.output, output);
   write_image(image_file, image, write);
   staged.push_back(std::move(image_file));
@@ -158,7 +132,7 @@ void run_render(const RenderArgs& args) {
           ? fmt::format("{:.1f} M points in {:.3f} s ({:.0f} Mpts/s)", stats.points / 1e6,
                         stats.seconds, stats.points / 1e6 / std::max(stats.seconds, 1e-9))
           : fmt::format("{} in {:.3f} s", args.exact ? "exact descent" : "rendered", stats.seconds);
-  fmt::print("{} ({}, {}x{}): {}, coverage {:.1f}% -> {}\n", preset.ifs.name, mode_name(args.mode),
+  fmt::print("{} ({}, {}x{}): {}, coverage {:.1f}% -> {}\n", preset.ifs.name, to_string(args.mode),
              size.width, size.height, work, 100 * stats.coverage, args.output);
 }
 

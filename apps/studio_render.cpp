@@ -11,6 +11,7 @@
 
 #include "apps/cli_options.h"
 #include "apps/render_metadata.h"
+#include "apps/render_picture.h"
 #include "apps/steal_modes.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
@@ -130,41 +131,39 @@ StudioRender studio_render_from_json(
   return r;
 }
 
-StudioPicture render_png(const StudioRender& r, CancelToken cancel,
-                         const std::filesystem::path& scratch) {
+StudioImage studio_image(const StudioRender& r, CancelToken cancel,
+                         const std::filesystem::path& output) {
   RenderOptions options = r.options;
   options.cancel = cancel;
-  const std::string output = (scratch / "render.png").string();  // the format of the picture
-  const Rgb background = colour_option("black");
   RenderStats stats;
-  cv::Mat image;
   std::vector<OutputFile> staged;
-  if (r.mode == "attractor") {
-    image = render_attractor(r.preset.ifs, r.size, options, &stats);
-  } else if (r.mode == "measure") {
-    image = render_measure(r.preset.ifs, r.size, options, &stats);
-  } else if (r.mode == "tops") {
-    image = tops_image(r.preset.ifs, r.size, options, r.exact, false, background, output, &stats);
-  } else {
-    image = steal_image(r.preset.ifs, r.size, options,
-                        {.source = r.source.string(),
-                         .exact = r.exact,
-                         .background = background,
-                         .quiet = true,
-                         .output = {.cancel = cancel}},
-                        output, staged, &stats);
-  }
-  WriteOptions write;
-  write.metadata = render_metadata(r.preset, r.mode, options.seed, stats.view);
+  StudioImage out;
+  out.image = render_picture(r.preset.ifs, r.size, options,
+                             {.mode = parse_render_mode(r.mode, "mode"),
+                              .steal = {.source = r.source.string(),
+                                        .exact = r.exact,
+                                        .background = colour_option("black"),
+                                        .quiet = true,
+                                        .output = {.cancel = cancel}}},
+                             output.string(), staged, &stats);
+  out.write.metadata = render_metadata(r.preset, r.mode, options.seed, stats.view);
+  out.view = stats.view;
+  return out;
+}
+
+StudioPicture render_png(const StudioRender& r, CancelToken cancel,
+                         const std::filesystem::path& scratch) {
+  const std::filesystem::path output = scratch / "render.png";  // the format of the picture
+  const StudioImage picture = studio_image(r, cancel, output);
   // Written under the output policy's temporary name and read back, never committed: the
   // destructor removes it.
   OutputFile file(output, {.cancel = cancel});
-  write_image(file, image, write);
+  write_image(file, picture.image, picture.write);
   std::ifstream in(file.temporary(), std::ios::binary);
   std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
   if (!in.good() && !in.eof())
     throw Error(ErrorKind::io, fmt::format("{}: cannot read back", file.temporary().string()));
-  return {std::move(bytes), stats.view};
+  return {std::move(bytes), picture.view};
 }
 
 }  // namespace ifsfx::app
