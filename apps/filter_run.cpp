@@ -31,27 +31,6 @@ bool writes_movie(const FilterArgs& args) {
   return !args.output.empty() && !video::is_sequence_pattern(args.output);
 }
 
-// Cheap checks of the arguments and the output first: an unusable output fails before any
-// decoding. Returns the frame range.
-video::FrameRange check_filter_args(const FilterArgs& args) {
-  if (args.preview == !args.output.empty())
-    throw Error(ErrorKind::invalid_argument,
-                "filter: give either -o OUTPUT or --preview (got both or neither)");
-  if (args.preview) video::require_display("--preview", "write a file with -o instead");
-  const video::FrameRange range =
-      args.frames.empty() ? video::FrameRange{} : video::parse_frame_range(args.frames);
-  video::check_output_name(args.output);
-  const bool movie_output = writes_movie(args);
-  if (movie_output) video::resolve_timing(args.output, args.codec, args.timing);
-  if (args.segment && !movie_output)
-    throw Error(ErrorKind::invalid_argument, "--segment: a farm segment is a movie file");
-  if (args.timing_given && !movie_output)
-    throw Error(ErrorKind::invalid_argument,
-                "--fps-mode: only a movie output has frame times (got an image sequence or "
-                "--preview)");
-  return range;
-}
-
 // The output's size: --size or the frames'. 4:2:0 encoders need even sides: a movie's map is
 // made at the nearest size that fits, so the whole picture is still shown, one pixel narrower or
 // lower.
@@ -121,6 +100,25 @@ std::unique_ptr<video::FrameSink> open_sink(const FilterArgs& args,
 }
 
 }  // namespace
+
+video::FrameRange check_filter_args(const FilterArgs& args) {
+  if (args.preview == !args.output.empty())
+    throw Error(ErrorKind::invalid_argument,
+                "filter: give either -o OUTPUT or --preview (got both or neither)");
+  if (args.preview) video::require_display("--preview", "write a file with -o instead");
+  const video::FrameRange range =
+      args.frames.empty() ? video::FrameRange{} : video::parse_frame_range(args.frames);
+  video::check_output_name(args.output);
+  const bool movie_output = writes_movie(args);
+  if (movie_output) video::resolve_timing(args.output, args.codec, args.timing);
+  if (args.segment && !movie_output)
+    throw Error(ErrorKind::invalid_argument, "--segment: a farm segment is a movie file");
+  if (args.timing_given && !movie_output)
+    throw Error(ErrorKind::invalid_argument,
+                "--fps-mode: only a movie output has frame times (got an image sequence or "
+                "--preview)");
+  return range;
+}
 
 FilterOutcome filter_movie(const FilterArgs& args, const FilterRun& run) {
   const video::FrameRange range = check_filter_args(args);

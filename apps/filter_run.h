@@ -44,6 +44,11 @@ struct FilterOutcome {
   std::int64_t dropped = 0;      // and dropped frames by their times
 };
 
+// The cheap checks of the arguments and the output name (--frames, the container and codec, the
+// farm's --segment), before anything is opened; returns the frame range. Throws Error{parse} or
+// Error{invalid_argument} naming the option.
+video::FrameRange check_filter_args(const FilterArgs& args);
+
 // `ifsfx filter INPUT -o OUTPUT` (or --preview): cheap checks of the arguments and the output
 // first, then the fractal, then the frames. A stop (run.stop) returns with result.interrupted
 // and the frames done kept as a playable STEM.partial.EXT (result.partial), as the pipeline

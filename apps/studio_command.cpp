@@ -32,7 +32,11 @@
 #include "apps/cli_errors.h"
 #include "apps/commands.h"
 #include "apps/stop_signals.h"
+#include "apps/studio_fit.h"
+#include "apps/studio_folder.h"
+#include "apps/studio_http.h"
 #include "apps/studio_render.h"
+#include "apps/studio_routes.h"
 #include "ifs/error.h"
 #include "ifs/output_file.h"
 #include "ifs/preset.h"
@@ -54,6 +58,8 @@ struct StudioArgs {
   int port = 0;
   std::string folder = ".";
   bool open = false;
+  std::string source;  // --source IMAGE|MOVIE
+  std::string camera;  // --camera /dev/videoN
 };
 
 // 128 random bits as hex, from the system's entropy (std::random_device reads getrandom).
@@ -92,41 +98,6 @@ std::string read_whole(const fs::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-void send_error(httplib::Response& res, int status, const std::string& message) {
-  res.status = status;
-  res.set_content(json{{"error", message}}.dump(), "application/json");
-}
-
-int status_of(ErrorKind kind) {
-  switch (kind) {
-    case ErrorKind::parse:
-    case ErrorKind::invalid_ifs:
-    case ErrorKind::invalid_argument:
-    case ErrorKind::unsupported:
-      return 400;
-    case ErrorKind::not_found:
-      return 404;
-    case ErrorKind::interrupted:
-      return 409;  // a newer request took over
-    default:
-      return 500;
-  }
-}
-
-// Runs `handler`, turning every error into a JSON 4xx/5xx: a bad request never stops the server.
-template <typename Handler>
-void guarded(httplib::Response& res, Handler&& handler) {
-  try {
-    handler();
-  } catch (const Error& e) {
-    send_error(res, status_of(e.kind()), e.what());
-  } catch (const json::exception& e) {
-    send_error(res, 400, fmt::format("request: not valid JSON ({})", e.what()));
-  } catch (const std::exception& e) {
-    send_error(res, 500, fmt::format("internal error: {}", e.what()));
-  }
-}
-
 class Studio {
  public:
   explicit Studio(const StudioArgs& args)
@@ -142,8 +113,18 @@ class Studio {
     if (!mkdtemp(scratch.data()))
       throw Error(ErrorKind::io, fmt::format("{}: cannot create the scratch folder", scratch));
     scratch_ = scratch;
+    // ---- render jobs, fit, video, camera, superIFS (apps/studio_routes.h) ----
+    extras_ = std::make_unique<StudioExtras>(StudioExtrasConfig{
+        .folder = folder_,
+        .scratch = scratch_,
+        .web = web_,
+        .inputs = inputs_,
+        .source = args.source,
+        .camera = args.camera,
+        .source_path = [this](const std::string& name) { return source_path(name); }});
   }
   ~Studio() {
+    extras_.reset();  // its jobs end (and remove their temporary files) first
     std::error_code ec;
     fs::remove_all(scratch_, ec);
   }
@@ -164,6 +145,7 @@ class Studio {
       while (!StopSignals::stop_flag() && !done_)
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
       cancel_current();
+      extras_->stop();
       server_.stop();
     });
     server_.listen_after_bind();
@@ -197,24 +179,12 @@ class Studio {
   // A name in --folder: one path component, no hidden file, a regular file inside the folder
   // once links are followed.
   fs::path folder_file(const std::string& name, bool must_exist) const {
-    static const std::regex plain("[A-Za-z0-9_][A-Za-z0-9_.+ -]*");
-    if (!std::regex_match(name, plain) || name.find("..") != std::string::npos)
-      throw Error(ErrorKind::invalid_argument,
-                  fmt::format("file: a plain name in --folder (got '{}')", name));
-    const fs::path path = folder_ / name;
-    if (!must_exist) return path;
-    std::error_code ec;
-    const fs::path real = fs::canonical(path, ec);
-    if (ec || !fs::is_regular_file(real))
-      throw Error(ErrorKind::not_found, fmt::format("{}: no such file in --folder", name));
-    if (real.parent_path() != folder_)
-      throw Error(ErrorKind::invalid_argument,
-                  fmt::format("{}: leads out of --folder (got {})", name, real.string()));
-    return real;
+    return StudioFolder(folder_).file(name, must_exist);
   }
 
   fs::path source_path(const std::string& name) const {
     if (name == "sample") return web_ / "sample.png";
+    if (auto image = extras_->source_image(name)) return *image;
     return folder_file(name, true);
   }
 
@@ -224,7 +194,7 @@ class Studio {
   }
 
   void routes() {
-    server_.set_payload_max_length(kMaxBody);
+    server_.set_payload_max_length(kMaxUpload);  // uploads; every other request: kMaxBody
     server_.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
       if (!loopback_host(req.get_header_value("Host"))) {
         send_error(
@@ -240,6 +210,18 @@ class Studio {
       if (req.path.rfind("/api/", 0) == 0 && !has_token(req)) {
         send_error(res, 403, "token: every request needs the token of the URL printed at start");
         return httplib::Server::HandlerResponse::Handled;
+      }
+      if (!StudioExtras::takes_upload(req.path)) {
+        if (req.get_header_value<std::uint64_t>("Content-Length") > kMaxBody) {
+          send_error(res, 413,
+                     fmt::format("request: at most {} bytes (got {})", kMaxBody,
+                                 req.get_header_value("Content-Length")));
+          return httplib::Server::HandlerResponse::Handled;
+        }
+        if (req.has_header("Transfer-Encoding")) {
+          send_error(res, 411, "request: a body needs a Content-Length here");
+          return httplib::Server::HandlerResponse::Handled;
+        }
       }
       return httplib::Server::HandlerResponse::Unhandled;
     });
@@ -303,6 +285,8 @@ class Studio {
     server_.Get("/api/sources", [this](const httplib::Request&, httplib::Response& res) {
       guarded(res, [&] {
         json list = json::array({"sample"});
+        if (extras_->source_image(StudioExtras::kSourceName))
+          list.push_back(StudioExtras::kSourceName);
         static const std::regex image(".*\\.(png|jpe?g|tiff?|exr|bmp|webp)", std::regex::icase);
         std::vector<std::string> names;
         for (const auto& entry : fs::directory_iterator(folder_)) {
@@ -354,6 +338,8 @@ class Studio {
         res.set_content(json{{"saved", name}}.dump(), "application/json");
       });
     });
+    // ---- render jobs, fit, video, camera, superIFS (apps/studio_routes.h) ----
+    extras_->add_routes(server_);
   }
 
   static void open_browser(const std::string& url) {
@@ -374,6 +360,7 @@ class Studio {
   std::atomic<bool> done_{false};
   std::mutex mutex_;
   std::shared_ptr<std::atomic<bool>> current_;  // the stop flag of the render in flight
+  std::unique_ptr<StudioExtras> extras_;        // jobs, fit, video, camera, superIFS
 };
 
 }  // namespace
@@ -393,6 +380,11 @@ void add_studio_command(CLI::App& app) {
                   "Folder of source images (steal mode) and saved presets")
       ->capture_default_str();
   cmd->add_flag("--open", args->open, "Open the page in the browser (xdg-open)");
+  cmd->add_option("--source", args->source,
+                  "A movie to open in the video panel, or an image to steal colours from (any "
+                  "folder; the page calls it @source)");
+  cmd->add_option("--camera", args->camera,
+                  "A V4L2 camera (/dev/videoN) for the live filter in the page");
   cmd->callback([args] {
     StopSignals signals;
     Studio studio(*args);
