@@ -50,7 +50,9 @@ struct FitRequest {
 // The settings of a fit from the request's fields (JSON, or the query's strings turned into it).
 void read_settings(const json& body, FitRequest& r) {
   r.args.maps = static_cast<int>(integer_field(body, "maps", 4, 1, 32));
-  r.args.max_seconds = number_field(body, "seconds", 5, 0.5, 600);
+  // 0: no time cap, as `ifsfx fit --max-seconds 0`: then the maps are the same on any machine.
+  r.args.max_seconds = number_field(body, "seconds", 5, 0, 600);
+  r.args.max_evaluations = integer_field(body, "evaluations", 250000, 2, 100000000);
   r.args.size = std::to_string(integer_field(body, "size", 128, 16, 512));
   r.args.seed = static_cast<std::uint64_t>(integer_field(body, "seed", 1, 0, 1LL << 53));
   r.args.init = choice_field(body, "init", "search", {"search", "moments"}) == "moments"
@@ -72,10 +74,14 @@ int submit(JobQueue& jobs, FitRequest request) {
     FitArgs shown = request.args;
     shown.target = request.name;
     collage::FitOptions options = fit_options(shown, job.cancel());
-    const double budget = request.args.max_seconds;
-    options.progress = [&job, budget](const collage::FitProgress& p) {
+    const double seconds = request.args.max_seconds;
+    const auto evaluations = static_cast<double>(request.args.max_evaluations);
+    options.progress = [&job, seconds, evaluations](const collage::FitProgress& p) {
       const double best = std::isfinite(p.best_iou) ? p.best_iou : 0;
-      job.progress(std::min(p.seconds / budget, 0.99), collage::to_string(p.phase),
+      // The share of the budget spent: of the time, or of the evaluations when that ends first.
+      const double done =
+          std::max(seconds > 0 ? p.seconds / seconds : 0, p.evaluations / evaluations);
+      job.progress(std::min(done, 0.99), collage::to_string(p.phase),
                    fmt::format("run {}, best IoU {:.3f}, {:.1f} s", p.run + 1, best, p.seconds));
       job.set_result({{"best_iou", best}, {"evaluations", p.evaluations}});
     };

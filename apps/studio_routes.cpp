@@ -47,11 +47,19 @@ int job_number(const httplib::Request& req) {
 std::pair<std::string, bool> file_type(const fs::path& name) {
   const std::string ext = lower_extension(name);
   static const std::vector<std::pair<std::string, std::string>> inline_types{
-      {".png", "image/png"},        {".jpg", "image/jpeg"},      {".jpeg", "image/jpeg"},
-      {".webp", "image/webp"},      {".gif", "image/gif"},       {".bmp", "image/bmp"},
-      {".mp4", "video/mp4"},        {".m4v", "video/mp4"},       {".webm", "video/webm"},
-      {".mkv", "video/x-matroska"}, {".mov", "video/quicktime"}, {".toml", "text/plain"},
-      {".ifs", "text/plain"}};
+      {".png", "image/png"},
+      {".jpg", "image/jpeg"},
+      {".jpeg", "image/jpeg"},
+      {".webp", "image/webp"},
+      {".gif", "image/gif"},
+      {".bmp", "image/bmp"},
+      {".mp4", "video/mp4"},
+      {".m4v", "video/mp4"},
+      {".webm", "video/webm"},
+      {".mkv", "video/x-matroska"},
+      {".mov", "video/quicktime"},
+      {".toml", "text/plain; charset=utf-8"},
+      {".ifs", "text/plain; charset=utf-8"}};
   for (const auto& [e, type] : inline_types)
     if (e == ext) return {type, true};
   return {"application/octet-stream", false};

@@ -305,6 +305,14 @@ stats.handle = (i, kind = 'centre', corner = 0) => {
   return { x: r.left + p[0] * r.width / canvas.width, y: r.top + p[1] * r.height / canvas.height };
 };
 stats.state = () => JSON.parse(snapshot());
+// For the panels of jobs.js, fit.js, video.js and superifs.js: the preset with the render
+// settings, and opening a preset (one undoable edit).
+stats.requestBody = () => JSON.parse(JSON.stringify(requestBody()));
+stats.openPreset = (preset) => {
+  undoStack.push(snapshot());
+  redoStack.length = 0;
+  open(preset);
+};
 
 canvas.addEventListener('pointerdown', (event) => {
   const h = hit(canvasPoint(event));

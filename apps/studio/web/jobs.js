@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: Apache-2.0
+// Render jobs (docs/studio.md): a full-size still of the editor's preset, and the list of every
+// job of the server — the movie filter and texture sequences started from the Video and SuperIFS
+// panels, fits — with progress bars, cancel buttons and links to the files made.
+import { el, json, fileUrl, panel, say, editorRequest, openInEditor } from './api.js';
+
+const body = panel('jobs', 'Jobs');
+const status = el('p', { class: 'status', id: 'jobs-status' });
+const stillFile = el('input', { id: 'still-file', size: 18, value: 'still.png',
+                                title: 'In the folder: .png, .tif, .exr or .jpg' });
+const stillSize = el('select', { id: 'still-size' },
+                     ['1024x1024', '2048x2048', '4096x4096', '1920x1080', '3840x2160'].map(
+                       (s) => el('option', {}, s)));
+const stillButton = el('button', { id: 'still-export', onclick: () => exportStill() },
+                       'Export still');
+const list = el('table', { id: 'jobs', class: 'jobs' },
+                el('thead', {}, el('tr', {}, ['#', 'job', 'state', 'progress', '', 'files', ''].map(
+                  (h) => el('th', {}, h)))),
+                el('tbody'));
+body.append(
+  el('div', { class: 'row' },
+     el('label', {}, 'Still ', stillFile), el('label', {}, 'size ', stillSize), stillButton,
+     el('span', { class: 'help' },
+        'the editor\'s preset, mode and view at full size, as `ifsfx render` writes it')),
+  list, status);
+
+const listeners = new Map();  // job id → callbacks(job) of the panels that started it
+let timer = null;
+
+// Starts a job (POST /api/jobs, or another path such as /api/fit) and watches it: `onUpdate(job)`
+// on every change until it ends. Returns the job; throws the server's error.
+export async function startJob(request, { path = '/api/jobs', onUpdate } = {}) {
+  const job = await json(path, { method: 'POST', body: request });
+  if (onUpdate) listeners.set(job.id, onUpdate);
+  refresh();
+  return job;
+}
+
+export async function cancelJob(id) {
+  await json(`/api/jobs/${id}/cancel`, { method: 'POST', body: {} });
+  refresh();
+}
+
+async function exportStill() {
+  const request = editorRequest();
+  if (!request) return;
+  // The editor's view, so that the still shows what the canvas shows, at the size chosen.
+  Object.assign(request, { kind: 'still', file: stillFile.value, size: stillSize.value });
+  try {
+    const job = await startJob(request);
+    say(status, `job ${job.id}: ${job.title} started`);
+  } catch (e) {
+    say(status, e.message, true);
+  }
+}
+
+function row(job) {
+  const pending = job.state === 'queued' || job.state === 'running';
+  const bar = el('progress', { max: 1 });
+  if (job.progress !== null) bar.value = job.progress;  // no value: an indeterminate bar
+  const files = el('td', { class: 'files' },
+                   job.files.map((f) => el('a', { href: fileUrl(f), target: '_blank' }, f)));
+  const actions = el('td');
+  if (pending)
+    actions.append(el('button', { class: 'cancel', onclick: () => cancelJob(job.id) }, 'Cancel'));
+  if (job.kind === 'fit' && job.result && job.result.preset)
+    actions.append(el('button', { class: 'open', onclick: () => openInEditor(job.result.preset) },
+                      'Open'));
+  const detail = job.state === 'failed' || job.state === 'cancelled' ? job.error || job.detail
+    : job.detail;
+  return el('tr', { 'data-job': job.id, class: `job ${job.state}` },
+            el('td', {}, String(job.id)),
+            el('td', {}, `${job.kind}: ${job.title}`),
+            el('td', { class: 'state' }, job.state),
+            el('td', {}, bar),
+            el('td', { class: 'detail' }, `${job.phase}${detail ? ` · ${detail}` : ''}`),
+            files, actions);
+}
+
+let last = '';
+async function refresh() {
+  clearTimeout(timer);
+  let pending = false;
+  try {
+    const { jobs } = await json('/api/jobs');
+    pending = jobs.some((j) => j.state === 'queued' || j.state === 'running');
+    const text = JSON.stringify(jobs);
+    if (text !== last) {
+      last = text;
+      const tbody = list.querySelector('tbody');
+      tbody.replaceChildren(...jobs.map(row));
+      for (const job of jobs) {
+        const callback = listeners.get(job.id);
+        if (callback) {
+          callback(job);
+          if (job.state !== 'queued' && job.state !== 'running') listeners.delete(job.id);
+        }
+      }
+    }
+  } catch (e) {
+    say(status, e.message, true);
+  }
+  // Quick while a job runs; slowly otherwise, to see the jobs other tabs start.
+  timer = setTimeout(refresh, pending || listeners.size ? 300 : 3000);
+}
+
+refresh();
