@@ -114,14 +114,20 @@ class Studio {
       throw Error(ErrorKind::io, fmt::format("{}: cannot create the scratch folder", scratch));
     scratch_ = scratch;
     // ---- render jobs, fit, video, camera, superIFS (apps/studio_routes.h) ----
-    extras_ = std::make_unique<StudioExtras>(StudioExtrasConfig{
-        .folder = folder_,
-        .scratch = scratch_,
-        .web = web_,
-        .inputs = inputs_,
-        .source = args.source,
-        .camera = args.camera,
-        .source_path = [this](const std::string& name) { return source_path(name); }});
+    try {
+      extras_ = std::make_unique<StudioExtras>(StudioExtrasConfig{
+          .folder = folder_,
+          .scratch = scratch_,
+          .web = web_,
+          .inputs = inputs_,
+          .source = args.source,
+          .camera = args.camera,
+          .source_path = [this](const std::string& name) { return source_path(name); }});
+    } catch (...) {  // a missing --source or --camera: no scratch folder left behind
+      std::error_code ec;
+      fs::remove_all(scratch_, ec);
+      throw;
+    }
   }
   ~Studio() {
     extras_.reset();  // its jobs end (and remove their temporary files) first

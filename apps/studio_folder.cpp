@@ -51,10 +51,12 @@ std::vector<std::string> StudioFolder::list(const std::vector<std::string>& exte
   std::error_code ec;
   for (const auto& entry : fs::directory_iterator(root_, ec)) {
     const std::string name = entry.path().filename().string();
-    if (!plain_name(name) || !entry.is_regular_file(ec)) continue;
+    if (!plain_name(name)) continue;
     const std::string ext = lower_extension(name);
-    if (std::find(extensions.begin(), extensions.end(), ext) != extensions.end())
-      names.push_back(name);
+    if (std::find(extensions.begin(), extensions.end(), ext) == extensions.end()) continue;
+    // Only what file() would open: no link that leads out of the folder.
+    const fs::path real = fs::canonical(entry.path(), ec);
+    if (!ec && real.parent_path() == root_ && fs::is_regular_file(real, ec)) names.push_back(name);
   }
   std::sort(names.begin(), names.end());
   return names;

@@ -25,8 +25,8 @@ class StudioFolder {
   // Whether `name` passes file()'s rules for a name (without looking at the disk).
   static bool plain_name(const std::string& name);
 
-  // The plain names of the folder's regular files whose extension (lower case, with the dot) is
-  // one of `extensions`, sorted.
+  // The plain names of the folder's files that file(name, true) opens, whose extension (lower
+  // case, with the dot) is one of `extensions`, sorted.
   std::vector<std::string> list(const std::vector<std::string>& extensions) const;
 
  private:

@@ -8,9 +8,11 @@ const body = panel('jobs', 'Jobs');
 const status = el('p', { class: 'status', id: 'jobs-status' });
 const stillFile = el('input', { id: 'still-file', size: 18, value: 'still.png',
                                 title: 'In the folder: .png, .tif, .exr or .jpg' });
-const stillSize = el('select', { id: 'still-size' },
-                     ['1024x1024', '2048x2048', '4096x4096', '1920x1080', '3840x2160'].map(
-                       (s) => el('option', {}, s)));
+const stillSize = el('input', { id: 'still-size', size: 10, value: '2048x2048', list: 'still-sizes',
+                                title: 'WxH, at most 4096x4096' });
+const sizes = el('datalist', { id: 'still-sizes' },
+                 ['1024x1024', '2048x2048', '4096x4096', '1920x1080', '3840x2160'].map(
+                   (s) => el('option', { value: s })));
 const stillButton = el('button', { id: 'still-export', onclick: () => exportStill() },
                        'Export still');
 const list = el('table', { id: 'jobs', class: 'jobs' },
@@ -19,7 +21,7 @@ const list = el('table', { id: 'jobs', class: 'jobs' },
                 el('tbody'));
 body.append(
   el('div', { class: 'row' },
-     el('label', {}, 'Still ', stillFile), el('label', {}, 'size ', stillSize), stillButton,
+     el('label', {}, 'Still ', stillFile), el('label', {}, 'size ', stillSize, sizes), stillButton,
      el('span', { class: 'help' },
         'the editor\'s preset, mode and view at full size, as `ifsfx render` writes it')),
   list, status);
@@ -44,8 +46,18 @@ export async function cancelJob(id) {
 async function exportStill() {
   const request = editorRequest();
   if (!request) return;
-  // The editor's view, so that the still shows what the canvas shows, at the size chosen.
+  // The editor's view, so that the still shows what the canvas shows, widened about its centre
+  // to the still's shape (a view of another shape would be stretched).
   Object.assign(request, { kind: 'still', file: stillFile.value, size: stillSize.value });
+  const [w, h] = stillSize.value.split('x').map(Number);
+  if (request.view && w > 0 && h > 0) {
+    const [x0, y0, x1, y1] = request.view.split(',').map(Number);
+    const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
+    let hw = (x1 - x0) / 2, hh = (y1 - y0) / 2;
+    if (hw / hh < w / h) hw = hh * w / h; else hh = hw * h / w;
+    if (Math.abs(hw * 2 - (x1 - x0)) > 1e-12 || Math.abs(hh * 2 - (y1 - y0)) > 1e-12)
+      request.view = [cx - hw, cy - hh, cx + hw, cy + hh].join(',');
+  }
   try {
     const job = await startJob(request);
     say(status, `job ${job.id}: ${job.title} started`);
