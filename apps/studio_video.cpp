@@ -127,7 +127,7 @@ std::string FilterPreviews::jpeg(const std::string& channel, const json& body, c
                                preset.text,
                                s.exact,
                                text_field(body, "view", ""),
-                               body.value("animate", "none"),
+                               static_cast<int>(s.animate),
                                s.drift_amount,
                                s.drift_speed,
                                s.keyframe_interval,
