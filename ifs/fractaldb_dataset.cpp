@@ -74,7 +74,14 @@ DatasetStats write_dataset(const DatasetSpec& spec, const fs::path& folder,
   const int instances = instances_drawn(spec);
   const std::size_t weights = spec.weights.size();
   const std::size_t groups = spec.categories.size() * weights;
-  std::vector<std::unique_ptr<PngEncoder>> encoders(
+  // Per worker: its PNG encoder, walk buffers and canvas, kept from one group to the next.
+  struct Workspace {
+    PngEncoder encoder;
+    Points points;
+    WalkBuffers buffers;
+    cv::Mat canvas;
+  };
+  std::vector<std::unique_ptr<Workspace>> workspaces(
       static_cast<std::size_t>(worker_count(groups, options.threads)));
   Reporter reporter(options, image_count(spec));
   const CancelToken& cancel = options.output.cancel;
@@ -82,8 +89,8 @@ DatasetStats write_dataset(const DatasetSpec& spec, const fs::path& folder,
   // A worker takes one category and weight: its walk is shared by its instances and flips.
   parallel_for(groups, options.threads, [&](std::size_t group, int worker) {
     cancel.check("dataset");
-    auto& encoder = encoders[static_cast<std::size_t>(worker)];
-    if (!encoder) encoder = std::make_unique<PngEncoder>();
+    auto& space = workspaces[static_cast<std::size_t>(worker)];
+    if (!space) space = std::make_unique<Workspace>();
     struct Missing {
       ImageKey key;
       fs::path path;
@@ -102,18 +109,18 @@ DatasetStats write_dataset(const DatasetSpec& spec, const fs::path& folder,
       }
     reporter.add(0, present);
     if (missing.empty()) return;
-    const Points points =
-        walk(spec.categories[group / weights], spec.weights[group % weights], spec.settings, draws);
-    cv::Mat canvas;
+    walk(spec.categories[group / weights], spec.weights[group % weights], spec.settings, draws,
+         space->points, space->buffers);
     int drawn = -1;
     for (const Missing& m : missing) {
       cancel.check("dataset");
       if (m.key.instance != drawn) {
-        canvas = draw(points, spec.settings, mask_seed(spec, m.key));
+        draw(space->points, spec.settings, mask_seed(spec, m.key), space->canvas);
         drawn = m.key.instance;
       }
       OutputFile out(m.path, options.output);
-      write_file(out, encoder->encode(canvas, m.key.flip, spec.settings.draw, options.rgb_png));
+      write_file(out, space->encoder.encode(space->canvas, m.key.flip, spec.settings.draw,
+                                            options.rgb_png));
       out.commit();
       reporter.add(1, 0);
     }

@@ -215,6 +215,14 @@ std::vector<double> reference_draws(int iterations) {
 
 Points walk(const Category& category, const Weight& weight, const DrawSettings& settings,
             std::span<const double> draws) {
+  Points points;
+  WalkBuffers buffers;
+  walk(category, weight, settings, draws, points, buffers);
+  return points;
+}
+
+void walk(const Category& category, const Weight& weight, const DrawSettings& settings,
+          std::span<const double> draws, Points& points, WalkBuffers& buffers) {
   // set_param: every coefficient times its weight; p as written.
   std::vector<AffineMap> maps;
   for (const AffineMap& f : category.maps)
@@ -226,7 +234,11 @@ Points walk(const Category& category, const Weight& weight, const DrawSettings& 
     throw Error(
         ErrorKind::invalid_argument,
         fmt::format("draws: a walk of {} points needs {} draws (got {})", n, n - 1, draws.size()));
-  std::vector<double> xs(n), ys(n);
+  std::vector<double>& xs = buffers.x;
+  std::vector<double>& ys = buffers.y;
+  xs.resize(n);
+  ys.resize(n);
+  xs[0] = ys[0] = 0;
   // calculate(): from the origin; when no map is picked, `next_x` keeps its last value.
   double x = 0, y = 0, next_x = 0, next_y = 0;
   for (std::size_t i = 0; i + 1 < n; ++i) {
@@ -248,21 +260,27 @@ Points walk(const Category& category, const Weight& weight, const DrawSettings& 
   std::size_t k = first_nan(xs);
   if (k == n) k = first_nan(ys);
   const std::size_t kept = k == n ? n : k >= 100 ? k - 100 : 0;  // none: the reference fails
-  Points points(kept);
+  points.resize(kept);
   fit_axis(xs, kept, settings.size.width, settings.padding.width,
            [&](std::size_t i, std::uint16_t v) { points[i].x = v; });
   fit_axis(ys, kept, settings.size.height, settings.padding.height,
            [&](std::size_t i, std::uint16_t v) { points[i].y = v; });
-  return points;
 }
 
 cv::Mat draw(const Points& points, const DrawSettings& settings, std::uint64_t mask_seed) {
-  cv::Mat canvas = cv::Mat::zeros(settings.size, CV_8UC1);
+  cv::Mat canvas;
+  draw(points, settings, mask_seed, canvas);
+  return canvas;
+}
+
+void draw(const Points& points, const DrawSettings& settings, std::uint64_t mask_seed,
+          cv::Mat& canvas) {
+  canvas.create(settings.size, CV_8UC1);
+  canvas.setTo(0);
   if (is_patch(settings.draw))
     draw_patches(points, is_colour(settings.draw), mask_seed, canvas);
   else
     draw_points(points, is_colour(settings.draw), canvas);
-  return canvas;
 }
 
 std::vector<std::array<std::uint8_t, 3>> palette(DrawType draw) {

@@ -75,9 +75,19 @@ using Points = std::vector<Pixel>;
 // (fewer when the walk overflowed).
 Points walk(const Category& category, const Weight& weight, const DrawSettings& settings,
             std::span<const double> draws);
+// The same into `points`, with the walk's coordinates kept in `buffers`: a thread that walks
+// many times keeps both, and saves their allocation (and page faults) per walk.
+struct WalkBuffers {
+  std::vector<double> x, y;
+};
+void walk(const Category& category, const Weight& weight, const DrawSettings& settings,
+          std::span<const double> draws, Points& points, WalkBuffers& buffers);
 
 // The canvas of one picture: the points drawn by settings.draw, patches masked from `mask_seed`.
 cv::Mat draw(const Points& points, const DrawSettings& settings, std::uint64_t mask_seed);
+// The same into `canvas` (reallocated only when its size or type differ).
+void draw(const Points& points, const DrawSettings& settings, std::uint64_t mask_seed,
+          cv::Mat& canvas);
 
 // The colours of the palette indices, (R, G, B): 2 entries for the grey types (black, 127), 129
 // for the colour ones (black, then the reference's convert_color(i, 128) for i = 0..127).

@@ -12,12 +12,16 @@
 
 namespace ifsfx::fractaldb {
 
-double filling_rate(const Category& category, int points, const std::vector<double>& draws) {
+namespace {
+
+// filling_rate with the walk's buffers kept.
+double filling_rate(const Category& category, int points, const std::vector<double>& draws,
+                    Points& walked, WalkBuffers& buffers, std::vector<std::uint8_t>& lit) {
   // ifs_search.py: draw_point(512, 512, 6, 6, 'gray', 0), then np.count_nonzero / (512 · 512).
   const DrawSettings settings{
       .size = {512, 512}, .padding = {6, 6}, .iterations = points, .draw = DrawType::point_gray};
-  const Points walked = walk(category, {1, 1, 1, 1, 1, 1}, settings, draws);
-  std::vector<std::uint8_t> lit(512 * 512, 0);
+  walk(category, {1, 1, 1, 1, 1, 1}, settings, draws, walked, buffers);
+  lit.assign(512 * 512, 0);
   std::size_t count = 0;
   for (const Pixel p : walked) {
     if (p.x >= 512 || p.y >= 512) continue;
@@ -26,6 +30,15 @@ double filling_rate(const Category& category, int points, const std::vector<doub
     pixel = 1;
   }
   return static_cast<double>(count) / static_cast<double>(512 * 512);
+}
+
+}  // namespace
+
+double filling_rate(const Category& category, int points, const std::vector<double>& draws) {
+  Points walked;
+  WalkBuffers buffers;
+  std::vector<std::uint8_t> lit;
+  return filling_rate(category, points, draws, walked, buffers, lit);
 }
 
 void search(const SearchOptions& options,
@@ -41,10 +54,19 @@ void search(const SearchOptions& options,
   if (options.points < 2 || options.points > 100'000'000)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("points: must be 2..100000000 (got {})", options.points));
+  // `points` points light at most that many of the 512 · 512 pixels.
+  if (options.rate > options.points / (512.0 * 512.0))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("rate: {} cannot be reached with {} points (they light at most {:.4g} "
+                            "of the 512x512 picture)",
+                            options.rate, options.points, options.points / (512.0 * 512.0)));
   const auto start = std::chrono::steady_clock::now();
   detail::NumpyRandom random(options.seed);
   std::vector<double> draws(static_cast<std::size_t>(options.points));
   SearchProgress state{.wanted = options.categories};
+  Points walked;
+  WalkBuffers buffers;
+  std::vector<std::uint8_t> lit;
   while (state.found < options.categories) {
     options.cancel.check("search");
     // np.random.randint(2, 8) maps, each np.random.uniform(-1.0, 1.0, 6), p ∝ |det|.
@@ -64,7 +86,8 @@ void search(const SearchOptions& options,
     for (double& r : draws) r = random.random();
     ++state.tried;
     // All maps singular (probability 0) would divide 0 by 0 in the reference: never kept.
-    const double rate = sum > 0 ? filling_rate(candidate, options.points, draws) : 0;
+    const double rate =
+        sum > 0 ? filling_rate(candidate, options.points, draws, walked, buffers, lit) : 0;
     if (rate >= options.rate && contraction_rate(candidate.maps, candidate.probabilities) < 0) {
       found(candidate, rate);
       ++state.found;

@@ -41,8 +41,8 @@ double filling_rate(const Category& category, int points, const std::vector<doub
 
 // Runs the search, calling found(category, filling rate) for each category kept, in order,
 // named "00000", "00001", ...; progress (if any) after each candidate. Throws
-// Error{invalid_argument} for categories outside 1..1000000, a rate outside [0, 1], points
-// outside 2..10^8, and Error{interrupted} on a stop.
+// Error{invalid_argument} for categories outside 1..1000000, a rate outside [0, 1] or above
+// points / 512² (never reached), points outside 2..10^8, and Error{interrupted} on a stop.
 void search(const SearchOptions& options,
             const std::function<void(const Category& category, double rate)>& found,
             const std::function<void(const SearchProgress&)>& progress = {});

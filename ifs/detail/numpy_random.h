@@ -17,8 +17,8 @@ class NumpyRandom {
 
   // numpy.random.random(): 53 random bits from two 32-bit draws, in [0, 1).
   double random() {
-    const auto a = static_cast<std::uint32_t>(mt_()) >> 5;
-    const auto b = static_cast<std::uint32_t>(mt_()) >> 6;
+    const auto a = mt_() >> 5;
+    const auto b = mt_() >> 6;
     return (a * 67108864.0 + b) / 9007199254740992.0;
   }
 
@@ -33,7 +33,7 @@ class NumpyRandom {
     std::uint64_t mask = range;
     for (int shift = 1; shift < 64; shift *= 2) mask |= mask >> shift;
     std::uint64_t v = 0;
-    do v = static_cast<std::uint32_t>(mt_()) & mask;
+    do v = mt_() & mask;
     while (v > range);
     return low + static_cast<std::int64_t>(v);
   }
@@ -42,7 +42,11 @@ class NumpyRandom {
   void skip_random(std::uint64_t count) { mt_.discard(2 * count); }
 
  private:
-  std::mt19937 mt_;
+  // std::mt19937 with 32-bit words (the standard's keeps them in uint_fast32_t, 64 bits here):
+  // the same numbers, generated faster.
+  std::mersenne_twister_engine<std::uint32_t, 32, 624, 397, 31, 0x9908b0df, 11, 0xffffffff, 7,
+                               0x9d2c5680, 15, 0xefc60000, 18, 1812433253>
+      mt_;
 };
 
 }  // namespace ifsfx::detail
