@@ -116,7 +116,8 @@ std::vector<db::Category> categories_arg(const py::handle& categories) {
                               "or a list of them (got {})",
                               std::string(py::str(py::type::of(item).attr("__name__")))));
   };
-  if (is_path(categories) || py::isinstance<db::Category>(categories))
+  if (is_path(categories) || py::isinstance<db::Category>(categories) ||
+      !py::isinstance<py::iterable>(categories))
     add(categories);
   else
     for (const py::handle item : py::iter(categories)) add(item);
