@@ -73,9 +73,9 @@ std::vector<std::filesystem::path> category_files(const std::filesystem::path& f
 std::string category_text(const Category& category);
 
 // The rate at which the chaos game's linear parts contract, per step (natural log): negative
-// when the IFS contracts on average. Proved negative by the mean log contraction of words of up
-// to 3 maps (mean_log_contraction) when it can be, else estimated as the top Lyapunov exponent
-// along the reference's own draws (2^16 steps).
+// when the IFS contracts on average. The mean log contraction of words of up to 3 maps
+// (mean_log_contraction, an upper bound of the top Lyapunov exponent) where it is negative, else
+// the top Lyapunov exponent estimated along the reference's own draws (2^16 steps).
 double contraction_rate(const std::vector<AffineMap>& maps,
                         const std::vector<double>& probabilities);
 
