@@ -397,9 +397,26 @@ and file names), default "". Raises ValueError as read_category does for its fil
           "how fast the chaos game contracts per step (natural log): < 0 for every readable "
           "category")
       .def("__len__", [](const db::Category& c) { return c.maps.size(); })
-      .def("__repr__", [](const db::Category& c) {
-        return fmt::format("<ifsfx.fractaldb.Category '{}': {} maps>", c.name, c.maps.size());
-      });
+      .def("__repr__",
+           [](const db::Category& c) {
+             return fmt::format("<ifsfx.fractaldb.Category '{}': {} maps>", c.name, c.maps.size());
+           })
+      .def(py::pickle(
+          [](const db::Category& c) {
+            return py::make_tuple(c.name, maps_array(c), c.probabilities);
+          },
+          [](const py::tuple& t) {
+            db::Category c;
+            c.name = t[0].cast<std::string>();
+            const auto maps =
+                t[1].cast<py::array_t<double, py::array::c_style | py::array::forcecast>>();
+            const auto k = maps.unchecked<2>();
+            for (py::ssize_t n = 0; n < maps.shape(0); ++n)
+              c.maps.push_back(AffineMap::from_coefficients(
+                  {k(n, 0), k(n, 1), k(n, 2), k(n, 3), k(n, 4), k(n, 5)}));
+            c.probabilities = t[2].cast<std::vector<double>>();
+            return c;
+          }));
 
   f.def(
       "read_category",
@@ -516,7 +533,23 @@ csv_rate0.2_category1000 files). The GIL is released; Ctrl-C stops it.)doc");
       .def_property_readonly("instances",
                              [](const Dataset& self) { return self.state().spec.instances; })
       .def_property_readonly("seed", [](const Dataset& self) { return self.state().spec.seed; })
-      .def_property_readonly("rgb", [](const Dataset& self) { return self.state().rgb; });
+      .def_property_readonly("rgb", [](const Dataset& self) { return self.state().rgb; })
+      // For DataLoader workers started by spawn (the default off Linux): the settings travel,
+      // the dataset is made again on the other side.
+      .def(py::pickle(
+          [](const Dataset& self) {
+            const db::DatasetSpec& spec = self.state().spec;
+            const db::DrawSettings& s = spec.settings;
+            return py::make_tuple(spec.categories, weights_array(spec.weights),
+                                  db::to_string(s.draw),
+                                  py::make_tuple(s.size.width, s.size.height),
+                                  py::make_tuple(s.padding.width, s.padding.height), s.iterations,
+                                  spec.instances, spec.seed, self.state().rgb);
+          },
+          [](const py::tuple& t) {
+            return make_dataset(t[0], t[1], t[2].cast<std::string>(), t[3], t[4], t[5].cast<int>(),
+                                t[6].cast<int>(), t[7].cast<std::uint64_t>(), t[8].cast<bool>());
+          }));
 }
 
 }  // namespace ifsfx::python

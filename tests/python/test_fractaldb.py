@@ -4,6 +4,7 @@
 # once; the readers' errors name the file and line; the search finds the reference's categories;
 # rendering releases the GIL and Ctrl-C stops it.
 import os
+import pickle
 import signal
 import threading
 import time
@@ -15,7 +16,7 @@ import ifsfx
 from ifsfx import fractaldb
 from conftest import run_cli
 
-EXPECTED_TESTS = 10
+EXPECTED_TESTS = 11
 
 # Three small categories written as the search writes them, named out of order.
 MAPS = {
@@ -87,6 +88,18 @@ def test_worker_shards_hold_every_image_once(categories):
     assert sorted(merged) == sorted(every)
     with pytest.raises(ValueError, match=r"^shard: worker index in 0\.\.count-1"):
         data.shard(3, 3)
+
+
+def test_a_dataset_pickles_for_spawned_workers(categories):
+    data = dataset(categories, draw="patch_color", seed=7, rgb=True)
+    again = pickle.loads(pickle.dumps(data))
+    assert len(again) == len(data) and again.classes == data.classes
+    assert (again.draw, again.size, again.padding, again.seed, again.rgb) == \
+        ("patch_color", (96, 80), (4, 4), 7, True)
+    assert all(np.array_equal(again[i][0], data[i][0]) for i in (0, 17, 47))
+    c = data.categories[2]
+    c2 = pickle.loads(pickle.dumps(c))
+    assert c2.name == c.name and c2.text == c.text
 
 
 def test_readers_name_the_file_and_line_of_bad_input(tmp_path):
