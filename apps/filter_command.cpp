@@ -17,6 +17,7 @@
 #include "apps/commands.h"
 #include "apps/filter_options.h"
 #include "apps/fractal_filter_options.h"
+#include "apps/progress_bar.h"
 #include "apps/stop_signals.h"
 #include "ifs/error.h"
 #include "video/file_sink.h"
@@ -30,44 +31,6 @@ namespace ifsfx::app {
 namespace {
 
 using video::Animate;
-
-std::string clock_text(double seconds) {
-  if (seconds < 0) return "--:--";
-  const auto s = static_cast<long>(seconds + 0.5);
-  return s >= 3600 ? fmt::format("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60)
-                   : fmt::format("{}:{:02}", s / 60, s % 60);
-}
-
-// The progress bar on a terminal (redrawn in place), or a plain line per report otherwise.
-class ProgressPrinter {
- public:
-  explicit ProgressPrinter(bool tty) : tty_(tty) {}
-
-  void operator()(const video::Progress& p) {
-    const std::string counts = p.total >= 0 ? fmt::format("{}/{} frames", p.done, p.total)
-                                            : fmt::format("{} frames", p.done);
-    const std::string rate = fmt::format("{:.1f} fps", p.fps());
-    if (tty_) {
-      std::string bar;
-      if (p.total > 0) {
-        constexpr int width = 30;
-        const auto filled =
-            static_cast<int>(width * std::min<double>(1.0, static_cast<double>(p.done) / p.total));
-        bar = "[" + std::string(static_cast<std::size_t>(filled), '#') +
-              std::string(static_cast<std::size_t>(width - filled), '.') + "] ";
-      }
-      fmt::print(stderr, "\r{}{}  {}  ETA {}  ", bar, counts, rate, clock_text(p.eta()));
-      if (p.finished) std::fputs("\n", stderr);
-    } else {
-      fmt::print(stderr, "{}  {}  elapsed {}  ETA {}\n", counts, rate, clock_text(p.seconds),
-                 clock_text(p.eta()));
-    }
-    std::fflush(stderr);
-  }
-
- private:
-  bool tty_;
-};
 
 std::unique_ptr<video::FrameSource> open_source(const FilterArgs& args) {
   if (video::is_sequence_pattern(args.input))
@@ -175,7 +138,9 @@ video::PipelineOptions pipeline_options(const FilterArgs& args, const video::Fra
   options.stop = &StopSignals::stop_flag();
   const bool tty = isatty(fileno(stderr)) != 0;
   if (!args.quiet && !args.preview) {
-    options.progress = ProgressPrinter(tty);
+    options.progress = [bar = ProgressBar(tty, "frames", "fps")](const video::Progress& p) {
+      bar(p.done, p.total, p.seconds, p.finished);
+    };
     options.progress_interval = tty ? 0.25 : 2.0;
   }
   return options;
