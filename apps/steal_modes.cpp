@@ -79,7 +79,7 @@ cv::Mat steal_image(const Ifs& F, cv::Size size, const StealMapOptions& options,
     throw Error(ErrorKind::invalid_argument, "--source: --mode steal needs a source image");
   // Read first: a missing or unreadable source fails before any long work.
   const cv::Mat source = read_image(args.source).pixels;
-  const Ifs G = colouring_option(args.colouring, F);
+  const Ifs G = args.colouring_ifs ? *args.colouring_ifs : colouring_option(args.colouring, F);
   StealMapStats ss;
   const StealMap map = compute_steal_map(F, G, size, options, &ss);
   if (!args.save_map.empty()) {

@@ -4,6 +4,7 @@
 // the format has alpha, the background colour elsewhere).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,7 +29,10 @@ bool format_has_alpha(const std::string& path);
 struct StealModeArgs {
   std::string source;     // image to steal colours from (any format OpenImageIO reads)
   std::string colouring;  // colouring IFS preset; empty: default_colouring(N)
-  std::string save_map;   // also write the steal map here
+  // G itself, on the source's unit square, in place of `colouring` (the studio, which holds G as
+  // maps and fits it as load_colouring fits a preset: apps/studio_render.h).
+  std::optional<Ifs> colouring_ifs;
+  std::string save_map;  // also write the steal map here
   Rgb background;
   bool quiet = false;    // else print the coverage policy's figures on stdout
   OutputOptions output;  // the output policy of the saved map
