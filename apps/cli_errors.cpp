@@ -33,6 +33,11 @@ constexpr std::pair<std::string_view, std::string_view> kFlags[] = {
     {"drift speed", "--drift-speed"},
     {"codec", "--codec"},
     {"format", "--format"},
+    {"padding", "--padding"},        // dataset render
+    {"iterations", "--iterations"},  // dataset render
+    {"instances", "--instances"},    // dataset render
+    {"rate", "--rate"},              // dataset search
+    {"points", "--points"},          // dataset search
 };
 
 // Named inside messages, not as their subject.

@@ -19,6 +19,7 @@ void add_filter_command(CLI::App& app);   // fractal video filter on movie files
 void add_info_command(CLI::App& app);     // version, build and kernel level
 void add_farm_command(CLI::App& app);     // shard filter/texture over a Slurm cluster
 void add_studio_command(CLI::App& app);   // local web editor (docs/studio.md)
+void add_dataset_command(CLI::App& app);  // FractalDB datasets (docs/dataset.md)
 
 // "ifsfx VERSION (BUILD TYPE build, ...)" and the kernel level line, for --version and `info`.
 std::string version_text();

@@ -18,6 +18,7 @@
 #include "apps/filter_options.h"
 #include "apps/filter_run.h"
 #include "apps/fractal_filter_options.h"
+#include "apps/progress_bar.h"
 #include "apps/stop_signals.h"
 #include "ifs/error.h"
 #include "video/file_sink.h"
@@ -31,44 +32,6 @@ namespace ifsfx::app {
 namespace {
 
 using video::Animate;
-
-std::string clock_text(double seconds) {
-  if (seconds < 0) return "--:--";
-  const auto s = static_cast<long>(seconds + 0.5);
-  return s >= 3600 ? fmt::format("{}:{:02}:{:02}", s / 3600, s / 60 % 60, s % 60)
-                   : fmt::format("{}:{:02}", s / 60, s % 60);
-}
-
-// The progress bar on a terminal (redrawn in place), or a plain line per report otherwise.
-class ProgressPrinter {
- public:
-  explicit ProgressPrinter(bool tty) : tty_(tty) {}
-
-  void operator()(const video::Progress& p) {
-    const std::string counts = p.total >= 0 ? fmt::format("{}/{} frames", p.done, p.total)
-                                            : fmt::format("{} frames", p.done);
-    const std::string rate = fmt::format("{:.1f} fps", p.fps());
-    if (tty_) {
-      std::string bar;
-      if (p.total > 0) {
-        constexpr int width = 30;
-        const auto filled =
-            static_cast<int>(width * std::min<double>(1.0, static_cast<double>(p.done) / p.total));
-        bar = "[" + std::string(static_cast<std::size_t>(filled), '#') +
-              std::string(static_cast<std::size_t>(width - filled), '.') + "] ";
-      }
-      fmt::print(stderr, "\r{}{}  {}  ETA {}  ", bar, counts, rate, clock_text(p.eta()));
-      if (p.finished) std::fputs("\n", stderr);
-    } else {
-      fmt::print(stderr, "{}  {}  elapsed {}  ETA {}\n", counts, rate, clock_text(p.seconds),
-                 clock_text(p.eta()));
-    }
-    std::fflush(stderr);
-  }
-
- private:
-  bool tty_;
-};
 
 // A stopped run says what it kept; a complete one prints its summary (unless --quiet).
 void report_filter(const FilterArgs& args, const FilterOutcome& out) {
@@ -96,13 +59,16 @@ void report_filter(const FilterArgs& args, const FilterOutcome& out) {
 }
 
 void run_filter(const FilterArgs& args) {
-  StopSignals signals;  // from here on, Ctrl-C and SIGTERM stop the command within 0.5 s
+  check_filter_args(args);  // before the signals: a bad command line fails at once
+  StopSignals signals;      // from here on, Ctrl-C and SIGTERM stop the command within 0.5 s
   FilterRun run;
   run.stop = &StopSignals::stop_flag();
   run.note = [](const std::string& line) { fmt::print(stderr, "ifsfx: {}\n", line); };
   const bool tty = isatty(fileno(stderr)) != 0;
   if (!args.quiet && !args.preview) {
-    run.progress = ProgressPrinter(tty);
+    run.progress = [bar = ProgressBar(tty, "frames", "fps")](const video::Progress& p) {
+      bar(p.done, p.total, p.seconds, p.finished);
+    };
     run.progress_interval = tty ? 0.25 : 2.0;
   }
   report_filter(args, filter_movie(args, run));

@@ -24,7 +24,7 @@ std::unique_ptr<video::FrameSource> open_source(const FilterArgs& args) {
     return std::make_unique<video::ImageSequenceSource>(
         args.input, video::ImageSequenceOptions{.fps = args.fps, .skip_gaps = args.skip_gaps});
   return std::make_unique<video::FileSource>(
-      args.input, video::FileSourceOptions{.threads = args.fractal.threads});
+      args.input, video::FileSourceOptions{.threads = args.fractal.engine.sampling.threads});
 }
 
 bool writes_movie(const FilterArgs& args) {
@@ -54,8 +54,8 @@ OutputOptions output_policy(const FilterArgs& args, const video::FrameSource& so
                             const InputFiles& inputs) {
   OutputOptions output{.inputs = inputs};
   for (const auto& file : source.files()) output.inputs.add(file);
-  add_preset_input(output.inputs, args.fractal.preset);
-  add_preset_input(output.inputs, args.fractal.colouring);
+  add_preset_input(output.inputs, args.fractal.engine.preset);
+  add_preset_input(output.inputs, args.fractal.engine.colouring);
   if (args.animate == Animate::superifs) add_preset_input(output.inputs, args.superifs);
   return output;
 }
@@ -69,7 +69,7 @@ std::unique_ptr<video::FileSink> open_movie(const FilterArgs& args,
   o.frame_rate = source.frame_rate();
   o.time_base = source.time_base();
   o.timing = args.timing;
-  o.threads = args.fractal.threads;
+  o.threads = args.fractal.engine.sampling.threads;
   o.output = output;
   o.source_clock = args.segment;
   // A farm segment carries no audio: the join copies it once, from the input, as one run does.
@@ -130,7 +130,7 @@ FilterOutcome filter_movie(const FilterArgs& args, const FilterRun& run) {
   settings.keyframe_interval = args.keyframe_interval;
   settings.superifs = args.superifs;
   settings.buffers = args.buffers;
-  settings.cancel = CancelToken(run.stop);
+  settings.sampling.cancel = CancelToken(run.stop);
   video::FractalEngine engine(settings);
   if (run.note)
     for (const std::string& warning : engine.warnings()) run.note("warning: " + warning);
@@ -158,7 +158,7 @@ FilterOutcome filter_movie(const FilterArgs& args, const FilterRun& run) {
     throw Error(ErrorKind::interrupted, "interrupted before the first frame; nothing written");
   FilterOutcome out;
   out.result = video::run_pipeline(*source, *sink, filter, options);
-  out.name = args.animate == video::Animate::superifs ? args.superifs : engine.name();
+  out.name = args.animate == Animate::superifs ? args.superifs : engine.name();
   out.size = size;
   out.rate = rate;
   out.stalls = engine.stalls();

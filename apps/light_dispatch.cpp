@@ -34,6 +34,14 @@ bool plain_value(std::string_view value) {
 }  // namespace
 
 bool light_runs(int argc, char** argv) {
+  if (argc >= 2 && std::string_view(argv[1]) == "dataset") {
+    for (int i = 2; i < argc; ++i) {
+      const std::string_view arg = argv[i];
+      if (arg == "--") break;
+      if (arg == "-h" || arg == "--help" || arg == "--help-all" || arg == "--version") return false;
+    }
+    return true;
+  }
   if (argc < 2 || std::string_view(argv[1]) != "render") return false;
   int outputs = 0, modes = 0;
   std::string_view output, mode = "measure";

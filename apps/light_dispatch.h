@@ -10,8 +10,9 @@
 namespace ifsfx::app {
 
 // Whether the light binary runs `argv` itself: `render` with one -o/--output ending in .png and
-// --mode attractor, measure or tops (steal reads a source image of any format), and no --help,
-// -h, --help-all or --version. A command line it cannot read with certainty (a short-flag group
+// --mode attractor, measure or tops (steal reads a source image of any format), and `dataset`
+// (FractalDB datasets: PNG files of its own, docs/dataset.md); either with no --help, -h,
+// --help-all or --version. A command line it cannot read with certainty (a short-flag group
 // such as -qo, an option value that looks like an option) goes to the full binary, which runs
 // every command line.
 bool light_runs(int argc, char** argv);

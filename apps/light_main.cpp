@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// ifsfx, the installed command: `render` to PNG in a binary that loads neither OpenImageIO nor
-// the video stack, every other command line handed to ifsfx-full (apps/light_dispatch.h).
+// ifsfx, the installed command: `render` to PNG and `dataset` in a binary that loads neither
+// OpenImageIO nor the video stack, every other command line handed to ifsfx-full
+// (apps/light_dispatch.h).
 #include <CLI/CLI.hpp>
 
 #include "apps/commands.h"
@@ -12,5 +13,6 @@ int main(int argc, char** argv) {
   CLI::App app{ifsfx::app::kDescription};
   app.require_subcommand(1);
   ifsfx::app::add_render_command(app);
+  ifsfx::app::add_dataset_command(app);
   return ifsfx::app::run_cli(app, argc, argv);
 }

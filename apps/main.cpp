@@ -24,5 +24,6 @@ int main(int argc, char** argv) {
   ifsfx::app::add_info_command(app);
   ifsfx::app::add_farm_command(app);
   ifsfx::app::add_studio_command(app);
+  ifsfx::app::add_dataset_command(app);
   return ifsfx::app::run_cli(app, argc, argv);
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// `ifsfx studio [PRESET] [--port N] [--folder DIR] [--open]`: a local web editor served by the
+// `ifsfx studio [PRESET] [--source IMAGE|MOVIE] [--camera /dev/videoN] [--port N] [--folder DIR]
+// [--open]`: a local web editor served by the
 // engine (docs/studio.md). An HTTP server (cpp-httplib) on 127.0.0.1 serves the page's files
 // (apps/studio/web, installed in share/ifsfx/studio) and a small JSON API; the page sends the
 // whole preset with every render, and the server renders it with `ifsfx render`'s library calls
@@ -7,6 +8,8 @@
 // header or the cookie set from the URL), Host and Origin checked against the loopback names
 // (DNS rebinding, cross-site requests), bodies capped, files read and written only in --folder.
 #include <spawn.h>
+#include <sys/socket.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -16,6 +19,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -28,18 +32,21 @@
 #include <fmt/format.h>
 #include <httplib.h>
 #include <nlohmann/json.hpp>
+#include <opencv2/imgproc.hpp>
 
 #include "apps/cli_errors.h"
 #include "apps/commands.h"
 #include "apps/stop_signals.h"
-#include "apps/studio_fit.h"
 #include "apps/studio_folder.h"
 #include "apps/studio_http.h"
 #include "apps/studio_render.h"
 #include "apps/studio_routes.h"
 #include "ifs/error.h"
+#include "ifs/image_io.h"
 #include "ifs/output_file.h"
 #include "ifs/preset.h"
+#include "ifs/render.h"
+#include "ifs/steal_map.h"
 
 extern char** environ;
 
@@ -49,7 +56,9 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-constexpr std::size_t kMaxBody = 1 << 20;  // a preset of 64 maps is a few kB
+constexpr int kMaxMaps = 64;             // as preset_from_json takes
+constexpr double kSourcePreview = 1024;  // the source beside the canvas, pixels a side
+constexpr int kThreads = 32;             // connections served at once
 constexpr const char* kTokenHeader = "X-Ifsfx-Token";
 constexpr const char* kTokenCookie = "ifsfx_token";
 
@@ -98,6 +107,30 @@ std::string read_whole(const fs::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
+// Every socket of this process shut down, so that connections idling in HTTP keep-alive (a
+// browser tab holds some for seconds) end now and the server's threads can be joined at once:
+// cpp-httplib waits out its keep-alive timeout otherwise. Only at the end; the studio holds no
+// other socket.
+void shut_down_sockets() {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator("/proc/self/fd", ec)) {
+    const int fd = std::atoi(entry.path().filename().c_str());
+    struct stat st {};
+    if (fstat(fd, &st) == 0 && S_ISSOCK(st.st_mode)) ::shutdown(fd, SHUT_RDWR);
+  }
+}
+
+// A positive whole number query parameter no larger than `most`.
+int count_param(const httplib::Request& req, const char* name, int most) {
+  const std::string text = req.get_param_value(name);
+  static const std::regex digits("[0-9]{1,6}");
+  const int value = std::regex_match(text, digits) ? std::stoi(text) : 0;
+  if (value < 1 || value > most)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: a whole number from 1 to {} (got '{}')", name, most, text));
+  return value;
+}
+
 class Studio {
  public:
   explicit Studio(const StudioArgs& args)
@@ -119,7 +152,7 @@ class Studio {
           .folder = folder_,
           .scratch = scratch_,
           .web = web_,
-          .inputs = inputs_,
+          .inputs = [this] { return inputs(); },
           .source = args.source,
           .camera = args.camera,
           .source_path = [this](const std::string& name) { return source_path(name); }});
@@ -136,6 +169,7 @@ class Studio {
   }
 
   void run() {
+    configure();
     routes();
     port_ = args_.port == 0 ? server_.bind_to_any_port("127.0.0.1")
                             : (server_.bind_to_port("127.0.0.1", args_.port) ? args_.port : -1);
@@ -146,13 +180,14 @@ class Studio {
     std::printf("ifsfx studio: %s\n", url.c_str());
     std::fflush(stdout);
     if (args_.open) open_browser(url);
-    // Ctrl-C or SIGTERM: cancel the render in flight and stop listening, polled every 20 ms.
+    // Ctrl-C or SIGTERM: cancel the renders in flight and stop listening, polled every 20 ms.
     std::thread watcher([this] {
       while (!StopSignals::stop_flag() && !done_)
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      cancel_current();
+      cancel_all();
       extras_->stop();
       server_.stop();
+      shut_down_sockets();
     });
     server_.listen_after_bind();
     done_ = true;
@@ -182,25 +217,52 @@ class Studio {
     return std::regex_search(cookie, m, pattern) && same_secret(m[1].str(), token_);
   }
 
-  // A name in --folder: one path component, no hidden file, a regular file inside the folder
-  // once links are followed.
-  fs::path folder_file(const std::string& name, bool must_exist) const {
-    return StudioFolder(folder_).file(name, must_exist);
-  }
-
   fs::path source_path(const std::string& name) const {
     if (name == "sample") return web_ / "sample.png";
     if (auto image = extras_->source_image(name)) return *image;
-    return folder_file(name, true);
+    if (!is_image_name(name))
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("source: an image of --folder (got '{}')", name));
+    return folder_file(folder_, name, true);
   }
 
-  void cancel_current() {
+  InputFiles inputs() {
     std::lock_guard lock(mutex_);
-    if (current_) current_->store(true);
+    return inputs_;
+  }
+  void add_input(const fs::path& path) {
+    std::lock_guard lock(mutex_);
+    inputs_.add(path);
   }
 
-  void routes() {
-    server_.set_payload_max_length(kMaxUpload);  // uploads; every other request: kMaxBody
+  // Starts a render of tab `client`: cancels that tab's render in flight. Returns the new stop
+  // flag; finish_render forgets it.
+  std::shared_ptr<std::atomic<bool>> start_render(const std::string& client) {
+    auto flag = std::make_shared<std::atomic<bool>>(false);
+    std::lock_guard lock(mutex_);
+    auto& current = in_flight_[client];
+    if (current) current->store(true);
+    current = flag;
+    return flag;
+  }
+  void finish_render(const std::string& client, const std::shared_ptr<std::atomic<bool>>& flag) {
+    std::lock_guard lock(mutex_);
+    const auto it = in_flight_.find(client);
+    if (it != in_flight_.end() && it->second == flag) in_flight_.erase(it);
+  }
+  void cancel_all() {
+    std::lock_guard lock(mutex_);
+    for (auto& [client, flag] : in_flight_) flag->store(true);
+  }
+
+  // The server's settings and the checks every request passes first.
+  void configure() {
+    // Each connection holds a thread while it is kept alive (a tab keeps up to six): enough
+    // threads for a few tabs, and long-lived connections, so that a drag's renders reuse one.
+    server_.new_task_queue = [] { return new httplib::ThreadPool(kThreads); };
+    server_.set_keep_alive_max_count(100000);
+    server_.set_tcp_nodelay(true);  // small answers at once, not after a delayed ACK
+    server_.set_payload_max_length(kMaxUploadBytes);  // JSON bodies are checked to kMaxBody
     server_.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
       if (!loopback_host(req.get_header_value("Host"))) {
         send_error(
@@ -217,18 +279,6 @@ class Studio {
         send_error(res, 403, "token: every request needs the token of the URL printed at start");
         return httplib::Server::HandlerResponse::Handled;
       }
-      if (!StudioExtras::takes_upload(req.path)) {
-        if (req.get_header_value<std::uint64_t>("Content-Length") > kMaxBody) {
-          send_error(res, 413,
-                     fmt::format("request: at most {} bytes (got {})", kMaxBody,
-                                 req.get_header_value("Content-Length")));
-          return httplib::Server::HandlerResponse::Handled;
-        }
-        if (req.has_header("Transfer-Encoding")) {
-          send_error(res, 411, "request: a body needs a Content-Length here");
-          return httplib::Server::HandlerResponse::Handled;
-        }
-      }
       return httplib::Server::HandlerResponse::Unhandled;
     });
     server_.set_post_routing_handler([](const httplib::Request&, httplib::Response& res) {
@@ -236,12 +286,22 @@ class Studio {
       res.set_header("X-Content-Type-Options", "nosniff");
     });
     server_.set_error_handler([](const httplib::Request&, httplib::Response& res) {
-      if (res.body.empty()) send_error(res, res.status, fmt::format("HTTP {}", res.status));
+      if (!res.body.empty()) return;
+      send_error(res, res.status,
+                 res.status == 413
+                     ? fmt::format("request: at most {} MiB (an upload; JSON: {} KiB)",
+                                   kMaxUploadBytes >> 20, kMaxBody >> 10)
+                     : fmt::format("HTTP {}", res.status));
     });
     server_.set_exception_handler(
         [](const httplib::Request&, httplib::Response& res, std::exception_ptr) {
           send_error(res, 500, "internal error");
         });
+  }
+
+  void routes() {
+    // ---- The editor's routes: the page, presets, the folder, renders, saves (docs/studio.md,
+    // "The API"). Other parts of the studio register theirs after this block. ----
 
     // The page: index.html (which sets the token's cookie from the URL) and its few files.
     server_.Get("/", [this](const httplib::Request& req, httplib::Response& res) {
@@ -252,13 +312,21 @@ class Studio {
                      "default-src 'self'; img-src 'self' blob: data:; connect-src 'self'");
       res.set_content(read_whole(web_ / "index.html"), "text/html; charset=utf-8");
     });
-    const std::vector<std::pair<std::string, std::string>> files{
-        {"studio.js", "text/javascript"}, {"studio.css", "text/css"}, {"sample.png", "image/png"}};
-    for (const auto& [name, type] : files)
-      server_.Get("/" + name, [this, name = name, type = type](const httplib::Request&,
-                                                               httplib::Response& res) {
-        res.set_content(read_whole(web_ / name), type.c_str());
-      });
+    // The page's other files (its ES modules, styles and the sample source): plain names of the
+    // web folder only.
+    server_.Get(R"(/([a-z][a-z0-9_-]*)\.(js|css|png))",
+                [this](const httplib::Request& req, httplib::Response& res) {
+                  const fs::path path = web_ / (req.matches[1].str() + "." + req.matches[2].str());
+                  std::error_code ec;
+                  if (!fs::is_regular_file(path, ec)) {
+                    send_error(res, 404, fmt::format("{}: no such file", req.path));
+                    return;
+                  }
+                  const std::string ext = req.matches[2].str();
+                  res.set_content(read_whole(path), ext == "js"    ? "text/javascript"
+                                                    : ext == "css" ? "text/css"
+                                                                   : "image/png");
+                });
 
     server_.Get("/api/presets", [](const httplib::Request&, httplib::Response& res) {
       guarded(res, [&] {
@@ -272,9 +340,22 @@ class Studio {
         res.set_content(list.dump(), "application/json");
       });
     });
-    // A shipped preset by name; no name: the one of the command line.
+    // A preset: shipped (name=), of the folder (file= and, for a Fractint file, entry=), or, with
+    // neither, the one of the command line. A folder preset becomes an input (never saved over);
+    // NAME.toml brings its colouring NAME.colouring.toml when there is one.
     server_.Get("/api/preset", [this](const httplib::Request& req, httplib::Response& res) {
       guarded(res, [&] {
+        if (req.has_param("file")) {
+          const std::string file = req.get_param_value("file");
+          const IfsPreset preset = open_folder_preset(folder_, file, req.get_param_value("entry"));
+          add_input(folder_file(folder_, file, true));
+          json body = preset_to_json(preset);
+          body["origin_file"] = file;
+          if (preset.format == PresetFormat::fractint) body["origin_entry"] = preset.ifs.name;
+          if (preset.format == PresetFormat::toml) attach_colouring(body, file, preset.ifs);
+          res.set_content(body.dump(), "application/json");
+          return;
+        }
         if (!req.has_param("name")) {
           res.set_content(preset_to_json(initial_).dump(), "application/json");
           return;
@@ -288,64 +369,150 @@ class Studio {
         res.set_content(preset_to_json(load_ifs(name)).dump(), "application/json");
       });
     });
+    server_.Get("/api/folder", [this](const httplib::Request&, httplib::Response& res) {
+      guarded(res, [&] { res.set_content(folder_presets(folder_).dump(), "application/json"); });
+    });
+    // What the page needs for N maps and the server computes: the default palette (the colours
+    // of tops and measure without "colours") and the default colouring IFS on the unit square.
+    server_.Get("/api/defaults", [](const httplib::Request& req, httplib::Response& res) {
+      guarded(res, [&] {
+        const auto n = static_cast<std::size_t>(count_param(req, "maps", kMaxMaps));
+        json colours = json::array();
+        for (std::size_t i = 0; i < n; ++i) colours.push_back(hex_colour(palette_colour(i, n)));
+        res.set_content(
+            json{{"colours", colours}, {"colouring", maps_to_json(default_colouring(n))}}.dump(),
+            "application/json");
+      });
+    });
     server_.Get("/api/sources", [this](const httplib::Request&, httplib::Response& res) {
       guarded(res, [&] {
         json list = json::array({"sample"});
         if (extras_->source_image(StudioExtras::kSourceName))
           list.push_back(StudioExtras::kSourceName);
-        static const std::regex image(".*\\.(png|jpe?g|tiff?|exr|bmp|webp)", std::regex::icase);
-        std::vector<std::string> names;
-        for (const auto& entry : fs::directory_iterator(folder_)) {
-          const std::string name = entry.path().filename().string();
-          if (name[0] != '.' && entry.is_regular_file() && std::regex_match(name, image))
-            names.push_back(name);
-        }
-        std::sort(names.begin(), names.end());
-        for (const auto& n : names) list.push_back(n);
+        for (const auto& name : folder_sources(folder_)) list.push_back(name);
         res.set_content(list.dump(), "application/json");
+      });
+    });
+    // A source image to show beside the canvas: RGBA rows, at most kSourcePreview pixels a side,
+    // with X-Ifsfx-Size (what is sent) and X-Ifsfx-Source-Size (the file's own).
+    server_.Get("/api/source", [this](const httplib::Request& req, httplib::Response& res) {
+      guarded(res, [&] {
+        cv::Mat image;
+        try {
+          image = read_image(source_path(req.get_param_value("name"))).pixels;
+        } catch (const Error& e) {
+          // A file of the folder that is no readable image: the request's fault, not the server's.
+          if (e.kind() != ErrorKind::io) throw;
+          throw Error(ErrorKind::invalid_argument, e.what());
+        }
+        const double scale =
+            std::min(1.0, kSourcePreview / static_cast<double>(std::max(image.cols, image.rows)));
+        cv::Mat shown = image;
+        if (scale < 1)
+          cv::resize(image, shown,
+                     cv::Size(std::max(1, static_cast<int>(std::lround(image.cols * scale))),
+                              std::max(1, static_cast<int>(std::lround(image.rows * scale)))),
+                     0, 0, cv::INTER_AREA);
+        res.set_header("X-Ifsfx-Size", fmt::format("{}x{}", shown.cols, shown.rows));
+        res.set_header("X-Ifsfx-Source-Size", fmt::format("{}x{}", image.cols, image.rows));
+        res.set_content(rgba_bytes(shown), "application/octet-stream");
       });
     });
     server_.Post("/api/render", [this](const httplib::Request& req, httplib::Response& res) {
       guarded(res, [&] {
+        const auto received = std::chrono::steady_clock::now();
+        check_body_size(req);
+        const std::string client = client_of(req);
         const StudioRender render = studio_render_from_json(
             json::parse(req.body), [this](const std::string& n) { return source_path(n); });
-        // A newer request cancels the one in flight (its render throws Error{interrupted}).
-        auto flag = std::make_shared<std::atomic<bool>>(false);
-        {
-          std::lock_guard lock(mutex_);
-          if (current_) current_->store(true);
-          current_ = flag;
+        // A newer request of the same tab cancels this one (its render throws
+        // Error{interrupted}: 409).
+        const auto flag = start_render(client);
+        std::optional<StudioPicture> picture;
+        try {
+          picture = render_picture(render, CancelToken(flag.get()), scratch_);
+        } catch (...) {
+          finish_render(client, flag);
+          throw;
         }
-        const auto start = std::chrono::steady_clock::now();
-        const StudioPicture picture = render_png(render, CancelToken(flag.get()), scratch_);
-        const double ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count();
-        {
-          std::lock_guard lock(mutex_);
-          if (current_ == flag) current_.reset();
-        }
-        res.set_header("X-Ifsfx-Render-Ms", fmt::format("{:.1f}", ms));
-        const Box& v = picture.view;
+        finish_render(client, flag);
+        const Box& v = picture->view;
         res.set_header("X-Ifsfx-View", fmt::format("{},{},{},{}", v.x0, v.y0, v.x1, v.y1));
-        res.set_content(picture.png, "image/png");
+        res.set_header("X-Ifsfx-Size", fmt::format("{}x{}", render.size.width, render.size.height));
+        res.set_header("X-Ifsfx-Render-Ms", fmt::format("{:.1f}", picture->render_ms));
+        res.set_header("X-Ifsfx-Encode-Ms", fmt::format("{:.1f}", picture->encode_ms));
+        res.set_header("X-Ifsfx-Request-Ms",
+                       fmt::format("{:.1f}", std::chrono::duration<double, std::milli>(
+                                                 std::chrono::steady_clock::now() - received)
+                                                 .count()));
+        if (render.colouring)
+          res.set_header("X-Ifsfx-Colouring", maps_to_json(*render.colouring).dump());
+        res.set_content(std::move(picture->bytes), render.format == PictureFormat::png
+                                                       ? "image/png"
+                                                       : "application/octet-stream");
       });
     });
-    // Saves the request's preset as TOML in --folder under the output policy.
+    // Saves the request's preset as TOML in --folder under the output policy, and its colouring
+    // (when the request has one) as NAME.colouring.toml beside it, both or neither.
     server_.Post("/api/save", [this](const httplib::Request& req, httplib::Response& res) {
       guarded(res, [&] {
+        check_body_size(req);
         const json body = json::parse(req.body);
         const IfsPreset preset = preset_from_json(body);
         std::string name = body.value("file", "");
         if (name.size() < 6 || name.substr(name.size() - 5) != ".toml")
           throw Error(ErrorKind::invalid_argument,
                       fmt::format("file: a name ending in .toml (got '{}')", name));
-        write_file(folder_file(name, false), preset.text, {.inputs = inputs_});
-        res.set_content(json{{"saved", name}}.dump(), "application/json");
+        const OutputOptions policy{.inputs = inputs()};
+        std::vector<OutputFile> files;
+        files.emplace_back(folder_file(folder_, name, false), policy);
+        write_file(files.back(), preset.text);
+        json answer{{"saved", name}};
+        const std::string cname = colouring_file_name(name);
+        if (const auto g = colouring_preset(body, fs::path(cname).stem().stem().string())) {
+          colouring_from_json(body, preset.ifs);  // the count and the fit checked as a render would
+          files.emplace_back(folder_file(folder_, cname, false), policy);
+          write_file(files.back(), g->text);
+          answer["colouring"] = cname;
+        }
+        commit_together(files);
+        res.set_content(answer.dump(), "application/json");
       });
     });
-    // ---- render jobs, fit, video, camera, superIFS (apps/studio_routes.h) ----
+    // An image dropped on the page (the body's bytes), saved in --folder as ?name=, or under a
+    // free name beside it: answers {"saved": NAME}.
+    server_.Post("/api/upload", [this](const httplib::Request& req, httplib::Response& res) {
+      guarded(res, [&] {
+        std::lock_guard lock(upload_mutex_);  // one at a time: the free name stays free
+        const std::string saved =
+            save_upload(folder_, req.get_param_value("name"), req.body, scratch_);
+        res.set_content(json{{"saved", saved}}.dump(), "application/json");
+      });
+    });
+
+    // ---- End of the editor's routes. ----
+
+    // ---- Render jobs, fit, video, camera, superIFS (apps/studio_routes.h). ----
     extras_->add_routes(server_);
+  }
+
+  // NAME.colouring.toml beside a folder preset NAME.toml, as the preset's "colouring" when it has
+  // as many maps (an input then, as the preset); a warning in the preset otherwise.
+  void attach_colouring(json& body, const std::string& file, const Ifs& F) {
+    const std::string cname = colouring_file_name(file);
+    std::error_code ec;
+    if (!fs::exists(folder_ / cname, ec)) return;
+    try {
+      const IfsPreset g =
+          load_ifs(folder_file(folder_, cname, true).string(), {.allow_expansive = true});
+      if (g.ifs.size() != F.size())
+        throw Error(ErrorKind::invalid_ifs, fmt::format("{}: one map per map of {} (got {} for {})",
+                                                        cname, file, g.ifs.size(), F.size()));
+      body["colouring"] = maps_to_json(g.ifs);
+      body["origin_colouring"] = cname;
+    } catch (const Error& e) {
+      body["warnings"].push_back(fmt::format("colouring not used: {}", e.what()));
+    }
   }
 
   static void open_browser(const std::string& url) {
@@ -360,13 +527,14 @@ class Studio {
   fs::path web_, folder_, scratch_;
   std::string token_;
   IfsPreset initial_;
-  InputFiles inputs_;
   httplib::Server server_;
   int port_ = 0;
   std::atomic<bool> done_{false};
-  std::mutex mutex_;
-  std::shared_ptr<std::atomic<bool>> current_;  // the stop flag of the render in flight
-  std::unique_ptr<StudioExtras> extras_;        // jobs, fit, video, camera, superIFS
+  std::mutex mutex_;   // guards inputs_ and in_flight_
+  InputFiles inputs_;  // the files read: the presets opened (never saved over)
+  std::map<std::string, std::shared_ptr<std::atomic<bool>>> in_flight_;  // stop flags by tab
+  std::mutex upload_mutex_;
+  std::unique_ptr<StudioExtras> extras_;  // jobs, fit, video, camera, superIFS
 };
 
 }  // namespace
@@ -387,10 +555,10 @@ void add_studio_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--open", args->open, "Open the page in the browser (xdg-open)");
   cmd->add_option("--source", args->source,
-                  "A movie to open in the video panel, or an image to steal colours from (any "
+                  "A movie to open in the Video panel, or an image to steal colours from (any "
                   "folder; the page calls it @source)");
   cmd->add_option("--camera", args->camera,
-                  "A V4L2 camera (/dev/videoN) for the live filter in the page");
+                  "A V4L2 camera (/dev/videoN) for the live filter in the Video panel");
   cmd->callback([args] {
     StopSignals signals;
     Studio studio(*args);

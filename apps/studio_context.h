@@ -35,18 +35,20 @@ class ScratchFile {
 
 class StudioContext {
  public:
-  StudioContext(const StudioFolder& folder, std::filesystem::path scratch, InputFiles inputs,
+  StudioContext(std::filesystem::path folder, std::filesystem::path scratch,
+                std::function<InputFiles()> inputs,
                 std::function<std::filesystem::path(const std::string&)> source_path,
                 std::function<std::filesystem::path(const std::string&)> movie_path)
-      : folder_(folder),
+      : folder_(std::move(folder)),
         scratch_(std::move(scratch)),
         inputs_(std::move(inputs)),
         source_path_(std::move(source_path)),
         movie_path_(std::move(movie_path)) {}
 
-  const StudioFolder& folder() const { return folder_; }
-  // The studio's own inputs (the preset and --source of the command line).
-  const InputFiles& inputs() const { return inputs_; }
+  // --folder, canonical: its files by folder_file(folder(), NAME, ...) (apps/studio_folder.h).
+  const std::filesystem::path& folder() const { return folder_; }
+  // The files no output may replace: the presets the studio opened, --source.
+  InputFiles inputs() const { return inputs_(); }
   // A steal source ("sample", "@source" or a file of the folder) as a readable file; throws
   // Error{invalid_argument} or Error{not_found} naming it.
   std::filesystem::path source_path(const std::string& name) const { return source_path_(name); }
@@ -59,9 +61,9 @@ class StudioContext {
   }
 
  private:
-  const StudioFolder& folder_;
+  std::filesystem::path folder_;
   std::filesystem::path scratch_;
-  InputFiles inputs_;
+  std::function<InputFiles()> inputs_;
   std::function<std::filesystem::path(const std::string&)> source_path_, movie_path_;
   std::atomic<long> next_{1};
 };

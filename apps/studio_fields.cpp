@@ -84,13 +84,4 @@ std::string choice_field(const json& body, const char* field, const std::string&
   return value;
 }
 
-std::string client_field(const json& body) {
-  const std::string id = text_field(body, "client", "");
-  const bool plain = id.size() <= 64 && std::all_of(id.begin(), id.end(), [](char c) {
-                       return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_';
-                     });
-  if (!plain) bad("client", "letters, digits, - and _, at most 64", json(id));
-  return id;
-}
-
 }  // namespace ifsfx::app

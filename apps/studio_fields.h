@@ -26,8 +26,4 @@ bool bool_field(const nlohmann::json& body, const char* field, bool fallback);
 std::string choice_field(const nlohmann::json& body, const char* field, const std::string& fallback,
                          const std::vector<std::string>& choices);
 
-// The page's tab ("client": letters, digits, '-' and '_', at most 64), so that a newer request
-// of a tab supersedes its older ones only; "" when not given.
-std::string client_field(const nlohmann::json& body);
-
 }  // namespace ifsfx::app

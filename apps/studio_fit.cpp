@@ -120,9 +120,9 @@ int submit_upload_fit(JobQueue& jobs, const std::string& bytes,
   if (bytes.empty()) throw Error(ErrorKind::invalid_argument, "upload: an image (got no bytes)");
   const std::string ext = image_extension(bytes);
   if (ext.empty())
-    throw HttpError(415, fmt::format("upload: a PNG, JPEG, TIFF, BMP, GIF or WebP image (got {} "
-                                     "bytes of something else)",
-                                     bytes.size()));
+    throw RequestError(415, fmt::format("upload: a PNG, JPEG, TIFF, BMP, GIF or WebP image (got {} "
+                                        "bytes of something else)",
+                                        bytes.size()));
   // The query's strings as JSON numbers and booleans, read by the same rules as a JSON body.
   json body = json::object();
   for (const auto& [key, value] : settings) {
@@ -143,7 +143,11 @@ int submit_upload_fit(JobQueue& jobs, const std::string& bytes,
   FitRequest request;
   read_settings(body, request);
   request.name = text_field(body, "name", "shape");
-  if (!StudioFolder::plain_name(request.name)) request.name = "shape";
+  try {
+    folder_file(context.folder(), request.name, false);  // a plain name, as a folder's file
+  } catch (const Error&) {
+    request.name = "shape";
+  }
   request.upload = std::make_shared<ScratchFile>(context.scratch_name(ext));
   write_file(request.upload->path(), bytes);
   request.args.target = request.upload->path().string();
@@ -155,7 +159,7 @@ int submit_folder_fit(JobQueue& jobs, const json& body, StudioContext& context) 
   read_settings(body, request);
   request.source = required_text(body, "file");
   request.name = request.source;
-  request.args.target = context.folder().file(request.source, true).string();
+  request.args.target = folder_file(context.folder(), request.source, true).string();
   return submit(jobs, std::move(request));
 }
 

@@ -15,15 +15,12 @@
 
 namespace ifsfx::app {
 
-// The most an uploaded shape may weigh.
-inline constexpr std::size_t kMaxUpload = 16 << 20;
-
 // Starts a fit of an uploaded image: `bytes` is the file (PNG, JPEG, TIFF, BMP, GIF or WebP, told
 // by its first bytes), `settings` the request's query: maps (1..32, default 4), seconds (the time
 // budget, 0..600, default 5; 0: none), evaluations (default 250000), size (the working raster,
 // 16..512, default 128), seed, init (search, moments), threshold (0..1) and invert, and name
 // (the shape's file name, default "shape"), as `ifsfx fit` takes them.
-// Returns the job's number. Throws HttpError 415 for bytes that are no image of those kinds,
+// Returns the job's number. Throws RequestError 415 for bytes that are no image of those kinds,
 // Error{parse} or Error{invalid_argument} for a bad setting.
 int submit_upload_fit(JobQueue& jobs, const std::string& bytes,
                       const std::multimap<std::string, std::string>& settings,

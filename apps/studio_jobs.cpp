@@ -86,7 +86,7 @@ JobQueue::~JobQueue() {
 
 int JobQueue::submit(JobSpec spec, std::function<void(JobContext&)> work) {
   std::lock_guard lock(mutex_);
-  if (stopping_) throw HttpError(503, "jobs: the server is stopping");
+  if (stopping_) throw RequestError(503, "jobs: the server is stopping");
   std::size_t count = 0;
   for (const auto& job : jobs_) {
     if (!pending(*job)) continue;
@@ -94,13 +94,13 @@ int JobQueue::submit(JobSpec spec, std::function<void(JobContext&)> work) {
     std::string file;
     if (shares(spec.writes, job->spec.writes, file) || shares(spec.writes, job->spec.reads, file) ||
         shares(spec.reads, job->spec.writes, file))
-      throw HttpError(409, fmt::format("{}: in use by job {} ({}, {}); wait for it or cancel it",
-                                       std::filesystem::path(file).filename().string(), job->id,
-                                       job->spec.kind, to_string(job->state)));
+      throw RequestError(409, fmt::format("{}: in use by job {} ({}, {}); wait for it or cancel it",
+                                          std::filesystem::path(file).filename().string(), job->id,
+                                          job->spec.kind, to_string(job->state)));
   }
   if (count >= kMaxPending)
-    throw HttpError(429, fmt::format("jobs: at most {} at once (got {} queued or running)",
-                                     kMaxPending, count));
+    throw RequestError(429, fmt::format("jobs: at most {} at once (got {} queued or running)",
+                                        kMaxPending, count));
   auto job = std::make_shared<Job>();
   job->id = next_id_++;
   job->spec = std::move(spec);

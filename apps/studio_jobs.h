@@ -93,7 +93,7 @@ class JobQueue {
   JobQueue(const JobQueue&) = delete;
   JobQueue& operator=(const JobQueue&) = delete;
 
-  // Queues a job and returns its number. Throws HttpError 409 naming the file when it would
+  // Queues a job and returns its number. Throws RequestError 409 naming the file when it would
   // write a file a pending job reads or writes, or read one a pending job writes, and 429 when
   // kMaxPending jobs are pending.
   int submit(JobSpec spec, std::function<void(JobContext&)> work);

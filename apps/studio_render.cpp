@@ -2,20 +2,23 @@
 #include "apps/studio_render.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <vector>
 
 #include <fmt/format.h>
+#include <opencv2/imgproc.hpp>
 
 #include "apps/cli_options.h"
 #include "apps/render_metadata.h"
-#include "apps/render_picture.h"
 #include "apps/steal_modes.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
+#include "ifs/parallel.h"
+#include "ifs/steal_map.h"
 
 namespace ifsfx::app {
 namespace {
@@ -37,13 +40,6 @@ std::string text(const json& body, const char* field, const std::string& fallbac
   const json& value = body[field];
   if (!value.is_string()) bad_field(field, "must be a string", value.dump());
   return value.get<std::string>();
-}
-
-std::string hex_colour(const Rgb& c) {
-  const auto byte = [](double v) {
-    return static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
-  };
-  return fmt::format("#{:02x}{:02x}{:02x}", byte(c.r), byte(c.g), byte(c.b));
 }
 
 }  // namespace
@@ -79,23 +75,66 @@ IfsPreset preset_from_json(const json& body) {
       ifs.colours.push_back(colour_option(v.get<std::string>(), "colours"));
     }
   }
-  // Through the TOML text, as `ifsfx render` reads a saved preset: the same Ifs, the same text.
-  IfsPreset preset = parse_ifs_toml(to_toml(ifs, description), ifs.name + ".toml");
-  const bool allow_expansive = body.value("allow_expansive", false);
+  bool allow_expansive = false;
+  if (body.contains("allow_expansive")) {
+    if (!body["allow_expansive"].is_boolean())
+      bad_field("allow_expansive", "must be true or false", body["allow_expansive"].dump());
+    allow_expansive = body["allow_expansive"].get<bool>();
+  }
+  // Through the TOML text, as `ifsfx render` reads a saved preset: the same Ifs, the same text
+  // (with the key that lets the saved file load when its maps contract only on average).
+  std::string text = to_toml(ifs, description);
+  if (allow_expansive) text += "allow_expansive = true\n";
+  IfsPreset preset = parse_ifs_toml(text, ifs.name + ".toml");
   validate(preset.ifs, preset.ifs.name, {.allow_expansive = allow_expansive});
   return preset;
 }
 
-json preset_to_json(const IfsPreset& preset) {
+std::string hex_colour(const Rgb& c) {
+  const auto byte = [](double v) {
+    return static_cast<int>(std::lround(std::clamp(v, 0.0, 1.0) * 255));
+  };
+  return fmt::format("#{:02x}{:02x}{:02x}", byte(c.r), byte(c.g), byte(c.b));
+}
+
+json maps_to_json(const Ifs& ifs) {
   json maps = json::array();
-  for (const auto& m : preset.ifs.maps) maps.push_back({m.a, m.b, m.c, m.d, m.e, m.f});
+  for (const auto& m : ifs.maps) maps.push_back({m.a, m.b, m.c, m.d, m.e, m.f});
+  return maps;
+}
+
+json preset_to_json(const IfsPreset& preset) {
+  const json maps = maps_to_json(preset.ifs);
   json colours = json::array();
   for (const auto& c : preset.ifs.colours) colours.push_back(hex_colour(c));
+  // A Fractint entry that contracts only on average is accepted with a warning (load_ifs): the
+  // page renders and saves it with allow_expansive.
   return {{"name", preset.ifs.name},
           {"description", preset.description},
           {"maps", maps},
           {"probabilities", preset.ifs.probabilities},
-          {"colours", colours}};
+          {"colours", colours},
+          {"allow_expansive", preset.allow_expansive || !preset.warnings.empty()},
+          {"warnings", preset.warnings}};
+}
+
+std::optional<IfsPreset> colouring_preset(const json& body, const std::string& name) {
+  if (!body.contains("colouring") || body["colouring"].is_null()) return std::nullopt;
+  // Colouring tilings contract only over two steps (square-tiling-2/3): load_colouring accepts
+  // them, so the TOML says so too.
+  IfsPreset g = preset_from_json(
+      json{{"name", name}, {"maps", body["colouring"]}, {"allow_expansive", true}});
+  return g;
+}
+
+std::optional<Ifs> colouring_from_json(const json& body, const Ifs& F) {
+  const auto g = colouring_preset(body, "colouring");
+  if (!g) return std::nullopt;
+  if (g->ifs.size() != F.size())
+    throw Error(ErrorKind::invalid_ifs,
+                fmt::format("colouring: one map per map of the IFS (got {} for {})", g->ifs.size(),
+                            F.size()));
+  return fit_to_unit_square(g->ifs);  // as load_colouring does with a --colouring preset
 }
 
 StudioRender studio_render_from_json(
@@ -114,56 +153,106 @@ StudioRender studio_render_from_json(
     const double seed = number(body["seed"], "seed");
     if (seed < 0 || seed != std::floor(seed) || seed > 9e15)
       bad_field("seed", "must be a whole number >= 0", body["seed"].dump());
-    r.options.seed = static_cast<std::uint64_t>(seed);
+    r.options.sampling.seed = static_cast<std::uint64_t>(seed);
   }
   if (body.contains("quality")) {
-    r.options.quality = number(body["quality"], "quality");
-    if (!(r.options.quality > 0 && r.options.quality <= kMaxQuality))
+    r.options.sampling.quality = number(body["quality"], "quality");
+    if (!(r.options.sampling.quality > 0 && r.options.sampling.quality <= kMaxQuality))
       bad_field("quality", fmt::format("must be in (0, {}]", kMaxQuality), body["quality"].dump());
   }
-  r.options.view = view_option(text(body, "view", ""), "view");
+  r.options.sampling.view = view_option(text(body, "view", ""), "view");
+  if (body.contains("threads")) {
+    // `ifsfx render --threads`: the same pixels for any count (docs/design.md §7).
+    const double threads = number(body["threads"], "threads");
+    if (threads < 0 || threads > kMaxThreads || threads != std::floor(threads))
+      bad_field("threads", fmt::format("must be 0 (all cores) to {}", kMaxThreads),
+                body["threads"].dump());
+    r.options.sampling.threads = static_cast<int>(threads);
+  }
   if (body.contains("exact")) {
     if (!body["exact"].is_boolean())
       bad_field("exact", "must be true or false", body["exact"].dump());
     r.exact = body["exact"].get<bool>();
   }
-  if (r.mode == "steal") r.source = source_path(text(body, "source", "sample"));
+  if (r.mode == "steal") {
+    r.source = source_path(text(body, "source", "sample"));
+    r.colouring = colouring_from_json(body, r.preset.ifs);
+  }
+  const std::string format = text(body, "format", "png");
+  if (format != "png" && format != "rgba") bad_field("format", "png or rgba", format);
+  r.format = format == "rgba" ? PictureFormat::rgba : PictureFormat::png;
   return r;
+}
+
+std::string rgba_bytes(const cv::Mat& image) {
+  cv::Mat pixels = image;
+  if (pixels.depth() != CV_8U)  // as write_image converts for an 8-bit file (to_file_depth)
+    image.convertTo(pixels, CV_8U, pixels.depth() == CV_16U ? 255.0 / 65535.0 : 255.0);
+  cv::Mat rgba;
+  const int code = pixels.channels() == 1   ? cv::COLOR_GRAY2RGBA
+                   : pixels.channels() == 3 ? cv::COLOR_BGR2RGBA
+                                            : cv::COLOR_BGRA2RGBA;
+  cv::cvtColor(pixels, rgba, code);
+  std::string bytes(rgba.total() * 4, '\0');
+  cv::Mat view(rgba.size(), CV_8UC4, bytes.data());
+  rgba.copyTo(view);
+  return bytes;
 }
 
 StudioImage studio_image(const StudioRender& r, CancelToken cancel,
                          const std::filesystem::path& output) {
   RenderOptions options = r.options;
-  options.cancel = cancel;
+  options.sampling.cancel = cancel;
+  const Rgb background = colour_option("black");
   RenderStats stats;
+  cv::Mat image;
   std::vector<OutputFile> staged;
-  StudioImage out;
-  out.image = render_picture(r.preset.ifs, r.size, options,
-                             {.mode = parse_render_mode(r.mode, "mode"),
-                              .steal = {.source = r.source.string(),
-                                        .exact = r.exact,
-                                        .background = colour_option("black"),
-                                        .quiet = true,
-                                        .output = {.cancel = cancel}}},
-                             output.string(), staged, &stats);
-  out.write.metadata = render_metadata(r.preset, r.mode, options.seed, stats.view);
-  out.view = stats.view;
+  if (r.mode == "attractor") {
+    image = render_attractor(r.preset.ifs, r.size, options, &stats);
+  } else if (r.mode == "measure") {
+    image = render_measure(r.preset.ifs, r.size, options, &stats);
+  } else if (r.mode == "tops") {
+    image = tops_image(r.preset.ifs, r.size, {.sampling = options.sampling, .exact = r.exact},
+                       background, output.string(), &stats);
+  } else {
+    image = steal_image(r.preset.ifs, r.size, {.sampling = options.sampling, .exact = r.exact},
+                        {.source = r.source.string(),
+                         .colouring_ifs = r.colouring,
+                         .background = background,
+                         .quiet = true,
+                         .output = {.cancel = cancel}},
+                        output.string(), staged, &stats);
+  }
+  StudioImage out{.image = std::move(image), .view = stats.view};
+  out.write.metadata = render_metadata(r.preset, r.mode, options.sampling.seed, stats.view);
   return out;
 }
 
-StudioPicture render_png(const StudioRender& r, CancelToken cancel,
-                         const std::filesystem::path& scratch) {
+StudioPicture render_picture(const StudioRender& r, CancelToken cancel,
+                             const std::filesystem::path& scratch) {
+  using Clock = std::chrono::steady_clock;
+  const auto ms_since = [](Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+  };
+  const auto start = Clock::now();
   const std::filesystem::path output = scratch / "render.png";  // the format of the picture
-  const StudioImage picture = studio_image(r, cancel, output);
-  // Written under the output policy's temporary name and read back, never committed: the
-  // destructor removes it.
-  OutputFile file(output, {.cancel = cancel});
-  write_image(file, picture.image, picture.write);
-  std::ifstream in(file.temporary(), std::ios::binary);
-  std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-  if (!in.good() && !in.eof())
-    throw Error(ErrorKind::io, fmt::format("{}: cannot read back", file.temporary().string()));
-  return {std::move(bytes), picture.view};
+  const StudioImage image = studio_image(r, cancel, output);
+  StudioPicture picture{.view = image.view, .render_ms = ms_since(start)};
+  const auto encode = Clock::now();
+  if (r.format == PictureFormat::rgba) {
+    picture.bytes = rgba_bytes(image.image);
+  } else {
+    // Written under the output policy's temporary name and read back, never committed: the
+    // destructor removes it.
+    OutputFile file(output, {.cancel = cancel});
+    write_image(file, image.image, image.write);
+    std::ifstream in(file.temporary(), std::ios::binary);
+    picture.bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (!in.good() && !in.eof())
+      throw Error(ErrorKind::io, fmt::format("{}: cannot read back", file.temporary().string()));
+  }
+  picture.encode_ms = ms_since(encode);
+  return picture;
 }
 
 }  // namespace ifsfx::app

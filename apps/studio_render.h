@@ -8,12 +8,16 @@
 //    "colours": ["#rrggbb", ...],                                                 // optional
 //    "mode": "attractor" | "measure" | "tops" | "steal", "size": "768x768",
 //    "source": "sample" | FILE,  // steal mode: the shipped sample or a file of --folder
+//    "colouring": [[a, b, c, d, e, f], ...],  // steal mode, optional: G on the source's unit
+//                                // square (default: the tiling default_colouring(N))
 //    "view": "x0,y0,x1,y1",      // optional: the plane rectangle shown (default: auto-framed)
-//    "seed": 1, "quality": 64, "exact": true}                                     // optional
+//    "seed": 1, "quality": 64, "exact": true, "threads": 0,                       // optional
+//    "format": "png" | "rgba"}   // the file's bytes (default), or raw pixels for the live view
 #pragma once
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -32,9 +36,29 @@ namespace ifsfx::app {
 // does not contract (or contract on average with "allow_expansive": true).
 IfsPreset preset_from_json(const nlohmann::json& body);
 
-// The preset as the page reads it (the fields above).
+// The maps of `ifs` as [[a, b, c, d, e, f], ...], and a colour as "#rrggbb".
+nlohmann::json maps_to_json(const Ifs& ifs);
+std::string hex_colour(const Rgb& colour);
+
+// The preset as the page reads it (the fields above, "allow_expansive" and "warnings").
 nlohmann::json preset_to_json(const IfsPreset& preset);
 
+// The colouring IFS G of a request's "colouring" (null when absent or null): its maps, one per
+// map of `F`, on the source's unit square, validated and fitted to the unit square as
+// load_colouring fits a `--colouring` preset, so that the render is `ifsfx render --mode steal
+// --colouring SAVED` of the same maps saved as TOML (colouring_preset). Throws Error{parse} for a
+// badly shaped field and Error{invalid_ifs} for the wrong count or an IFS that does not contract
+// on average.
+std::optional<Ifs> colouring_from_json(const nlohmann::json& body, const Ifs& F);
+
+// The colouring of a request as a preset of its own (the TOML that save writes beside the
+// preset), named `name`; nullopt without one.
+std::optional<IfsPreset> colouring_preset(const nlohmann::json& body, const std::string& name);
+
+// How a picture travels: the PNG file `ifsfx render` writes, byte for byte, or its pixels as
+// 8-bit RGBA rows top to bottom (straight alpha; converted as the PNG writer converts), which the
+// page draws without decoding a file: the live view during a drag.
+enum class PictureFormat { png, rgba };
 // Everything one render needs, in the library's terms.
 struct StudioRender {
   IfsPreset preset;
@@ -43,10 +67,11 @@ struct StudioRender {
   RenderOptions options;         // `ifsfx render`'s defaults but for what the request sets
   bool exact = true;             // tops/steal: exact descent (--exact) or the chaos game (--chaos)
   std::filesystem::path source;  // steal mode: the source image
+  std::optional<Ifs> colouring;  // steal mode: G fitted to the unit square; none: the default
+  PictureFormat format = PictureFormat::png;
 };
 
-// The one place where the page's settings become library options (the sampling options may be
-// merged into one struct later: only this function changes). `source_path` turns the request's
+// The one place where the page's settings become library options. `source_path` turns the request's
 // "source" into a readable file or throws Error{invalid_argument}. Throws Error{parse} or
 // Error{invalid_argument} for a bad field, naming it.
 StudioRender studio_render_from_json(
@@ -65,14 +90,21 @@ StudioImage studio_image(const StudioRender& render, CancelToken cancel,
                          const std::filesystem::path& output);
 
 struct StudioPicture {
-  std::string png;  // the file's bytes
-  Box view;         // the plane rectangle shown
+  std::string bytes;     // the PNG file, or the RGBA rows
+  Box view;              // the plane rectangle shown
+  double render_ms = 0;  // the library's render
+  double encode_ms = 0;  // the PNG (through a temporary file) or the RGBA conversion
 };
 
-// The PNG bytes of `ifsfx render PRESET --mode MODE --size WxH --seed S --quality Q [--view V]`
-// (the steal mode with --source), written through a temporary file in `scratch` that is removed
-// before returning. Throws Error{interrupted} when `cancel` asks to stop, and what render throws.
-StudioPicture render_png(const StudioRender& render, CancelToken cancel,
-                         const std::filesystem::path& scratch);
+// The picture of `ifsfx render PRESET --mode MODE --size WxH --seed S --quality Q [--view V]`
+// (the steal mode with --source and --colouring): as PNG, the file's bytes, written through a
+// temporary file in `scratch` that is removed before returning; as RGBA, its pixels. Throws
+// Error{interrupted} when `cancel` asks to stop, and what render throws.
+StudioPicture render_picture(const StudioRender& render, CancelToken cancel,
+                             const std::filesystem::path& scratch);
+
+// An image as 8-bit RGBA rows (grey, BGR or BGRA of any depth the library uses; converted to 8
+// bits as write_image converts for an 8-bit PNG).
+std::string rgba_bytes(const cv::Mat& image);
 
 }  // namespace ifsfx::app

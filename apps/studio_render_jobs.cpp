@@ -36,7 +36,7 @@ fs::path output_name(const json& body, const StudioContext& context,
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("file: a name ending in {} (got '{}')", list, name));
   }
-  return context.folder().file(name, false);
+  return folder_file(context.folder(), name, false);
 }
 
 int submit_still(JobQueue& jobs, const json& body, StudioContext& context) {
@@ -72,13 +72,16 @@ int submit_filter(JobQueue& jobs, const json& body, StudioContext& context) {
   args.input = context.movie_path(movie).string();
   args.output = output_name(body, context, {".mp4", ".mkv", ".mov", ".avi", ".webm"}).string();
   args.quiet = true;
-  args.fractal.exact = bool_field(body, "exact", true);
+  args.fractal.engine.exact = bool_field(body, "exact", true);
   args.fractal.view = text_field(body, "view", "");
-  args.fractal.mix = number_field(body, "mix", 0, 0, 1);
+  args.fractal.engine.mix = number_field(body, "mix", 0, 0, 1);
   args.fractal.background = text_field(body, "background", "black");
-  args.fractal.drift_amount = number_field(body, "drift_amount", 0.05, 0, video::kMaxDriftAmount);
-  args.fractal.drift_speed = number_field(body, "drift_speed", 0.2, 0, video::kMaxDriftSpeed);
-  args.fractal.seed = static_cast<std::uint64_t>(integer_field(body, "seed", 1, 0, 1LL << 53));
+  args.fractal.engine.drift_amount =
+      number_field(body, "drift_amount", 0.05, 0, video::kMaxDriftAmount);
+  args.fractal.engine.drift_speed =
+      number_field(body, "drift_speed", 0.2, 0, video::kMaxDriftSpeed);
+  args.fractal.engine.sampling.seed =
+      static_cast<std::uint64_t>(integer_field(body, "seed", 1, 0, 1LL << 53));
   args.animate = choice_field(body, "animate", "none", {"none", "drift"}) == "drift"
                      ? video::Animate::drift
                      : video::Animate::none;
@@ -94,7 +97,7 @@ int submit_filter(JobQueue& jobs, const json& body, StudioContext& context) {
   // The engine reads the preset from a file, as `ifsfx filter --preset FILE` does.
   auto preset_file = std::make_shared<ScratchFile>(context.scratch_name(".toml"));
   write_file(preset_file->path(), preset.text);
-  args.fractal.preset = preset_file->path().string();
+  args.fractal.engine.preset = preset_file->path().string();
   const std::string name = fs::path(args.output).filename().string();
   JobSpec spec{.kind = "filter", .title = name, .writes = {args.output}, .reads = {args.input}};
   return jobs.submit(std::move(spec), [args, policy, preset_file, name](JobContext& job) {

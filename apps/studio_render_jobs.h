@@ -24,7 +24,7 @@ namespace ifsfx::app {
 //              and `ifsfx texture`'s "V", "mode", "size", "frames", "crossfade", "seed",
 //              "steps", "buffer", "source" (steal mode).
 // Bad requests throw before anything is queued: Error{parse} or Error{invalid_argument} naming
-// the field, what check_output throws for an output that is an input, HttpError 409 for a file
+// the field, what check_output throws for an output that is an input, RequestError 409 for a file
 // another job uses.
 int submit_render_job(JobQueue& jobs, const nlohmann::json& body, StudioContext& context);
 

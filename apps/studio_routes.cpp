@@ -26,15 +26,6 @@ namespace {
 const std::vector<std::string> kMovieExtensions{".mp4", ".mkv", ".mov",  ".avi", ".webm",
                                                 ".m4v", ".mpg", ".mpeg", ".ogv", ".wmv"};
 
-std::string read_whole(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-json parse_body(const httplib::Request& req) {
-  return json::parse(req.body);
-}
-
 int job_number(const httplib::Request& req) {
   const std::string digits = req.matches[1].str();
   if (digits.size() > 9)
@@ -80,7 +71,6 @@ StudioExtras::StudioExtras(StudioExtrasConfig config)
     if (ec || !fs::is_regular_file(source_))
       throw Error(ErrorKind::not_found, fmt::format("--source {}: no such file", config_.source));
     source_is_movie_ = is_movie_name(source_);
-    config_.inputs.add(source_);
   }
   if (!config_.camera.empty()) {
     struct stat st {};
@@ -90,17 +80,19 @@ StudioExtras::StudioExtras(StudioExtrasConfig config)
                               config_.camera));
     camera_ = std::make_unique<CameraFeed>(config_.camera);
   }
-  context_ =
-      std::make_unique<StudioContext>(folder_, config_.scratch, config_.inputs, config_.source_path,
-                                      [this](const std::string& name) { return movie_path(name); });
+  context_ = std::make_unique<StudioContext>(
+      folder_, config_.scratch, [this] { return inputs(); }, config_.source_path,
+      [this](const std::string& name) { return movie_path(name); });
 }
 
 StudioExtras::~StudioExtras() {
   stop();
 }
 
-bool StudioExtras::takes_upload(const std::string& path) {
-  return path == "/api/fit";
+InputFiles StudioExtras::inputs() const {
+  InputFiles files = config_.inputs ? config_.inputs() : InputFiles{};
+  if (!source_.empty()) files.add(source_);
+  return files;
 }
 
 std::optional<fs::path> StudioExtras::source_image(const std::string& name) const {
@@ -110,7 +102,7 @@ std::optional<fs::path> StudioExtras::source_image(const std::string& name) cons
 
 fs::path StudioExtras::movie_path(const std::string& name) const {
   if (name == kSourceName && !source_.empty() && source_is_movie_) return source_;
-  const fs::path path = folder_.file(name, true);
+  const fs::path path = folder_file(folder_, name, true);
   if (!is_movie_name(path))
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("movie: a movie file ({}) of --folder (got '{}')",
@@ -132,20 +124,10 @@ json StudioExtras::session() const {
               {"kind", source_is_movie_ ? "movie" : "image"}};
   return {{"source", source},
           {"camera", camera_ ? json(camera_->device()) : json(nullptr)},
-          {"upload_limit", kMaxUpload}};
+          {"upload_limit", kMaxUploadBytes}};
 }
 
 void StudioExtras::add_routes(httplib::Server& server) {
-  // The page's modules (apps/studio/web).
-  for (const char* name : {"api.js", "jobs.js", "fit.js", "video.js", "superifs.js"})
-    server.Get(std::string("/") + name,
-               [this, name](const httplib::Request&, httplib::Response& res) {
-                 res.set_content(read_whole(config_.web / name), "text/javascript");
-               });
-  server.Get("/extras.css", [this](const httplib::Request&, httplib::Response& res) {
-    res.set_content(read_whole(config_.web / "extras.css"), "text/css");
-  });
-
   server.Get("/api/session", [this](const httplib::Request&, httplib::Response& res) {
     guarded(res, [&] { send_json(res, session()); });
   });
@@ -154,7 +136,7 @@ void StudioExtras::add_routes(httplib::Server& server) {
   server.Get("/api/file", [this](const httplib::Request& req, httplib::Response& res) {
     guarded(res, [&] {
       const std::string name = req.get_param_value("name");
-      const fs::path path = folder_.file(name, true);
+      const fs::path path = folder_file(folder_, name, true);
       const auto [type, shown] = file_type(path);
       const auto size = static_cast<std::size_t>(fs::file_size(path));
       // Never a page of this origin: no script, no plugin, whatever the file holds.
@@ -184,7 +166,7 @@ void StudioExtras::add_routes(httplib::Server& server) {
   });
   server.Post("/api/jobs", [this](const httplib::Request& req, httplib::Response& res) {
     guarded(res, [&] {
-      const int id = submit_render_job(jobs_, parse_body(req), *context_);
+      const int id = submit_render_job(jobs_, json_body(req), *context_);
       send_json(res, jobs_.get(id), 202);
     });
   });
@@ -213,9 +195,9 @@ void StudioExtras::add_routes(httplib::Server& server) {
   // ---- fit: an uploaded shape (the body) or an image of the folder (JSON) ----
   server.Post("/api/fit", [this](const httplib::Request& req, httplib::Response& res) {
     guarded(res, [&] {
-      const bool json_body = req.get_header_value("Content-Type").rfind("application/json", 0) == 0;
-      const int id = json_body ? submit_folder_fit(jobs_, parse_body(req), *context_)
-                               : submit_upload_fit(jobs_, req.body, req.params, *context_);
+      const bool is_json = req.get_header_value("Content-Type").rfind("application/json", 0) == 0;
+      const int id = is_json ? submit_folder_fit(jobs_, json_body(req), *context_)
+                             : submit_upload_fit(jobs_, req.body, req.params, *context_);
       send_json(res, jobs_.get(id), 202);
     });
   });
@@ -225,7 +207,7 @@ void StudioExtras::add_routes(httplib::Server& server) {
     guarded(res, [&] {
       json list = json::array();
       if (!source_.empty() && source_is_movie_) list.push_back(kSourceName);
-      for (const auto& name : folder_.list(kMovieExtensions)) list.push_back(name);
+      for (const auto& name : folder_files(folder_, kMovieExtensions)) list.push_back(name);
       send_json(res, list);
     });
   });
@@ -237,10 +219,10 @@ void StudioExtras::add_routes(httplib::Server& server) {
   });
   server.Post("/api/video/frame", [this](const httplib::Request& req, httplib::Response& res) {
     guarded(res, [&] {
-      const json body = parse_body(req);
+      const json body = json_body(req);
       const fs::path movie = movie_path(required_text(body, "movie"));
       const std::int64_t index = integer_field(body, "frame", 0, 0, 1LL << 40);
-      const std::string client = client_field(body);
+      const std::string client = client_of(req);
       double fps = 25;
       const cv::Mat frame = movies_.frame(client, movie, index, fps);
       res.set_header("X-Ifsfx-Frame", std::to_string(index));
@@ -253,8 +235,8 @@ void StudioExtras::add_routes(httplib::Server& server) {
       if (!camera_)
         throw Error(ErrorKind::not_found,
                     "camera: none (start the studio with --camera /dev/videoN)");
-      const json body = parse_body(req);
-      const std::string client = client_field(body);
+      const json body = json_body(req);
+      const std::string client = client_of(req);
       double seconds = 0;
       const cv::Mat frame = camera_->frame(seconds);
       res.set_header("X-Ifsfx-Seconds", fmt::format("{:.3f}", seconds));
@@ -277,7 +259,7 @@ void StudioExtras::add_routes(httplib::Server& server) {
         shipped.push_back(
             {{"name", s.name}, {"ifs", s.ifs}, {"maps", s.maps}, {"description", s.description}});
       json files = json::array();
-      for (const auto& name : folder_.list({".toml"}))
+      for (const auto& name : folder_files(folder_, {".toml"}))
         if (name.ends_with(superifs_extension)) files.push_back(name);
       send_json(res, {{"shipped", shipped}, {"files", files}});
     });
@@ -286,7 +268,7 @@ void StudioExtras::add_routes(httplib::Server& server) {
     guarded(res, [&] {
       if (req.has_param("file")) {
         send_json(res, superifs_to_json(load_superifs(
-                           folder_.file(req.get_param_value("file"), true).string())));
+                           folder_file(folder_, req.get_param_value("file"), true).string())));
         return;
       }
       const std::string name = req.get_param_value("name");
@@ -300,7 +282,7 @@ void StudioExtras::add_routes(httplib::Server& server) {
   });
   server.Post("/api/superifs/save", [this](const httplib::Request& req, httplib::Response& res) {
     guarded(res, [&] {
-      const json body = parse_body(req);
+      const json body = json_body(req);
       if (!body.is_object() || !body.contains("superifs"))
         throw Error(ErrorKind::parse, "superifs: must be given (got nothing)");
       const SuperIfsPreset preset = superifs_from_json(body["superifs"]);
@@ -308,13 +290,14 @@ void StudioExtras::add_routes(httplib::Server& server) {
       if (!name.ends_with(superifs_extension))
         throw Error(ErrorKind::invalid_argument,
                     fmt::format("file: a name ending in {} (got '{}')", superifs_extension, name));
-      write_file(folder_.file(name, false), preset.text, {.inputs = config_.inputs});
+      write_file(folder_file(folder_, name, false), preset.text, {.inputs = inputs()});
       send_json(res, {{"saved", name}});
     });
   });
   server.Post("/api/texture/frame", [this](const httplib::Request& req, httplib::Response& res) {
-    guarded(res,
-            [&] { res.set_content(textures_.frame_png(parse_body(req), *context_), "image/png"); });
+    guarded(res, [&] {
+      res.set_content(textures_.frame_png(json_body(req), client_of(req), *context_), "image/png");
+    });
   });
 }
 

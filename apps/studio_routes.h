@@ -6,6 +6,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,12 +23,12 @@
 namespace ifsfx::app {
 
 struct StudioExtrasConfig {
-  std::filesystem::path folder;   // --folder
-  std::filesystem::path scratch;  // the studio's private temporary folder
-  std::filesystem::path web;      // the page's files
-  InputFiles inputs;              // files no output may replace
-  std::string source;             // --source IMAGE|MOVIE, or ""
-  std::string camera;             // --camera /dev/videoN, or ""
+  std::filesystem::path folder;        // --folder
+  std::filesystem::path scratch;       // the studio's private temporary folder
+  std::filesystem::path web;           // the page's files
+  std::function<InputFiles()> inputs;  // files no output may replace (the presets opened)
+  std::string source;                  // --source IMAGE|MOVIE, or ""
+  std::string camera;                  // --camera /dev/videoN, or ""
   // Steal sources by the page's name ("sample", a file of the folder, "@source").
   std::function<std::filesystem::path(const std::string&)> source_path;
 };
@@ -43,9 +44,6 @@ class StudioExtras {
 
   void add_routes(httplib::Server& server);
 
-  // Whether requests to `path` may carry a body above the studio's 1 MiB (uploads, kMaxUpload).
-  static bool takes_upload(const std::string& path);
-
   // --source when it is an image and `name` is kSourceName.
   std::optional<std::filesystem::path> source_image(const std::string& name) const;
 
@@ -55,10 +53,11 @@ class StudioExtras {
 
  private:
   std::filesystem::path movie_path(const std::string& name) const;
+  InputFiles inputs() const;  // the studio's and --source
   nlohmann::json session() const;
 
   StudioExtrasConfig config_;
-  StudioFolder folder_;
+  std::filesystem::path folder_;  // canonical
   std::filesystem::path source_;  // canonical, or empty
   bool source_is_movie_ = false;
   std::unique_ptr<StudioContext> context_;

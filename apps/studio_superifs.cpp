@@ -111,7 +111,8 @@ json superifs_to_json(const SuperIfsPreset& preset) {
           {"colouring", colouring}};
 }
 
-std::string TexturePreviews::frame_png(const json& body, StudioContext& context) {
+std::string TexturePreviews::frame_png(const json& body, const std::string& client,
+                                       StudioContext& context) {
   if (!body.is_object()) bad("request", "must be a JSON object", body);
   if (!body.contains("superifs")) bad("superifs", "must be given", json("nothing"));
   const SuperIfsPreset preset = superifs_from_json(body["superifs"]);
@@ -128,7 +129,6 @@ std::string TexturePreviews::frame_png(const json& body, StudioContext& context)
   const auto seed = static_cast<std::uint64_t>(integer_field(body, "seed", 1, 0, 1LL << 53));
   const std::string source = mode_text == "steal" ? text_field(body, "source", "sample") : "";
   const std::filesystem::path source_path = source.empty() ? "" : context.source_path(source);
-  const std::string client = client_field(body);
   const std::string key =
       json{preset.text, V, buffer, mode_text, size_text, seed, source_path.string()}.dump();
 
@@ -160,8 +160,8 @@ std::string TexturePreviews::frame_png(const json& body, StudioContext& context)
       options.count = V;
       options.buffer = buffer - 1;
       options.mode = parse_texture_mode(mode_text, "mode");
-      options.seed = seed;
-      options.cancel = CancelToken(&entry->stop);
+      options.sampling.seed = seed;
+      options.sampling.cancel = CancelToken(&entry->stop);
       if (!source_path.empty()) options.source = read_image(source_path).pixels;
       entry->sequence = std::make_unique<TextureSequence>(preset.super, size, options);
     }

@@ -35,12 +35,13 @@ nlohmann::json superifs_to_json(const SuperIfsPreset& preset);
 // other settings replaces it and stops a burn-in still running for the old ones (409).
 class TexturePreviews {
  public:
-  // The PNG of texture `step` (0: the burnt-in one) of a request:
+  // The PNG of texture `step` (0: the burnt-in one) of a request of tab `client`:
   //   {"superifs": {...}, "V": 3, "mode": "attractor", "size": "384x384", "step": 0, "seed": 1,
-  //    "buffer": 1, "source": "sample", "client": "..."}
+  //    "buffer": 1, "source": "sample"}
   // Throws Error{parse} or Error{invalid_argument} for a bad field, Error{interrupted} when newer
   // settings of the same tab took over or the server stops.
-  std::string frame_png(const nlohmann::json& body, StudioContext& context);
+  std::string frame_png(const nlohmann::json& body, const std::string& client,
+                        StudioContext& context);
   // Stops every burn-in and step in flight.
   void stop_all();
 

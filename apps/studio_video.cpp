@@ -112,14 +112,14 @@ std::string FilterPreviews::jpeg(const std::string& channel, const json& body, c
   const IfsPreset preset = preset_from_json(body);
   video::FractalSettings s;
   s.exact = bool_field(body, "exact", true);
-  s.view = view_option(text_field(body, "view", ""), "view");
+  s.sampling.view = view_option(text_field(body, "view", ""), "view");
   s.animate = choice_field(body, "animate", "none", {"none", "drift"}) == "drift"
                   ? video::Animate::drift
                   : video::Animate::none;
   s.drift_amount = number_field(body, "drift_amount", 0.05, 0, video::kMaxDriftAmount);
   s.drift_speed = number_field(body, "drift_speed", 0.2, 0, video::kMaxDriftSpeed);
   s.keyframe_interval = static_cast<int>(integer_field(body, "keyframe_interval", 12, 1, 1000));
-  s.seed = static_cast<std::uint64_t>(integer_field(body, "seed", 1, 0, 1LL << 53));
+  s.sampling.seed = static_cast<std::uint64_t>(integer_field(body, "seed", 1, 0, 1LL << 53));
   const double mix = number_field(body, "mix", 0, 0, 1);
   const video::Background background =
       video::parse_background(text_field(body, "background", "black"), "background");
@@ -131,7 +131,7 @@ std::string FilterPreviews::jpeg(const std::string& channel, const json& body, c
                                s.drift_amount,
                                s.drift_speed,
                                s.keyframe_interval,
-                               s.seed,
+                               s.sampling.seed,
                                frame.cols,
                                frame.rows,
                                size.width,
@@ -161,7 +161,7 @@ std::string FilterPreviews::jpeg(const std::string& channel, const json& body, c
   }
   std::lock_guard use(entry->use);
   if (!entry->engine) {
-    s.cancel = CancelToken(&entry->stop);
+    s.sampling.cancel = CancelToken(&entry->stop);
     // The engine reads its preset from a file, as `ifsfx filter --preset FILE` does.
     const ScratchFile file(context.scratch_name(".toml"));
     write_file(file.path(), preset.text);
@@ -196,9 +196,10 @@ cv::Mat CameraFeed::frame(double& seconds) {
     return std::move(frame->image);
   } catch (const Error& e) {
     camera_.reset();
-    throw HttpError(503, fmt::format("camera: {} (the studio keeps running: check the camera and "
-                                     "try again)",
-                                     e.what()));
+    throw RequestError(503,
+                       fmt::format("camera: {} (the studio keeps running: check the camera and "
+                                   "try again)",
+                                   e.what()));
   }
 }
 

@@ -7,7 +7,7 @@
 // A preview request: the preset of /api/render plus
 //   {"filter": true, "animate": "none" | "drift", "drift_amount": 0.05, "drift_speed": 0.2,
 //    "mix": 0, "background": "black", "exact": true, "view": "x0,y0,x1,y1", "seed": 1,
-//    "keyframe_interval": 12, "width": 640, "client": "..."}
+//    "keyframe_interval": 12, "width": 640}
 // and for a movie {"movie": NAME, "frame": N}.
 #pragma once
 
@@ -85,8 +85,8 @@ class FilterPreviews {
 };
 
 // The camera of --camera, opened at the first frame asked for and shared by every tab. A camera
-// that fails (unplugged, busy, no such device) is closed and its error becomes HttpError 503 with
-// the device's message; the next frame asked for opens it again.
+// that fails (unplugged, busy, no such device) is closed and its error becomes RequestError 503
+// with the device's message; the next frame asked for opens it again.
 class CameraFeed {
  public:
   explicit CameraFeed(std::string device) : device_(std::move(device)) {}

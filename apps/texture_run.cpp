@@ -47,14 +47,12 @@ TextureOutcome write_textures(const TextureArgs& args, const TextureRun& run) {
   for (int frame = first + 1; frame <= last; ++frame) check_output(path_of(frame), output);
   const SuperIfsPreset preset = load_superifs(args.preset);
 
-  TextureOptions options;
-  options.count = args.count;
-  options.steps = args.steps;
-  options.buffer = args.buffer - 1;
-  options.mode = args.mode;
-  options.seed = args.seed;
-  options.threads = args.threads;
-  options.cancel = output.cancel;
+  TextureOptions options{
+      .sampling = {.seed = args.seed, .threads = args.threads, .cancel = output.cancel},
+      .count = args.count,
+      .steps = args.steps,
+      .buffer = args.buffer - 1,
+      .mode = args.mode};
   if (!args.source.empty()) options.source = read_image(args.source).pixels;
 
   const auto start = std::chrono::steady_clock::now();

@@ -37,7 +37,7 @@ live webcam filter (V4L2, virtual webcams through v4l2loopback).")
 set(CPACK_DEBIAN_DEV_PACKAGE_NAME ifsfx-dev)
 set(CPACK_DEBIAN_DEV_PACKAGE_SECTION libdevel)
 set(CPACK_DEBIAN_DEV_PACKAGE_DEPENDS
-    "libopencv-dev, libopenimageio-dev, libfmt-dev, libtomlplusplus-dev, libavformat-dev, \
+    "libopencv-dev, libopenimageio-dev, libfmt-dev, libtomlplusplus-dev, zlib1g-dev, libavformat-dev, \
 libavcodec-dev, libswscale-dev, libavutil-dev, pkg-config")
 set(CPACK_COMPONENT_DEV_DESCRIPTION
     "static libraries and headers of ifsfx (fractals from images and video)

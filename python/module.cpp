@@ -3,6 +3,7 @@
 #include <pybind11/pybind11.h>
 
 #include "python/errors.h"
+#include "python/fractaldb.h"
 #include "python/presets.h"
 #include "python/render.h"
 #include "python/steal.h"
@@ -27,4 +28,5 @@ float32 in BGR order, like cv2. Long computations release the GIL and stop on Ct
   ifsfx::python::bind_render(m);
   ifsfx::python::bind_steal(m);
   ifsfx::python::bind_texture(m);
+  ifsfx::python::bind_fractaldb(m);
 }

@@ -14,6 +14,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # the Python module (python/): pybind11 and Python's headers; NumPy and pytest for its tests
   pybind11-dev python3-dev python3-numpy python3-pytest
+  # bench/fractaldb_vs_reference.py runs the FractalDB reference generator, which draws with PIL
+  python3-pil
   # runtime tools and data: ffmpeg/ffprobe (audio remux, tests), OpenCV's sample clips and images;
   # groff-base checks the man page
   ffmpeg opencv-doc openimageio-tools groff-base

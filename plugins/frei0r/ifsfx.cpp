@@ -73,8 +73,8 @@ video::FractalSettings settings_of(const ParamValues::Values& v) {
   s.animate = amount > 0 ? video::Animate::drift : video::Animate::none;
   s.drift_amount = amount;
   s.drift_speed = v.number(speed);
-  s.seed = static_cast<std::uint64_t>(whole_number(v.number(seed), "seed", 0, 1LL << 53));
-  if (!v.text(view).empty()) s.view = parse_box(v.text(view), "view");
+  s.sampling.seed = static_cast<std::uint64_t>(whole_number(v.number(seed), "seed", 0, 1LL << 53));
+  if (!v.text(view).empty()) s.sampling.view = parse_box(v.text(view), "view");
   frame_rate_parameter(v.number(rate));
   return s;
 }

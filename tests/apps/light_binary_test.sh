@@ -44,6 +44,10 @@ same tops barnsley-fern --mode tops --size 96x72 --bits 16
 mkdir alone && cp "$light" alone/ifsfx
 alone/ifsfx render barnsley-fern --size 32x32 --quality 2 -q -o alone.png
 [ -s alone.png ] || fail "the light binary alone wrote no PNG"
+# `dataset` runs there too.
+alone/ifsfx dataset search -n 1 --rate 0.05 --points 20000 -q -o cats
+alone/ifsfx dataset render cats --size 32x32 --iterations 2000 --instances 1 --weight-step 0.1 -q -o db
+[ "$(find db -name '*.png' | wc -l)" -eq 100 ] || fail "the light binary alone wrote no dataset"
 hands_on() {  # ARGS...: a command line the light binary gives to ifsfx-full
   local rc=0
   alone/ifsfx "$@" >out.txt 2>err.txt || rc=$?

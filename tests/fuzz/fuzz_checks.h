@@ -10,6 +10,7 @@
 
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +21,8 @@
 #include <opencv2/core.hpp>
 
 #include "ifs/error.h"
+#include "ifs/fractaldb_dataset.h"
+#include "ifs/fractaldb_render.h"
 #include "ifs/ifs.h"
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"
@@ -71,6 +74,56 @@ inline void fractint(std::string_view text) {
   try {
     for (const IfsPreset& preset : parse_fractint(text, "fuzz.ifs")) check_usable(preset.ifs);
   } catch (const Error&) {
+  }
+}
+
+// FractalDB's CSV readers, the same bytes as a category and as weights. A category read is
+// usable: finite maps, p ≥ 0 summing to 1, contracting on average; category_text writes it back
+// so that it reads the same; a small picture of it draws, plain and weighted to overflow.
+inline void fractaldb_csv(std::string_view text) {
+  try {
+    for (const fractaldb::Weight& w : fractaldb::parse_weights(text, "fuzz-weights.csv"))
+      for (const double x : w) check(std::isfinite(x), "weights are finite");
+  } catch (const Error&) {
+  }
+  fractaldb::Category c;
+  try {
+    c = fractaldb::parse_category(text, "fuzz.csv");
+  } catch (const Error&) {
+    return;
+  }
+  check(!c.maps.empty() && c.maps.size() == c.probabilities.size(), "one p per map");
+  double sum = 0;
+  for (std::size_t i = 0; i < c.maps.size(); ++i) {
+    check(c.maps[i].finite(), "finite maps");
+    check(c.probabilities[i] >= 0, "p >= 0");
+    sum += c.probabilities[i];
+  }
+  check(std::abs(sum - 1) <= 1e-6, "p sums to 1");
+  check(fractaldb::contraction_rate(c.maps, c.probabilities) < 0, "a category read contracts");
+  fractaldb::Category again;
+  try {
+    again = fractaldb::parse_category(fractaldb::category_text(c), "fuzz.csv");
+  } catch (const Error& e) {
+    throw std::logic_error(std::string("category_text wrote what parse_category refuses: ") +
+                           e.what());
+  }
+  check(again.maps == c.maps && again.probabilities == c.probabilities,
+        "category_text keeps every number exactly");
+  const fractaldb::DrawSettings settings{.size = {16, 12},
+                                         .padding = {1, 1},
+                                         .iterations = 300,
+                                         .draw = fractaldb::DrawType::patch_color};
+  const auto draws = fractaldb::reference_draws(settings.iterations);
+  for (const fractaldb::Weight& w :
+       {fractaldb::Weight{1, 1, 1, 1, 1, 1}, fractaldb::Weight{40, 40, 40, 40, 1e300, 1e300}}) {
+    const fractaldb::Points points = fractaldb::walk(c, w, settings, draws);
+    check(points.size() <= 300, "at most `iterations` points");
+    const cv::Mat canvas = fractaldb::draw(points, settings, 1);
+    cv::Mat image;
+    fractaldb::to_image(canvas, 3, settings.draw, false, image);
+    check(image.size() == cv::Size(16, 12) && image.type() == CV_8UC3, "a 16x12 BGR picture");
+    check(!fractaldb::encode_png(canvas, 2, settings.draw, false).empty(), "a PNG");
   }
 }
 

@@ -51,6 +51,12 @@ TEST(fuzz_corpus, fractint_reader_holds_on_every_seed_and_regression) {
   for (const fs::path& file : files) EXPECT_NO_THROW(fuzz::fractint(bytes_of(file))) << file;
 }
 
+TEST(fuzz_corpus, fractaldb_csv_reader_holds_on_every_seed_and_regression) {
+  const auto files = inputs("fractaldb_csv");
+  EXPECT_GE(files.size(), 3u);
+  for (const fs::path& file : files) EXPECT_NO_THROW(fuzz::fractaldb_csv(bytes_of(file))) << file;
+}
+
 TEST(fuzz_corpus, steal_map_reader_holds_on_every_seed_and_regression) {
   const auto files = inputs("steal_map");
   EXPECT_GE(files.size(), 3u);

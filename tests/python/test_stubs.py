@@ -7,7 +7,7 @@ import os
 
 import ifsfx
 
-EXPECTED_TESTS = 2
+EXPECTED_TESTS = 3
 
 STUBS = os.path.join(os.path.dirname(ifsfx.__file__), "ifsfx.pyi")
 
@@ -50,3 +50,39 @@ def test_each_function_has_the_stub_keywords_and_defaults():
         assert defaults == built_defaults, node.name
         checked += 1
     assert checked == 10  # presets, load_preset, render, ..., textures
+
+
+def check_function(node, built):
+    a = node.args
+    names = [x.arg for x in a.posonlyargs + a.args + a.kwonlyargs]
+    defaults = [ast.literal_eval(d)
+                for d in a.defaults + [d for d in a.kw_defaults if d is not None]]
+    built_names, built_defaults = signature_of(built.__doc__)
+    if names[:1] == ["self"]:
+        names = names[1:]
+        built_names = built_names[1:]
+    assert names == built_names, node.name
+    assert defaults == built_defaults, node.name
+
+
+def test_the_fractaldb_submodule_has_the_stub_names_keywords_and_defaults():
+    # ifsfx.fractaldb is stubbed as a class of static functions (one stub file, one module).
+    stub = next(n for n in stub_tree().body if isinstance(n, ast.ClassDef) and n.name == "fractaldb")
+    stubbed = {n.name for n in stub.body if isinstance(n, (ast.FunctionDef, ast.ClassDef))}
+    public = {name for name in dir(ifsfx.fractaldb) if not name.startswith("_")}
+    assert stubbed == public
+    checked = 0
+    for node in stub.body:
+        if isinstance(node, ast.FunctionDef):
+            check_function(node, getattr(ifsfx.fractaldb, node.name))
+            checked += 1
+        elif isinstance(node, ast.ClassDef):
+            cls = getattr(ifsfx.fractaldb, node.name)
+            members = {n.name for n in node.body if isinstance(n, ast.FunctionDef)}
+            built = {name for name in dir(cls) if not name.startswith("_")}
+            assert members - {"__init__", "__len__", "__getitem__", "__iter__", "__next__"} == built, node.name
+            init = next((n for n in node.body if isinstance(n, ast.FunctionDef) and n.name == "__init__"), None)
+            if init is not None:
+                check_function(init, cls.__init__)
+                checked += 1
+    assert checked == 7  # 5 functions, Category() and Dataset()

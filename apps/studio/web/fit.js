@@ -2,7 +2,7 @@
 // Fit (docs/studio.md): a shape dropped on the zone (or chosen) is fitted by the collage theorem
 // in a render job, as `ifsfx fit` fits it; the phase and the best IoU so far show while it runs,
 // it can be cancelled, and the fitted preset opens in the editor.
-import { api, el, panel, say, openInEditor, session } from './api.js';
+import { api, el, panel, say, openInEditor, session } from './panels.js';
 import { startJob, cancelJob } from './jobs.js';
 
 const body = panel('fit', 'Fit');

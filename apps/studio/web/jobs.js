@@ -2,7 +2,7 @@
 // Render jobs (docs/studio.md): a full-size still of the editor's preset, and the list of every
 // job of the server — the movie filter and texture sequences started from the Video and SuperIFS
 // panels, fits — with progress bars, cancel buttons and links to the files made.
-import { el, json, fileUrl, panel, say, editorRequest, openInEditor } from './api.js';
+import { el, json, fileUrl, panel, say, editorRequest, openInEditor } from './panels.js';
 
 const body = panel('jobs', 'Jobs');
 const status = el('p', { class: 'status', id: 'jobs-status' });

@@ -1,445 +1,567 @@
 // SPDX-License-Identifier: Apache-2.0
-// ifsfx studio, the page (docs/studio.md). It holds the preset being edited and sends all of it
-// with every render: the server keeps no state but the render in flight, and a newer request
-// cancels that one. Coordinates: "plane" is the IFS plane (y up), "pixels" the canvas's own
-// pixels (y down), through the view rectangle of the last picture.
+// ifsfx studio, the page (docs/studio.md). It holds the document being edited (the preset, and
+// the colouring IFS of colour stealing) and sends all of it with every render: the server keeps
+// no state but the renders in flight. Coordinates: "plane" is the IFS plane (y up), "pixels" the
+// canvas's own pixels (y down), through the view (view.js); the maps are drawn as the
+// parallelograms they make of the frame, the view rectangle the document was framed with (it
+// stays put under pan and zoom, so that the handles do not jump).
+import { $, api, getJson, postJson, status, token } from './api.js';
+import { defaultProbabilities, flipped, frameOf, middleMap, shifted } from './geometry.js';
+import { LiveRenderer } from './live.js';
+import { canvasPoint, dragged, drawMaps, handleClientPoint, hitHandle } from './overlay.js';
+import { SourcePanel } from './source.js';
+import { renderColouringTable, renderMapsTable, updateRow } from './table.js';
+import { View } from './view.js';
 
-const token = new URLSearchParams(location.search).get('token') || '';
-const $ = (id) => document.getElementById(id);
 const canvas = $('canvas');
 const ctx = canvas.getContext('2d');
+const view = new View(canvas);
+const kMaxUpload = 32 << 20;  // the server's cap (apps/studio_folder.h)
 
-let state = { name: 'studio', description: '', maps: [], probabilities: [], colours: [] };
+// The document: what Save writes (the preset, and NAME.colouring.toml when colouring is set).
+let doc = { name: 'studio', description: '', maps: [], probabilities: [], colours: [],
+            colouring: null, allow_expansive: false };
 let selected = 0;
-let lockedView = null;  // "x0,y0,x1,y1" sent with each render once framed, so handles stay put
-let picture = null;     // the last ImageBitmap drawn
-let pictureView = null; // [x0, y0, x1, y1] of that picture
+let frame = null;       // frameOf(frameRect): where the maps are drawn from
+let frameRect = null;   // [x0, y0, x1, y1]: the view the document was framed with
+let picture = null;     // {canvas, view, full}: the last picture, drawn where its view lies
+let usedColouring = null;  // G as the server fitted it (X-Ifsfx-Colouring)
+let openedFile = null;  // the folder file the document came from
 const undoStack = [];
 const redoStack = [];
-const stats = { seq: 0, drawnSeq: 0, latencies: [], renderMs: [], errors: 0 };
+const defaults = new Map();  // N → {colours, colouring}: the server's palette and tiling for N maps
+const stats = { seq: 0, drawnSeq: 0, latencies: [], fullLatencies: [], renderMs: [],
+                fullRenderMs: [], errors: 0 };
 window.studio = stats;
 
-async function api(path, options = {}) {
-  const headers = Object.assign({ 'X-Ifsfx-Token': token }, options.headers || {});
-  if (options.body) headers['Content-Type'] = 'application/json';
-  return fetch(path, Object.assign({}, options, { headers }));
+// ---- the document's defaults for N maps (the server computes them) ----
+
+function defaultsFor(n) {
+  if (!defaults.has(n)) {
+    defaults.set(n, null);
+    getJson(`/api/defaults?maps=${n}`).then((d) => {
+      defaults.set(n, d);
+      refresh();
+    }).catch((e) => status(e.message, true));
+  }
+  return defaults.get(n);
 }
 
-function status(text, error = false) {
-  $('status').textContent = text;
-  $('status').className = error ? 'error' : '';
+function colourOf(i) {
+  const n = doc.maps.length;
+  if (doc.colours.length === n) return doc.colours[i];
+  const d = defaultsFor(n);
+  return d ? d.colours[i] : '#888888';
 }
 
-// ---- the mathematics the page needs to draw and drag (the renders are the server's) ----
-
-const apply = (m, p) => [m[0] * p[0] + m[1] * p[1] + m[4], m[2] * p[0] + m[3] * p[1] + m[5]];
-
-// The largest singular value of [[a b][c d]]: the map's contraction factor.
-function factor(m) {
-  const t = m[0] * m[0] + m[1] * m[1] + m[2] * m[2] + m[3] * m[3];
-  const det = m[0] * m[3] - m[1] * m[2];
-  return Math.sqrt((t + Math.sqrt(Math.max(t * t - 4 * det * det, 0))) / 2);
-}
-
-// The frame: the view rectangle, as plane points; corners 0..3 counter-clockwise from (x0, y0).
-function frame() {
-  const v = lockedView ? lockedView.split(',').map(Number) : pictureView || [0, 0, 1, 1];
-  return {
-    corners: [[v[0], v[1]], [v[2], v[1]], [v[2], v[3]], [v[0], v[3]]],
-    centre: [(v[0] + v[2]) / 2, (v[1] + v[3]) / 2],
-  };
-}
-
-function toPixels(p) {
-  const v = pictureView || [0, 0, 1, 1];
-  return [(p[0] - v[0]) * canvas.width / (v[2] - v[0]),
-          (v[3] - p[1]) * canvas.height / (v[3] - v[1])];
-}
-function toPlane(px) {
-  const v = pictureView || [0, 0, 1, 1];
-  return [v[0] + px[0] * (v[2] - v[0]) / canvas.width,
-          v[3] - px[1] * (v[3] - v[1]) / canvas.height];
-}
-
-function mapColour(i, n) {
-  if (state.colours.length === n) return state.colours[i];
-  return `hsl(${Math.round(360 * i / Math.max(n, 1))}, 90%, 60%)`;
+// G as shown and edited: the document's, or the default tiling for N maps.
+function colouringShown() {
+  if (doc.colouring) return doc.colouring;
+  const d = defaultsFor(doc.maps.length);
+  return d ? d.colouring : null;
 }
 
 // ---- drawing ----
 
+const surface = {
+  ctx,
+  get frame() { return frame; },
+  toPixels: (p) => view.toPixels(p),
+  toPlane: (px) => view.toPlane(px),
+  get scale() { return canvas.width / canvas.getBoundingClientRect().width || 1; },
+};
+
 function draw() {
   ctx.clearRect(0, 0, canvas.width, canvas.height);
-  if (picture) ctx.drawImage(picture, 0, 0, canvas.width, canvas.height);
-  const f = frame();
-  state.maps.forEach((m, i) => {
-    const pts = f.corners.map((c) => toPixels(apply(m, c)));
-    ctx.strokeStyle = mapColour(i, state.maps.length);
-    ctx.lineWidth = i === selected ? 2.5 : 1.2;
-    ctx.setLineDash(i === selected ? [] : [5, 4]);
-    ctx.beginPath();
-    pts.forEach((p, k) => (k ? ctx.lineTo(p[0], p[1]) : ctx.moveTo(p[0], p[1])));
-    ctx.closePath();
-    ctx.stroke();
-    ctx.setLineDash([]);
-    ctx.fillStyle = ctx.strokeStyle;
-    pts.forEach((p, k) => ctx.fillRect(p[0] - 4, p[1] - 4, 8, 8) || (k === 0 && ctx.strokeRect(p[0] - 7, p[1] - 7, 14, 14)));
-    const c = toPixels(apply(m, f.centre));
-    ctx.beginPath();
-    ctx.arc(c[0], c[1], 6, 0, 2 * Math.PI);
-    ctx.fill();
-    ctx.fillStyle = '#000';
-    ctx.font = 'bold 10px sans-serif';
-    ctx.fillText(String(i + 1), c[0] - 3, c[1] + 4);
+  if (picture && view.framed) {
+    const v = picture.view;
+    const a = view.toPixels([v[0], v[3]]);
+    const b = view.toPixels([v[2], v[1]]);
+    ctx.imageSmoothingEnabled = true;
+    ctx.drawImage(picture.canvas, a[0], a[1], b[0] - a[0], b[1] - a[1]);
+  }
+  if (frame) drawMaps(surface, doc.maps, colourOf, selected);
+}
+
+const steal = () => $('mode').value === 'steal';
+
+function renderTables() {
+  renderMapsTable(document.querySelector('#maps tbody'), doc, selected, colourOf, {
+    select: (i) => { selected = i; refresh(); },
+    set: (i, k, v) => edit(() => {
+      if (k < 6) doc.maps[i][k] = v;
+      else {
+        if (doc.probabilities.length !== doc.maps.length) doc.probabilities = defaultProbabilities(doc.maps);
+        doc.probabilities[i] = v;
+      }
+    }),
+    colour: (i, c) => edit(() => {
+      const n = doc.maps.length;
+      if (doc.colours.length !== n) doc.colours = Array.from({ length: n }, (_, j) => colourOf(j));
+      doc.colours[i] = c;
+    }),
+    move, duplicate, remove,
+    flip: (i) => edit(() => { doc.maps[i] = flipped(doc.maps[i], frame || frameOf([0, 0, 1, 1])); }),
+    restore: refresh,
   });
-}
-
-function fmt(x) { return String(Number(x.toPrecision(6))); }
-
-function defaultProbabilities() {
-  const dets = state.maps.map((m) => Math.abs(m[0] * m[3] - m[1] * m[2]));
-  const top = Math.max(...dets);
-  const w = dets.map((d) => Math.max(d, 0.01 * top) || 1);
-  const sum = w.reduce((a, b) => a + b, 0);
-  return w.map((x) => x / sum);
-}
-
-function renderTable() {
-  const body = document.querySelector('#maps tbody');
-  body.textContent = '';
-  const n = state.maps.length;
-  state.maps.forEach((m, i) => {
-    const tr = document.createElement('tr');
-    tr.dataset.map = i;
-    if (i === selected) tr.className = 'selected';
-    const head = document.createElement('td');
-    head.innerHTML = `<span class="swatch"></span> ${i + 1}`;
-    head.firstChild.style.background = mapColour(i, n);
-    head.onclick = () => { selected = i; renderTable(); draw(); };
-    tr.appendChild(head);
-    const fields = ['a', 'b', 'c', 'd', 'e', 'f', 'p'];
-    fields.forEach((name, k) => {
-      const td = document.createElement('td');
-      const input = document.createElement('input');
-      input.name = `${name}${i}`;
-      input.inputMode = 'decimal';  // text: a number field's spinner would hide digits
-      input.value = k < 6 ? fmt(m[k]) : (state.probabilities.length === n ? fmt(state.probabilities[i]) : '');
-      if (k === 6 && state.probabilities.length !== n) input.placeholder = 'auto';
-      input.onchange = () => {
-        const value = Number(input.value);
-        if (input.value === '' || !Number.isFinite(value)) { renderTable(); return; }
-        edit(() => {
-          if (k < 6) state.maps[i][k] = value;
-          else {
-            if (state.probabilities.length !== n) state.probabilities = defaultProbabilities();
-            state.probabilities[i] = value;
-          }
-        });
-      };
-      td.appendChild(input);
-      tr.appendChild(td);
+  $('colouring-panel').hidden = !steal();
+  const g = colouringShown();
+  if (steal() && g) {
+    renderColouringTable(document.querySelector('#colouring tbody'), g, selected, colourOf, {
+      select: (i) => { selected = i; refresh(); },
+      set: (i, k, v) => edit(() => { ensureColouring()[i][k] = v; }),
+      restore: refresh,
     });
-    const fac = factor(m);
-    const ftd = document.createElement('td');
-    ftd.className = fac >= 1 ? 'warn factor' : 'factor';
-    ftd.textContent = fac >= 1 ? `${fac.toFixed(3)} ⚠ ≥ 1` : fac.toFixed(3);
-    if (fac >= 1) ftd.title = 'This map does not contract: the IFS has no attractor unless it contracts on average';
-    tr.appendChild(ftd);
-    const actions = document.createElement('td');
-    for (const [label, title, action] of [['↑', 'Move up', () => move(i, -1)],
-                                          ['↓', 'Move down', () => move(i, 1)],
-                                          ['✕', 'Delete', () => remove(i)]]) {
-      const b = document.createElement('button');
-      b.textContent = label;
-      b.title = title;
-      b.onclick = action;
-      actions.appendChild(b);
-    }
-    tr.appendChild(actions);
-    body.appendChild(tr);
-  });
+  }
+  $('colouring-state').textContent = doc.colouring
+    ? 'edited: saved beside the preset as NAME.colouring.toml'
+    : `the default tiling for ${doc.maps.length} maps`;
+  $('reset-colouring').disabled = !doc.colouring;
+}
+
+function refresh() {
+  renderTables();
+  draw();
+  if (steal()) source.draw();
 }
 
 // ---- edits, undo and redo ----
 
-const snapshot = () => JSON.stringify(state);
+// An undo step: the document and the frame its maps were drawn on (opening a preset frames it
+// anew; undoing that goes back to the old frame too).
+const snapshot = () => JSON.stringify({ doc, frame: frameRect });
 
-function edit(change) {
-  undoStack.push(snapshot());
+function pushUndo(before = snapshot()) {
+  undoStack.push(before);
   redoStack.length = 0;
+}
+
+function edit(change, eventTime) {
+  pushUndo();
   change();
-  changed();
+  changed(eventTime);
 }
 
-function changed(eventTime) {
-  renderTable();
+function changed(eventTime, interactive = false) {
+  selected = Math.max(0, Math.min(selected, doc.maps.length - 1));
+  renderer.changed(eventTime, interactive);  // the request first, the page after
+  refresh();
+}
+
+// One map moved during a drag (of the IFS, or of the colouring with `prefix` 'g'): the request
+// first, then only that map's fields and the drawings.
+function dragChanged(eventTime, prefix, i, m) {
+  renderer.changed(eventTime, true);
+  const table = prefix ? '#colouring tbody' : '#maps tbody';
+  updateRow(document.querySelector(table), prefix, i, m);
   draw();
-  render(eventTime);
+  if (steal()) source.draw();
 }
 
-function undo() {
-  if (!undoStack.length) return;
-  redoStack.push(snapshot());
-  state = JSON.parse(undoStack.pop());
-  selected = Math.min(selected, state.maps.length - 1);
+function restore(from, to) {
+  if (!from.length) return;
+  to.push(snapshot());
+  const step = JSON.parse(from.pop());
+  if (step.doc.name !== doc.name) $('file').value = `${step.doc.name}.toml`;
+  doc = step.doc;
+  if (JSON.stringify(step.frame) !== JSON.stringify(frameRect)) {
+    frameRect = step.frame;
+    frame = frameRect && frameOf(frameRect);
+    view.rect = frameRect && frameRect.slice();
+    picture = null;
+  }
   changed();
 }
-function redo() {
-  if (!redoStack.length) return;
-  undoStack.push(snapshot());
-  state = JSON.parse(redoStack.pop());
-  selected = Math.min(selected, state.maps.length - 1);
-  changed();
+const undo = () => restore(undoStack, redoStack);
+const redo = () => restore(redoStack, undoStack);
+
+function ensureColouring() {
+  if (!doc.colouring) doc.colouring = JSON.parse(JSON.stringify(colouringShown()));
+  return doc.colouring;
 }
 
-function each(list, i, action) { if (list.length === state.maps.length) action(list); }
+// The lists that follow the maps (probabilities, colours, the colouring's pieces), when set.
+function lists() {
+  const n = doc.maps.length;
+  return [doc.probabilities, doc.colours, doc.colouring || []].filter((l) => l.length === n);
+}
 
 function move(i, by) {
   const j = i + by;
-  if (j < 0 || j >= state.maps.length) return;
+  if (j < 0 || j >= doc.maps.length) return;
   edit(() => {
-    for (const list of [state.probabilities, state.colours])
-      each(list, i, (l) => ([l[i], l[j]] = [l[j], l[i]]));
-    [state.maps[i], state.maps[j]] = [state.maps[j], state.maps[i]];
+    for (const l of [...lists(), doc.maps]) [l[i], l[j]] = [l[j], l[i]];
     selected = j;
   });
 }
 
-function remove(i) {
-  if (state.maps.length <= 1) { status('an IFS needs at least one map', true); return; }
+function duplicate(i) {
+  if (doc.maps.length >= 64) { status('at most 64 maps', true); return; }
   edit(() => {
-    for (const list of [state.probabilities, state.colours]) each(list, i, (l) => l.splice(i, 1));
-    state.maps.splice(i, 1);
-    selected = Math.min(selected, state.maps.length - 1);
+    const w = frameRect ? frameRect[2] - frameRect[0] : 1;
+    for (const l of lists()) l.splice(i + 1, 0, JSON.parse(JSON.stringify(l[i])));
+    if (doc.probabilities.length === doc.maps.length + 1) doc.probabilities[i + 1] = doc.probabilities[i];
+    doc.maps.splice(i + 1, 0, shifted(doc.maps[i], 0.04 * w, -0.04 * w));  // beside it, visible
+    selected = i + 1;
+  });
+}
+
+function remove(i) {
+  if (doc.maps.length <= 1) { status('an IFS needs at least one map', true); return; }
+  edit(() => {
+    for (const l of [...lists(), doc.maps]) l.splice(i, 1);
+    selected = Math.min(selected, doc.maps.length - 1);
   });
 }
 
 function add() {
+  if (doc.maps.length >= 64) { status('at most 64 maps', true); return; }
   edit(() => {
-    const q = frame().centre;
-    const n = state.maps.length;
-    if (state.probabilities.length === n) state.probabilities.push(1 / (n + 1));
-    if (state.colours.length === n) state.colours.push('#ffffff');
-    state.maps.push([0.5, 0, 0, 0.5, q[0] * 0.5, q[1] * 0.5]);  // f(q) = q: half size, centred
+    const n = doc.maps.length;
+    if (doc.probabilities.length === n) doc.probabilities.push(1 / (n + 1));
+    if (doc.colours.length === n) doc.colours.push('#ffffff');
+    if (doc.colouring && doc.colouring.length === n) doc.colouring.push(middleMap(frameOf([0, 0, 1, 1]), 0.25));
+    doc.maps.push(middleMap(frame || frameOf([0, 0, 1, 1])));
     selected = n;
   });
 }
 
-// ---- rendering: each edit sends the preset; a newer request cancels the one in flight ----
-
-let controller = null;
+// ---- the live picture ----
 
 function requestBody() {
-  const body = {
-    name: state.name, description: state.description, maps: state.maps,
-    mode: $('mode').value, size: $('size').value,
-  };
-  if (state.probabilities.length) body.probabilities = state.probabilities;
-  if (state.colours.length) body.colours = state.colours;
-  if (body.mode === 'steal') body.source = $('source').value || 'sample';
-  if (lockedView) body.view = lockedView;
+  const body = { name: doc.name, description: doc.description, maps: doc.maps, mode: $('mode').value };
+  if (doc.probabilities.length) body.probabilities = doc.probabilities;
+  if (doc.colours.length) body.colours = doc.colours;
+  if (doc.allow_expansive) body.allow_expansive = true;
+  if (body.mode === 'steal') {
+    body.source = $('source').value || 'sample';
+    if (doc.colouring) body.colouring = doc.colouring;
+  }
+  if (view.framed) body.view = view.text();
   return body;
 }
 
-async function render(eventTime = performance.now()) {
-  const seq = ++stats.seq;
-  if (controller) controller.abort();
-  controller = new AbortController();
-  try {
-    const res = await api('/api/render', {
-      method: 'POST', body: JSON.stringify(requestBody()), signal: controller.signal,
-    });
-    if (res.status === 409) return;  // a newer request took over
-    if (!res.ok) {
-      stats.errors++;
-      status((await res.json()).error, true);
-      return;
+const pictureCanvas = document.createElement('canvas');
+const renderer = new LiveRenderer({
+  body: requestBody,
+  size: () => $('size').value.split('x').map(Number),
+  stats,
+  fail: (message) => status(message, true),
+  show: (p) => {
+    if (pictureCanvas.width !== p.width || pictureCanvas.height !== p.height) {
+      pictureCanvas.width = p.width;
+      pictureCanvas.height = p.height;
     }
-    const view = res.headers.get('X-Ifsfx-View');
-    const bitmap = await createImageBitmap(await res.blob());
-    if (seq < stats.drawnSeq) return;
-    const [w, h] = $('size').value.split('x').map(Number);
-    if (canvas.width !== w || canvas.height !== h) { canvas.width = w; canvas.height = h; }
-    picture = bitmap;
-    pictureView = view.split(',').map(Number);
-    if (!lockedView) lockedView = view;
-    stats.drawnSeq = seq;
+    pictureCanvas.getContext('2d').putImageData(p.image, 0, 0);
+    picture = { canvas: pictureCanvas, view: p.view, full: p.full };
+    if (!view.framed) {  // the server framed the attractor: the frame and the view from now on
+      view.rect = p.view.slice();
+      frameRect = p.view.slice();
+      frame = frameOf(frameRect);
+      renderTables();
+    }
+    usedColouring = p.colouring;
     draw();
-    stats.latencies.push(performance.now() - eventTime);
-    stats.renderMs.push(Number(res.headers.get('X-Ifsfx-Render-Ms')));
-    status(`${state.name}: ${state.maps.length} maps, rendered in ${res.headers.get('X-Ifsfx-Render-Ms')} ms`);
-  } catch (e) {
-    if (e.name !== 'AbortError') status(String(e), true);
-  }
-}
-
-// ---- dragging handles ----
-
-let drag = null;
-
-function canvasPoint(event) {
-  const r = canvas.getBoundingClientRect();
-  return [(event.clientX - r.left) * canvas.width / r.width,
-          (event.clientY - r.top) * canvas.height / r.height];
-}
-
-// The handle under a canvas point: {map, kind: 'centre' | 'corner', corner}.
-function hit(px) {
-  const f = frame();
-  const near = (p) => Math.hypot(p[0] - px[0], p[1] - px[1]) <= 9 * canvas.width / canvas.getBoundingClientRect().width;
-  const order = [selected, ...state.maps.keys()];
-  for (const i of order) {
-    const m = state.maps[i];
-    if (near(toPixels(apply(m, f.centre)))) return { map: i, kind: 'centre' };
-    for (let k = 0; k < 4; k++)
-      if (near(toPixels(apply(m, f.corners[k])))) return { map: i, kind: 'corner', corner: k };
-  }
-  return null;
-}
-
-// Where a handle of map i is, in the page's (client) coordinates: for tests and scripts.
-stats.handle = (i, kind = 'centre', corner = 0) => {
-  const f = frame();
-  const p = toPixels(apply(state.maps[i], kind === 'centre' ? f.centre : f.corners[corner]));
-  const r = canvas.getBoundingClientRect();
-  return { x: r.left + p[0] * r.width / canvas.width, y: r.top + p[1] * r.height / canvas.height };
-};
-stats.state = () => JSON.parse(snapshot());
-// For the panels of jobs.js, fit.js, video.js and superifs.js: the preset with the render
-// settings, and opening a preset (one undoable edit).
+    if (steal()) source.draw();
+    if (p.full) {
+      status(`${doc.name}: ${doc.maps.length} maps; ${$('mode').value} ${p.width}x${p.height} ` +
+             `rendered in ${p.renderMs} ms`);
+    }
+  },
+});
+// The stats the tests and bench/studio_latency.mjs read.
+Object.defineProperty(stats, 'seq', { get: () => renderer.version });
+stats.settled = () => renderer.settled();
+stats.picture = () => (picture ? picture.canvas.toDataURL('image/png') : null);
+stats.state = () => JSON.parse(JSON.stringify(doc));
+stats.view = () => view.rect && view.rect.slice();
+stats.handle = (i, kind = 'centre', corner = 0) =>
+  handleClientPoint(surface, canvas, doc.maps[i], kind, corner);
+stats.sourceHandle = (i, kind = 'centre', corner = 0) => source.handle(i, kind, corner);
+// For the panels below the editor (panels.js, jobs.js, fit.js, video.js, superifs.js): the preset
+// with the picture's settings, and opening a preset as one undoable edit.
 stats.requestBody = () => JSON.parse(JSON.stringify(requestBody()));
 stats.openPreset = (preset) => {
-  undoStack.push(snapshot());
-  redoStack.length = 0;
+  pushUndo();
   open(preset);
 };
 
+// ---- the canvas: drag a handle, or pan (empty space, the middle button) and zoom (the wheel) ----
+
+let gesture = null;
+
 canvas.addEventListener('pointerdown', (event) => {
-  const h = hit(canvasPoint(event));
-  if (!h) return;
+  if (!frame) return;
+  const px = canvasPoint(canvas, event);
+  const h = event.button === 0 ? hitHandle(surface, doc.maps, selected, px) : null;
   canvas.setPointerCapture(event.pointerId);
-  selected = h.map;
-  drag = Object.assign(h, { before: snapshot(), start: toPlane(canvasPoint(event)),
-                            map: h.map, m0: state.maps[h.map].slice(), moved: false });
-  renderTable();
-  draw();
-});
-
-canvas.addEventListener('pointermove', (event) => {
-  if (!drag) return;
-  const p = toPlane(canvasPoint(event));
-  const m0 = drag.m0;
-  const f = frame();
-  const q = f.centre;
-  let m;
-  if (drag.kind === 'centre') {  // translate: e, f follow the pointer
-    m = [m0[0], m0[1], m0[2], m0[3], m0[4] + p[0] - drag.start[0], m0[5] + p[1] - drag.start[1]];
-  } else {
-    const Q = apply(m0, q);  // the image of the frame's centre stays put
-    const dk = [f.corners[drag.corner][0] - q[0], f.corners[drag.corner][1] - q[1]];
-    const target = [p[0] - Q[0], p[1] - Q[1]];
-    let L;
-    if (event.shiftKey) {
-      // Shear: the corner goes to the pointer, the corner beside it on its horizontal edge stays.
-      const k2 = drag.corner ^ 1;
-      const d2 = [f.corners[k2][0] - q[0], f.corners[k2][1] - q[1]];
-      const w2 = [m0[0] * d2[0] + m0[1] * d2[1], m0[2] * d2[0] + m0[3] * d2[1]];
-      const det = dk[0] * d2[1] - d2[0] * dk[1];
-      if (Math.abs(det) < 1e-12) return;
-      // L = W · D⁻¹ with D = [dk d2], W = [target w2]
-      const inv = [d2[1] / det, -d2[0] / det, -dk[1] / det, dk[0] / det];
-      L = [target[0] * inv[0] + w2[0] * inv[2], target[0] * inv[1] + w2[0] * inv[3],
-           target[1] * inv[0] + w2[1] * inv[2], target[1] * inv[1] + w2[1] * inv[3]];
-    } else {
-      // Rotate and scale about the centre's image: multiply by the complex ratio of the corner's
-      // new and old offsets.
-      const old = [m0[0] * dk[0] + m0[1] * dk[1], m0[2] * dk[0] + m0[3] * dk[1]];
-      const n2 = old[0] * old[0] + old[1] * old[1];
-      if (n2 < 1e-18) return;
-      const zr = (target[0] * old[0] + target[1] * old[1]) / n2;
-      const zi = (target[1] * old[0] - target[0] * old[1]) / n2;
-      L = [zr * m0[0] - zi * m0[2], zr * m0[1] - zi * m0[3], zi * m0[0] + zr * m0[2], zi * m0[1] + zr * m0[3]];
-    }
-    m = [L[0], L[1], L[2], L[3], Q[0] - (L[0] * q[0] + L[1] * q[1]), Q[1] - (L[2] * q[0] + L[3] * q[1])];
+  if (h && h.kind === 'flip') {
+    edit(() => { doc.maps[h.map] = flipped(doc.maps[h.map], frame); }, event.timeStamp);
+    return;
   }
-  if (!drag.moved) { undoStack.push(drag.before); redoStack.length = 0; drag.moved = true; }
-  state.maps[drag.map] = m;
-  changed(event.timeStamp);
+  if (h) {
+    selected = h.map;
+    gesture = Object.assign(h, { type: 'map', before: snapshot(), start: view.toPlane(px),
+                                 m0: doc.maps[h.map].slice(), moved: false });
+    refresh();
+  } else if (event.button === 0 || event.button === 1) {
+    event.preventDefault();
+    gesture = { type: 'pan', last: px };
+    canvas.classList.add('panning');
+  }
 });
 
-const endDrag = () => { drag = null; };
-canvas.addEventListener('pointerup', endDrag);
-canvas.addEventListener('pointercancel', endDrag);
+function pointerMoved(event) {
+  if (!gesture) return;
+  const px = canvasPoint(canvas, event);
+  if (gesture.type === 'pan') {
+    view.panBy(px[0] - gesture.last[0], px[1] - gesture.last[1]);
+    gesture.last = px;
+    draw();
+    renderer.changed(event.timeStamp, true);
+    return;
+  }
+  const m = dragged(surface, gesture, gesture.m0, gesture.start, view.toPlane(px), event.shiftKey);
+  if (!m) return;
+  if (!gesture.moved) { pushUndo(gesture.before); gesture.moved = true; }
+  doc.maps[gesture.map] = m;
+  dragChanged(event.timeStamp, '', gesture.map, m);
+}
 
-// ---- the rest of the page ----
+// Chrome delivers pointerrawupdate as the pointer moves, pointermove only at the next animation
+// frame (up to 16 ms later): a drag follows the first where there is one.
+let rawUpdates = false;
+canvas.addEventListener('pointerrawupdate', (event) => { rawUpdates = true; pointerMoved(event); });
+canvas.addEventListener('pointermove', (event) => { if (!rawUpdates) pointerMoved(event); });
+
+function endGesture() {
+  if (!gesture) return;
+  gesture = null;
+  canvas.classList.remove('panning');
+  renderer.rest();
+  refresh();
+}
+canvas.addEventListener('pointerup', endGesture);
+canvas.addEventListener('pointercancel', endGesture);
+canvas.addEventListener('auxclick', (event) => event.preventDefault());
+
+canvas.addEventListener('wheel', (event) => {
+  if (!view.framed) return;
+  event.preventDefault();
+  const delta = event.deltaMode === 1 ? event.deltaY * 40 : event.deltaY;  // lines to pixels
+  view.zoomAt(canvasPoint(canvas, event), Math.exp(-delta * 0.0015));
+  draw();
+  renderer.changed(event.timeStamp, true);
+}, { passive: false });
+
+// ---- colour stealing: the source and the colouring IFS on it ----
+
+let sourceBefore = null;
+const source = new SourcePanel($('source-canvas'), {
+  maps: colouringShown,
+  used: () => usedColouring,
+  colour: colourOf,
+  selected: () => selected,
+  select: (i) => { selected = i; refresh(); },
+  begin: () => {
+    sourceBefore = snapshot();
+    return JSON.parse(JSON.stringify(colouringShown()));
+  },
+  drag: (g, eventTime, i) => {
+    doc.colouring = g;
+    if (sourceBefore) {  // the first move: an undo step, and the table of the edited colouring
+      pushUndo(sourceBefore);
+      sourceBefore = null;
+      renderTables();
+    }
+    dragChanged(eventTime, 'g', i, g[i]);
+  },
+  end: () => { sourceBefore = null; renderer.rest(); refresh(); },
+  flip: (i) => edit(() => { ensureColouring()[i] = flipped(ensureColouring()[i], frameOf([0, 0, 1, 1])); }),
+});
+
+async function showSource() {
+  if (!steal()) return;
+  try {
+    await source.load($('source').value || 'sample');
+    $('source-size').textContent = source.sourceSize ? `${source.sourceSize} pixels` : '';
+  } catch (e) { status(e.message, true); }
+}
+
+function sanitisedName(name) {
+  const plain = name.replace(/[^A-Za-z0-9_.+ -]/g, '-').replace(/\.\.+/g, '.').replace(/^[^A-Za-z0-9_]+/, '');
+  return plain || 'dropped.png';
+}
+
+async function upload(file) {
+  if (file.size > kMaxUpload) {
+    status(`${file.name}: at most ${kMaxUpload >> 20} MiB (got ${file.size} bytes)`, true);
+    return;
+  }
+  status(`uploading ${file.name}…`);
+  try {
+    const res = await api(`/api/upload?name=${encodeURIComponent(sanitisedName(file.name))}`, {
+      method: 'POST', body: file, headers: { 'Content-Type': 'application/octet-stream' },
+    });
+    const answer = await res.json();
+    if (!res.ok) throw new Error(answer.error);
+    await listSources(answer.saved);
+    $('mode').value = 'steal';
+    status(`${answer.saved}: saved in the folder; it is the source now`);
+    modeChanged();
+  } catch (e) { status(e.message, true); }
+}
+
+// ---- presets: shipped, the folder's .toml files and Fractint entries ----
+
+function option(text, value, title = '') {
+  const o = document.createElement('option');
+  o.textContent = text;
+  o.value = JSON.stringify(value);
+  if (title) o.title = title;
+  return o;
+}
+
+async function listPresets(initialName) {
+  const [shipped, folder] = await Promise.all([getJson('/api/presets'), getJson('/api/folder')]);
+  const select = $('preset');
+  const first = select.querySelector('option[data-initial]');
+  select.textContent = '';
+  // A menu rather than a state: it shows "Open a preset…" again after each choice.
+  select.appendChild(Object.assign(option('Open a preset…', {}), { selected: true }));
+  const initial = first || option(`${initialName} (command line)`, { initial: true });
+  initial.dataset.initial = '';
+  select.appendChild(initial);
+  const group = (label) => {
+    const g = document.createElement('optgroup');
+    g.label = label;
+    select.appendChild(g);
+    return g;
+  };
+  const s = group('Shipped');
+  for (const p of shipped) s.appendChild(option(`${p.name} (${p.maps} maps)`, { name: p.name }, p.description));
+  const f = group('Folder');
+  const unusable = [];
+  for (const p of folder) {
+    const label = p.entry !== undefined ? `${p.file}: ${p.entry}` : p.file;
+    const o = option(p.problem ? `${label} — unusable` : `${label} (${p.maps} maps)`,
+                     { file: p.file, entry: p.entry }, p.problem || p.description);
+    o.disabled = Boolean(p.problem);
+    f.appendChild(o);
+    if (p.problem) unusable.push([label, p.problem]);
+  }
+  if (!folder.length) f.appendChild(Object.assign(option('(no .toml or .ifs file)', {}), { disabled: true }));
+  const list = $('unusable-list');
+  list.textContent = '';
+  for (const [label, problem] of unusable) {
+    const li = document.createElement('li');
+    const b = document.createElement('b');
+    b.textContent = label;
+    li.append(b, `: ${problem}`);
+    list.appendChild(li);
+  }
+  $('unusable').hidden = !unusable.length;
+  $('unusable-count').textContent = `${unusable.length} unusable preset${unusable.length === 1 ? '' : 's'} in the folder`;
+}
+
+async function listSources(choose) {
+  const sources = await getJson('/api/sources');
+  const select = $('source');
+  const keep = choose || select.value;
+  select.textContent = '';
+  for (const s of sources) {
+    const o = document.createElement('option');
+    o.value = o.textContent = s;
+    select.appendChild(o);
+  }
+  if (keep && sources.includes(keep)) select.value = keep;
+}
 
 function open(preset) {
-  state = { name: preset.name, description: preset.description || '', maps: preset.maps,
-            probabilities: preset.probabilities || [], colours: preset.colours || [] };
+  doc = { name: preset.name, description: preset.description || '', maps: preset.maps,
+          probabilities: preset.probabilities || [], colours: preset.colours || [],
+          colouring: preset.colouring || null, allow_expansive: Boolean(preset.allow_expansive) };
   selected = 0;
-  lockedView = null;
-  $('file').value = `${preset.name}.toml`;
+  view.rect = null;
+  frame = frameRect = null;
+  picture = null;
+  openedFile = preset.origin_file || null;
+  $('file').value = openedFile === `${preset.name}.toml` ? `${preset.name}-2.toml` : `${preset.name}.toml`;
+  if (preset.warnings && preset.warnings.length) status(preset.warnings.join('; '));
   changed();
 }
 
-async function json(path) {
-  const res = await api(path);
-  const body = await res.json();
-  if (!res.ok) throw new Error(body.error);
-  return body;
+async function openSelected() {
+  const which = JSON.parse($('preset').value || '{}');
+  $('preset').selectedIndex = 0;
+  if (!which.initial && !which.name && !which.file) return;
+  const query = which.initial ? '' : which.name ? `?name=${encodeURIComponent(which.name)}`
+    : `?file=${encodeURIComponent(which.file)}` + (which.entry !== undefined ? `&entry=${encodeURIComponent(which.entry)}` : '');
+  try {
+    const preset = await getJson(`/api/preset${query}`);
+    pushUndo();
+    open(preset);
+  } catch (e) { status(e.message, true); }
+}
+
+async function save() {
+  const body = Object.assign(requestBody(), { file: $('file').value });
+  if (doc.colouring) body.colouring = doc.colouring;
+  try {
+    const answer = await postJson('/api/save', body);
+    status(`saved ${answer.saved}` + (answer.colouring ? ` and its colouring ${answer.colouring}` : ''));
+    await listPresets();
+  } catch (e) { status(e.message, true); }
+}
+
+function modeChanged() {
+  $('source-label').hidden = !steal();
+  refresh();
+  showSource();
+  renderer.changed();
 }
 
 async function start() {
   if (!token) { status('open the URL that `ifsfx studio` printed: it carries the token', true); return; }
-  const [presets, sources, initial] = await Promise.all([
-    json('/api/presets'), json('/api/sources'), json('/api/preset')]);
-  const select = $('preset');
-  for (const p of [{ name: initial.name, description: 'opened' }, ...presets]) {
-    const o = document.createElement('option');
-    o.value = p.name === initial.name && p.description === 'opened' ? '' : p.name;
-    o.textContent = `${p.name}${p.maps ? ` (${p.maps} maps)` : ''}`;
-    select.appendChild(o);
-  }
-  for (const s of sources) {
-    const o = document.createElement('option');
-    o.value = o.textContent = s;
-    $('source').appendChild(o);
-  }
-  select.onchange = async () => {
-    try {
-      const preset = await json(select.value ? `/api/preset?name=${encodeURIComponent(select.value)}` : '/api/preset');
-      undoStack.push(snapshot());
-      redoStack.length = 0;
-      open(preset);
-    } catch (e) { status(String(e.message), true); }
-  };
-  const modeChanged = () => {
-    $('source-label').style.display = $('mode').value === 'steal' ? '' : 'none';
-    render();
-  };
+  const initial = await getJson('/api/preset');
+  await Promise.all([listPresets(initial.name), listSources()]);
+  $('preset').onchange = openSelected;
   $('mode').onchange = modeChanged;
-  $('source').onchange = () => render();
-  $('size').onchange = () => { lockedView = null; render(); };
-  $('reframe').onclick = () => { lockedView = null; render(); };
+  $('source').onchange = () => { showSource(); renderer.changed(); };
+  $('size').onchange = () => {
+    const [w, h] = $('size').value.split('x').map(Number);
+    canvas.width = w;
+    canvas.height = h;
+    draw();
+    renderer.changed();
+  };
+  $('reframe').onclick = () => { view.rect = null; frame = frameRect = null; renderer.changed(); };
+  $('reset-view').onclick = () => {
+    if (!frameRect) return;
+    view.rect = frameRect.slice();
+    draw();
+    renderer.changed();
+  };
   $('undo').onclick = undo;
   $('redo').onclick = redo;
   $('add').onclick = add;
   $('save').onclick = save;
-  $('source-label').style.display = 'none';
+  $('reset-colouring').onclick = () => edit(() => { doc.colouring = null; });
+  $('upload').onchange = () => { if ($('upload').files[0]) upload($('upload').files[0]); };
+  document.addEventListener('dragover', (e) => { e.preventDefault(); document.body.classList.add('dropping'); });
+  document.addEventListener('dragleave', () => document.body.classList.remove('dropping'));
+  document.addEventListener('drop', (e) => {
+    e.preventDefault();
+    document.body.classList.remove('dropping');
+    const file = e.dataTransfer.files[0];
+    if (file) upload(file);
+  });
+  $('source-label').hidden = true;
   open(initial);
 }
 
-async function save() {
-  const res = await api('/api/save', {
-    method: 'POST', body: JSON.stringify(Object.assign(requestBody(), { file: $('file').value })),
-  });
-  const body = await res.json();
-  if (res.ok) status(`saved ${body.saved}`);
-  else status(body.error, true);
-}
-
 document.addEventListener('keydown', (event) => {
-  if (event.target.tagName === 'INPUT') return;
+  if (event.target.tagName === 'INPUT' || event.target.tagName === 'SELECT') return;
   const key = event.key.toLowerCase();
   if ((event.ctrlKey || event.metaKey) && key === 'z') {
     event.preventDefault();

@@ -3,7 +3,7 @@
 // with the handles of the editor: "Edit in editor" and "Take from editor"), V changed, and its
 // V-variable texture sequence stepped and played (the server renders texture k of
 // superifs::TextureSequence); saved as .super.toml, or rendered as a texture-sequence job.
-import { el, json, blob, panel, say, client, openInEditor, fileUrl } from './api.js';
+import { el, json, blob, panel, say, openInEditor, fileUrl } from './panels.js';
 import { startJob } from './jobs.js';
 
 const body = panel('superifs', 'SuperIFS');
@@ -52,7 +52,7 @@ const fmt = (x) => String(Number(Number(x).toPrecision(6)));
 
 function request(k) {
   return { superifs, V: Number(V.value), mode: mode.value, size: size.value,
-           seed: Number(seed.value), step: k, client,
+           seed: Number(seed.value), step: k,
            source: mode.value === 'steal' ? 'sample' : undefined };
 }
 
@@ -195,7 +195,6 @@ jobButton.onclick = async () => {
   const r = Object.assign(request(0), { kind: 'texture', file: jobFile.value, size: jobSize.value,
                                         frames: Number(frames.value), crossfade: Number(crossfade.value) });
   delete r.step;
-  delete r.client;
   try {
     const job = await startJob(r, {
       onUpdate: (j) => {

@@ -2,7 +2,7 @@
 // Video (docs/studio.md): a movie of the folder (or --source) scrubbed frame by frame through the
 // fractal filter of the editor's preset (the FractalEngine of `ifsfx filter`), played to preview
 // the drift, filtered whole as a render job; and with --camera, the live filter on the camera.
-import { el, json, blob, panel, say, show, client, editorRequest, session, fileUrl } from './api.js';
+import { el, json, blob, panel, say, show, editorRequest, session, fileUrl } from './panels.js';
 import { startJob } from './jobs.js';
 
 const body = panel('video', 'Video');
@@ -54,7 +54,7 @@ function settings() {
   return Object.assign(request, {
     filter: filterOn.checked, animate: drift.checked ? 'drift' : 'none',
     drift_amount: Number(amount.value), drift_speed: Number(speed.value), mix: Number(mix.value),
-    width: Number(width.value), client,
+    width: Number(width.value),
   });
 }
 
