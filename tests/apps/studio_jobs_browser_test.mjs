@@ -151,11 +151,12 @@ try {
   await page.fill('#file', 'export.toml');
   await page.click('#save');
   await page.waitForFunction(() => /saved|error/.test(document.getElementById('status').textContent));
-  const view = await page.evaluate(() => window.studio.requestBody().view);
-  execFileSync(ifsfx, ['render', path.join(folder, 'export.toml'), '--mode', 'tops', '--size', '256x256',
+  const { view, mode } = await page.evaluate(() => window.studio.requestBody());
+  check(mode === 'tops', `the editor is still in tops mode (a shape dropped to fit is no source; got ${mode})`);
+  execFileSync(ifsfx, ['render', path.join(folder, 'export.toml'), '--mode', mode, '--size', '256x256',
                        '--view', view, '-q', '-o', path.join(work, 'cli-export.png')]);
   check(readFileSync(path.join(folder, 'export.png')).equals(readFileSync(path.join(work, 'cli-export.png'))),
-        `the exported still is ifsfx render's byte for byte (view ${view})`);
+        `the exported still is ifsfx render's byte for byte (${mode}, view ${view})`);
   // A refused job shows its error in the page.
   await page.fill('#still-file', '../outside.png');
   await page.click('#still-export');

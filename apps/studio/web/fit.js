@@ -84,10 +84,16 @@ async function showPreview(id) {
 cancel.onclick = () => current && cancelJob(current);
 openButton.onclick = () => result && openInEditor(result);
 chooser.onchange = () => chooser.files[0] && fit(chooser.files[0]);
-zone.addEventListener('dragover', (e) => { e.preventDefault(); zone.classList.add('over'); });
+// A drop here is a shape to fit, not the editor's new source (the page's own drop target).
+zone.addEventListener('dragover', (e) => {
+  e.preventDefault();
+  e.stopPropagation();
+  zone.classList.add('over');
+});
 zone.addEventListener('dragleave', () => zone.classList.remove('over'));
 zone.addEventListener('drop', (e) => {
   e.preventDefault();
+  e.stopPropagation();
   zone.classList.remove('over');
   const file = [...e.dataTransfer.files].find((f) => f.type.startsWith('image/'));
   if (file) fit(file);

@@ -66,7 +66,24 @@ async function exportStill() {
   }
 }
 
+// A job's row; rebuilt only when its state, files or result change, so that its buttons stay
+// put while its progress moves (updated in place).
+const rows = new Map();  // id → {tr, signature, bar, detail}
+
+function detailOf(job) {
+  const detail = job.state === 'failed' || job.state === 'cancelled' ? job.error || job.detail
+    : job.detail;
+  return `${job.phase}${detail ? ` · ${detail}` : ''}`;
+}
+
 function row(job) {
+  const signature = JSON.stringify([job.state, job.files, Boolean(job.result && job.result.preset)]);
+  const known = rows.get(job.id);
+  if (known && known.signature === signature) {
+    if (job.progress !== null) known.bar.value = job.progress;
+    known.detail.textContent = detailOf(job);
+    return known.tr;
+  }
   const pending = job.state === 'queued' || job.state === 'running';
   const bar = el('progress', { max: 1 });
   if (job.progress !== null) bar.value = job.progress;  // no value: an indeterminate bar
@@ -78,15 +95,15 @@ function row(job) {
   if (job.kind === 'fit' && job.result && job.result.preset)
     actions.append(el('button', { class: 'open', onclick: () => openInEditor(job.result.preset) },
                       'Open'));
-  const detail = job.state === 'failed' || job.state === 'cancelled' ? job.error || job.detail
-    : job.detail;
-  return el('tr', { 'data-job': job.id, class: `job ${job.state}` },
-            el('td', {}, String(job.id)),
-            el('td', {}, `${job.kind}: ${job.title}`),
-            el('td', { class: 'state' }, job.state),
-            el('td', {}, bar),
-            el('td', { class: 'detail' }, `${job.phase}${detail ? ` · ${detail}` : ''}`),
-            files, actions);
+  const detail = el('td', { class: 'detail' }, detailOf(job));
+  const tr = el('tr', { 'data-job': job.id, class: `job ${job.state}` },
+                el('td', {}, String(job.id)),
+                el('td', {}, `${job.kind}: ${job.title}`),
+                el('td', { class: 'state' }, job.state),
+                el('td', {}, bar), detail, files, actions);
+  if (known) known.tr.replaceWith(tr);
+  rows.set(job.id, { tr, signature, bar, detail });
+  return tr;
 }
 
 let last = '';
@@ -100,7 +117,11 @@ async function refresh() {
     if (text !== last) {
       last = text;
       const tbody = list.querySelector('tbody');
-      tbody.replaceChildren(...jobs.map(row));
+      const shown = jobs.map(row);
+      for (const [id, r] of rows)
+        if (!jobs.some((j) => j.id === id)) { r.tr.remove(); rows.delete(id); }
+      // Newest first; a row is moved only when the order differs.
+      shown.forEach((tr, i) => { if (tbody.children[i] !== tr) tbody.insertBefore(tr, tbody.children[i] || null); });
       for (const job of jobs) {
         const callback = listeners.get(job.id);
         if (callback) {
