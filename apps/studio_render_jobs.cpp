@@ -98,9 +98,18 @@ int submit_filter(JobQueue& jobs, const json& body, StudioContext& context) {
   auto preset_file = std::make_shared<ScratchFile>(context.scratch_name(".toml"));
   write_file(preset_file->path(), preset.text);
   args.fractal.engine.preset = preset_file->path().string();
+  // The editor's colouring IFS G, when it sends one (steal mode), as `--colouring FILE`.
+  colouring_from_json(body, preset.ifs);  // the count checked
+  std::shared_ptr<ScratchFile> colouring_file;
+  if (const auto g = colouring_preset(body, preset.ifs.name + "-colouring")) {
+    colouring_file = std::make_shared<ScratchFile>(context.scratch_name(".toml"));
+    write_file(colouring_file->path(), g->text);
+    args.fractal.engine.colouring = colouring_file->path().string();
+  }
   const std::string name = fs::path(args.output).filename().string();
   JobSpec spec{.kind = "filter", .title = name, .writes = {args.output}, .reads = {args.input}};
-  return jobs.submit(std::move(spec), [args, policy, preset_file, name](JobContext& job) {
+  return jobs.submit(std::move(spec), [args, policy, preset_file, colouring_file,
+                                       name](JobContext& job) {
     job.progress(-1, "preparing", "the steal map");
     FilterRun run;
     run.stop = job.stop();

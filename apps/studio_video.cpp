@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include <fmt/format.h>
@@ -110,6 +111,9 @@ std::string FilterPreviews::jpeg(const std::string& channel, const json& body, c
   }
   // The settings of `ifsfx filter` (apps/fractal_filter_options.h) that the page sets.
   const IfsPreset preset = preset_from_json(body);
+  // The editor's colouring IFS G, when it sends one (steal mode), as `--colouring FILE`.
+  colouring_from_json(body, preset.ifs);  // the count checked
+  const std::optional<IfsPreset> colouring = colouring_preset(body, preset.ifs.name + "-colouring");
   video::FractalSettings s;
   s.exact = bool_field(body, "exact", true);
   s.sampling.view = view_option(text_field(body, "view", ""), "view");
@@ -125,6 +129,7 @@ std::string FilterPreviews::jpeg(const std::string& channel, const json& body, c
       video::parse_background(text_field(body, "background", "black"), "background");
   const std::string key = json{channel,
                                preset.text,
+                               colouring ? colouring->text : std::string(),
                                s.exact,
                                text_field(body, "view", ""),
                                static_cast<int>(s.animate),
@@ -166,6 +171,11 @@ std::string FilterPreviews::jpeg(const std::string& channel, const json& body, c
     const ScratchFile file(context.scratch_name(".toml"));
     write_file(file.path(), preset.text);
     s.preset = file.path().string();
+    const ScratchFile g(context.scratch_name(".toml"));
+    if (colouring) {
+      write_file(g.path(), colouring->text);
+      s.colouring = g.path().string();
+    }
     auto engine = std::make_unique<video::FractalEngine>(s);
     engine->prepare(frame.size(), size, fps > 0 ? fps : 25);
     entry->engine = std::move(engine);

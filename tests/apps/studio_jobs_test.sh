@@ -64,6 +64,7 @@ code() {
 }
 field() { python3 -c "import json,sys; d=json.load(open('$work/body')); print($1)" 2>/dev/null; }
 has_error() { grep -q '"error"' "$work/body"; }
+job_id() { sed -n 's/.*"id":\([0-9]*\).*/\1/p' "$work/body"; }
 
 # wait_job ID: until the job ends; its JSON in $work/body, its state printed
 wait_job() {
@@ -121,6 +122,10 @@ c=$(code POST /api/video/frame "${auth[@]}" -H "X-Ifsfx-Client: t2" --data "$(wi
 cmp -s body frame5.jpg && pass "frame 5 is the same from another tab" || fail "frame 5 differs between tabs"
 c=$(code POST /api/video/frame "${auth[@]}" --data "$(with '"movie": "clip.mp4", "frame": 5, "filter": false')")
 [[ $c == 200 ]] && ! cmp -s body frame5.jpg && pass "frame 5 unfiltered differs from filtered" || fail "unfiltered frame: $c"
+swapped='[[0.5, 0, 0, 0.5, 0.5, 0.5], [0.5, 0, 0, 0.5, 0, 0.5], [0.5, 0, 0, 0.5, 0.5, 0], [0.5, 0, 0, 0.5, 0, 0]]'
+c=$(code POST /api/video/frame "${auth[@]}" -H "X-Ifsfx-Client: t1" --data "$(with "\"movie\": \"clip.mp4\", \"frame\": 5, \"colouring\": $swapped")")
+[[ $c == 200 ]] && ! cmp -s body frame5.jpg && pass "frame 5 through the editor's colouring IFS differs" || fail "colouring frame: $c"
+c=$(code POST /api/video/frame "${auth[@]}" --data "$(with '"movie": "clip.mp4", "frame": 5, "colouring": [[0.5, 0, 0, 0.5, 0, 0]]')"); [[ $c == 400 ]] && pass "a colouring of the wrong count: 400" || fail "colouring count: $c"
 c=$(code POST /api/video/frame "${auth[@]}" --data "$(with '"movie": "@source", "frame": 5, "animate": "drift", "drift_amount": 0.2')")
 [[ $c == 200 ]] && pass "a drifting frame of --source" || fail "drift frame: $c $(head -c 200 body)"
 c=$(code POST /api/video/frame "${auth[@]}" --data "$(with '"movie": "clip.mp4", "frame": 12')"); [[ $c == 400 ]] && has_error && pass "a frame beyond the end: 400 ($(cat body))" || fail "frame beyond: $c"
@@ -137,7 +142,7 @@ for args in "tops 96x96" "steal 64x48 photo.png"; do
   cli=()
   [[ -n $source ]] && extra+=", \"source\": \"$source\"" && cli=(--source "folder/$source")
   c=$(code POST /api/jobs "${auth[@]}" --data "$(with "$extra")")
-  id=$(field "d['id']")
+  id=$(job_id)
   [[ $c == 202 && $(wait_job "$id") == done && $(field "d['files']") == "['still-$mode.png']" ]] || fail "still $mode: $c $(cat body)"
   "$ifsfx" render folder/fern.toml --mode "$mode" --size "$size" "${cli[@]}" -q -o "cli-$mode.png"
   cmp -s "folder/still-$mode.png" "cli-$mode.png" && pass "still job $mode $size: byte for byte ifsfx render" ||
@@ -170,7 +175,7 @@ c=$(code POST /api/jobs/999/cancel "${auth[@]}" --data ''); [[ $c == 404 ]] && p
 
 # ---- the movie filter: the frames of `ifsfx filter` ----
 c=$(code POST /api/jobs "${auth[@]}" --data "$(with '"kind": "filter", "movie": "clip.mp4", "file": "filtered.mp4"')")
-id=$(field "d['id']")
+id=$(job_id)
 [[ $c == 202 && $(wait_job "$id") == done && $(field "d['files']") == "['filtered.mp4']" ]] || fail "filter job: $c $(cat body)"
 "$ifsfx" filter folder/clip.mp4 --preset folder/fern.toml -q -o cli-filtered.mp4
 framemd5() { ffmpeg -v error -i "$1" -map 0:v -f framemd5 - | grep -v '^#'; }
@@ -183,7 +188,7 @@ c=$(code POST /api/jobs "${auth[@]}" --data "$(with '"kind": "filter", "movie": 
 # Cancelled: a playable partial movie of the frames done, as `ifsfx filter` keeps; two jobs never
 # write one file.
 c=$(code POST /api/jobs "${auth[@]}" --data "$(with '"kind": "filter", "movie": "long.mp4", "file": "long-out.mp4", "animate": "drift", "size": "960x720"')")
-long=$(field "d['id']")
+long=$(job_id)
 c=$(code POST /api/jobs "${auth[@]}" --data "$(with '"kind": "filter", "movie": "clip.mp4", "file": "long-out.mp4"')"); [[ $c == 409 ]] && has_error && pass "a second job writing the same file: 409 ($(cat body))" || fail "same output twice: $c"
 c=$(code POST /api/jobs "${auth[@]}" --data "$(with '"kind": "filter", "movie": "clip.mp4", "file": "long.mp4"')"); [[ $c == 409 ]] && has_error && pass "writing a file a job reads: 409 ($(cat body))" || fail "writing a job's input: $c"
 for _ in $(seq $((budget * 10))); do  # until some frames are done
@@ -200,7 +205,7 @@ frames=$([[ -n $partial ]] && ffprobe -v error -count_frames -show_entries strea
 
 # A cancelled still leaves no file
 c=$(code POST /api/jobs "${auth[@]}" --data "$(with '"kind": "still", "file": "big.png", "mode": "measure", "size": "2048x2048", "quality": 4000')")
-id=$(field "d['id']")
+id=$(job_id)
 sleep 0.3
 code POST "/api/jobs/$id/cancel" "${auth[@]}" --data '' >/dev/null
 [[ $(wait_job "$id") == cancelled && ! -e folder/big.png && $(hidden_files) == 0 ]] && pass "a cancelled still leaves no file" || fail "cancelled still: $(cat body)"
@@ -249,7 +254,7 @@ c=$(code POST /api/texture/frame "${auth[@]}" --data "{\"superifs\": $super, \"s
 c=$(code POST /api/texture/frame "${auth[@]}" --data "{\"superifs\": $super, \"V\": 0}"); [[ $c == 400 ]] && pass "V = 0: 400" || fail "V 0: $c"
 c=$(code POST /api/texture/frame "${auth[@]}" --data "{\"superifs\": $super, \"size\": \"4096x4096\"}"); [[ $c == 400 ]] && pass "a preview above 1024: 400" || fail "big texture: $c"
 c=$(code POST /api/jobs "${auth[@]}" --data "{\"kind\": \"texture\", \"superifs\": $edited, \"file\": \"tex.png\", \"frames\": 3, \"crossfade\": 2, \"size\": \"48x48\", \"V\": 2, \"mode\": \"tops\"}")
-id=$(field "d['id']")
+id=$(job_id)
 [[ $c == 202 && $(wait_job "$id") == done && $(field "d['files']") == "['tex_0001.png', 'tex_0002.png', 'tex_0003.png']" ]] || fail "texture job: $c $(cat body)"
 "$ifsfx" texture folder/edited.super.toml --frames 3 --crossfade 2 --size 48x48 -V 2 --mode tops -q -o "cli_%04d.png"
 same=1
@@ -260,7 +265,7 @@ c=$(code POST /api/jobs "${auth[@]}" --data "{\"kind\": \"texture\", \"superifs\
 # ---- fit: an uploaded shape, as `ifsfx fit` fits it ----
 fit_query="maps=3&seconds=0&evaluations=1500&size=32&name=shape.png"
 c=$(code POST "/api/fit?$fit_query" "${auth[@]}" -H "Content-Type: image/png" --data-binary @folder/shape.png)
-id=$(field "d['id']")
+id=$(job_id)
 [[ $c == 202 && $(wait_job "$id") == done ]] || fail "fit: $c $(cat body)"
 [[ $(field "len(d['result']['preset']['maps'])") == 3 && $(field "d['result']['iou'] > 0.2") == True ]] &&
   pass "fit of an upload: 3 maps, IoU $(field "round(d['result']['iou'], 3)")" || fail "fit result: $(cat body)"
@@ -270,7 +275,7 @@ field "d['result']['toml']" >studio-fit.toml
 diff -q <(cat cli-fit.toml) <(head -c -1 studio-fit.toml) >/dev/null && pass "fit without a time cap: the preset of ifsfx fit" || fail "fit differs from ifsfx fit: $(diff cli-fit.toml studio-fit.toml | head -5)"
 c=$(code GET "/api/jobs/$id/preview" "${auth[@]}"); [[ $c == 200 ]] && file body | grep -q PNG && pass "fit preview: a PNG" || fail "fit preview: $c"
 c=$(code POST /api/fit "${auth[@]}" -H "Content-Type: application/json" --data '{"file": "shape.png", "maps": 2, "seconds": 1, "size": 32}')
-id=$(field "d['id']"); [[ $c == 202 && $(wait_job "$id") == done ]] && pass "fit of a folder image" || fail "folder fit: $c $(cat body)"
+id=$(job_id); [[ $c == 202 && $(wait_job "$id") == done ]] && pass "fit of a folder image" || fail "folder fit: $c $(cat body)"
 c=$(code POST /api/fit "${auth[@]}" -H "Content-Type: application/json" --data '{"file": "../shape.png"}'); [[ $c == 400 ]] && pass "fit of ../: 400" || fail "fit ../: $c"
 c=$(code POST "/api/fit?maps=3" "${auth[@]}" -H "Content-Type: image/png" --data-binary "not an image"); [[ $c == 415 ]] && has_error && pass "fit of something else: 415" || fail "fit garbage: $c"
 c=$(code POST "/api/fit?maps=0" "${auth[@]}" -H "Content-Type: image/png" --data-binary @folder/shape.png); [[ $c == 400 ]] && pass "fit of 0 maps: 400" || fail "fit 0 maps: $c"
@@ -279,7 +284,7 @@ head -c 34000000 /dev/zero >huge.png
 c=$(code POST "/api/fit" "${auth[@]}" -H "Content-Type: image/png" --data-binary @huge.png); [[ $c == 413 ]] && has_error && pass "a 34 MB upload: 413" || fail "34 MB upload: $c"
 rm huge.png
 c=$(code POST "/api/fit?maps=3&seconds=60&size=64" "${auth[@]}" -H "Content-Type: image/png" --data-binary @folder/shape.png)
-id=$(field "d['id']"); sleep 0.5
+id=$(job_id); sleep 0.5
 code POST "/api/jobs/$id/cancel" "${auth[@]}" --data '' >/dev/null
 [[ $(wait_job "$id") == cancelled ]] && pass "a fit cancelled" || fail "fit cancel: $(cat body)"
 [[ -z $(ls -A tmp | grep -v '^ifsfx-studio-') && -z $(ls -A tmp/ifsfx-studio-* 2>/dev/null) ]] && pass "uploads removed from the scratch folder" || fail "scratch holds $(ls -A tmp/*)"
