@@ -11,6 +11,10 @@
 
 namespace ifsfx::app {
 
+// Throws Error{parse} "FIELD: RULE (got GOT)".
+[[noreturn]] void bad_field(const std::string& field, const std::string& rule,
+                            const nlohmann::json& got);
+
 // body[field] when present (and not null), else `fallback`; a string.
 std::string text_field(const nlohmann::json& body, const char* field, const std::string& fallback);
 // A string that must be given.

@@ -17,35 +17,29 @@ using nlohmann::json;
 
 namespace {
 
-[[noreturn]] void bad(const std::string& field, const std::string& rule, const json& got) {
-  throw Error(ErrorKind::parse,
-              fmt::format("{}: {} (got {})", field, rule,
-                          got.dump(-1, ' ', false, json::error_handler_t::replace)));
-}
-
 std::vector<double> numbers(const json& value, const std::string& field) {
-  if (!value.is_array()) bad(field, "must be a list of numbers", value);
+  if (!value.is_array()) bad_field(field, "must be a list of numbers", value);
   std::vector<double> out;
   for (const json& v : value) {
-    if (!v.is_number()) bad(field, "must be a list of numbers", value);
+    if (!v.is_number()) bad_field(field, "must be a list of numbers", value);
     out.push_back(v.get<double>());
   }
   return out;
 }
 
 Ifs ifs_from_json(const json& table, const std::string& field) {
-  if (!table.is_object()) bad(field, "must be an object {\"maps\": [...]}", table);
+  if (!table.is_object()) bad_field(field, "must be an object {\"maps\": [...]}", table);
   Ifs f;
   f.name = text_field(table, "name", "");
   const auto maps = table.find("maps");
   if (maps == table.end() || !maps->is_array() || maps->empty())
-    bad(field + " maps", "must be a non-empty list of [a, b, c, d, e, f]",
-        maps == table.end() ? json("nothing") : *maps);
-  if (maps->size() > 64) bad(field + " maps", "at most 64", json(maps->size()));
+    bad_field(field + " maps", "must be a non-empty list of [a, b, c, d, e, f]",
+              maps == table.end() ? json("nothing") : *maps);
+  if (maps->size() > 64) bad_field(field + " maps", "at most 64", json(maps->size()));
   for (std::size_t i = 0; i < maps->size(); ++i) {
     const auto k = numbers((*maps)[i], fmt::format("{} map {}", field, i + 1));
     if (k.size() != 6)
-      bad(fmt::format("{} map {}", field, i + 1), "must be [a, b, c, d, e, f]", (*maps)[i]);
+      bad_field(fmt::format("{} map {}", field, i + 1), "must be [a, b, c, d, e, f]", (*maps)[i]);
     f.maps.push_back({k[0], k[1], k[2], k[3], k[4], k[5]});
   }
   if (const auto p = table.find("probabilities"); p != table.end() && !p->is_null())
@@ -62,12 +56,12 @@ json ifs_to_json(const Ifs& f) {
 std::vector<Ifs> ifs_list(const json& body, const char* key, const char* what, bool required) {
   const auto it = body.find(key);
   if (it == body.end() || it->is_null()) {
-    if (required) bad(key, "must be a non-empty list of IFSs", json("nothing"));
+    if (required) bad_field(key, "must be a non-empty list of IFSs", json("nothing"));
     return {};
   }
   if (!it->is_array() || (required && it->empty()))
-    bad(key, "must be a non-empty list of IFSs", *it);
-  if (it->size() > 16) bad(key, "at most 16 IFSs", json(it->size()));
+    bad_field(key, "must be a non-empty list of IFSs", *it);
+  if (it->size() > 16) bad_field(key, "at most 16 IFSs", json(it->size()));
   std::vector<Ifs> out;
   for (std::size_t n = 0; n < it->size(); ++n)
     out.push_back(ifs_from_json((*it)[n], fmt::format("{} {}", what, n + 1)));
@@ -77,7 +71,7 @@ std::vector<Ifs> ifs_list(const json& body, const char* key, const char* what, b
 }  // namespace
 
 SuperIfsPreset superifs_from_json(const json& body) {
-  if (!body.is_object()) bad("superifs", "must be a JSON object", body);
+  if (!body.is_object()) bad_field("superifs", "must be a JSON object", body);
   SuperIfs super;
   super.name = text_field(body, "name", "studio");
   if (super.name.empty()) super.name = "studio";
@@ -88,7 +82,7 @@ SuperIfsPreset superifs_from_json(const json& body) {
     super.probabilities = numbers(*p, "probabilities");
   if (const auto v = body.find("view"); v != body.end() && !v->is_null()) {
     const auto box = numbers(*v, "view");
-    if (box.size() != 4) bad("view", "must be [x0, y0, x1, y1]", *v);
+    if (box.size() != 4) bad_field("view", "must be [x0, y0, x1, y1]", *v);
     super.view = Box{box[0], box[1], box[2], box[3]};
   }
   validate(super, super.name);
@@ -113,14 +107,14 @@ json superifs_to_json(const SuperIfsPreset& preset) {
 
 std::string TexturePreviews::frame_png(const json& body, const std::string& client,
                                        StudioContext& context) {
-  if (!body.is_object()) bad("request", "must be a JSON object", body);
-  if (!body.contains("superifs")) bad("superifs", "must be given", json("nothing"));
+  if (!body.is_object()) bad_field("request", "must be a JSON object", body);
+  if (!body.contains("superifs")) bad_field("superifs", "must be given", json("nothing"));
   const SuperIfsPreset preset = superifs_from_json(body["superifs"]);
   const std::string size_text = text_field(body, "size", "384x384");
   const cv::Size size = size_option(size_text, "size");
   if (size.width > 1024 || size.height > 1024)
-    bad("size", "at most 1024x1024 for a preview (a texture job makes larger ones)",
-        json(size_text));
+    bad_field("size", "at most 1024x1024 for a preview (a texture job makes larger ones)",
+              json(size_text));
   const int V = static_cast<int>(integer_field(body, "V", 3, 1, 64));
   const int buffer = static_cast<int>(integer_field(body, "buffer", 1, 1, V));
   const std::string mode_text =
