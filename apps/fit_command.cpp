@@ -18,6 +18,7 @@
 
 #include "apps/cli_options.h"
 #include "apps/commands.h"
+#include "apps/fit_run.h"
 #include "apps/stop_signals.h"
 #include "collage/fit.h"
 #include "collage/preview.h"
@@ -31,45 +32,6 @@
 
 namespace ifsfx::app {
 namespace {
-
-struct FitArgs {
-  std::string target;
-  std::string output;
-  int maps = 4;
-  std::uint64_t seed = 1;
-  collage::Initialisation init = collage::Initialisation::search;
-  std::optional<double> threshold;
-  bool invert = false;
-  bool json = false;
-  bool progress = false;
-  double max_seconds = 30;
-  long max_evaluations = 250000;
-  std::string preview;
-  std::string size = "128";
-  int threads = 0;
-};
-
-// The working raster's side from "S" or "SxS".
-int working_size(const std::string& text) {
-  if (text.find('x') == std::string::npos) {
-    int side = 0;
-    try {
-      std::size_t used = 0;
-      side = std::stoi(text, &used);
-      if (used != text.size()) side = 0;
-    } catch (const std::exception&) {
-      side = 0;
-    }
-    if (side <= 0)
-      throw Error(ErrorKind::parse, fmt::format("--size: expected S or SxS (got '{}')", text));
-    return side;
-  }
-  const cv::Size size = parse_size(text, "--size");
-  if (size.width != size.height)
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("--size: the working raster is square (got {})", text));
-  return size.width;
-}
 
 enum class PresetFormat { toml, fractint };
 
@@ -113,22 +75,7 @@ void check_fit_outputs(const FitArgs& args, const std::filesystem::path& output,
           ErrorKind::invalid_argument,
           fmt::format("--preview {}: must differ from -o (got the same file)", args.preview));
   }
-  if (args.maps < 1 || args.maps > 32)
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("-n: the number of maps must be in 1..32 (got {})", args.maps));
-}
-
-collage::FitOptions fit_options(const FitArgs& args, const CancelToken& cancel) {
-  collage::FitOptions options;
-  options.maps = args.maps;
-  options.seed = args.seed;
-  options.init = args.init;
-  options.max_seconds = args.max_seconds;
-  options.max_evaluations = args.max_evaluations;
-  options.threads = args.threads;
-  options.cancel = cancel;
-  options.name = valid_utf8(std::filesystem::path(args.target).stem().string());
-  return options;
+  check_fit_maps(args.maps);
 }
 
 // --progress: one line on stderr, redrawn in place. Every change of phase is shown; within a
@@ -174,9 +121,7 @@ collage::FitResult fit_with_progress(const cv::Mat& raster, collage::FitOptions 
 void write_fit_outputs(const FitArgs& args, const std::filesystem::path& output,
                        PresetFormat format, const OutputOptions& policy, const cv::Mat& raster,
                        const collage::FitResult& result) {
-  const collage::CollageReport& r = result.report;
-  const std::string summary = fmt::format("fitted by ifsfx fit to {}: IoU {:.3f}, s {:.3f}",
-                                          args.target, r.iou, r.contraction);
+  const std::string summary = fit_summary(args, result);
   std::vector<OutputFile> staged;
   staged.emplace_back(output, policy);
   write_file(staged.back(), format == PresetFormat::toml ? to_toml(result.ifs, summary)
@@ -268,11 +213,7 @@ void run_fit(const FitArgs& args) {
   policy.inputs.add(args.target);
   check_fit_outputs(args, output, policy);
 
-  collage::TargetOptions target_options;
-  target_options.threshold = args.threshold;
-  target_options.invert = args.invert;
-  const cv::Mat mask = collage::load_target(args.target, target_options);
-  const cv::Mat raster = collage::working_raster(mask, {.size = working_size(args.size)});
+  const cv::Mat raster = fit_raster(args);
 
   const collage::FitResult result =
       fit_with_progress(raster, fit_options(args, policy.cancel), args.progress);

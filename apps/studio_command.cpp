@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// `ifsfx studio [PRESET] [--port N] [--folder DIR] [--open]`: a local web editor served by the
+// `ifsfx studio [PRESET] [--source IMAGE|MOVIE] [--camera /dev/videoN] [--port N] [--folder DIR]
+// [--open]`: a local web editor served by the
 // engine (docs/studio.md). An HTTP server (cpp-httplib) on 127.0.0.1 serves the page's files
 // (apps/studio/web, installed in share/ifsfx/studio) and a small JSON API; the page sends the
 // whole preset with every render, and the server renders it with `ifsfx render`'s library calls
@@ -37,7 +38,9 @@
 #include "apps/commands.h"
 #include "apps/stop_signals.h"
 #include "apps/studio_folder.h"
+#include "apps/studio_http.h"
 #include "apps/studio_render.h"
+#include "apps/studio_routes.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
@@ -53,12 +56,10 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-constexpr std::size_t kMaxBody = 1 << 20;  // a preset of 64 maps is a few kB
-constexpr int kMaxMaps = 64;               // as preset_from_json takes
-constexpr double kSourcePreview = 1024;    // the source beside the canvas, pixels a side
-constexpr int kThreads = 32;               // connections served at once
+constexpr int kMaxMaps = 64;             // as preset_from_json takes
+constexpr double kSourcePreview = 1024;  // the source beside the canvas, pixels a side
+constexpr int kThreads = 32;             // connections served at once
 constexpr const char* kTokenHeader = "X-Ifsfx-Token";
-constexpr const char* kClientHeader = "X-Ifsfx-Client";
 constexpr const char* kTokenCookie = "ifsfx_token";
 
 struct StudioArgs {
@@ -66,6 +67,8 @@ struct StudioArgs {
   int port = 0;
   std::string folder = ".";
   bool open = false;
+  std::string source;  // --source IMAGE|MOVIE
+  std::string camera;  // --camera /dev/videoN
 };
 
 // 128 random bits as hex, from the system's entropy (std::random_device reads getrandom).
@@ -104,50 +107,6 @@ std::string read_whole(const fs::path& path) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-void send_error(httplib::Response& res, int status, const std::string& message) {
-  res.status = status;
-  res.set_content(json{{"error", message}}.dump(), "application/json");
-}
-
-int status_of(ErrorKind kind) {
-  switch (kind) {
-    case ErrorKind::parse:
-    case ErrorKind::invalid_ifs:
-    case ErrorKind::invalid_argument:
-    case ErrorKind::unsupported:
-      return 400;
-    case ErrorKind::not_found:
-      return 404;
-
-    case ErrorKind::interrupted:
-      return 409;  // a newer request took over
-    default:
-      return 500;
-  }
-}
-
-// An HTTP status of its own (413), where no ErrorKind says it.
-struct RequestError : std::runtime_error {
-  RequestError(int code, const std::string& message) : std::runtime_error(message), status(code) {}
-  int status;
-};
-
-// Runs `handler`, turning every error into a JSON 4xx/5xx: a bad request never stops the server.
-template <typename Handler>
-void guarded(httplib::Response& res, Handler&& handler) {
-  try {
-    handler();
-  } catch (const RequestError& e) {
-    send_error(res, e.status, e.what());
-  } catch (const Error& e) {
-    send_error(res, status_of(e.kind()), e.what());
-  } catch (const json::exception& e) {
-    send_error(res, 400, fmt::format("request: not valid JSON ({})", e.what()));
-  } catch (const std::exception& e) {
-    send_error(res, 500, fmt::format("internal error: {}", e.what()));
-  }
-}
-
 // Every socket of this process shut down, so that connections idling in HTTP keep-alive (a
 // browser tab holds some for seconds) end now and the server's threads can be joined at once:
 // cpp-httplib waits out its keep-alive timeout otherwise. Only at the end; the studio holds no
@@ -161,18 +120,6 @@ void shut_down_sockets() {
   }
 }
 
-// The tab a request comes from (X-Ifsfx-Client, an id the page draws): a newer render cancels
-// the render in flight of the same tab only. Requests without one share the empty id.
-std::string client_of(const httplib::Request& req) {
-  const std::string id = req.get_header_value(kClientHeader);
-  static const std::regex plain("[A-Za-z0-9_-]{0,64}");
-  if (!std::regex_match(id, plain))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("{}: letters, digits, _ and -, at most 64 (got '{}')", kClientHeader,
-                            id.substr(0, 80)));
-  return id;
-}
-
 // A positive whole number query parameter no larger than `most`.
 int count_param(const httplib::Request& req, const char* name, int most) {
   const std::string text = req.get_param_value(name);
@@ -182,12 +129,6 @@ int count_param(const httplib::Request& req, const char* name, int most) {
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("{}: a whole number from 1 to {} (got '{}')", name, most, text));
   return value;
-}
-
-void check_body_size(const httplib::Request& req) {
-  if (req.body.size() > kMaxBody)
-    throw RequestError(413, fmt::format("request: at most {} KiB of JSON (got {} bytes)",
-                                        kMaxBody >> 10, req.body.size()));
 }
 
 class Studio {
@@ -205,8 +146,24 @@ class Studio {
     if (!mkdtemp(scratch.data()))
       throw Error(ErrorKind::io, fmt::format("{}: cannot create the scratch folder", scratch));
     scratch_ = scratch;
+    // ---- render jobs, fit, video, camera, superIFS (apps/studio_routes.h) ----
+    try {
+      extras_ = std::make_unique<StudioExtras>(StudioExtrasConfig{
+          .folder = folder_,
+          .scratch = scratch_,
+          .web = web_,
+          .inputs = [this] { return inputs(); },
+          .source = args.source,
+          .camera = args.camera,
+          .source_path = [this](const std::string& name) { return source_path(name); }});
+    } catch (...) {  // a missing --source or --camera: no scratch folder left behind
+      std::error_code ec;
+      fs::remove_all(scratch_, ec);
+      throw;
+    }
   }
   ~Studio() {
+    extras_.reset();  // its jobs end (and remove their temporary files) first
     std::error_code ec;
     fs::remove_all(scratch_, ec);
   }
@@ -228,6 +185,7 @@ class Studio {
       while (!StopSignals::stop_flag() && !done_)
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
       cancel_all();
+      extras_->stop();
       server_.stop();
       shut_down_sockets();
     });
@@ -261,6 +219,7 @@ class Studio {
 
   fs::path source_path(const std::string& name) const {
     if (name == "sample") return web_ / "sample.png";
+    if (auto image = extras_->source_image(name)) return *image;
     if (!is_image_name(name))
       throw Error(ErrorKind::invalid_argument,
                   fmt::format("source: an image of --folder (got '{}')", name));
@@ -428,6 +387,8 @@ class Studio {
     server_.Get("/api/sources", [this](const httplib::Request&, httplib::Response& res) {
       guarded(res, [&] {
         json list = json::array({"sample"});
+        if (extras_->source_image(StudioExtras::kSourceName))
+          list.push_back(StudioExtras::kSourceName);
         for (const auto& name : folder_sources(folder_)) list.push_back(name);
         res.set_content(list.dump(), "application/json");
       });
@@ -531,6 +492,9 @@ class Studio {
     });
 
     // ---- End of the editor's routes. ----
+
+    // ---- Render jobs, fit, video, camera, superIFS (apps/studio_routes.h). ----
+    extras_->add_routes(server_);
   }
 
   // NAME.colouring.toml beside a folder preset NAME.toml, as the preset's "colouring" when it has
@@ -571,6 +535,7 @@ class Studio {
   InputFiles inputs_;  // the files read: the presets opened (never saved over)
   std::map<std::string, std::shared_ptr<std::atomic<bool>>> in_flight_;  // stop flags by tab
   std::mutex upload_mutex_;
+  std::unique_ptr<StudioExtras> extras_;  // jobs, fit, video, camera, superIFS
 };
 
 }  // namespace
@@ -590,6 +555,11 @@ void add_studio_command(CLI::App& app) {
                   "Folder of source images (steal mode) and saved presets")
       ->capture_default_str();
   cmd->add_flag("--open", args->open, "Open the page in the browser (xdg-open)");
+  cmd->add_option("--source", args->source,
+                  "A movie to open in the Video panel, or an image to steal colours from (any "
+                  "folder; the page calls it @source)");
+  cmd->add_option("--camera", args->camera,
+                  "A V4L2 camera (/dev/videoN) for the live filter in the Video panel");
   cmd->callback([args] {
     StopSignals signals;
     Studio studio(*args);

@@ -82,6 +82,26 @@ fs::path folder_file(const fs::path& folder, const std::string& name, bool must_
   return real;
 }
 
+std::string lower_extension(const fs::path& name) {
+  return lower(name.extension().string());
+}
+
+std::vector<std::string> folder_files(const fs::path& folder,
+                                      const std::vector<std::string>& extensions) {
+  std::vector<std::string> names;
+  for (const auto& name : plain_files(folder)) {
+    if (std::find(extensions.begin(), extensions.end(), lower_extension(name)) == extensions.end())
+      continue;
+    try {
+      folder_file(folder, name, true);
+      names.push_back(name);
+    } catch (const Error&) {
+      // a link out of the folder, or a name folder_file does not take
+    }
+  }
+  return names;
+}
+
 bool is_image_name(std::string_view name) {
   for (const char* ext : {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".exr", ".bmp", ".webp"})
     if (ends_with(name, ext)) return true;

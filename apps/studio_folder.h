@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -35,6 +36,14 @@ std::filesystem::path folder_file(const std::filesystem::path& folder, const std
 // Whether `name` ends in an image extension the studio takes as a source (.png, .jpg, .jpeg,
 // .tif, .tiff, .exr, .bmp, .webp; any case).
 bool is_image_name(std::string_view name);
+
+// The extension of `name`, lower case, with its dot (".png").
+std::string lower_extension(const std::filesystem::path& name);
+
+// The plain names of `folder`'s files that folder_file(folder, name, true) opens (no link that
+// leads out of the folder) whose extension (lower_extension) is one of `extensions`, sorted.
+std::vector<std::string> folder_files(const std::filesystem::path& folder,
+                                      const std::vector<std::string>& extensions);
 
 // The images of `folder` by name, sorted (hidden files and folders left out).
 nlohmann::json folder_sources(const std::filesystem::path& folder);

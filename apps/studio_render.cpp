@@ -199,16 +199,10 @@ std::string rgba_bytes(const cv::Mat& image) {
   return bytes;
 }
 
-StudioPicture render_picture(const StudioRender& r, CancelToken cancel,
-                             const std::filesystem::path& scratch) {
-  using Clock = std::chrono::steady_clock;
-  const auto ms_since = [](Clock::time_point t) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-  };
-  const auto start = Clock::now();
+StudioImage studio_image(const StudioRender& r, CancelToken cancel,
+                         const std::filesystem::path& output) {
   RenderOptions options = r.options;
   options.sampling.cancel = cancel;
-  const std::string output = (scratch / "render.png").string();  // the format of the picture
   const Rgb background = colour_option("black");
   RenderStats stats;
   cv::Mat image;
@@ -219,7 +213,7 @@ StudioPicture render_picture(const StudioRender& r, CancelToken cancel,
     image = render_measure(r.preset.ifs, r.size, options, &stats);
   } else if (r.mode == "tops") {
     image = tops_image(r.preset.ifs, r.size, {.sampling = options.sampling, .exact = r.exact},
-                       background, output, &stats);
+                       background, output.string(), &stats);
   } else {
     image = steal_image(r.preset.ifs, r.size, {.sampling = options.sampling, .exact = r.exact},
                         {.source = r.source.string(),
@@ -227,19 +221,31 @@ StudioPicture render_picture(const StudioRender& r, CancelToken cancel,
                          .background = background,
                          .quiet = true,
                          .output = {.cancel = cancel}},
-                        output, staged, &stats);
+                        output.string(), staged, &stats);
   }
-  StudioPicture picture{.view = stats.view, .render_ms = ms_since(start)};
+  StudioImage out{.image = std::move(image), .view = stats.view};
+  out.write.metadata = render_metadata(r.preset, r.mode, options.sampling.seed, stats.view);
+  return out;
+}
+
+StudioPicture render_picture(const StudioRender& r, CancelToken cancel,
+                             const std::filesystem::path& scratch) {
+  using Clock = std::chrono::steady_clock;
+  const auto ms_since = [](Clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+  };
+  const auto start = Clock::now();
+  const std::filesystem::path output = scratch / "render.png";  // the format of the picture
+  const StudioImage image = studio_image(r, cancel, output);
+  StudioPicture picture{.view = image.view, .render_ms = ms_since(start)};
   const auto encode = Clock::now();
   if (r.format == PictureFormat::rgba) {
-    picture.bytes = rgba_bytes(image);
+    picture.bytes = rgba_bytes(image.image);
   } else {
-    WriteOptions write;
-    write.metadata = render_metadata(r.preset, r.mode, options.sampling.seed, stats.view);
     // Written under the output policy's temporary name and read back, never committed: the
     // destructor removes it.
     OutputFile file(output, {.cancel = cancel});
-    write_image(file, image, write);
+    write_image(file, image.image, image.write);
     std::ifstream in(file.temporary(), std::ios::binary);
     picture.bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     if (!in.good() && !in.eof())

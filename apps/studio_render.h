@@ -24,6 +24,7 @@
 #include <opencv2/core.hpp>
 
 #include "ifs/cancel.h"
+#include "ifs/image_io.h"
 #include "ifs/preset.h"
 #include "ifs/render.h"
 
@@ -76,6 +77,17 @@ struct StudioRender {
 StudioRender studio_render_from_json(
     const nlohmann::json& body,
     const std::function<std::filesystem::path(const std::string&)>& source_path);
+
+// The picture of a request as `ifsfx render ... -o OUTPUT` makes it (OUTPUT's format decides on
+// alpha) and the options that write it with the same metadata. Throws Error{interrupted} when
+// `cancel` asks to stop, and what render throws.
+struct StudioImage {
+  cv::Mat image;
+  WriteOptions write;  // the metadata `ifsfx render` stores
+  Box view;            // the plane rectangle shown
+};
+StudioImage studio_image(const StudioRender& render, CancelToken cancel,
+                         const std::filesystem::path& output);
 
 struct StudioPicture {
   std::string bytes;     // the PNG file, or the RGBA rows

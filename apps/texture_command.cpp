@@ -13,6 +13,7 @@
 #include "apps/commands.h"
 #include "apps/stop_signals.h"
 #include "apps/texture_options.h"
+#include "apps/texture_run.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
@@ -25,80 +26,12 @@ namespace ifsfx::app {
 namespace {
 
 void run_texture(const TextureArgs& args) {
-  const cv::Size size = check_texture_args(args);
-  // A numbered pattern (tex_%04d.png) numbers the frames from 1, also a single one.
-  video::check_output_name(args.output);
-  const bool numbered = video::is_sequence_pattern(args.output);
-  if (args.frames > 1 && !numbered)
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("-o: --frames needs a numbered pattern like tex_%04d.png (got {})",
-                            args.output));
-  const auto path_of = [&](int frame) -> std::filesystem::path {
-    return numbered ? video::sequence_path(args.output, frame + 1)
-                    : std::filesystem::path(args.output);
-  };
-  // A farm shard writes its own frames; each is a pure function of its index (map_at).
-  int first = 0, last = args.frames - 1;
-  if (!args.frame_range.empty()) {
-    const video::FrameRange range = video::parse_frame_range(args.frame_range, "--frame-range");
-    first = static_cast<int>(std::min<std::int64_t>(range.first, args.frames));
-    if (range.last >= 0) last = static_cast<int>(std::min<std::int64_t>(range.last, last));
-  }
-  // The output policy: no frame replaces an input; every name is checked before the burn-in.
   StopSignals signals;
-  OutputOptions output{.cancel = StopSignals::token()};
-  add_preset_input(output.inputs, args.preset);
-  output.inputs.add(args.source);
-  if (first <= last) check_writable_image(path_of(first), output, args.bits);
-  for (int frame = first + 1; frame <= last; ++frame) check_output(path_of(frame), output);
-  const SuperIfsPreset preset = load_superifs(args.preset);
-
-  TextureOptions options{
-      .sampling = {.seed = args.seed, .threads = args.threads, .cancel = output.cancel},
-      .count = args.count,
-      .steps = args.steps,
-      .buffer = args.buffer - 1,
-      .mode = args.mode};
-  if (!args.source.empty()) options.source = read_image(args.source).pixels;
-
-  const auto start = std::chrono::steady_clock::now();
-  TextureSequence textures(preset.super, size, options);
-  const std::string name = preset.super.name.empty() ? args.preset : preset.super.name;
-  const auto metadata = [&](int step) {
-    WriteOptions write;
-    write.bits = args.bits;
-    write.metadata = {
-        {"ifsfx:superpreset", preset.text},
-        {"ifsfx:superpreset_name", name},
-        {"ifsfx:mode", to_string(args.mode)},
-        {"ifsfx:V", std::to_string(args.count)},
-        {"ifsfx:buffer", std::to_string(args.buffer)},
-        {"ifsfx:seed", std::to_string(args.seed)},
-        {"ifsfx:steps", std::to_string(step)},
-        {"ImageDescription", fmt::format("ifsfx texture {} -V {} --mode {} --seed {} --steps {}",
-                                         name, args.count, to_string(args.mode), args.seed, step)},
-    };
-    return write;
-  };
-
-  // Frame j shows step s = j / K of the sequence crossfaded towards step s + 1 by (j mod K) / K.
-  // The frames are written to temporary files and put in place together at the end: a run that
-  // fails or is stopped leaves every existing frame file as it was.
-  std::vector<OutputFile> written;
-  for (int frame = first; frame <= last; ++frame) {
-    const StepPosition position = position_of_frame(frame, args.crossfade);
-    OutputFile file(path_of(frame), output);
-    write_image(file, textures.frame_at(position),
-                metadata(textures.burn_in() + static_cast<int>(position.step)));
-    written.push_back(std::move(file));
-  }
-  commit_together(written);
-  const double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const TextureOutcome out = write_textures(args, {.cancel = StopSignals::token()});
   if (!args.quiet)
-    fmt::print("{} ({}, V = {}, {}x{}): {} steps, {} frame{} in {:.3f} s -> {}\n", name,
-               to_string(args.mode), args.count, size.width, size.height, textures.steps_done(),
-               args.frames, args.frames == 1 ? "" : "s", seconds, args.output);
+    fmt::print("{} ({}, V = {}, {}x{}): {} steps, {} frame{} in {:.3f} s -> {}\n", out.name,
+               to_string(args.mode), args.count, out.size.width, out.size.height, out.steps_done,
+               args.frames, args.frames == 1 ? "" : "s", out.seconds, args.output);
 }
 
 }  // namespace

@@ -9,13 +9,57 @@
 #include <toml++/toml.h>
 
 #include "ifs/detail/toml_reader.h"
+#include "ifs/detail/toml_writer.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "ifs/utf8.h"
 
 namespace ifsfx {
+
+namespace detail {
+
+// The shortest text that reads back as exactly `x` ({fmt} prints the shortest round-trip
+// form), kept a TOML float rather than an integer so that the file reads as coefficients.
+std::string toml_number(double x) {
+  std::string s = fmt::format("{}", x);
+  if (s.find_first_of(".ein") == std::string::npos) s += ".0";
+  return s;
+}
+
+// A TOML basic string; TOML text is UTF-8, so other bytes are read as Latin-1 (valid_utf8).
+std::string toml_string(std::string_view text) {
+  const std::string s = valid_utf8(text);
+  std::string out = "\"";
+  for (char c : s) {
+    switch (c) {
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      default:
+        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
+          out += fmt::format("\\u{:04x}", static_cast<unsigned char>(c));
+        else
+          out += c;
+    }
+  }
+  return out + "\"";
+}
+
+}  // namespace detail
+
 namespace {
 
+using detail::toml_number;
+using detail::toml_string;
 using detail::TomlReader;
 
 std::vector<double> read_probabilities(const TomlReader& in, const toml::node& node,
@@ -89,42 +133,6 @@ std::vector<Rgb> read_colours(const TomlReader& in, const toml::node& node, std:
   for (std::size_t i = 0; i < values.size(); ++i)
     colours.push_back(read_colour(in, values[i], fmt::format("map {}: colour", i + 1)));
   return colours;
-}
-
-// The shortest text that reads back as exactly `x` ({fmt} prints the shortest round-trip
-// form), kept a TOML float rather than an integer so that the file reads as coefficients.
-std::string toml_number(double x) {
-  std::string s = fmt::format("{}", x);
-  if (s.find_first_of(".ein") == std::string::npos) s += ".0";
-  return s;
-}
-
-// A TOML basic string; TOML text is UTF-8, so other bytes are read as Latin-1 (valid_utf8).
-std::string toml_string(std::string_view text) {
-  const std::string s = valid_utf8(text);
-  std::string out = "\"";
-  for (char c : s) {
-    switch (c) {
-      case '"':
-        out += "\\\"";
-        break;
-      case '\\':
-        out += "\\\\";
-        break;
-      case '\n':
-        out += "\\n";
-        break;
-      case '\t':
-        out += "\\t";
-        break;
-      default:
-        if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f)
-          out += fmt::format("\\u{:04x}", static_cast<unsigned char>(c));
-        else
-          out += c;
-    }
-  }
-  return out + "\"";
 }
 
 // "#rrggbb" when the colour is exactly what such a string reads back as, else [r, g, b].

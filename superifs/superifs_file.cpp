@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "ifs/detail/toml_reader.h"
+#include "ifs/detail/toml_writer.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 
@@ -109,6 +110,48 @@ SuperIfsPreset parse_superifs_toml(std::string_view text, const std::string& fil
   // The remaining rules (singular maps, view, colouring count) have no better line than the file.
   validate(super, filename);
   return preset;
+}
+
+namespace {
+
+using detail::toml_number;
+using detail::toml_string;
+
+std::string number_list(const std::vector<double>& values) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + toml_number(values[i]);
+  return out + "]";
+}
+
+// An [[ifs]] or [[colouring]] table.
+std::string ifs_table(std::string_view key, const Ifs& f) {
+  std::string out = fmt::format("\n[[{}]]\n", key);
+  if (!f.name.empty()) out += fmt::format("name = {}\n", toml_string(f.name));
+  out += "maps = [\n  # a, b, c, d, e, f\n";
+  for (const auto& m : f.maps) {
+    const auto k = m.coefficients();
+    out += "  " + number_list({k.begin(), k.end()}) + ",\n";
+  }
+  out += "]\n";
+  if (!f.probabilities.empty())
+    out += fmt::format("probabilities = {}\n", number_list(f.probabilities));
+  return out;
+}
+
+}  // namespace
+
+std::string to_toml(const SuperIfs& super, const std::string& description) {
+  std::string out = fmt::format("name = {}\n", toml_string(super.name));
+  if (!description.empty()) out += fmt::format("description = {}\n", toml_string(description));
+  if (!super.probabilities.empty())
+    out += fmt::format("probabilities = {}\n", number_list(super.probabilities));
+  if (super.view) {
+    const Box& v = *super.view;
+    out += fmt::format("view = {}\n", number_list({v.x0, v.y0, v.x1, v.y1}));
+  }
+  for (const Ifs& f : super.ifs) out += ifs_table("ifs", f);
+  for (const Ifs& g : super.colouring) out += ifs_table("colouring", g);
+  return out;
 }
 
 namespace {

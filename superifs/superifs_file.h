@@ -40,6 +40,11 @@ inline constexpr std::string_view superifs_extension = ".super.toml";
 // probabilities or map counts.
 SuperIfsPreset parse_superifs_toml(std::string_view text, const std::string& filename);
 
+// The TOML text of a superIFS preset in the format above, which parse_superifs_toml reads back to
+// the same SuperIfs (every number exactly).
+//   write_file("mine.super.toml", to_toml(preset.super, preset.description));
+std::string to_toml(const SuperIfs& super, const std::string& description = {});
+
 // Loads a superIFS named on the command line: a shipped preset's name ("paper-fig4", the file
 // stem without .super.toml) or a path to a .toml file. Throws Error{not_found} naming the spec
 // and the shipped names when neither exists, and the parse errors above.

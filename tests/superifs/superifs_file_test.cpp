@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include "ifs/error.h"
 
@@ -65,6 +66,33 @@ TEST(superifs_file, every_shipped_superifs_loads) {
     if (i > 0) {
       EXPECT_LT(list[i - 1].name, list[i].name);
     }
+  }
+}
+
+// The studio saves edited superIFSs through to_toml: every number must come back exactly.
+TEST(superifs_file, to_toml_reads_back_to_the_same_superifs) {
+  auto presets = std::vector<SuperIfsPreset>{};
+  for (const auto& s : list_shipped_superifs()) presets.push_back(load_superifs(s.name));
+  auto odd = parse_superifs_toml(good, "two.super.toml");
+  odd.super.view = Box{-0.1, 0.2, 1.0 / 3.0, 1.5};
+  odd.super.colouring = {odd.super.ifs[1]};
+  odd.super.ifs[0].name = "quote \" and \\ back";
+  presets.push_back(odd);
+  for (const auto& p : presets) {
+    const SuperIfsPreset back = parse_superifs_toml(to_toml(p.super, "a \"description\""), "x");
+    EXPECT_EQ(back.description, "a \"description\"");
+    EXPECT_EQ(back.super.name, p.super.name);
+    EXPECT_EQ(back.super.probabilities, p.super.probabilities) << p.super.name;
+    EXPECT_EQ(back.super.view, p.super.view) << p.super.name;
+    ASSERT_EQ(back.super.size(), p.super.size());
+    for (std::size_t n = 0; n < p.super.size(); ++n) {
+      EXPECT_EQ(back.super.ifs[n].name, p.super.ifs[n].name);
+      EXPECT_EQ(back.super.ifs[n].maps, p.super.ifs[n].maps) << p.super.name << " IFS " << n + 1;
+      EXPECT_EQ(back.super.ifs[n].probabilities, p.super.ifs[n].probabilities);
+    }
+    ASSERT_EQ(back.super.colouring.size(), p.super.colouring.size());
+    for (std::size_t n = 0; n < p.super.colouring.size(); ++n)
+      EXPECT_EQ(back.super.colouring[n].maps, p.super.colouring[n].maps);
   }
 }
 

@@ -278,6 +278,13 @@ stats.view = () => view.rect && view.rect.slice();
 stats.handle = (i, kind = 'centre', corner = 0) =>
   handleClientPoint(surface, canvas, doc.maps[i], kind, corner);
 stats.sourceHandle = (i, kind = 'centre', corner = 0) => source.handle(i, kind, corner);
+// For the panels below the editor (panels.js, jobs.js, fit.js, video.js, superifs.js): the preset
+// with the picture's settings, and opening a preset as one undoable edit.
+stats.requestBody = () => JSON.parse(JSON.stringify(requestBody()));
+stats.openPreset = (preset) => {
+  pushUndo();
+  open(preset);
+};
 
 // ---- the canvas: drag a handle, or pan (empty space, the middle button) and zoom (the wheel) ----
 

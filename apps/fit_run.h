@@ -1,0 +1,52 @@
+// SPDX-License-Identifier: Apache-2.0
+// The arguments of `ifsfx fit` and the steps it takes, shared with `ifsfx studio`'s fit job so
+// that a shape fitted in the page gives the maps the command gives for the same settings.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include <opencv2/core.hpp>
+
+#include "collage/fit.h"
+#include "ifs/cancel.h"
+
+namespace ifsfx::app {
+
+struct FitArgs {
+  std::string target;
+  std::string output;
+  int maps = 4;
+  std::uint64_t seed = 1;
+  collage::Initialisation init = collage::Initialisation::search;
+  std::optional<double> threshold;
+  bool invert = false;
+  bool json = false;
+  bool progress = false;
+  double max_seconds = 30;
+  long max_evaluations = 250000;
+  std::string preview;
+  std::string size = "128";
+  int threads = 0;
+};
+
+// The working raster's side from "S" or "SxS"; throws Error{parse} or Error{invalid_argument}
+// naming --size.
+int working_size(const std::string& text);
+
+// The number of maps checked (1..32); throws Error{invalid_argument} naming -n.
+void check_fit_maps(int maps);
+
+// The target's shape (args.target: its alpha, else its dark pixels; args.threshold, args.invert)
+// on the working raster of args.size. Throws what load_target and working_raster throw.
+cv::Mat fit_raster(const FitArgs& args);
+
+// The fit's options from the arguments (maps, seed, init, budgets, threads, the target's stem as
+// the IFS's name), polling `cancel`.
+collage::FitOptions fit_options(const FitArgs& args, const CancelToken& cancel);
+
+// The description a fitted preset carries: "fitted by ifsfx fit to TARGET: IoU 0.912, s 0.563".
+std::string fit_summary(const FitArgs& args, const collage::FitResult& result);
+
+}  // namespace ifsfx::app

@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "apps/texture_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "apps/cli_options.h"
+#include "ifs/error.h"
+#include "ifs/image_io.h"
+#include "superifs/superifs_file.h"
+#include "superifs/texture.h"
+#include "video/image_sequence.h"
+#include "video/pipeline.h"
+
+namespace ifsfx::app {
+
+TextureOutcome write_textures(const TextureArgs& args, const TextureRun& run) {
+  const cv::Size size = check_texture_args(args);
+  // A numbered pattern (tex_%04d.png) numbers the frames from 1, also a single one.
+  video::check_output_name(args.output);
+  const bool numbered = video::is_sequence_pattern(args.output);
+  if (args.frames > 1 && !numbered)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("-o: --frames needs a numbered pattern like tex_%04d.png (got {})",
+                            args.output));
+  const auto path_of = [&](int frame) -> std::filesystem::path {
+    return numbered ? video::sequence_path(args.output, frame + 1)
+                    : std::filesystem::path(args.output);
+  };
+  // A farm shard writes its own frames; each is a pure function of its index (map_at).
+  int first = 0, last = args.frames - 1;
+  if (!args.frame_range.empty()) {
+    const video::FrameRange range = video::parse_frame_range(args.frame_range, "--frame-range");
+    first = static_cast<int>(std::min<std::int64_t>(range.first, args.frames));
+    if (range.last >= 0) last = static_cast<int>(std::min<std::int64_t>(range.last, last));
+  }
+  // The output policy: no frame replaces an input; every name is checked before the burn-in.
+  OutputOptions output{.inputs = run.inputs, .cancel = run.cancel};
+  add_preset_input(output.inputs, args.preset);
+  output.inputs.add(args.source);
+  if (first <= last) check_writable_image(path_of(first), output, args.bits);
+  for (int frame = first + 1; frame <= last; ++frame) check_output(path_of(frame), output);
+  const SuperIfsPreset preset = load_superifs(args.preset);
+
+  TextureOptions options{
+      .sampling = {.seed = args.seed, .threads = args.threads, .cancel = output.cancel},
+      .count = args.count,
+      .steps = args.steps,
+      .buffer = args.buffer - 1,
+      .mode = args.mode};
+  if (!args.source.empty()) options.source = read_image(args.source).pixels;
+
+  const auto start = std::chrono::steady_clock::now();
+  TextureSequence textures(preset.super, size, options);
+  const std::string name = preset.super.name.empty() ? args.preset : preset.super.name;
+  const auto metadata = [&](int step) {
+    WriteOptions write;
+    write.bits = args.bits;
+    write.metadata = {
+        {"ifsfx:superpreset", preset.text},
+        {"ifsfx:superpreset_name", name},
+        {"ifsfx:mode", to_string(args.mode)},
+        {"ifsfx:V", std::to_string(args.count)},
+        {"ifsfx:buffer", std::to_string(args.buffer)},
+        {"ifsfx:seed", std::to_string(args.seed)},
+        {"ifsfx:steps", std::to_string(step)},
+        {"ImageDescription", fmt::format("ifsfx texture {} -V {} --mode {} --seed {} --steps {}",
+                                         name, args.count, to_string(args.mode), args.seed, step)},
+    };
+    return write;
+  };
+
+  // Frame j shows step s = j / K of the sequence crossfaded towards step s + 1 by (j mod K) / K.
+  // The frames are written to temporary files and put in place together at the end: a run that
+  // fails or is stopped leaves every existing frame file as it was.
+  std::vector<OutputFile> written;
+  for (int frame = first; frame <= last; ++frame) {
+    const StepPosition position = position_of_frame(frame, args.crossfade);
+    OutputFile file(path_of(frame), output);
+    write_image(file, textures.frame_at(position),
+                metadata(textures.burn_in() + static_cast<int>(position.step)));
+    written.push_back(std::move(file));
+    if (run.progress) run.progress(frame - first + 1, last - first + 1);
+  }
+  commit_together(written);
+  TextureOutcome out;
+  out.name = name;
+  out.size = size;
+  out.steps_done = textures.steps_done();
+  out.frames = static_cast<int>(written.size());
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const OutputFile& file : written) out.files.push_back(file.target());
+  return out;
+}
+
+}  // namespace ifsfx::app
