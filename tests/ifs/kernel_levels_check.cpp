@@ -91,16 +91,14 @@ std::vector<unsigned char> bytes_of(const std::vector<T>& v, std::size_t n) {
   return {p, p + n * sizeof(T)};
 }
 
-// Every mode of `k` on a raster that cuts the attractor.
-std::vector<Output> outputs(const TestIfs& ifs, const WalkKernels& k) {
+// Every mode of `k` with the walk `w`; `where` ends each mode's name.
+std::vector<Output> outputs_of(const WalkSpec& w, const WalkKernels& k, const std::string& where) {
   std::vector<Output> out;
-  const int width = 301, height = 203;
-  const WalkSpec w = ifs.spec(-0.7, -1.05, 1.05, 0.6, width, height);
-  const auto area = static_cast<std::size_t>(width) * height;
+  const auto area = static_cast<std::size_t>(w.width) * static_cast<std::size_t>(w.height);
   for (std::uint64_t points : {std::uint64_t{200'003}, std::uint64_t{8}, std::uint64_t{3}}) {
     std::vector<TracedPoint> t(points);
     const std::size_t n = k.trace(w, lane_seeds(42, points), points, t.data());
-    out.push_back({"trace of " + std::to_string(points) + " points", bytes_of(t, n)});
+    out.push_back({"trace of " + std::to_string(points) + " points" + where, bytes_of(t, n)});
   }
   const LaneSeeds seeds = lane_seeds(7, 11);
   const std::uint64_t points = 500'001;
@@ -108,7 +106,7 @@ std::vector<Output> outputs(const TestIfs& ifs, const WalkKernels& k) {
   const auto raster = [&](auto kernel, auto cell, const char* mode) {
     std::vector<decltype(cell)> r(area);
     (k.*kernel)(w, seeds, points, r.data());
-    out.push_back({mode, bytes_of(r, area)});
+    out.push_back({mode + where, bytes_of(r, area)});
   };
   raster(&WalkKernels::hits, std::uint8_t{}, "hits");
   raster(&WalkKernels::counts, std::uint32_t{}, "counts");
@@ -122,7 +120,24 @@ std::vector<Output> outputs(const TestIfs& ifs, const WalkKernels& k) {
   k.measure(w, seeds, points, m);
   fold_measure_cells(m, area, count.data(), colour.data());
   for (std::size_t i = 0; i < area; ++i) count[i] |= colour[i] << 32;
-  out.push_back({"measure", bytes_of(count, area)});
+  out.push_back({"measure" + where, bytes_of(count, area)});
+  return out;
+}
+
+// Every mode of `k` on a raster that cuts the attractor, and on the torus of the unit tile, which
+// the attractor overlaps (WalkSpec::wrap: every step wraps into [0,1)², docs/design.md §11).
+std::vector<Output> outputs(const TestIfs& ifs, const WalkKernels& k) {
+  std::vector<Output> out;
+  const int width = 301, height = 203;
+  for (const bool wrap : {false, true}) {
+    WalkSpec w = ifs.spec(-0.7, -1.05, 1.05, 0.6, width, height);
+    if (wrap) {
+      w.wrap = 1;
+      w.sx = width, w.ox = 0, w.sy = height, w.oy = 0;
+    }
+    const std::vector<Output> more = outputs_of(w, k, wrap ? " on the torus" : "");
+    out.insert(out.end(), more.begin(), more.end());
+  }
   return out;
 }
 
