@@ -52,6 +52,9 @@ void run_texture(const TextureArgs& args) {
   if (first <= last) check_writable_image(path_of(first), output, args.bits);
   for (int frame = first + 1; frame <= last; ++frame) check_output(path_of(frame), output);
   const SuperIfsPreset preset = load_superifs(args.preset);
+  // --seamless: the buffers on the torus of the tile (the preset's [seamless] view, else its view,
+  // else the union attractor framed with no margin), laid out as --tiles and --tile-offset say.
+  const TileLayout layout = tile_layout(args.tiles, preset.seamless, size);
 
   TextureOptions options{
       .sampling = {.seed = args.seed, .threads = args.threads, .cancel = output.cancel},
@@ -59,6 +62,11 @@ void run_texture(const TextureArgs& args) {
       .steps = args.steps,
       .buffer = args.buffer - 1,
       .mode = args.mode};
+  if (args.tiles.seamless) {
+    options.sampling.seamless = true;
+    options.sampling.margin = 0;
+    if (preset.seamless) options.sampling.view = preset.seamless->view;
+  }
   if (!args.source.empty()) options.source = read_image(args.source).pixels;
 
   const auto start = std::chrono::steady_clock::now();
@@ -78,6 +86,9 @@ void run_texture(const TextureArgs& args) {
         {"ImageDescription", fmt::format("ifsfx texture {} -V {} --mode {} --seed {} --steps {}",
                                          name, args.count, to_string(args.mode), args.seed, step)},
     };
+    if (args.tiles.seamless)
+      for (auto& entry : seamless_metadata(textures.buffers().viewport().view, layout))
+        write.metadata.push_back(entry);
     return write;
   };
 
@@ -88,7 +99,7 @@ void run_texture(const TextureArgs& args) {
   for (int frame = first; frame <= last; ++frame) {
     const StepPosition position = position_of_frame(frame, args.crossfade);
     OutputFile file(path_of(frame), output);
-    write_image(file, textures.frame_at(position),
+    write_image(file, laid_out(textures.frame_at(position), layout),
                 metadata(textures.burn_in() + static_cast<int>(position.step)));
     written.push_back(std::move(file));
   }
