@@ -21,8 +21,8 @@ void add_seamless_options(CLI::App& cmd, SeamlessArgs& args) {
       ->default_str("1x1");
   cmd.add_option("--tile-offset", args.offset,
                  "With --seamless: where the picture starts in the period, X,Y as fractions of "
-                 "the tile (right, down), rounded to whole pixels")
-      ->default_str("the preset's, else 0,0");
+                 "the tile (right, down), rounded to whole pixels; default: the preset's offset, "
+                 "else 0,0");
 }
 
 TileLayout tile_layout(const SeamlessArgs& args, const std::optional<SeamlessTile>& preset,
