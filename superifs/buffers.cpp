@@ -55,17 +55,17 @@ void dilate_rows(const cv::Mat& mask, int r, int row0, int row1, bool wrap, BitM
     }
     std::copy(column.begin(), column.end(), both.begin());
     for (int k = 1; k <= r; ++k) {
-      for (int c = 0; c < w; ++c) {
-        if (c + k < w)
-          both[static_cast<std::size_t>(c)] |= column[static_cast<std::size_t>(c + k)];
-        else if (wrap)
-          both[static_cast<std::size_t>(c)] |= column[static_cast<std::size_t>((c + k) % w)];
-        if (c >= k)
-          both[static_cast<std::size_t>(c)] |= column[static_cast<std::size_t>(c - k)];
-        else if (wrap)
-          both[static_cast<std::size_t>(c)] |=
-              column[static_cast<std::size_t>(((c - k) % w + w) % w)];
-      }
+      for (int c = 0; c + k < w; ++c)
+        both[static_cast<std::size_t>(c)] |= column[static_cast<std::size_t>(c + k)];
+      for (int c = k; c < w; ++c)
+        both[static_cast<std::size_t>(c)] |= column[static_cast<std::size_t>(c - k)];
+      if (!wrap) continue;
+      // The columns whose window runs off an edge read the opposite edge's.
+      for (int c = std::max(0, w - k); c < w; ++c)
+        both[static_cast<std::size_t>(c)] |= column[static_cast<std::size_t>((c + k) % w)];
+      for (int c = 0; c < std::min(k, w); ++c)
+        both[static_cast<std::size_t>(c)] |=
+            column[static_cast<std::size_t>(((c - k) % w + w) % w)];
     }
     std::copy(both.begin(), both.end(), packed.ptr<std::uint8_t>(0));
     out.pack_rows(packed, row, row + 1);

@@ -148,7 +148,7 @@ class Buffers {
   }
   // Half-width in pixels of the dilation that makes the lookup conservative.
   int dilation() const { return dilation_; }
-  // Whether the buffers live on the torus of their rectangle (BufferOptions::seamless).
+  // Whether the buffers live on the torus of their rectangle (BufferOptions::sampling.seamless).
   bool seamless() const { return viewport_.wrap; }
 
  private:
