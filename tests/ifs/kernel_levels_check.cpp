@@ -91,17 +91,18 @@ std::vector<unsigned char> bytes_of(const std::vector<T>& v, std::size_t n) {
   return {p, p + n * sizeof(T)};
 }
 
-// Every mode of `k` with the walk `w`; `where` ends each mode's name.
-std::vector<Output> outputs_of(const WalkSpec& w, const WalkKernels& k, const std::string& where) {
+// Every mode of `k` with the walk `w`: a trace of `traced` points (and of 8 and 3), rasters of
+// `points`; `where` ends each mode's name.
+std::vector<Output> outputs_of(const WalkSpec& w, const WalkKernels& k, const std::string& where,
+                               std::uint64_t traced, std::uint64_t points) {
   std::vector<Output> out;
   const auto area = static_cast<std::size_t>(w.width) * static_cast<std::size_t>(w.height);
-  for (std::uint64_t points : {std::uint64_t{200'003}, std::uint64_t{8}, std::uint64_t{3}}) {
-    std::vector<TracedPoint> t(points);
-    const std::size_t n = k.trace(w, lane_seeds(42, points), points, t.data());
-    out.push_back({"trace of " + std::to_string(points) + " points" + where, bytes_of(t, n)});
+  for (std::uint64_t count : {traced, std::uint64_t{8}, std::uint64_t{3}}) {
+    std::vector<TracedPoint> t(count);
+    const std::size_t n = k.trace(w, lane_seeds(42, count), count, t.data());
+    out.push_back({"trace of " + std::to_string(count) + " points" + where, bytes_of(t, n)});
   }
   const LaneSeeds seeds = lane_seeds(7, 11);
-  const std::uint64_t points = 500'001;
   // One raster-writing kernel on a zeroed raster of Cell.
   const auto raster = [&](auto kernel, auto cell, const char* mode) {
     std::vector<decltype(cell)> r(area);
@@ -135,7 +136,9 @@ std::vector<Output> outputs(const TestIfs& ifs, const WalkKernels& k) {
       w.wrap = 1;
       w.sx = width, w.ox = 0, w.sy = height, w.oy = 0;
     }
-    const std::vector<Output> more = outputs_of(w, k, wrap ? " on the torus" : "");
+    // The torus (the same code, and a wrap per step) on a quarter of the points.
+    const std::vector<Output> more = wrap ? outputs_of(w, k, " on the torus", 50'001, 125'001)
+                                          : outputs_of(w, k, "", 200'003, 500'001);
     out.insert(out.end(), more.begin(), more.end());
   }
   return out;
