@@ -10,6 +10,9 @@ namespace {
 // Library parameter → flag, for the parameters the subcommands take under another name.
 constexpr std::pair<std::string_view, std::string_view> kFlags[] = {
     {"size × supersample", "--size × --supersample"},
+    {"size × tiles", "--size × --tiles"},
+    {"tiles", "--tiles"},
+    {"tile offset", "--tile-offset"},
     {"quality", "--quality"},
     {"supersample", "--supersample"},
     {"gamma", "--gamma"},

@@ -18,16 +18,22 @@
 namespace ifsfx::app {
 namespace {
 
+// What ends the line of a preset offered as a seamless tile (`--seamless`, docs/seamless.md).
+std::string seamless_mark(bool seamless) {
+  return seamless ? " [seamless tile]" : "";
+}
+
 // One aligned line per preset: name, maps, contraction factor, description (or why it cannot be
-// used).
+// used), and whether it is offered as a seamless tile.
 std::string preset_lines(const std::vector<PresetSummary>& presets) {
   std::size_t width = 0;
   for (const auto& p : presets) width = std::max(width, p.name.size());
   std::string out;
   for (const auto& p : presets)
-    out += p.problem.empty() ? fmt::format("{:<{}}  {:>2} maps  factor {:<6.4g}  {}\n", p.name,
-                                           width, p.maps, p.contraction, p.description)
-                             : fmt::format("{:<{}}  not usable: {}\n", p.name, width, p.problem);
+    out += p.problem.empty()
+               ? fmt::format("{:<{}}  {:>2} maps  factor {:<6.4g}  {}{}\n", p.name, width, p.maps,
+                             p.contraction, p.description, seamless_mark(p.seamless))
+               : fmt::format("{:<{}}  not usable: {}\n", p.name, width, p.problem);
   return out;
 }
 
@@ -62,7 +68,8 @@ void add_presets_command(CLI::App& app) {
       for (const auto& p : presets) width = std::max(width, p.name.size());
       std::string out;
       for (const auto& p : presets)
-        out += fmt::format("{:<{}}  {}\n", p.name, width, p.description);
+        out +=
+            fmt::format("{:<{}}  {}{}\n", p.name, width, p.description, seamless_mark(p.seamless));
       std::fputs(out.c_str(), stdout);
       return;
     }

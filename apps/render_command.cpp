@@ -10,6 +10,7 @@
 #include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "apps/render_metadata.h"
+#include "apps/seamless_options.h"
 #include "apps/steal_modes.h"
 #include "apps/stop_signals.h"
 #include "ifs/error.h"
@@ -42,6 +43,9 @@ struct RenderArgs {
   bool second_symbol = false;
   std::string save_map;
   std::string background;
+  // --seamless, --tiles, --tile-offset (apps/seamless_options.h)
+  SeamlessArgs tiles;
+  bool margin_given = false;  // --margin was on the command line
 };
 
 const char* mode_name(Mode mode) {
@@ -95,21 +99,26 @@ OutputOptions checked_outputs(const RenderArgs& args) {
   return output;
 }
 
-// The picture in the chosen mode; the steal mode's saved map joins `staged`.
+// The picture in the chosen mode; the steal mode's saved map joins `staged`. With --seamless the
+// modes render one period, laid out as --tiles and --tile-offset say (steal mode lays out its
+// map, so that --save-map colours the whole picture too).
 cv::Mat render_picture(const Ifs& ifs, cv::Size size, const RenderArgs& args,
-                       const RenderOptions& options, const OutputOptions& output,
-                       std::vector<OutputFile>& staged, RenderStats& stats) {
+                       const RenderOptions& options, const TileLayout& layout,
+                       const OutputOptions& output, std::vector<OutputFile>& staged,
+                       RenderStats& stats) {
   const Rgb background = colour_option(args.background.empty() ? "black" : args.background);
   switch (args.mode) {
     case Mode::attractor:
-      return render_attractor(ifs, size, options, &stats);
+      return laid_out(render_attractor(ifs, size, options, &stats), layout);
     case Mode::measure:
-      return render_measure(ifs, size, options, &stats);
+      return laid_out(render_measure(ifs, size, options, &stats), layout);
     case Mode::tops:
-      return tops_image(
-          ifs, size,
-          {.sampling = options.sampling, .exact = args.exact, .second_symbol = args.second_symbol},
-          background, args.output, &stats);
+      return laid_out(tops_image(ifs, size,
+                                 {.sampling = options.sampling,
+                                  .exact = args.exact,
+                                  .second_symbol = args.second_symbol},
+                                 background, args.output, &stats),
+                      layout);
     case Mode::steal:
       return steal_image(ifs, size, {.sampling = options.sampling, .exact = args.exact},
                          {.source = args.source,
@@ -117,12 +126,14 @@ cv::Mat render_picture(const Ifs& ifs, cv::Size size, const RenderArgs& args,
                           .save_map = args.save_map,
                           .background = background,
                           .quiet = args.quiet,
-                          .output = output},
+                          .output = output,
+                          .layout = layout},
                          args.output, staged, &stats);
   }
   return {};
 }
 
+// `size`: the picture's (the tile's times --tiles with --seamless).
 void print_summary(const std::string& name, cv::Size size, const RenderArgs& args,
                    const RenderStats& stats) {
   // The exact modes plot no chaos-game points: say so rather than print a rate of zero.
@@ -131,8 +142,9 @@ void print_summary(const std::string& name, cv::Size size, const RenderArgs& arg
           ? fmt::format("{:.1f} M points in {:.3f} s ({:.0f} Mpts/s)", stats.points / 1e6,
                         stats.seconds, stats.points / 1e6 / std::max(stats.seconds, 1e-9))
           : fmt::format("{} in {:.3f} s", args.exact ? "exact descent" : "rendered", stats.seconds);
-  fmt::print("{} ({}, {}x{}): {}, coverage {:.1f}% -> {}\n", name, mode_name(args.mode), size.width,
-             size.height, work, 100 * stats.coverage, args.output);
+  fmt::print("{} ({}{}, {}x{}): {}, coverage {:.1f}% -> {}\n", name, mode_name(args.mode),
+             args.tiles.seamless ? ", seamless" : "", size.width, size.height, work,
+             100 * stats.coverage, args.output);
 }
 
 void run_render(const RenderArgs& args) {
@@ -141,22 +153,31 @@ void run_render(const RenderArgs& args) {
   StopSignals signals;
   const OutputOptions output = checked_outputs(args);
   const IfsPreset preset = load_preset(args.preset, {.allow_expansive = args.allow_expansive});
+  const TileLayout layout = tile_layout(args.tiles, preset.seamless, size);
   RenderOptions options = args.options;
   options.sampling.view = view_option(args.view);
   options.sampling.cancel = output.cancel;
+  options.sampling.seamless = args.tiles.seamless;
+  if (options.sampling.seamless) {
+    // The tile: --view, the preset's own, or the attractor framed with no margin (a margin would
+    // put empty bands between the periods).
+    if (!options.sampling.view && preset.seamless) options.sampling.view = preset.seamless->view;
+    if (!args.margin_given) options.sampling.margin = 0;
+  }
 
   RenderStats stats;
   std::vector<OutputFile> staged;  // put in place together at the end (the image, the map)
-  const cv::Mat image = render_picture(preset.ifs, size, args, options, output, staged, stats);
+  const cv::Mat image =
+      render_picture(preset.ifs, size, args, options, layout, output, staged, stats);
+  auto metadata = render_metadata(preset, mode_name(args.mode), options.sampling.seed, stats.view);
+  if (options.sampling.seamless)
+    for (auto& entry : seamless_metadata(stats.view, layout)) metadata.push_back(entry);
   OutputFile image_file(args.output, output);
   write_image(image_file, image,
-              {.bits = args.bits,
-               .smallest = args.smallest,
-               .metadata = render_metadata(preset, mode_name(args.mode), options.sampling.seed,
-                                           stats.view)});
+              {.bits = args.bits, .smallest = args.smallest, .metadata = std::move(metadata)});
   staged.push_back(std::move(image_file));
   commit_together(staged);
-  if (!args.quiet) print_summary(preset.ifs.name, size, args, stats);
+  if (!args.quiet) print_summary(preset.ifs.name, image.size(), args, stats);
 }
 
 }  // namespace
@@ -185,10 +206,11 @@ void add_render_command(CLI::App& app) {
       ->option_text(choices_text(modes, "measure"));
   cmd->add_option("--view", args->view,
                   "Plane rectangle x0,y0,x1,y1 shown (default: the attractor, auto-framed)");
-  cmd->add_option("--margin", args->options.sampling.margin,
-                  "Auto-framing margin, fraction of the larger side")
-      ->capture_default_str()
-      ->check(number_in(0, kMaxMargin));
+  auto* margin = cmd->add_option("--margin", args->options.sampling.margin,
+                                 "Auto-framing margin, fraction of the larger side (0 with "
+                                 "--seamless)")
+                     ->capture_default_str()
+                     ->check(number_in(0, kMaxMargin));
   cmd->add_option("--quality", args->options.sampling.quality, "Chaos-game points per output pixel")
       ->capture_default_str()
       ->check(number_in(0, kMaxQuality, true));
@@ -236,8 +258,10 @@ void add_render_command(CLI::App& app) {
                   "tops/steal modes: colour off the attractor in formats without alpha "
                   "(black, white, #rrggbb, R,G,B); PNG/TIFF/EXR get a transparent background")
       ->default_str("black");
-  cmd->callback([args, map_method] {
+  add_seamless_options(*cmd, args->tiles);
+  cmd->callback([args, map_method, margin] {
     args->map_method_given = map_method->count() > 0;
+    args->margin_given = margin->count() > 0;
     run_render(*args);
   });
 }

@@ -81,7 +81,8 @@ cv::Mat steal_image(const Ifs& F, cv::Size size, const StealMapOptions& options,
   const cv::Mat source = read_image(args.source).pixels;
   const Ifs G = args.colouring_ifs ? *args.colouring_ifs : colouring_option(args.colouring, F);
   StealMapStats ss;
-  const StealMap map = compute_steal_map(F, G, size, options, &ss);
+  StealMap map = compute_steal_map(F, G, size, options, &ss);
+  if (options.sampling.seamless) map = tile_picture(map, args.layout);
   if (!args.save_map.empty()) {
     OutputFile file(args.save_map, args.output);
     save(map, file);

@@ -15,6 +15,7 @@
 #include "ifs/render.h"
 #include "ifs/steal_map.h"
 #include "ifs/steal_picture.h"
+#include "ifs/tiles.h"
 #include "ifs/tops.h"
 
 namespace ifsfx::app {
@@ -36,6 +37,7 @@ struct StealModeArgs {
   Rgb background;
   bool quiet = false;    // else print the coverage policy's figures on stdout
   OutputOptions output;  // the output policy of the saved map
+  TileLayout layout;     // with sampling.seamless: the map of these periods (ifs/tiles.h)
 };
 
 // `--mode tops`: render_tops, the background made transparent or `background` for `output`.

@@ -43,6 +43,7 @@ void add_texture_options(CLI::App& cmd, const std::shared_ptr<TextureArgs>& args
       ->capture_default_str()
       ->check(CLI::IsMember({8, 16}));
   cmd.add_flag("-q,--quiet", args->quiet, "Do not print the summary line");
+  add_seamless_options(cmd, args->tiles);
 }
 
 cv::Size check_texture_args(const TextureArgs& args) {

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 #include <opencv2/core.hpp>
 
+#include "apps/seamless_options.h"
 #include "superifs/texture.h"
 
 namespace ifsfx::app {
@@ -30,6 +31,7 @@ struct TextureArgs {
   int crossfade = 1;
   int bits = 8;
   bool quiet = false;
+  SeamlessArgs tiles;  // --seamless, --tiles, --tile-offset (apps/seamless_options.h)
 };
 
 // Registers the options (all but SUPERPRESET, -o, --frames and --frame-range) on `cmd`, writing

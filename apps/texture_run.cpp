@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "apps/cli_options.h"
+#include "apps/seamless_options.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "superifs/superifs_file.h"
@@ -46,6 +47,9 @@ TextureOutcome write_textures(const TextureArgs& args, const TextureRun& run) {
   if (first <= last) check_writable_image(path_of(first), output, args.bits);
   for (int frame = first + 1; frame <= last; ++frame) check_output(path_of(frame), output);
   const SuperIfsPreset preset = load_superifs(args.preset);
+  // --seamless: the buffers on the torus of the tile (the preset's [seamless] view, else its view,
+  // else the union attractor framed with no margin), laid out as --tiles and --tile-offset say.
+  const TileLayout layout = tile_layout(args.tiles, preset.seamless, size);
 
   TextureOptions options{
       .sampling = {.seed = args.seed, .threads = args.threads, .cancel = output.cancel},
@@ -53,6 +57,11 @@ TextureOutcome write_textures(const TextureArgs& args, const TextureRun& run) {
       .steps = args.steps,
       .buffer = args.buffer - 1,
       .mode = args.mode};
+  if (args.tiles.seamless) {
+    options.sampling.seamless = true;
+    options.sampling.margin = 0;
+    if (preset.seamless) options.sampling.view = preset.seamless->view;
+  }
   if (!args.source.empty()) options.source = read_image(args.source).pixels;
 
   const auto start = std::chrono::steady_clock::now();
@@ -72,6 +81,9 @@ TextureOutcome write_textures(const TextureArgs& args, const TextureRun& run) {
         {"ImageDescription", fmt::format("ifsfx texture {} -V {} --mode {} --seed {} --steps {}",
                                          name, args.count, to_string(args.mode), args.seed, step)},
     };
+    if (args.tiles.seamless)
+      for (auto& entry : seamless_metadata(textures.buffers().viewport().view, layout))
+        write.metadata.push_back(entry);
     return write;
   };
 
@@ -82,7 +94,7 @@ TextureOutcome write_textures(const TextureArgs& args, const TextureRun& run) {
   for (int frame = first; frame <= last; ++frame) {
     const StepPosition position = position_of_frame(frame, args.crossfade);
     OutputFile file(path_of(frame), output);
-    write_image(file, textures.frame_at(position),
+    write_image(file, laid_out(textures.frame_at(position), layout),
                 metadata(textures.burn_in() + static_cast<int>(position.step)));
     written.push_back(std::move(file));
     if (run.progress) run.progress(frame - first + 1, last - first + 1);

@@ -11,6 +11,9 @@
 //            [0.85, 0.04, -0.04, 0.85, 0.00, 1.60], ... ]
 //   probabilities = [0.01, 0.85, 0.07, 0.07]   # optional; default ∝ |det| with a floor
 //   colours = ["#1b5e20", "#43a047", ...]      # optional, one per map
+//   [seamless]                                 # optional: offered as a seamless tile
+//   view = [x0, y0, x1, y1]                    # optional tile (default: the attractor framed)
+//   offset = [0.5, 0.5]                        # optional: where the picture starts in it
 // `name` defaults to the file's stem; a colour is "#rrggbb" or [r, g, b] with components in [0, 1];
 // numbers may be TOML integers or floats; any other top-level key is an error (a misspelt
 // "probabilites" would otherwise silently give default probabilities).
@@ -20,11 +23,13 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "ifs/ifs.h"
+#include "ifs/tiles.h"
 
 namespace ifsfx {
 
@@ -40,6 +45,9 @@ struct IfsPreset {
   // says `allow_expansive = true`. (Fractint entries are accepted so too, as Fractint renders
   // them, but with a warning: see load_ifs.)
   bool allow_expansive = false;
+  // Offered as a seamless tile (`ifsfx render --seamless`, docs/seamless.md): the tile and the
+  // offset it is shown at. Empty: not offered (--seamless still works, with the framed attractor).
+  std::optional<SeamlessTile> seamless;
   // What the caller should tell the user, one line each (the library never prints): load_ifs
   // fills it.
   std::vector<std::string> warnings;
@@ -90,7 +98,8 @@ struct PresetSummary {
   std::size_t maps = 0;
   double contraction = 0;
   std::string description;
-  std::string problem;  // list_presets_in: why the entry cannot be loaded (empty: it can)
+  std::string problem;    // list_presets_in: why the entry cannot be loaded (empty: it can)
+  bool seamless = false;  // offered as a seamless tile (IfsPreset::seamless)
 };
 std::vector<PresetSummary> list_shipped_presets();
 

@@ -214,8 +214,12 @@ IfsPreset resolve(const std::string& spec) {
 std::vector<PresetSummary> list_shipped_presets() {
   std::vector<PresetSummary> list;
   for (const auto& preset : all_shipped())
-    list.push_back(
-        {shipped_name(preset), preset.ifs.size(), preset.ifs.contraction(), preset.description});
+    list.push_back({shipped_name(preset),
+                    preset.ifs.size(),
+                    preset.ifs.contraction(),
+                    preset.description,
+                    {},
+                    preset.seamless.has_value()});
   return list;
 }
 
@@ -268,7 +272,8 @@ std::vector<PresetSummary> list_presets_in(const std::string& path,
   std::vector<PresetSummary> list;
   if (!is_fractint(path)) {
     const IfsPreset p = load_ifs(path, options);
-    list.push_back({p.ifs.name, p.ifs.size(), p.ifs.contraction(), p.description, {}});
+    list.push_back(
+        {p.ifs.name, p.ifs.size(), p.ifs.contraction(), p.description, {}, p.seamless.has_value()});
     return list;
   }
   for (const auto& entry : entries_of(read_source(path))) {

@@ -156,8 +156,8 @@ IfsPreset parse_ifs_toml(std::string_view text, const std::string& filename) {
 
   // Check every key first, so that a misspelt "probabilites" is reported rather than silently
   // giving default probabilities.
-  in.check_keys(table,
-                {"name", "description", "maps", "probabilities", "colours", "allow_expansive"});
+  in.check_keys(table, {"name", "description", "maps", "probabilities", "colours",
+                        "allow_expansive", "seamless"});
 
   IfsPreset preset;
   preset.origin = filename;
@@ -180,6 +180,7 @@ IfsPreset parse_ifs_toml(std::string_view text, const std::string& filename) {
     preset.ifs.colours = read_colours(in, *node, preset.ifs.maps.size());
   if (const auto* node = table.get("allow_expansive"))
     preset.allow_expansive = in.boolean(*node, "allow_expansive");
+  if (const auto* node = table.get("seamless")) preset.seamless = in.seamless(*node);
   return preset;
 }
 

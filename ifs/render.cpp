@@ -230,7 +230,9 @@ cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& optio
                        RenderStats* stats) {
   check_render_inputs(ifs, size, options);
   const int k = options.supersample;
-  const Viewport viewport{framed_viewport(ifs, size, options.sampling).view, size * k};
+  // Supersampled on the torus too: the K×K cells of a pixel tile the same period.
+  const Viewport viewport{framed_viewport(ifs, size, options.sampling).view, size * k,
+                          options.sampling.seamless};
   const std::uint64_t points = point_budget(size, options.sampling.quality);
 
   const auto area = static_cast<std::size_t>(viewport.size.area());

@@ -4,9 +4,9 @@
 namespace ifsfx {
 
 Viewport framed_viewport(const Ifs& ifs, cv::Size size, const Sampling& sampling) {
-  if (sampling.view) return {*sampling.view, size};
+  if (sampling.view) return {*sampling.view, size, sampling.seamless};
   return {fit_view(attractor_bounds(ifs, sampling.seed, sampling.cancel), size, sampling.margin),
-          size};
+          size, sampling.seamless};
 }
 
 }  // namespace ifsfx

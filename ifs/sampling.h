@@ -24,12 +24,17 @@ struct Sampling {
   std::uint64_t seed = 1;   // seeds every random choice; equal seeds give equal bytes
   int threads = 0;          // 0 = all cores; the bytes never depend on it (docs/design.md §7)
   CancelToken cancel;       // polled between chunks of work: Error{interrupted} on a stop request
+  // The view (given or auto-framed) is one period of a doubly periodic texture: the tile, the
+  // fundamental domain of a torus, every map followed by the wrap back into it (docs/design.md
+  // §11; Viewport::wrap). The tops and the steal map's F follow it too; G is used as it is.
+  bool seamless = false;
 
   friend bool operator==(const Sampling&, const Sampling&) = default;
 };
 
 // The raster every picture of `ifs` is drawn on: sampling.view, or the attractor auto-framed
-// with sampling.margin (attractor_bounds seeded by sampling.seed, polling sampling.cancel).
+// with sampling.margin (attractor_bounds seeded by sampling.seed, polling sampling.cancel); on
+// the torus of that rectangle with sampling.seamless.
 Viewport framed_viewport(const Ifs& ifs, cv::Size size, const Sampling& sampling);
 
 }  // namespace ifsfx

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -57,6 +58,16 @@ Viewport mask_viewport(const Box& bounds, const Viewport& out) {
              out.view.y1 - r0 * ph};
   vp.size = {static_cast<int>(c1 - c0), static_cast<int>(r1 - r0)};
   return vp;
+}
+
+// The mask grid on the torus of the tile (docs/design.md §11): the tile itself, at the output's
+// pixel size, coarser only beyond kMaxMaskSide pixels a side. The attractor lies in the tile.
+Viewport torus_mask_viewport(const Viewport& out) {
+  const double scale = std::max({1.0, static_cast<double>(out.size.width) / kMaxMaskSide,
+                                 static_cast<double>(out.size.height) / kMaxMaskSide});
+  const cv::Size size{static_cast<int>(std::ceil(out.size.width / scale)),
+                      static_cast<int>(std::ceil(out.size.height / scale))};
+  return {out.view, size, true};
 }
 
 // The attractor as a raster on the mask grid `mvp`: the pixels that chaos-game points reached,
@@ -206,21 +217,164 @@ void descend_pixels(const Ifs* G, const Mask& mask, const Viewport& viewport, in
   });
 }
 
+// The box (mask pixel coordinates) that f_n maps the tile [0, W] × [0, H] into, a pixel wider on
+// every side (a singular map's piece is a segment, met within 0.75 pixel).
+Box piece_box(const AffineMap& forward, double width, double height) {
+  Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+  for (const Point corner :
+       {Point{0, 0}, Point{width, 0}, Point{0, height}, Point{width, height}}) {
+    const Point p = forward(corner);
+    b = {std::min(b.x0, p.x), std::min(b.y0, p.y), std::max(b.x1, p.x), std::max(b.y1, p.y)};
+  }
+  return {b.x0 - 1, b.y0 - 1, b.x1 + 1, b.y1 + 1};
+}
+
+// The descent on the torus of the tile (docs/design.md §11): the mask is the tile's raster, and a
+// mask point x has a preimage under w_n = wrap ∘ f_n for every translate x + λ by the lattice
+// (λ = (i·W, j·H) mask pixels) that lies in f_n(D), the image of the tile: y = f_n⁻¹(x + λ), when
+// y lies in the tile (half-open: each point of the torus has one representative in it) and on A.
+struct TorusDescent {
+  static constexpr std::size_t kMaxCandidates = 8;
+  const Mask& mask;
+  double width, height;     // of the mask
+  std::vector<Box> pieces;  // the box of f_n(D) for each n, mask pixels
+
+  explicit TorusDescent(const Mask& m)
+      : mask(m), width(m.viewport.size.width), height(m.viewport.size.height) {
+    for (const Preimage& p : mask.pre)
+      pieces.push_back(piece_box(p.forward ? *p.forward : *p.inverse.inverse(0), width, height));
+  }
+
+  // The point of the tile congruent to p.
+  Point wrapped(Point p) const {
+    p.x -= std::floor(p.x / width) * width;
+    p.y -= std::floor(p.y / height) * height;
+    return {p.x < width ? p.x : 0.0, p.y < height ? p.y : 0.0};
+  }
+
+  // Calls visit(x + λ) for the translates of x in the box of f_n(D), i then j increasing, until
+  // visit returns false.
+  template <class Visit>
+  void translates(Point x, std::size_t n, Visit&& visit) const {
+    const Box& b = pieces[n];
+    const double i0 = std::ceil((b.x0 - x.x) / width), i1 = std::floor((b.x1 - x.x) / width);
+    const double j0 = std::ceil((b.y0 - x.y) / height), j1 = std::floor((b.y1 - x.y) / height);
+    for (double i = i0; i <= i1; ++i)
+      for (double j = j0; j <= j1; ++j)
+        if (!visit(Point{x.x + i * width, x.y + j * height})) return;
+  }
+
+  // The preimages of the candidates under map n into `next` (at most kMaxCandidates, in order).
+  void preimages(const std::vector<Point>& candidates, std::size_t n,
+                 std::vector<Point>& next) const {
+    const Preimage& m = mask.pre[n];
+    for (const Point& x : candidates) {
+      if (next.size() >= kMaxCandidates) return;
+      translates(x, n, [&](Point q) {
+        const Point p = m.inverse(q);
+        if (m.forward) {
+          // A piece without area: q is on it when it is within a pixel of its own image.
+          const Point back = (*m.forward)(p);
+          if (std::hypot(back.x - q.x, back.y - q.y) > 0.75 || !mask.inside(p) ||
+              !mask.on_attractor(wrapped(back)))
+            return true;
+        } else if (!mask.on_attractor(p)) {
+          return true;
+        }
+        next.push_back(p);
+        return next.size() < kMaxCandidates;
+      });
+    }
+  }
+
+  // The first `levels` symbols of the top address of mask point x on the attractor. The top
+  // address keeps the largest address over every preimage the wrap creates (eq. 7), so the
+  // descent follows the set of candidates whose addresses agree so far (one, nearly always): at
+  // each level the highest n that any of them has a preimage under, and all those preimages.
+  void descend(Point x, int levels, Address& sigma, std::vector<Point>& candidates,
+               std::vector<Point>& next) const {
+    candidates.assign(1, x);
+    for (int level = 0; level < levels; ++level) {
+      int chosen = -1;
+      next.clear();
+      for (int n = static_cast<int>(mask.pre.size()) - 1; n >= 0 && chosen < 0; --n) {
+        preimages(candidates, static_cast<std::size_t>(n), next);
+        if (!next.empty()) chosen = n;
+      }
+      if (chosen < 0) {
+        // On no piece by rounding: the highest n with a preimage in the tile, else the preimage
+        // closest to it, clamped into it.
+        double best = INFINITY;
+        Point best_p{};
+        for (int n = static_cast<int>(mask.pre.size()) - 1; n >= 0; --n)
+          translates(candidates[0], static_cast<std::size_t>(n), [&](Point q) {
+            const Point p = mask.pre[static_cast<std::size_t>(n)].inverse(q);
+            const double dist = mask.distance_outside(p);
+            if (dist < best) best = dist, chosen = n, best_p = p;
+            return best > 0;
+          });
+        if (chosen < 0) {
+          // Every preimage overflowed: the address ends here, repeating its last symbol.
+          chosen = level > 0 ? static_cast<int>(sigma[static_cast<std::size_t>(level - 1)]) : 0;
+          best_p = candidates[0];
+        }
+        next.assign(1, Point{std::clamp(best_p.x, 0.0, std::nextafter(width, 0.0)),
+                             std::clamp(best_p.y, 0.0, std::nextafter(height, 0.0))});
+      }
+      sigma[static_cast<std::size_t>(level)] = static_cast<std::uint32_t>(chosen);
+      std::swap(candidates, next);
+    }
+  }
+};
+
+// The top address of each pixel centre of the tile (and T(x) with G), by bands of rows.
+void descend_pixels_torus(const Ifs* G, const Mask& mask, const Viewport& viewport, int levels,
+                          const DescentOptions& options, Descent& out) {
+  const TorusDescent torus(mask);
+  const int key_symbols = std::min(levels, out.tops.symbols());
+  const int bits = out.tops.bits;
+  const AffineMap out_to_mask = mask.to_mask.compose(*viewport.plane_to_pixel().inverse(0));
+  constexpr int kBand = 8;
+  parallel_rows(viewport.size.height, kBand, options.threads, [&](cv::Range rows) {
+    Address sigma{};
+    std::vector<Point> candidates, next;
+    for (int row = rows.start; row < rows.end; ++row) {
+      options.cancel.check("exact descent");
+      for (int col = 0; col < viewport.size.width; ++col) {
+        const Point x = torus.wrapped(out_to_mask(Point{col + 0.5, row + 0.5}));
+        if (!mask.on_attractor(x)) continue;
+        torus.descend(x, levels, sigma, candidates, next);
+        std::uint64_t key = 0;
+        for (int k = 0; k < key_symbols; ++k)
+          key |= std::uint64_t{sigma[static_cast<std::size_t>(k)]} << (64 - bits * (k + 1));
+        out.tops.keys[static_cast<std::size_t>(row) * viewport.size.width + col] = key | 1;
+        if (G) out.uv.at<cv::Vec2f>(row, col) = colour_point(*G, sigma, levels);
+      }
+    }
+  });
+}
+
 }  // namespace
 
 Descent exact_descent(const Ifs& F, const Ifs* G, const Viewport& viewport,
                       const DescentOptions& options, ChaosTopsStats* mask_stats) {
   const int levels = std::clamp(options.levels, 1, kMaxLevels);
   // 1. The attractor as a raster (a conservative cover of A).
+  // On the torus of the tile (docs/design.md §11) the attractor lies in the tile.
   Mask mask;
-  mask.viewport = mask_viewport(attractor_bounds(F, options.seed, options.cancel), viewport);
+  mask.viewport = viewport.wrap
+                      ? torus_mask_viewport(viewport)
+                      : mask_viewport(attractor_bounds(F, options.seed, options.cancel), viewport);
   mask.attractor = attractor_raster(F, mask.viewport, options, mask_stats);
   // 2. The maps in mask pixel coordinates.
   mask.to_mask = mask.viewport.plane_to_pixel();
   mask.pre = mask_preimages(F, mask.to_mask);
   // 3. The descent from each pixel centre.
   Descent out = empty_descent(F, G, viewport);
-  descend_pixels(G, mask, viewport, levels, options, out);
+  if (viewport.wrap)
+    descend_pixels_torus(G, mask, viewport, levels, options, out);
+  else
+    descend_pixels(G, mask, viewport, levels, options, out);
   return out;
 }
 

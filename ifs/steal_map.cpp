@@ -62,7 +62,9 @@ cv::Mat uv_from_keys(const AddressRaster& tops, const Ifs& F, const Ifs& G, int 
   // used instead.
   const int k_symbols = tops.symbols();
   const std::uint32_t n = static_cast<std::uint32_t>(G.size());
-  const Box fb = attractor_bounds(F);
+  // On the torus of the tile (docs/design.md §11) A lies in the tile: Φ maps the tile onto G's box.
+  const bool torus = tops.viewport.wrap;
+  const Box fb = torus ? tops.viewport.view : attractor_bounds(F);
   const double extent = std::max(fb.width(), fb.height());
   const double pixel = std::min(tops.viewport.view.width() / tops.viewport.size.width,
                                 tops.viewport.view.height() / tops.viewport.size.height);
@@ -86,6 +88,40 @@ cv::Mat uv_from_keys(const AddressRaster& tops, const Ifs& F, const Ifs& G, int 
                       phi_y,
                       centre.x - phi_x * 0.5 * (fb.x0 + fb.x1),
                       centre.y - phi_y * 0.5 * (fb.y0 + fb.y1)};
+  // The torus: f_w⁻¹ is taken one map at a time, x ← f_σ⁻¹(x + λ) for the first translate of x
+  // by the lattice whose preimage lies in the tile (in pixel coordinates, λ = (i·W, j·H)).
+  const Viewport& vp = tops.viewport;
+  const AffineMap to_pixel = vp.plane_to_pixel(), from_pixel = *to_pixel.inverse(0);
+  const double width = vp.size.width, height = vp.size.height;
+  std::vector<std::optional<AffineMap>> pixel_inverse;
+  std::vector<Box> piece;  // f_σ of the tile, in pixel coordinates
+  for (const AffineMap& f : F.maps) {
+    const AffineMap h = to_pixel.compose(f).compose(from_pixel);
+    const auto inv = h.inverse();
+    pixel_inverse.push_back(inv);
+    Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    for (const Point c : {Point{0, 0}, Point{width, 0}, Point{0, height}, Point{width, height}}) {
+      const Point p = h(c);
+      b = {std::min(b.x0, p.x), std::min(b.y0, p.y), std::max(b.x1, p.x), std::max(b.y1, p.y)};
+    }
+    piece.push_back(b);
+  }
+  const auto torus_preimage = [&](std::uint32_t sigma, Point x) {
+    const AffineMap& inv = *pixel_inverse[sigma];
+    const Box& b = piece[sigma];
+    Point best = inv(x);
+    double best_d = INFINITY;
+    for (double i = std::ceil((b.x0 - x.x) / width); i <= std::floor((b.x1 - x.x) / width); ++i)
+      for (double j = std::ceil((b.y0 - x.y) / height); j <= std::floor((b.y1 - x.y) / height);
+           ++j) {
+        const Point p = inv(Point{x.x + i * width, x.y + j * height});
+        const double dx = std::max({0.0, -p.x, p.x - width}),
+                     dy = std::max({0.0, -p.y, p.y - height});
+        if (dx * dx + dy * dy < best_d) best_d = dx * dx + dy * dy, best = p;
+        if (best_d == 0) return best;
+      }
+    return best;
+  };
   cv::Mat uv(tops.viewport.size, CV_32FC2, cv::Scalar::all(0));
   const std::size_t rows = static_cast<std::size_t>(uv.rows);
   parallel_for(rows, threads, [&](std::size_t r, int) {
@@ -96,12 +132,24 @@ cv::Mat uv_from_keys(const AddressRaster& tops, const Ifs& F, const Ifs& G, int 
       AffineMap f_w, g_w;  // identities, then f_σ1 ∘ … ∘ f_σm and g_σ1 ∘ … ∘ g_σm
       bool invertible = true;
       double size = extent;
-      for (int m = 0; m < k_symbols && size > 1.01 * pixel; ++m) {
+      int symbols_used = 0;
+      for (int m = 0; m < k_symbols && size > 1.01 * pixel; ++m, ++symbols_used) {
         const std::uint32_t sigma = std::min(tops.symbol(key, m), n - 1);
         size *= factor[sigma];
         invertible = invertible && !singular[sigma];
         f_w = f_w.compose(F.maps[sigma]);
         g_w = g_w.compose(G.maps[sigma]);
+      }
+      if (torus) {
+        Point y = g_w(centre);
+        if (invertible) {
+          Point x{col + 0.5, static_cast<double>(r) + 0.5};
+          for (int m = 0; m < symbols_used; ++m)
+            x = torus_preimage(std::min(tops.symbol(key, m), n - 1), x);
+          y = g_w(phi(from_pixel(x)));
+        }
+        out[col] = cv::Vec2f(static_cast<float>(y.x), static_cast<float>(1 - y.y));
+        continue;
       }
       std::optional<AffineMap> f_inv;
       if (invertible) f_inv = f_w.inverse(0);

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace ifsfx::detail {
 
@@ -138,6 +139,36 @@ std::vector<double> TomlReader::numbers(const toml::node& node, const std::strin
   std::vector<double> out;
   for (const toml::node& item : array(node, what)) out.push_back(number(item, what));
   return out;
+}
+
+SeamlessTile TomlReader::seamless(const toml::node& node) const {
+  const toml::table* table = node.as_table();
+  if (!table)
+    fail(ErrorKind::parse, node.source(),
+         fmt::format("seamless: must be a table with view and offset (got {})", type_name(node)));
+  check_keys(*table, {"view", "offset"}, "seamless: ");
+  SeamlessTile tile;
+  if (const auto* v = table->get("view")) {
+    const auto box = numbers(*v, "seamless: view");
+    if (box.size() != 4)
+      fail(ErrorKind::parse, v->source(),
+           fmt::format("seamless: view: needs 4 numbers x0, y0, x1, y1 (got {})", box.size()));
+    if (!(std::isfinite(box[0]) && std::isfinite(box[1]) && std::isfinite(box[2]) &&
+          std::isfinite(box[3]) && box[0] < box[2] && box[1] < box[3]))
+      fail(ErrorKind::parse, v->source(),
+           fmt::format("seamless: view: needs finite x0 < x1 and y0 < y1 (got {}, {}, {}, {})",
+                       box[0], box[1], box[2], box[3]));
+    tile.view = Box{box[0], box[1], box[2], box[3]};
+  }
+  if (const auto* o = table->get("offset")) {
+    const auto offset = numbers(*o, "seamless: offset");
+    if (offset.size() != 2 || !(offset[0] >= 0 && offset[0] < 1 && offset[1] >= 0 && offset[1] < 1))
+      fail(ErrorKind::parse, o->source(),
+           fmt::format("seamless: offset: needs 2 fractions of the tile in [0, 1) (got {})",
+                       fmt::join(offset, ", ")));
+    tile.offset = {offset[0], offset[1]};
+  }
+  return tile;
 }
 
 std::vector<AffineMap> TomlReader::maps(const toml::node& node, const std::string& prefix) const {

@@ -85,12 +85,18 @@ void run_chunk(const Walkers& w, std::uint64_t seed, std::uint64_t chunk, std::u
 
 // Holes: unhit pixels with hit neighbours on both sides along some line through them (or, at a
 // corner of the raster, all three neighbours hit); they take the largest neighbouring record. Reads
-// `in`, writes `out` (a copy of `in`), so the result does not depend on the scan order.
+// `in`, writes `out` (a copy of `in`), so the result does not depend on the scan order. On the
+// torus (`wrap`) the raster has no border: a pixel's neighbours across the tile's edge are the
+// pixels of the opposite edge.
 template <class Cell>
 std::size_t fill_holes(const std::vector<Cell>& in, std::vector<Cell>& out, int width, int height,
-                       const CancelToken& cancel) {
+                       bool wrap, const CancelToken& cancel) {
   std::size_t filled = 0;
   auto get = [&](int c, int r) -> Cell {
+    if (wrap) {
+      c = (c + width) % width;
+      r = (r + height) % height;
+    }
     if (c < 0 || r < 0 || c >= width || r >= height) return 0;
     return in[static_cast<std::size_t>(r) * width + c];
   };
@@ -100,7 +106,7 @@ std::size_t fill_holes(const std::vector<Cell>& in, std::vector<Cell>& out, int 
       if (get(c, r) != 0) continue;
       // A corner of the raster has no line through it with both ends inside: there, its three
       // neighbours all hit say the same (an attractor running off the corner of the view).
-      const bool corner = (c == 0 || c == width - 1) && (r == 0 || r == height - 1);
+      const bool corner = !wrap && (c == 0 || c == width - 1) && (r == 0 || r == height - 1);
       const int dc = c == 0 ? 1 : -1, dr = r == 0 ? 1 : -1;
       const bool inside = (get(c - 1, r) && get(c + 1, r)) || (get(c, r - 1) && get(c, r + 1)) ||
                           (get(c - 1, r - 1) && get(c + 1, r + 1)) ||
@@ -268,12 +274,16 @@ std::vector<std::uint64_t> run_policy(const Ifs& F, const Viewport& viewport,
   for (std::size_t i = 0; i < pixels; ++i)
     keys[i] = merged[i] == 0 ? 0 : (std::uint64_t{merged[i]} << (64 - kCellBits)) | 1;
   buffers.clear();
-  if (options.fill)
+  // Not on the torus: there a pixel's point, rebuilt from its key by the maps and the wraps between
+  // them, is not known to within the contraction of its address (a wrap is not continuous), so the
+  // passes could leave the attractor.
+  if (options.fill && !viewport.wrap)
     s.propagated = hutchinson_passes(F, kernel, keys, kCellBits, kHutchinsonPasses, options.cancel);
   options.cancel.check("chaos game");
   std::vector<std::uint64_t> result = keys;
   if (options.fill)
-    s.filled = fill_holes(keys, result, viewport.size.width, viewport.size.height, options.cancel);
+    s.filled = fill_holes(keys, result, viewport.size.width, viewport.size.height, viewport.wrap,
+                          options.cancel);
   if (stats) *stats = s;
   return result;
 }

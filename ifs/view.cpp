@@ -21,6 +21,10 @@ AffineMap Viewport::plane_to_pixel() const {
   return {sx, 0, 0, -sy, -sx * view.x0, sy * view.y1};
 }
 
+AffineMap Viewport::tile_to_plane() const {
+  return {view.width(), 0, 0, -view.height(), view.x0, view.y1};
+}
+
 namespace {
 
 Box bounds_by_sampling(const Ifs& ifs, std::uint64_t seed, const CancelToken& cancel) {

@@ -34,6 +34,10 @@ struct Box {
 struct Viewport {
   Box view;
   cv::Size size;
+  // The view is one period of a doubly periodic plane: the fundamental domain of the torus of the
+  // tile, the plane modulo the lattice of the view's sides, and every map of an IFS is followed
+  // by the wrap back into it (docs/design.md §11). False: the plane.
+  bool wrap = false;
 
   // The plane point at the centre of pixel (col, row).
   Point pixel_centre(int col, int row) const {
@@ -47,6 +51,9 @@ struct Viewport {
   }
   // The affine map from the plane to continuous pixel coordinates (to_pixel as a map).
   AffineMap plane_to_pixel() const;
+  // The map Φ from tile coordinates (u right, v down, the view being [0,1)²) to the plane:
+  // (x0 + u·width, y1 − v·height). Pixel (c, r) covers [c/W, (c+1)/W) × [r/H, (r+1)/H) of them.
+  AffineMap tile_to_plane() const;
 };
 
 // Bounding box of the attractor of a contractive IFS, from its support function

@@ -16,14 +16,22 @@ constexpr CpuLevel kLevel = CpuLevel::avx2;
 
 #include "ifs/detail/walk_quads.inl"
 
-template <class Sink>
+template <class Sink, bool kWrap>
 void walk(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, Sink& sink) {
   if (w.maps <= 4)
-    walk_quads<Sink, false>(w, seeds, points, sink);
+    walk_quads<Sink, false, kWrap>(w, seeds, points, sink);
   else if (w.maps <= 8)
-    walk_quads<Sink, true>(w, seeds, points, sink);
+    walk_quads<Sink, true, kWrap>(w, seeds, points, sink);
   else
-    walk_scalar(w, seeds, points, sink);
+    walk_scalar<Sink, kWrap>(w, seeds, points, sink);
+}
+
+template <class Sink>
+void walk(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, Sink& sink) {
+  if (w.wrap)
+    walk<Sink, true>(w, seeds, points, sink);
+  else
+    walk<Sink, false>(w, seeds, points, sink);
 }
 
 #include "ifs/detail/walk_kernels_table.inl"

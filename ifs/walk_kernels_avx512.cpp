@@ -96,8 +96,16 @@ struct Lanes8 {
   }
 };
 
-// One chaos-game step of the eight lanes: the maps drawn (one per 64-bit lane) and the new points.
-template <bool kSixteen>
+// wrap_unit of eight lanes: t − ⌊t⌋, and 0 where that is not below 1 (or is a NaN).
+[[gnu::always_inline]] inline __m512d wrap_unit8(__m512d t) {
+  const __m512d r =
+      _mm512_sub_pd(t, _mm512_roundscale_pd(t, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC));
+  return _mm512_maskz_mov_pd(_mm512_cmp_pd_mask(r, _mm512_set1_pd(1.0), _CMP_LT_OQ), r);
+}
+
+// One chaos-game step of the eight lanes: the maps drawn (one per 64-bit lane) and the new points
+// (wrapped onto the torus of the tile with kWrap).
+template <bool kSixteen, bool kWrap>
 [[gnu::always_inline]] inline __m512i octo_step(const OctoTables& t, Lanes8& rng, __m512d& x,
                                                 __m512d& y) {
   const __m512i r = rng.next();
@@ -113,12 +121,17 @@ template <bool kSixteen>
   const __m512d ny = _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(lookup<kSixteen>(t.c, n), x),
                                                  _mm512_mul_pd(lookup<kSixteen>(t.d, n), y)),
                                    lookup<kSixteen>(t.f, n));
-  x = nx;
-  y = ny;
+  if constexpr (kWrap) {
+    x = wrap_unit8(nx);
+    y = wrap_unit8(ny);
+  } else {
+    x = nx;
+    y = ny;
+  }
   return n;
 }
 
-template <class Sink, bool kSixteen>
+template <class Sink, bool kSixteen, bool kWrap>
 void walk_octo(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, Sink& sink) {
   const OctoTables t = load_octo_tables(w);
   alignas(64) std::uint64_t s[4][kLanes];
@@ -137,7 +150,7 @@ void walk_octo(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, 
   const __m128i key_right = _mm_cvtsi32_si128(w.key_bits);
   const __m128i key_left = _mm_cvtsi32_si128(64 - w.key_bits);
   auto advance = [&] {
-    const __m512i n = octo_step<kSixteen>(t, rng, x, y);
+    const __m512i n = octo_step<kSixteen, kWrap>(t, rng, x, y);
     if constexpr (Sink::kKeys)
       key = _mm512_or_si512(_mm512_srl_epi64(key, key_right), _mm512_sll_epi64(n, key_left));
     if constexpr (Sink::kPalette)
@@ -188,16 +201,24 @@ void walk_octo(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, 
 // four lanes of walk_quads beat one chain of eight (hits 266/229 with 2 maps, measure 145/130
 // with 3); with keys (tops) the eight lanes win at any size (256/387 with 2 maps), and from 5 maps
 // on in every mode (hits 169/206 with 7 maps, measure 58/102 with 9, tops 69/270 with 9).
-template <class Sink>
+template <class Sink, bool kWrap>
 void walk(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, Sink& sink) {
   if (w.maps <= 4 && !Sink::kKeys)
-    walk_quads<Sink, false>(w, seeds, points, sink);
+    walk_quads<Sink, false, kWrap>(w, seeds, points, sink);
   else if (w.maps <= 8)
-    walk_octo<Sink, false>(w, seeds, points, sink);
+    walk_octo<Sink, false, kWrap>(w, seeds, points, sink);
   else if (w.maps <= 16)
-    walk_octo<Sink, true>(w, seeds, points, sink);
+    walk_octo<Sink, true, kWrap>(w, seeds, points, sink);
   else
-    walk_scalar(w, seeds, points, sink);
+    walk_scalar<Sink, kWrap>(w, seeds, points, sink);
+}
+
+template <class Sink>
+void walk(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, Sink& sink) {
+  if (w.wrap)
+    walk<Sink, true>(w, seeds, points, sink);
+  else
+    walk<Sink, false>(w, seeds, points, sink);
 }
 
 #include "ifs/detail/walk_kernels_table.inl"

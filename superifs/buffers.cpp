@@ -30,16 +30,27 @@ double footprint(const AffineMap& inverse) {
                         std::abs(inverse.c) + std::abs(inverse.d));
 }
 
+// Row k of a raster of `h` rows seen from a window around `row`: on the torus (`wrap`) the rows
+// wrap around; else -1 outside.
+int window_row(int k, int h, bool wrap) {
+  if (wrap) return ((k % h) + h) % h;
+  return k >= 0 && k < h ? k : -1;
+}
+
 // Rows [row0, row1) of `out` = `mask` dilated by a (2r+1)² square, separably: an OR over rows,
-// then over columns. Reads rows of `mask` up to r outside the band.
-void dilate_rows(const cv::Mat& mask, int r, int row0, int row1, BitMask& out) {
+// then over columns. Reads rows of `mask` up to r outside the band; on the torus (`wrap`) the
+// square wraps around the raster's edges.
+void dilate_rows(const cv::Mat& mask, int r, int row0, int row1, bool wrap, BitMask& out) {
   const int w = mask.cols, h = mask.rows;
   std::vector<std::uint8_t> column(static_cast<std::size_t>(w)), both(static_cast<std::size_t>(w));
   cv::Mat packed(1, w, CV_8UC1);
   for (int row = row0; row < row1; ++row) {
     std::fill(column.begin(), column.end(), 0);
-    for (int k = std::max(0, row - r); k <= std::min(h - 1, row + r); ++k) {
-      const std::uint8_t* src = mask.ptr<std::uint8_t>(k);
+    // On the torus a square wider than the raster covers it once: min(2r+1, h) rows.
+    const int k0 = wrap ? row - std::min(r, (h - 1) / 2) : std::max(0, row - r);
+    const int k1 = wrap ? k0 + std::min(2 * r, h - 1) : std::min(h - 1, row + r);
+    for (int k = k0; k <= k1; ++k) {
+      const std::uint8_t* src = mask.ptr<std::uint8_t>(window_row(k, h, wrap));
       for (int c = 0; c < w; ++c) column[static_cast<std::size_t>(c)] |= src[c];
     }
     std::copy(column.begin(), column.end(), both.begin());
@@ -48,9 +59,39 @@ void dilate_rows(const cv::Mat& mask, int r, int row0, int row1, BitMask& out) {
         both[static_cast<std::size_t>(c)] |= column[static_cast<std::size_t>(c + k)];
       for (int c = k; c < w; ++c)
         both[static_cast<std::size_t>(c)] |= column[static_cast<std::size_t>(c - k)];
+      if (!wrap) continue;
+      // The columns whose window runs off an edge read the opposite edge's.
+      for (int c = std::max(0, w - k); c < w; ++c)
+        both[static_cast<std::size_t>(c)] |= column[static_cast<std::size_t>((c + k) % w)];
+      for (int c = 0; c < std::min(k, w); ++c)
+        both[static_cast<std::size_t>(c)] |=
+            column[static_cast<std::size_t>(((c - k) % w + w) % w)];
     }
     std::copy(both.begin(), both.end(), packed.ptr<std::uint8_t>(0));
     out.pack_rows(packed, row, row + 1);
+  }
+}
+
+// Rows [row0, row1) of `out` = the (2r+1)² box average of `density` on the torus: the window
+// wraps around the raster's edges (a window wider than the raster covers it once).
+void box_rows_wrapped(const cv::Mat& density, int r, int row0, int row1, cv::Mat& out) {
+  const int w = density.cols, h = density.rows;
+  const int ry = std::min(r, (h - 1) / 2), rx = std::min(r, (w - 1) / 2);
+  const int rows = 2 * ry + 1, cols = 2 * rx + 1;
+  std::vector<double> column(static_cast<std::size_t>(w));
+  for (int row = row0; row < row1; ++row) {
+    std::fill(column.begin(), column.end(), 0.0);
+    for (int k = row - ry; k <= row + ry; ++k) {
+      const float* src = density.ptr<float>(window_row(k, h, true));
+      for (int c = 0; c < w; ++c) column[static_cast<std::size_t>(c)] += src[c];
+    }
+    float* dst = out.ptr<float>(row);
+    for (int c = 0; c < w; ++c) {
+      double sum = 0;
+      for (int k = c - rx; k <= c + rx; ++k)
+        sum += column[static_cast<std::size_t>(window_row(k, w, true))];
+      dst[c] = static_cast<float>(sum / (rows * cols));
+    }
   }
 }
 
@@ -103,6 +144,11 @@ void narrow(double slope, double offset, double limit, double& lo, double& hi) {
   hi = std::min(hi, p1);
 }
 
+// Translates i·W, j·H of the lattice of the tile, i in [i0, i1], j in [j0, j1] (paint_next).
+struct LatticeRange {
+  int i0 = 0, i1 = 0, j0 = 0, j1 = 0;
+};
+
 }  // namespace
 
 BitMask::BitMask(const cv::Mat& mask) {
@@ -152,7 +198,7 @@ Buffers::Buffers(const SuperIfs& super, cv::Size size, const BufferOptions& opti
                 fmt::format("history: must be ≥ 0 steps (got {})", options.history));
   resolve_threads(options.sampling.threads);  // rejects a negative count up front
   if (options.sampling.view) check_view(*options.sampling.view);
-  viewport_ = {buffer_view(super_, size, options.sampling), size};
+  viewport_ = {buffer_view(super_, size, options.sampling), size, options.sampling.seamless};
   const AffineMap to_pixel = plane_to_pixel(viewport_);
   const AffineMap to_plane = *to_pixel.inverse();
   const std::size_t n_count = super_.size(), m_count = super_.maps();
@@ -223,7 +269,8 @@ void Buffers::dilate_current() {
   for (auto& d : dilated_) d.resize(viewport_.size);
   parallel_rows(v_count, viewport_.size.height, band_rows, options_.sampling.threads,
                 options_.sampling.cancel, "superIFS step", [&](std::size_t v, cv::Range rows) {
-                  dilate_rows(masks_[v], dilation_, rows.start, rows.end, dilated_[v]);
+                  dilate_rows(masks_[v], dilation_, rows.start, rows.end, viewport_.wrap,
+                              dilated_[v]);
                 });
 }
 
@@ -272,9 +319,9 @@ void Buffers::step() {
 void Buffers::smooth_densities(Next& next) const {
   parallel_rows(masks_.size(), viewport_.size.height, band_rows, options_.sampling.threads,
                 options_.sampling.cancel, "superIFS step", [&](std::size_t v, cv::Range rows) {
-                  box_rows(densities_[v], dilation_, rows.start, rows.end, next.smooth[v]);
-                  box_rows(colour_masses_[v], dilation_, rows.start, rows.end,
-                           next.smooth_colour[v]);
+                  const auto box = viewport_.wrap ? box_rows_wrapped : box_rows;
+                  box(densities_[v], dilation_, rows.start, rows.end, next.smooth[v]);
+                  box(colour_masses_[v], dilation_, rows.start, rows.end, next.smooth_colour[v]);
                 });
 }
 
@@ -291,6 +338,23 @@ void Buffers::paint_next(const StepChoices& choices, Next& buffers) const {
   std::vector<double> map_coordinate(m_count, 0.0);
   for (std::size_t m = 0; m < m_count && m_count > 1; ++m)
     map_coordinate[m] = static_cast<double>(m) / static_cast<double>(m_count - 1);
+  // The translates by the lattice of the tile that can put row py (and column px, when given) in
+  // a piece's box: i·W and j·H for i in [i0, i1], j in [j0, j1]; only (0, 0) off the torus.
+  const auto translates = [&](const Box& b, double py, double px = NAN) {
+    if (!viewport_.wrap) return LatticeRange{};
+    const double w = size.width, h = size.height;
+    LatticeRange r;
+    r.j0 = static_cast<int>(std::ceil((b.y0 - py) / h));
+    r.j1 = static_cast<int>(std::floor((b.y1 - py) / h));
+    if (std::isnan(px)) {
+      r.i0 = static_cast<int>(std::floor(b.x0 / w));
+      r.i1 = static_cast<int>(std::floor(b.x1 / w));
+    } else {
+      r.i0 = static_cast<int>(std::ceil((b.x0 - px) / w));
+      r.i1 = static_cast<int>(std::floor((b.x1 - px) / w));
+    }
+    return r;
+  };
   parallel_rows(
       v_count, size.height, band_rows, options_.sampling.threads, options_.sampling.cancel,
       "superIFS step", [&](std::size_t v, cv::Range rows) {
@@ -307,17 +371,28 @@ void Buffers::paint_next(const StepChoices& choices, Next& buffers) const {
           for (std::size_t m = 0; m < m_count; ++m) {
             const AffineMap& a = pixel_inverse_[n * m_count + m];
             const BitMask& from = dilated_[source[m]];
-            double lo = 0.5, hi = size.width - 0.5;
-            narrow(a.a, a.b * py + a.e, size.width, lo, hi);
-            narrow(a.c, a.d * py + a.f, size.height, lo, hi);
-            if (hi < lo) continue;
-            const int c0 = std::max(0, static_cast<int>(std::floor(lo - 0.5)));
-            const int c1 = std::min(size.width - 1, static_cast<int>(std::ceil(hi - 0.5)));
-            for (int col = c0; col <= c1; ++col) {
-              const double px = col + 0.5;
-              if (!out[col] && from.test(a.a * px + a.b * py + a.e, a.c * px + a.d * py + a.f))
-                out[col] = 255;
-            }
+            // On the torus, every translate x + λ of the row by the lattice, λ = (i·W, j·H), that
+            // can lie in the piece f_m(tile) (docs/design.md §11); else λ = 0 alone.
+            const LatticeRange range = translates(piece_bounds_[n * m_count + m], py);
+            for (int j = range.j0; j <= range.j1; ++j)
+              for (int i = range.i0; i <= range.i1; ++i) {
+                const double ty = py + j * static_cast<double>(size.height);
+                const double tx = i * static_cast<double>(size.width);
+                // The preimage of (px + tx, ty): a.a·px + (a.a·tx + a.b·ty + a.e), likewise y.
+                const double ox = a.a * tx + a.b * ty + a.e, oy = a.c * tx + a.d * ty + a.f;
+                double lo = 0.5, hi = size.width - 0.5;
+                narrow(a.a, ox, size.width, lo, hi);
+                narrow(a.c, oy, size.height, lo, hi);
+                if (hi < lo) continue;
+                const int c0 = std::max(0, static_cast<int>(std::floor(lo - 0.5)));
+                const int c1 = std::min(size.width - 1, static_cast<int>(std::ceil(hi - 0.5)));
+                for (int col = c0; col <= c1; ++col) {
+                  // (px + tx, ty): the pixel centre itself off the torus (tx = 0, ty = py).
+                  const double qx = col + 0.5 + tx;
+                  if (!out[col] && from.test(a.a * qx + a.b * ty + a.e, a.c * qx + a.d * ty + a.f))
+                    out[col] = 255;
+                }
+              }
           }
           if (!options_.density) continue;
           // μ'_v = Σ_m p^{n}_m f_m#(μ_{v_m}): the mass of pixel x is the mass of its preimage,
@@ -330,14 +405,21 @@ void Buffers::paint_next(const StepChoices& choices, Next& buffers) const {
             double sum = 0, colour_sum = 0;
             for (std::size_t m = 0; m < m_count; ++m) {
               const AffineMap& a = pixel_inverse_[n * m_count + m];
-              const double x = a.a * px + a.b * py + a.e, y = a.c * px + a.d * py + a.f;
-              if (!(x >= 0 && y >= 0 && x < size.width && y < size.height)) continue;
-              const int ix = static_cast<int>(x), iy = static_cast<int>(y);
               const double weight = map_probabilities_[n][m] * std::abs(a.det());
-              const float rho = smooth[source[m]].at<float>(iy, ix);
-              const float rho_c = smooth_colour[source[m]].at<float>(iy, ix);
-              sum += weight * rho;
-              colour_sum += weight * 0.5 * (rho_c + map_coordinate[m] * rho);
+              // On the torus the mass of every translate's preimage in the tile.
+              const LatticeRange range = translates(piece_bounds_[n * m_count + m], py, px);
+              for (int j = range.j0; j <= range.j1; ++j)
+                for (int i = range.i0; i <= range.i1; ++i) {
+                  const double tx = px + i * static_cast<double>(size.width);
+                  const double ty = py + j * static_cast<double>(size.height);
+                  const double x = a.a * tx + a.b * ty + a.e, y = a.c * tx + a.d * ty + a.f;
+                  if (!(x >= 0 && y >= 0 && x < size.width && y < size.height)) continue;
+                  const int ix = static_cast<int>(x), iy = static_cast<int>(y);
+                  const float rho = smooth[source[m]].at<float>(iy, ix);
+                  const float rho_c = smooth_colour[source[m]].at<float>(iy, ix);
+                  sum += weight * rho;
+                  colour_sum += weight * 0.5 * (rho_c + map_coordinate[m] * rho);
+                }
             }
             mass[col] = static_cast<float>(sum);
             colour[col] = static_cast<float>(colour_sum);

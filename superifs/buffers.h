@@ -87,7 +87,11 @@ struct BufferOptions {
   int count = 3;  // V, the number of buffers
   // The plane rectangle (default: the superIFS's view, else buffer_view()'s framing with the
   // margin); the choices of step k come from stream_seed(seed, k); threads (0 = all cores); the
-  // stop flag, polled per band of rows of a step. Quality is not used: buffers are rasters.
+  // stop flag, polled per band of rows of a step. Quality is not used: buffers are rasters. With
+  // sampling.seamless the buffers live on the torus of their rectangle (docs/design.md §11): each
+  // f^n_m is followed by the wrap back into it, so pixel x of K'_v is set when f_m⁻¹(x + λ) falls
+  // in K_{v_m} for some translate of x by the lattice of the tile, and the dilation, the smoothing
+  // and every lookup wrap around its edges.
   Sampling sampling;
   int history = 0;       // steps kept for the exact descent (steal coordinates, tops); 0 = none
   bool density = false;  // also carry the measures (measure mode)
@@ -144,6 +148,8 @@ class Buffers {
   }
   // Half-width in pixels of the dilation that makes the lookup conservative.
   int dilation() const { return dilation_; }
+  // Whether the buffers live on the torus of their rectangle (BufferOptions::sampling.seamless).
+  bool seamless() const { return viewport_.wrap; }
 
  private:
   struct Next;  // the buffers a step makes (buffers.cpp)

@@ -63,7 +63,8 @@ std::vector<const toml::table*> read_tables(const TomlReader& in, const toml::ta
 SuperIfsPreset parse_superifs_toml(std::string_view text, const std::string& filename) {
   const TomlReader read(filename);
   const toml::table root = read.parse(text);
-  read.check_keys(root, {"name", "description", "probabilities", "view", "ifs", "colouring"}, "");
+  read.check_keys(
+      root, {"name", "description", "probabilities", "view", "ifs", "colouring", "seamless"}, "");
   SuperIfsPreset preset;
   preset.text = std::string(text);
   SuperIfs& super = preset.super;
@@ -107,6 +108,7 @@ SuperIfsPreset parse_superifs_toml(std::string_view text, const std::string& fil
                 fmt::format("{}: needs as many maps as the IFSs (got {} for {})", what,
                             super.colouring[n].size(), super.maps()));
   }
+  if (const auto* t = root.get("seamless")) preset.seamless = read.seamless(*t);
   // The remaining rules (singular maps, view, colouring count) have no better line than the file.
   validate(super, filename);
   return preset;
@@ -197,8 +199,8 @@ std::vector<SuperIfsSummary> list_shipped_superifs() {
   for (const auto& file : shipped_files()) {
     if (!is_superifs_file(file.name)) continue;
     const auto preset = parse_superifs_toml(file.text, std::string(file.name));
-    out.push_back(
-        {stem_of(file.name), preset.super.size(), preset.super.maps(), preset.description});
+    out.push_back({stem_of(file.name), preset.super.size(), preset.super.maps(), preset.description,
+                   preset.seamless.has_value()});
   }
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
   return out;

@@ -15,12 +15,17 @@
 //   [[colouring]]                     # optional colouring IFS G (unit square, y up): one table
 //   maps = [ ... ]                    # for every n, or one per [[ifs]]; default: the tiling
 //                                     # default_colouring(M)
+//   [seamless]                        # optional: offered as a seamless tile (ifs/tiles.h):
+//   view = [x0, y0, x1, y1]           # optional tile, default the view above
+//   offset = [0.5, 0.5]               # optional: where the picture starts in the period
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "ifs/tiles.h"
 #include "superifs/superifs.h"
 
 namespace ifsfx {
@@ -30,6 +35,8 @@ struct SuperIfsPreset {
   std::string description;
   std::string origin;  // "shipped:paper-fig4.super.toml" or the path it was read from
   std::string text;    // the file's own text (stored in the metadata of rendered images)
+  // Offered as a seamless tile (`ifsfx texture --seamless`, docs/seamless.md); empty: not offered.
+  std::optional<SeamlessTile> seamless;
 };
 
 // The extension that marks a superIFS preset among the files of presets/.
@@ -56,6 +63,7 @@ struct SuperIfsSummary {
   std::size_t ifs = 0;   // N
   std::size_t maps = 0;  // M
   std::string description;
+  bool seamless = false;  // offered as a seamless tile (SuperIfsPreset::seamless)
 };
 std::vector<SuperIfsSummary> list_shipped_superifs();
 

@@ -37,6 +37,17 @@ bool near(const BitMask& mask, double x, double y, int r) {
   return false;
 }
 
+// `near` on the torus of the tile: the square around (x, y) wraps around the mask's edges.
+bool near_wrapped(const BitMask& mask, double x, double y, int r) {
+  const int w = mask.width(), h = mask.height();
+  const int c = static_cast<int>(std::floor(x)), row = static_cast<int>(std::floor(y));
+  const int rx = std::min(r, (w - 1) / 2), ry = std::min(r, (h - 1) / 2);
+  for (int j = row - ry; j <= row + ry; ++j)
+    for (int i = c - rx; i <= c + rx; ++i)
+      if (mask.test(((i % w) + w) % w, ((j % h) + h) % h)) return true;
+  return false;
+}
+
 // What the descent reads, flattened once per render: for each (n, m) the inverse map in pixel
 // coordinates and the box its piece lies in; for each level of history, newest first, the choices
 // and the masks one step back.
@@ -54,8 +65,14 @@ struct Descent {
   std::vector<Level> levels;
   std::size_t maps = 0;
   int reach = 0;  // how far a preimage that just misses every mask is looked for
+  bool torus = false;
+  double width = 0, height = 0;  // of the raster
 
-  explicit Descent(const Buffers& buffers) : maps(buffers.super().maps()) {
+  explicit Descent(const Buffers& buffers)
+      : maps(buffers.super().maps()),
+        torus(buffers.seamless()),
+        width(buffers.size().width),
+        height(buffers.size().height) {
     for (std::size_t n = 0; n < buffers.super().size(); ++n)
       for (std::size_t m = 0; m < maps; ++m)
         pieces.push_back({buffers.pixel_inverse(n, m), buffers.piece_bounds(n, m)});
@@ -68,10 +85,97 @@ struct Descent {
     reach = buffers.dilation() + 1;
   }
 
+  // A candidate of the descent on the torus: a point of a buffer, and the candidate one level
+  // up it came from (-1 at the pixel), with the symbol that took it there.
+  struct Candidate {
+    Point z;
+    std::size_t buf;
+    int parent;
+    Symbol symbol;
+  };
+  static constexpr std::size_t kMaxCandidates = 8;
+  // The candidates of every level, reused from pixel to pixel by one thread.
+  using Trail = std::vector<std::vector<Candidate>>;
+
+  // The descent on the torus of the tile (docs/design.md §11): the point z of a buffer has a
+  // preimage under wrap ∘ f^n_m for every translate z + λ by the lattice (λ = (i·W, j·H) pixels)
+  // in the piece's box whose preimage lies in the tile and on the source buffer. The top address
+  // keeps the largest of all (eq. 7, eq. 14's Top): the descent follows every candidate whose
+  // symbols agree so far (at most kMaxCandidates, in a fixed order), taking at each level the
+  // highest m that any has; the word and point are those of the first candidate at the end.
+  std::size_t run_torus(std::size_t v, int col, int row, std::vector<Symbol>& word, Point& z,
+                        Trail& trail) const {
+    trail.resize(levels.size() + 1);
+    trail[0].assign(1, Candidate{{col + 0.5, row + 0.5}, v, -1, {}});
+    std::size_t depth = 0;
+    for (const Level& level : levels) {
+      const std::vector<Candidate>& now = trail[depth];
+      std::vector<Candidate>& next = trail[depth + 1];
+      next.clear();
+      for (std::size_t m = maps; m-- > 0 && next.empty();) {
+        for (std::size_t k = 0; k < now.size() && next.size() < kMaxCandidates; ++k) {
+          const Candidate& c = now[k];
+          const std::uint32_t n = level.ifs[c.buf];
+          const Piece& piece = pieces[n * maps + m];
+          const std::size_t to = level.source[c.buf * maps + m];
+          for_translates(c.z, piece.bounds, [&](Point q) {
+            const Point y = piece.inverse(q);
+            if (in_tile(y) && level.previous[to].test(static_cast<int>(y.x), static_cast<int>(y.y)))
+              next.push_back({y, to, static_cast<int>(k), {n, static_cast<std::uint32_t>(m)}});
+            return next.size() < kMaxCandidates;
+          });
+        }
+      }
+      if (next.empty()) {
+        // A preimage just off every conservative mask: looked for a little further.
+        const Candidate& c = now[0];
+        const std::uint32_t n = level.ifs[c.buf];
+        for (std::size_t m = maps; m-- > 0 && next.empty();) {
+          const Piece& piece = pieces[n * maps + m];
+          const std::size_t to = level.source[c.buf * maps + m];
+          for_translates(c.z, piece.bounds, [&](Point q) {
+            const Point y = piece.inverse(q);
+            if (!in_tile(y) || !near_wrapped(level.previous[to], y.x, y.y, reach)) return true;
+            next.push_back({y, to, 0, {n, static_cast<std::uint32_t>(m)}});
+            return false;
+          });
+        }
+      }
+      if (next.empty()) break;
+      ++depth;
+    }
+    // The word of the first candidate, read back up the trail.
+    int k = 0;
+    z = trail[depth][0].z;
+    for (std::size_t d = depth; d > 0; --d) {
+      const Candidate& c = trail[d][static_cast<std::size_t>(k)];
+      word[d - 1] = c.symbol;
+      k = c.parent;
+    }
+    return depth;
+  }
+
+  // Whether a point lies in the tile, half-open: on the torus each point has one representative
+  // in [0, W) × [0, H), so a preimage on the tile's far edge is its translate on the near one.
+  bool in_tile(Point y) const { return y.x >= 0 && y.x < width && y.y >= 0 && y.y < height; }
+
+  // Calls visit(z + λ) for the translates of z by the lattice of the tile that lie in `box`, i then
+  // j increasing, until visit returns false.
+  template <class Visit>
+  void for_translates(Point z, const Box& box, Visit&& visit) const {
+    const double i0 = std::ceil((box.x0 - z.x) / width), i1 = std::floor((box.x1 - z.x) / width);
+    const double j0 = std::ceil((box.y0 - z.y) / height), j1 = std::floor((box.y1 - z.y) / height);
+    for (double i = i0; i <= i1; ++i)
+      for (double j = j0; j <= j1; ++j)
+        if (!visit(Point{z.x + i * width, z.y + j * height})) return;
+  }
+
   // The exact descent (docs/design.md §3, §5) from the centre of pixel (col, row) of buffer v
   // through every level, newest first. Writes the symbols, returns how many, and leaves in `z` the
   // point reached (continuous pixel coordinates of the oldest level's buffers).
-  std::size_t run(std::size_t v, int col, int row, std::vector<Symbol>& word, Point& z) const {
+  std::size_t run(std::size_t v, int col, int row, std::vector<Symbol>& word, Point& z,
+                  Trail& trail) const {
+    if (torus) return run_torus(v, col, row, word, z, trail);
     z = {col + 0.5, row + 0.5};
     std::size_t depth = 0, buf = v;
     for (const Level& level : levels) {
@@ -135,11 +239,12 @@ cv::Mat render_tops(const Buffers& buffers, std::size_t v) {
   const Descent descent(buffers);
   const auto band = [&](cv::Range rows) {
     std::vector<Symbol> word(descent.levels.size());
+    Descent::Trail trail;
     for (int row = rows.start; row < rows.end; ++row) {
       for (int col = 0; col < size.width; ++col) {
         if (!mask.at<std::uint8_t>(row, col)) continue;
         Point z;
-        const std::size_t depth = descent.run(v, col, row, word, z);
+        const std::size_t depth = descent.run(v, col, row, word, z, trail);
         double t = 0, scale = 1;
         for (std::size_t i = 0; i < std::min<std::size_t>(depth, top_symbols); ++i) {
           scale /= m_count;
@@ -263,6 +368,7 @@ StealMap steal_map(const Buffers& buffers, std::size_t v) {
   const Descent descent(buffers);
   const auto band = [&](cv::Range rows) {
     std::vector<Symbol> word(descent.levels.size());
+    Descent::Trail trail;
     for (int row = rows.start; row < rows.end; ++row) {
       auto* uv = map.source_uv.ptr<cv::Vec2f>(row);
       const std::uint8_t* covered = map.coverage.ptr<std::uint8_t>(row);
@@ -272,7 +378,7 @@ StealMap steal_map(const Buffers& buffers, std::size_t v) {
           continue;
         }
         Point z;
-        const std::size_t depth = descent.run(v, col, row, word, z);
+        const std::size_t depth = descent.run(v, col, row, word, z, trail);
         // ρ: the buffers' rectangle onto the colouring's unit square (y up) — the steal
         // coordinates of the starting buffer — then T = g_{σ1} ∘ … ∘ g_{σL}(ρ(z)).
         Point t{z.x / size.width, 1.0 - z.y / size.height};

@@ -57,6 +57,8 @@ struct TextureOptions {
   // The plane rectangle (default: the superIFS's view, else its attractor auto-framed with the
   // margin), the seed of every choice (stream_seed(seed, step)), threads, and the stop flag,
   // polled by the burn-in, the steps and the descent (per band of rows). Quality is not used.
+  // With sampling.seamless the texture is one period of a doubly periodic one, the buffers on
+  // the torus of their rectangle (BufferOptions, docs/design.md §11).
   Sampling sampling;
   int count = 3;   // V, the number of buffers
   int steps = 0;   // burn-in steps; 0 = default_steps(super, size)

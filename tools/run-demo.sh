@@ -21,6 +21,9 @@ $ifsfx texture paper-fig4 -V 3 --size 1024x1024 -o out/paper-fig4.png
 # A denser superfractal texture: carpets with holes in different places, V = 3.
 $ifsfx texture carpet-lace -V 3 --size 1024x1024 --mode steal \
   --source /usr/share/doc/opencv-doc/examples/data/baboon.jpg -o out/carpet-lace-steal.png
+# A seamless tile of it (docs/seamless.md), shown as 3×3 periods: no seam where the tiles meet.
+$ifsfx texture carpet-lace -V 3 --seamless --tiles 3x3 --size 512x512 --mode steal \
+  --source /usr/share/doc/opencv-doc/examples/data/baboon.jpg -o out/carpet-lace-tiles.png
 # IFS stills: the invariant measure, and colour stealing (paper Fig. 1).
 $ifsfx render barnsley-fern --mode measure --size 1024x1024 --supersample 2 -o out/fern-measure.png
 $ifsfx render barnsley-fern --mode steal --exact --size 1024x1024 \
@@ -28,10 +31,11 @@ $ifsfx render barnsley-fern --mode steal --exact --size 1024x1024 \
 # The README's pictures (docs/images/): 256 pixels wide, JPEG, into out/readme/; copy them over
 # docs/images/ to refresh the README.
 mkdir -p out/readme
-small() { ffmpeg -nostdin -loglevel error -y ${3:+-ss "$3"} -i "$1" -vf scale=256:-2 -frames:v 1 \
-  -q:v 3 -update 1 "$2"; }  # INPUT OUTPUT [SECONDS]
+small() { ffmpeg -nostdin -loglevel error -y ${3:+-ss "$3"} -i "$1" -vf "scale=${4:-256}:-2" \
+  -frames:v 1 -q:v 3 -update 1 "$2"; }  # INPUT OUTPUT [SECONDS [WIDTH]]
 small out/fern-steal.png out/readme/fern-steal.jpg
 small out/carpet-lace-steal.png out/readme/carpet-lace-steal.jpg
 small out/vtest-fern.mp4 out/readme/vtest-fern.jpg 40
-echo "run-demo: results in out/ (vtest-fern.mp4, paper-fig4*.png, carpet-lace-steal.png, fern-*.png;"
+small out/carpet-lace-tiles.png out/readme/carpet-lace-tiles.jpg 0 384
+echo "run-demo: results in out/ (vtest-fern.mp4, paper-fig4*.png, carpet-lace-*.png, fern-*.png;"
 echo "          the README's pictures in out/readme/)"

@@ -13,6 +13,7 @@
 
 #include "ifs/affine_map.h"
 #include "ifs/error.h"
+#include "ifs/tiles.h"
 
 namespace ifsfx::detail {
 
@@ -48,6 +49,10 @@ class TomlReader {
   // The maps of an IFS: a non-empty array of rows [a, b, c, d, e, f] of finite numbers. Messages
   // name "PREFIX map N" / "PREFIX maps" (the prefix empty for a one-IFS file).
   std::vector<AffineMap> maps(const toml::node& node, const std::string& prefix = {}) const;
+
+  // A [seamless] table (ifs/tiles.h): `view` (4 finite numbers, x0 < x1, y0 < y1) and `offset`
+  // (2 numbers in [0, 1)), both optional; Error{parse} "seamless: ..." otherwise.
+  SeamlessTile seamless(const toml::node& node) const;
 
   // "a string", "an integer", ... for messages.
   static std::string_view type_name(const toml::node& node);

@@ -39,6 +39,10 @@ struct WalkSpec {
   int burn_in;                   // steps of each lane before it plots
   int key_bits;                  // b: bits per symbol of the address keys (tops)
   const std::uint32_t* palette;  // c_n of each map, 16-bit fixed point (palette coordinates)
+  // 1: the walk is on the torus of the tile (docs/design.md §11): coordinates are the tile's,
+  // [0,1)² with v down, and every step ends with the wrap t − ⌊t⌋ of both (0 for the 1 that
+  // rounding gives a tiny negative t); 0: the plane, no wrap.
+  int wrap;
 };
 
 // The xoshiro256+ state of each lane at the start of a chunk (lane_seeds() in walkers.h).

@@ -30,6 +30,14 @@ inline double unit_interval(std::uint64_t r) {
   return static_cast<double>(r >> 11) * 0x1.0p-53;
 }
 
+// The wrap onto the torus of the tile (WalkSpec::wrap): t − ⌊t⌋ in [0, 1). A tiny negative t
+// gives 1 by rounding, which is 0 on the torus; a NaN or an infinity (a walker that diverged)
+// gives 0 too, so the walker starts again from the tile's corner.
+[[gnu::always_inline]] inline double wrap_unit(double t) {
+  const double r = t - __builtin_floor(t);
+  return r < 1.0 ? r : 0.0;
+}
+
 // Walker's alias method (MapPicker): the high 32 bits pick a column, the low 32 bits decide
 // between the column and its alias.
 [[gnu::always_inline]] inline std::uint32_t pick_map(const WalkSpec& w, std::uint64_t r) {
@@ -143,8 +151,9 @@ struct TraceSink {
 // start and updated at every step, burn-in and points off the raster included: like the position,
 // it is the walker's own state, so it depends on the lane's own draws only, never on what a worker
 // ran before. Everything the loop reads is copied into locals first, so that the compiler keeps it
-// in registers whatever the sink writes.
-template <class Sink>
+// in registers whatever the sink writes. With kWrap (WalkSpec::wrap) every step ends with the
+// wrap onto the torus of the tile, burn-in included.
+template <class Sink, bool kWrap>
 void walk_scalar(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, Sink& sink) {
   const double *a = w.a, *b = w.b, *c = w.c, *d = w.d, *e = w.e, *f = w.f;
   const double sx = w.sx, ox = w.ox, sy = w.sy, oy = w.oy;
@@ -168,8 +177,13 @@ void walk_scalar(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points
     // (a x + b y) + e, (c x + d y) + f: the order every kernel level keeps.
     const double nx = a[n] * x[lane] + b[n] * y[lane] + e[n];
     const double ny = c[n] * x[lane] + d[n] * y[lane] + f[n];
-    x[lane] = nx;
-    y[lane] = ny;
+    if constexpr (kWrap) {
+      x[lane] = wrap_unit(nx);
+      y[lane] = wrap_unit(ny);
+    } else {
+      x[lane] = nx;
+      y[lane] = ny;
+    }
     if constexpr (Sink::kKeys)
       key[lane] = (key[lane] >> key_bits) | (static_cast<std::uint64_t>(n) << key_shift);
     if constexpr (Sink::kPalette) colour[lane] = (colour[lane] + palette[n]) >> 1;
@@ -191,4 +205,13 @@ void walk_scalar(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points
     for (int lane = 0; lane < kLanes; ++lane) advance(lane);
   }
   for (int lane = 0; lane < static_cast<int>(points % kLanes); ++lane) advance(lane);
+}
+
+// walk_scalar with the wrap chosen at run time, once per chunk.
+template <class Sink>
+void walk_scalar(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, Sink& sink) {
+  if (w.wrap)
+    walk_scalar<Sink, true>(w, seeds, points, sink);
+  else
+    walk_scalar<Sink, false>(w, seeds, points, sink);
 }

@@ -81,9 +81,15 @@ QuadTables load_quad_tables(const WalkSpec& w) {
   return t;
 }
 
+// wrap_unit of four lanes: t − ⌊t⌋, and 0 where that is not below 1 (or is a NaN).
+[[gnu::always_inline]] inline __m256d wrap_unit4(__m256d t) {
+  const __m256d r = _mm256_sub_pd(t, _mm256_floor_pd(t));
+  return _mm256_and_pd(r, _mm256_cmp_pd(r, _mm256_set1_pd(1.0), _CMP_LT_OQ));
+}
+
 // One chaos-game step of four lanes: the maps drawn (one per 64-bit lane, in its low half) and
-// the new points.
-template <bool kEight>
+// the new points (wrapped onto the torus of the tile with kWrap).
+template <bool kEight, bool kWrap>
 [[gnu::always_inline]] inline __m256i quad_step(const QuadTables& t, Lanes4& rng, __m256d& x,
                                                 __m256d& y) {
   const __m256i r = rng.next();
@@ -111,8 +117,13 @@ template <bool kEight>
       _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(select_coefficient<kEight>(t.c, pair, upper), x),
                                   _mm256_mul_pd(select_coefficient<kEight>(t.d, pair, upper), y)),
                     select_coefficient<kEight>(t.f, pair, upper));
-  x = nx;
-  y = ny;
+  if constexpr (kWrap) {
+    x = wrap_unit4(nx);
+    y = wrap_unit4(ny);
+  } else {
+    x = nx;
+    y = ny;
+  }
   return n;
 }
 
@@ -123,7 +134,7 @@ struct Quad {
   __m256i key, colour;
 };
 
-template <class Sink, bool kEight>
+template <class Sink, bool kEight, bool kWrap>
 void walk_quads(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points, Sink& sink) {
   const QuadTables t = load_quad_tables(w);
   std::uint64_t rng[kLanes][4];
@@ -146,7 +157,7 @@ void walk_quads(const WalkSpec& w, const LaneSeeds& seeds, std::uint64_t points,
   const __m128i key_left = _mm_cvtsi32_si128(64 - w.key_bits);
   const __m256i low32 = _mm256_set1_epi64x(0xffffffff);
   auto advance = [&](Quad& l) {
-    const __m256i n = quad_step<kEight>(t, l.rng, l.x, l.y);
+    const __m256i n = quad_step<kEight, kWrap>(t, l.rng, l.x, l.y);
     if constexpr (Sink::kKeys)
       l.key = _mm256_or_si256(_mm256_srl_epi64(l.key, key_right), _mm256_sll_epi64(n, key_left));
     if constexpr (Sink::kPalette) {

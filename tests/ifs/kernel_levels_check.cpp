@@ -91,24 +91,23 @@ std::vector<unsigned char> bytes_of(const std::vector<T>& v, std::size_t n) {
   return {p, p + n * sizeof(T)};
 }
 
-// Every mode of `k` on a raster that cuts the attractor.
-std::vector<Output> outputs(const TestIfs& ifs, const WalkKernels& k) {
+// Every mode of `k` with the walk `w`: a trace of `traced` points (and of 8 and 3), rasters of
+// `points`; `where` ends each mode's name.
+std::vector<Output> outputs_of(const WalkSpec& w, const WalkKernels& k, const std::string& where,
+                               std::uint64_t traced, std::uint64_t points) {
   std::vector<Output> out;
-  const int width = 301, height = 203;
-  const WalkSpec w = ifs.spec(-0.7, -1.05, 1.05, 0.6, width, height);
-  const auto area = static_cast<std::size_t>(width) * height;
-  for (std::uint64_t points : {std::uint64_t{200'003}, std::uint64_t{8}, std::uint64_t{3}}) {
-    std::vector<TracedPoint> t(points);
-    const std::size_t n = k.trace(w, lane_seeds(42, points), points, t.data());
-    out.push_back({"trace of " + std::to_string(points) + " points", bytes_of(t, n)});
+  const auto area = static_cast<std::size_t>(w.width) * static_cast<std::size_t>(w.height);
+  for (std::uint64_t count : {traced, std::uint64_t{8}, std::uint64_t{3}}) {
+    std::vector<TracedPoint> t(count);
+    const std::size_t n = k.trace(w, lane_seeds(42, count), count, t.data());
+    out.push_back({"trace of " + std::to_string(count) + " points" + where, bytes_of(t, n)});
   }
   const LaneSeeds seeds = lane_seeds(7, 11);
-  const std::uint64_t points = 500'001;
   // One raster-writing kernel on a zeroed raster of Cell.
   const auto raster = [&](auto kernel, auto cell, const char* mode) {
     std::vector<decltype(cell)> r(area);
     (k.*kernel)(w, seeds, points, r.data());
-    out.push_back({mode, bytes_of(r, area)});
+    out.push_back({mode + where, bytes_of(r, area)});
   };
   raster(&WalkKernels::hits, std::uint8_t{}, "hits");
   raster(&WalkKernels::counts, std::uint32_t{}, "counts");
@@ -122,7 +121,26 @@ std::vector<Output> outputs(const TestIfs& ifs, const WalkKernels& k) {
   k.measure(w, seeds, points, m);
   fold_measure_cells(m, area, count.data(), colour.data());
   for (std::size_t i = 0; i < area; ++i) count[i] |= colour[i] << 32;
-  out.push_back({"measure", bytes_of(count, area)});
+  out.push_back({"measure" + where, bytes_of(count, area)});
+  return out;
+}
+
+// Every mode of `k` on a raster that cuts the attractor, and on the torus of the unit tile, which
+// the attractor overlaps (WalkSpec::wrap: every step wraps into [0,1)², docs/design.md §11).
+std::vector<Output> outputs(const TestIfs& ifs, const WalkKernels& k) {
+  std::vector<Output> out;
+  const int width = 301, height = 203;
+  for (const bool wrap : {false, true}) {
+    WalkSpec w = ifs.spec(-0.7, -1.05, 1.05, 0.6, width, height);
+    if (wrap) {
+      w.wrap = 1;
+      w.sx = width, w.ox = 0, w.sy = height, w.oy = 0;
+    }
+    // The torus (the same code, and a wrap per step) on a quarter of the points.
+    const std::vector<Output> more = wrap ? outputs_of(w, k, " on the torus", 50'001, 125'001)
+                                          : outputs_of(w, k, "", 200'003, 500'001);
+    out.insert(out.end(), more.begin(), more.end());
+  }
   return out;
 }
 

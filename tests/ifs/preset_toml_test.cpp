@@ -73,13 +73,14 @@ maps = [
 }
 
 TEST(parse_ifs_toml, a_misspelt_key_is_reported_with_its_line) {
-  expect_error(R"(name = "fern"
+  expect_error(
+      R"(name = "fern"
 maps = [[0.5, 0, 0, 0.5, 0, 0]]
 probabilites = [1]
 )",
-               ErrorKind::parse,
-               "fern.toml:3: unknown key 'probabilites' "
-               "(known: name, description, maps, probabilities, colours, allow_expansive)");
+      ErrorKind::parse,
+      "fern.toml:3: unknown key 'probabilites' "
+      "(known: name, description, maps, probabilities, colours, allow_expansive, seamless)");
 }
 
 TEST(parse_ifs_toml, a_toml_syntax_error_is_reported_with_its_line) {
@@ -135,13 +136,13 @@ TEST(parse_ifs_toml, the_deepest_text_allowed_parses_safely) {
   deep.append("1").append(31, '}').append("\n");
   expect_error(deep, ErrorKind::parse,
                "fern.toml:1: unknown key 'x' (known: name, description, maps, probabilities, "
-               "colours, allow_expansive)");
+               "colours, allow_expansive, seamless)");
   const std::string dots = dotted(5000, "b");
   expect_error("description = \"" + dots + "\"  # " + dots + "\nname = '" + dots +
                    "'\nnotes = \"\"\"\n" + dots + "\n\"\"\"\n",
                ErrorKind::parse,
                "fern.toml:3: unknown key 'notes' (known: name, description, maps, probabilities, "
-               "colours, allow_expansive)");
+               "colours, allow_expansive, seamless)");
 }
 
 TEST(parse_ifs_toml, values_of_the_wrong_type_are_reported_with_their_line) {
@@ -189,6 +190,38 @@ TEST(parse_ifs_toml, bad_colours_are_reported_with_their_line) {
                "fern.toml:2: map 1: colour: components must lie in [0, 1] (got 255)");
   expect_error(maps + "colours = [\"#ff0000\"]\n", ErrorKind::invalid_ifs,
                "fern.toml:2: colours: one per map is needed (got 1 for 2 maps)");
+}
+
+// A preset offered as a seamless tile says so in a [seamless] table, with an optional tile and
+// offset (docs/seamless.md); a preset without one is not offered.
+TEST(parse_ifs_toml, reads_the_seamless_table) {
+  const std::string maps = "maps = [[0.5, 0, 0, 0.5, 0, 0]]\n";
+  EXPECT_FALSE(parse_ifs_toml(maps, "fern.toml").seamless);
+  const IfsPreset plain = parse_ifs_toml(maps + "[seamless]\n", "fern.toml");
+  ASSERT_TRUE(plain.seamless);
+  EXPECT_FALSE(plain.seamless->view);
+  EXPECT_EQ(plain.seamless->offset, (Point{0, 0}));
+  const IfsPreset full =
+      parse_ifs_toml(maps + "[seamless]\nview = [0, -1, 2, 1.5]\noffset = [0.5, 0.25]\n", "f.toml");
+  ASSERT_TRUE(full.seamless && full.seamless->view);
+  EXPECT_EQ(*full.seamless->view, (Box{0, -1, 2, 1.5}));
+  EXPECT_EQ(full.seamless->offset, (Point{0.5, 0.25}));
+}
+
+TEST(parse_ifs_toml, a_bad_seamless_table_is_reported_with_its_line) {
+  const std::string maps = "maps = [[0.5, 0, 0, 0.5, 0, 0]]\n";
+  expect_error(maps + "seamless = true\n", ErrorKind::parse,
+               "fern.toml:2: seamless: must be a table with view and offset (got a boolean)");
+  expect_error(maps + "[seamless]\nofset = [0.5, 0.5]\n", ErrorKind::parse,
+               "fern.toml:3: seamless: unknown key 'ofset' (known: view, offset)");
+  expect_error(maps + "[seamless]\nview = [0, 0, 1]\n", ErrorKind::parse,
+               "fern.toml:3: seamless: view: needs 4 numbers x0, y0, x1, y1 (got 3)");
+  expect_error(maps + "[seamless]\nview = [1, 0, 0, 1]\n", ErrorKind::parse,
+               "fern.toml:3: seamless: view: needs finite x0 < x1 and y0 < y1 (got 1, 0, 0, 1)");
+  expect_error(maps + "[seamless]\noffset = [1, 0]\n", ErrorKind::parse,
+               "fern.toml:3: seamless: offset: needs 2 fractions of the tile in [0, 1) (got 1, 0)");
+  expect_error(maps + "[seamless]\noffset = [0.5]\n", ErrorKind::parse,
+               "fern.toml:3: seamless: offset: needs 2 fractions of the tile in [0, 1) (got 0.5)");
 }
 
 TEST(to_toml, round_trips_exactly) {

@@ -61,6 +61,15 @@ Viewport cut_view(const Ifs& ifs) {
           {97, 61}};
 }
 
+// The torus of a tile inside the attractor's box (docs/design.md §11): the maps wrap.
+Viewport torus_view(const Ifs& ifs) {
+  const Box b = attractor_bounds(ifs);
+  return {{b.x0 + 0.15 * b.width(), b.y0 + 0.1 * b.height(), b.x1 - 0.2 * b.width(),
+           b.y1 - 0.05 * b.height()},
+          {89, 67},
+          true};
+}
+
 class WalkKernelsAtLevel : public ::testing::TestWithParam<CpuLevel> {
  protected:
   void SetUp() override {
@@ -80,24 +89,31 @@ bool operator==(const TracedPoint& a, const TracedPoint& b) {
 }
 
 TEST_P(WalkKernelsAtLevel, plot_the_points_maps_keys_and_palette_of_the_scalar_level) {
-  for (const Case& c : cases()) {
-    WalkTables walk(c.ifs, cut_view(c.ifs), 20, symbol_bits(c.ifs.size()));
-    for (std::uint64_t points : kPointCounts) {
-      std::vector<TracedPoint> mine(points), scalar(points);
-      const LaneSeeds seeds = lane_seeds(42, 3);
-      mine.resize(kernels().trace(walk.spec(), seeds, points, mine.data()));
-      scalar.resize(reference().trace(walk.spec(), seeds, points, scalar.data()));
-      if (points > 1000) {
-        ASSERT_GT(scalar.size(), points / 10) << c.name;
-        EXPECT_LT(scalar.size(), points) << c.name << ": the view should cut the attractor";
+  for (const Case& c : cases())
+    for (const Viewport& view : {cut_view(c.ifs), torus_view(c.ifs)}) {
+      WalkTables walk(c.ifs, view, 20, symbol_bits(c.ifs.size()));
+      for (std::uint64_t points : kPointCounts) {
+        std::vector<TracedPoint> mine(points), scalar(points);
+        const LaneSeeds seeds = lane_seeds(42, 3);
+        mine.resize(kernels().trace(walk.spec(), seeds, points, mine.data()));
+        scalar.resize(reference().trace(walk.spec(), seeds, points, scalar.data()));
+        if (points > 1000) {
+          ASSERT_GT(scalar.size(), points / 10) << c.name;
+          if (!view.wrap) {
+            EXPECT_LT(scalar.size(), points) << c.name << ": the view should cut the attractor";
+          } else {
+            // On the torus every point lies in the tile.
+            for (const TracedPoint& p : scalar)
+              ASSERT_TRUE(p.x >= 0 && p.x < 1 && p.y >= 0 && p.y < 1) << c.name;
+          }
+        }
+        ASSERT_EQ(mine.size(), scalar.size()) << c.name << ", " << points << " points";
+        std::size_t first = 0;
+        while (first < mine.size() && mine[first] == scalar[first]) ++first;
+        EXPECT_EQ(first, mine.size()) << c.name << (view.wrap ? " on the torus" : "") << ", "
+                                      << points << " points: first difference at " << first;
       }
-      ASSERT_EQ(mine.size(), scalar.size()) << c.name << ", " << points << " points";
-      std::size_t first = 0;
-      while (first < mine.size() && mine[first] == scalar[first]) ++first;
-      EXPECT_EQ(first, mine.size())
-          << c.name << ", " << points << " points: first difference at " << first;
     }
-  }
 }
 
 template <class T>
@@ -106,52 +122,55 @@ bool same(const std::vector<T>& a, const std::vector<T>& b) {
 }
 
 TEST_P(WalkKernelsAtLevel, hits_counts_and_tops_are_the_scalar_ones) {
-  for (const Case& c : cases()) {
-    const Viewport view = cut_view(c.ifs);
-    WalkTables walk(c.ifs, view, 20, symbol_bits(c.ifs.size()));
-    const auto area = static_cast<std::size_t>(view.size.area());
-    const std::uint64_t points = 200'007;
-    const LaneSeeds seeds = lane_seeds(7, 11);
-    std::vector<std::uint8_t> hits(area), hits_ref(area);
-    std::vector<std::uint32_t> counts(area), counts_ref(area), tops32(area), tops32_ref(area);
-    std::vector<std::uint64_t> tops64(area), tops64_ref(area);
-    kernels().hits(walk.spec(), seeds, points, hits.data());
-    reference().hits(walk.spec(), seeds, points, hits_ref.data());
-    kernels().counts(walk.spec(), seeds, points, counts.data());
-    reference().counts(walk.spec(), seeds, points, counts_ref.data());
-    kernels().tops32(walk.spec(), seeds, points, tops32.data());
-    reference().tops32(walk.spec(), seeds, points, tops32_ref.data());
-    kernels().tops64(walk.spec(), seeds, points, tops64.data());
-    reference().tops64(walk.spec(), seeds, points, tops64_ref.data());
-    EXPECT_GT(std::count(hits_ref.begin(), hits_ref.end(), 255), 100) << c.name;
-    EXPECT_TRUE(same(hits, hits_ref)) << c.name;
-    EXPECT_TRUE(same(counts, counts_ref)) << c.name;
-    EXPECT_TRUE(same(tops32, tops32_ref)) << c.name;
-    EXPECT_TRUE(same(tops64, tops64_ref)) << c.name;
-  }
+  for (const Case& c : cases())
+    for (const Viewport& view : {cut_view(c.ifs), torus_view(c.ifs)}) {
+      WalkTables walk(c.ifs, view, 20, symbol_bits(c.ifs.size()));
+      const auto area = static_cast<std::size_t>(view.size.area());
+      const std::uint64_t points = 200'007;
+      const LaneSeeds seeds = lane_seeds(7, 11);
+      std::vector<std::uint8_t> hits(area), hits_ref(area);
+      std::vector<std::uint32_t> counts(area), counts_ref(area), tops32(area), tops32_ref(area);
+      std::vector<std::uint64_t> tops64(area), tops64_ref(area);
+      kernels().hits(walk.spec(), seeds, points, hits.data());
+      reference().hits(walk.spec(), seeds, points, hits_ref.data());
+      kernels().counts(walk.spec(), seeds, points, counts.data());
+      reference().counts(walk.spec(), seeds, points, counts_ref.data());
+      kernels().tops32(walk.spec(), seeds, points, tops32.data());
+      reference().tops32(walk.spec(), seeds, points, tops32_ref.data());
+      kernels().tops64(walk.spec(), seeds, points, tops64.data());
+      reference().tops64(walk.spec(), seeds, points, tops64_ref.data());
+      EXPECT_GT(std::count(hits_ref.begin(), hits_ref.end(), 255), 100) << c.name;
+      EXPECT_TRUE(same(hits, hits_ref)) << c.name;
+      EXPECT_TRUE(same(counts, counts_ref)) << c.name;
+      EXPECT_TRUE(same(tops32, tops32_ref)) << c.name;
+      EXPECT_TRUE(same(tops64, tops64_ref)) << c.name;
+    }
 }
 
 // The measure cells (counts and palette sums) through the tile queues, flushed.
 TEST_P(WalkKernelsAtLevel, measure_cells_are_the_scalar_ones) {
-  for (const Case& c : cases()) {
-    const Viewport view{fit_view(attractor_bounds(c.ifs), {300, 240}), {300, 240}};
-    WalkTables walk(c.ifs, view, 20);
-    auto run = [&](const WalkKernels& k) {
-      const auto area = static_cast<std::size_t>(view.size.area());
-      std::vector<std::uint32_t> cells(area);
-      std::vector<std::uint64_t> spills(3 * 300'001 / MeasureCells::kFull), totals(2 * area);
-      MeasureCells m{cells.data(), spills.data(), 0};
-      for (std::uint64_t chunk = 0; chunk < 3; ++chunk)
-        k.measure(walk.spec(), lane_seeds(5, chunk), 300'001, m);
-      fold_measure_cells(m, area, totals.data(), totals.data() + area);
-      return totals;
-    };
-    const auto totals = run(kernels()), ref = run(reference());
-    std::uint64_t total = 0;
-    for (std::size_t i = 0; i < ref.size() / 2; ++i) total += ref[i];
-    EXPECT_GT(total, 800'000u) << c.name;
-    EXPECT_TRUE(same(totals, ref)) << c.name;
-  }
+  for (const Case& c : cases())
+    for (const bool wrap : {false, true}) {
+      const Viewport view =
+          wrap ? Viewport{torus_view(c.ifs).view, {300, 240}, true}
+               : Viewport{fit_view(attractor_bounds(c.ifs), {300, 240}), {300, 240}};
+      WalkTables walk(c.ifs, view, 20);
+      auto run = [&](const WalkKernels& k) {
+        const auto area = static_cast<std::size_t>(view.size.area());
+        std::vector<std::uint32_t> cells(area);
+        std::vector<std::uint64_t> spills(3 * 300'001 / MeasureCells::kFull), totals(2 * area);
+        MeasureCells m{cells.data(), spills.data(), 0};
+        for (std::uint64_t chunk = 0; chunk < 3; ++chunk)
+          k.measure(walk.spec(), lane_seeds(5, chunk), 300'001, m);
+        fold_measure_cells(m, area, totals.data(), totals.data() + area);
+        return totals;
+      };
+      const auto totals = run(kernels()), ref = run(reference());
+      std::uint64_t total = 0;
+      for (std::size_t i = 0; i < ref.size() / 2; ++i) total += ref[i];
+      EXPECT_GT(total, 800'000u) << c.name;
+      EXPECT_TRUE(same(totals, ref)) << c.name;
+    }
 }
 
 // Cells hit more than MeasureCells::kFull times spill, over several chunks: on a 3×2 raster

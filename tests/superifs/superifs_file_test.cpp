@@ -178,6 +178,23 @@ TEST(superifs_file, rejects_bad_contents_with_the_line) {
                "bad.super.toml:1: view: needs 4 numbers x0, y0, x1, y1 (got 3)");
 }
 
+TEST(superifs_file, reads_the_seamless_table) {
+  const std::string ifs = "[[ifs]]\nmaps = [[0.5, 0, 0, 0.5, 0, 0]]\n";
+  EXPECT_FALSE(parse_superifs_toml(ifs, "x.super.toml").seamless);
+  const SuperIfsPreset p =
+      parse_superifs_toml("[seamless]\noffset = [0.5, 0.5]\n" + ifs, "x.super.toml");
+  ASSERT_TRUE(p.seamless);
+  EXPECT_EQ(p.seamless->offset, (Point{0.5, 0.5}));
+  expect_error("[seamless]\nview = [0, 0, 0, 1]\n" + ifs, ErrorKind::parse,
+               "bad.super.toml:2: seamless: view: needs finite x0 < x1 and y0 < y1 (got 0, 0, 0, "
+               "1)");
+  // The shipped ones offered as seamless tiles say so in the list.
+  int offered = 0;
+  for (const SuperIfsSummary& s : list_shipped_superifs())
+    offered += s.seamless == load_superifs(s.name).seamless.has_value() && s.seamless;
+  EXPECT_GE(offered, 3);
+}
+
 TEST(superifs_file, unknown_name_lists_the_shipped_presets) {
   try {
     load_superifs("no-such-superifs");
