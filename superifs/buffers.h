@@ -85,11 +85,14 @@ struct HistoryLevel {
 struct BufferOptions {
   int count = 3;           // V, the number of buffers
   std::uint64_t seed = 1;  // the choices of step k come from stream_seed(seed, k)
-  int threads = 0;         // 0 = all cores
-  int history = 0;         // steps kept for the exact descent (steal coordinates, tops); 0 = none
-  bool density = false;    // also carry the measures (measure mode)
-  double margin = 0.02;    // auto-framing margin of buffer_view()
-  CancelToken cancel;  // polled per band of rows of a step: Error{interrupted} on a stop request
+  // With period P > 0 the choices of step k come from stream_seed(seed, k mod P) instead: a
+  // periodic choice stream, whose buffers close into a loop (docs/design.md §11). 0 = none.
+  std::int64_t period = 0;
+  int threads = 0;       // 0 = all cores
+  int history = 0;       // steps kept for the exact descent (steal coordinates, tops); 0 = none
+  bool density = false;  // also carry the measures (measure mode)
+  double margin = 0.02;  // auto-framing margin of buffer_view()
+  CancelToken cancel;    // polled per band of rows of a step: Error{interrupted} on a stop request
 };
 
 class Buffers {
