@@ -56,7 +56,8 @@ void add_filter_options(CLI::App& cmd, const std::shared_ptr<FilterArgs>& args) 
       ->option_text(choices_text(animations, "none"))
       ->group("Animation");
   cmd.add_option("--keyframe-interval", args->keyframe_interval,
-                 "Animation: frames between rebuilt maps, cross-faded in between")
+                 "Animation: frames between rebuilt maps, cross-faded in between (with --loop N: "
+                 "ceil(N / this) keyframes spread evenly over the loop)")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000))
       ->group("Animation");

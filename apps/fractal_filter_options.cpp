@@ -6,6 +6,7 @@
 #include "apps/cli_options.h"
 #include "apps/stop_signals.h"
 #include "ifs/error.h"
+#include "superifs/texture.h"
 
 namespace ifsfx::app {
 
@@ -21,6 +22,7 @@ video::FractalSettings FractalFilterArgs::settings() const {
   s.background = video::parse_background(background);
   s.drift_amount = drift_amount;
   s.drift_speed = drift_speed;
+  s.loop = loop;
   s.seed = seed;
   s.threads = threads;
   s.cancel = StopSignals::token();  // Ctrl-C stops a map being computed
@@ -75,6 +77,13 @@ void add_fractal_filter_options(CLI::App& cmd, FractalFilterArgs& args) {
                  "--animate drift: cycles per second of the slowest drift")
       ->capture_default_str()
       ->check(number_in(0, video::kMaxDriftSpeed))
+      ->group(kAnimation);
+  cmd.add_option("--loop", args.loop,
+                 "Animation: repeats every N frames, frame N being frame 0 again bit for bit and "
+                 "the step into it as smooth as any other (0: never): the drift is periodic "
+                 "noise, its slowest cycle a whole number of times per loop")
+      ->capture_default_str()
+      ->check(CLI::Range(std::int64_t{0}, kMaxLoop))
       ->group(kAnimation);
   cmd.add_option("--seed", args.seed, "Random seed: the same seed gives the same frames")
       ->capture_default_str()

@@ -24,6 +24,7 @@ struct FractalFilterArgs {
   std::string background = "black";
   double drift_amount = 0.05;
   double drift_speed = 0.2;
+  std::int64_t loop = 0;  // frames after which the animation repeats, 0 = never
   std::uint64_t seed = 1;
   int threads = 0;
 
@@ -33,9 +34,8 @@ struct FractalFilterArgs {
 };
 
 // Registers --preset, --colouring, --exact/--chaos, --view, --margin, --quality, --mix and
-// --background in the help group "Fractal", --drift-amount and --drift-speed in "Animation", and
-// --seed and
-// --threads.
+// --background in the help group "Fractal", --drift-amount, --drift-speed and --loop in
+// "Animation", and --seed and --threads.
 void add_fractal_filter_options(CLI::App& cmd, FractalFilterArgs& args);
 
 }  // namespace ifsfx::app

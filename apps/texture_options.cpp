@@ -43,6 +43,19 @@ void add_texture_options(CLI::App& cmd, const std::shared_ptr<TextureArgs>& args
       ->capture_default_str()
       ->check(CLI::IsMember({8, 16}));
   cmd.add_flag("-q,--quiet", args->quiet, "Do not print the summary line");
+  // Loops in time and movie output (docs/loops.md).
+  cmd.add_option("--loop", args->loop,
+                 "A loop of N frames (--frames defaults to N): frame N is frame 0 again, bit for "
+                 "bit, the superIFS choices periodic and the buffers closed, so the last frame "
+                 "flows into the first; ceil(N / --crossfade) textures spread evenly (0: none)")
+      ->capture_default_str()
+      ->check(CLI::Range(std::int64_t{0}, kMaxLoop));
+  cmd.add_option("--fps", args->fps, "Frame rate of a movie output")
+      ->capture_default_str()
+      ->check(number_in(0, 1000, true));
+  cmd.add_option("--codec", args->codec,
+                 "Video encoder of a movie output (default by container: .mp4/.mkv H.264, .webm "
+                 "VP9, .gif GIF, .webp animated WebP; ffv1 in .mkv is lossless)");
 }
 
 cv::Size check_texture_args(const TextureArgs& args) {

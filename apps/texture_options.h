@@ -30,6 +30,10 @@ struct TextureArgs {
   int crossfade = 1;
   int bits = 8;
   bool quiet = false;
+  // Loops and movies (docs/loops.md): frames in a loop (0 = none); a movie's rate and encoder.
+  std::int64_t loop = 0;
+  double fps = 25;
+  std::string codec;
 };
 
 // Registers the options (all but SUPERPRESET, -o, --frames and --frame-range) on `cmd`, writing

@@ -120,6 +120,7 @@ class TextureSequence {
   cv::Mat frame_at(StepPosition position);
 
   int steps_done() const { return buffers_.steps_done(); }
+  std::int64_t loop() const { return options_.loop; }  // textures in the loop, 0 = none
   // Steps before texture 0: the burn-in, and with a loop the periods until the buffers closed.
   int burn_in() const { return burn_in_; }
   // With a loop: whether the buffers came back to themselves, so that stepping on from texture
