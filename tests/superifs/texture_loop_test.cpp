@@ -64,7 +64,9 @@ TEST_P(texture_loop, stepping_on_from_the_last_texture_gives_the_first_exactly) 
   // Textures are asked for by number too: k + N is k.
   EXPECT_TRUE(testing::same_bytes(seq.frame_at(n + 2), frames[2]));
   EXPECT_TRUE(testing::same_bytes(seq.frame_at(5 * n), frames[0]));
-  // The last step, N − 1 → 0, changes the picture about as much as the others.
+  // The last step, N − 1 → 0, changes the picture about as much as the others. It is one
+  // V-variable step like them (above), so its size is one more draw from theirs: with five others
+  // it may fall a little outside their range (paper-fig4's attractor: 48 against 11..40 levels).
   double smallest = 1e9, largest = 0;
   for (std::int64_t k = 0; k + 1 < n; ++k) {
     const double d = mean_difference(frames[static_cast<std::size_t>(k)],
@@ -74,10 +76,8 @@ TEST_P(texture_loop, stepping_on_from_the_last_texture_gives_the_first_exactly) 
   }
   const double wrap = mean_difference(frames[static_cast<std::size_t>(n - 1)], frames[0]);
   EXPECT_GT(smallest, 0) << "every step is a new texture";
-  EXPECT_GE(wrap, 0.5 * smallest);
-  EXPECT_LE(wrap, 1.5 * largest);
-  std::printf("%s %s: steps %g..%g, wrap %g, burn-in %d\n", c.preset, to_string(c.mode), smallest,
-              largest, wrap, seq.burn_in());
+  EXPECT_GE(wrap, 0.5 * smallest) << smallest << ".." << largest;
+  EXPECT_LE(wrap, 1.5 * largest) << smallest << ".." << largest;
 }
 
 INSTANTIATE_TEST_SUITE_P(every_mode, texture_loop,
