@@ -33,6 +33,7 @@ struct TextureArgs {
   // Loops and movies (docs/loops.md): frames in a loop (0 = none); a movie's rate and encoder.
   std::int64_t loop = 0;
   double fps = 25;
+  bool fps_given = false;
   std::string codec;
 };
 
@@ -41,7 +42,8 @@ struct TextureArgs {
 void add_texture_options(CLI::App& cmd, const std::shared_ptr<TextureArgs>& args);
 
 // The rules between options that their parsing does not check (the size, the counts, the buffer
-// against V, steal mode's source), each failing with the option's name; returns the size.
+// against V, steal mode's source, a movie's --fps and --codec), each failing with the option's
+// name; returns the size.
 cv::Size check_texture_args(const TextureArgs& args);
 
 }  // namespace ifsfx::app
