@@ -178,6 +178,7 @@ void run_farm_filter(const FarmArgs& args, const std::vector<std::string>& extra
     throw Error(ErrorKind::invalid_argument,
                 "farm filter: --preview, --segment and a second -o are not for farm jobs");
   const FilterArgs filter = parse_filter_options(extra);
+  check_filter_rules(filter);
   StopSignals signals;  // Ctrl-C and SIGTERM: the checks and the count stop, nothing is submitted
   // The output policy, checked before anything is planned (the join applies it again).
   OutputOptions policy{.cancel = StopSignals::token()};
