@@ -51,7 +51,7 @@ struct CamArgs {
   std::string codec;
   bool window = false;
   std::string snapshot = "cam-snapshot-%03d.png";
-  FractalFilterArgs fractal{.preset = "sierpinski-triangle"};
+  FractalFilterArgs fractal{.engine = {.preset = "sierpinski-triangle"}};
   Animate animate = Animate::none;
   int fade_frames = 12;
   bool quiet = false;
@@ -135,7 +135,7 @@ video::V4l2CaptureOptions capture_options(const CamArgs& args, cv::Size size) {
 OutputOptions cam_output_policy(const CamArgs& args, const std::string& device) {
   OutputOptions output;
   for (const std::string& input :
-       {device, args.output, args.fractal.preset, args.fractal.colouring})
+       {device, args.output, args.fractal.engine.preset, args.fractal.engine.colouring})
     add_preset_input(output.inputs, input);
   if (!args.record.empty()) check_output(args.record, output);
   return output;

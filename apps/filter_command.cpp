@@ -74,7 +74,7 @@ std::unique_ptr<video::FrameSource> open_source(const FilterArgs& args) {
     return std::make_unique<video::ImageSequenceSource>(
         args.input, video::ImageSequenceOptions{.fps = args.fps, .skip_gaps = args.skip_gaps});
   return std::make_unique<video::FileSource>(
-      args.input, video::FileSourceOptions{.threads = args.fractal.threads});
+      args.input, video::FileSourceOptions{.threads = args.fractal.engine.sampling.threads});
 }
 
 bool writes_movie(const FilterArgs& args) {
@@ -124,8 +124,8 @@ cv::Size output_size(const FilterArgs& args, cv::Size frame_size) {
 OutputOptions output_policy(const FilterArgs& args, const video::FrameSource& source) {
   OutputOptions output;
   for (const auto& file : source.files()) output.inputs.add(file);
-  add_preset_input(output.inputs, args.fractal.preset);
-  add_preset_input(output.inputs, args.fractal.colouring);
+  add_preset_input(output.inputs, args.fractal.engine.preset);
+  add_preset_input(output.inputs, args.fractal.engine.colouring);
   if (args.animate == Animate::superifs) add_preset_input(output.inputs, args.superifs);
   return output;
 }
@@ -139,7 +139,7 @@ std::unique_ptr<video::FileSink> open_movie(const FilterArgs& args,
   o.frame_rate = source.frame_rate();
   o.time_base = source.time_base();
   o.timing = args.timing;
-  o.threads = args.fractal.threads;
+  o.threads = args.fractal.engine.sampling.threads;
   o.output = output;
   o.source_clock = args.segment;
   // A farm segment carries no audio: the join copies it once, from the input, as one run does.

@@ -74,7 +74,7 @@ void add_filter_options(CLI::App& cmd, const std::shared_ptr<FilterArgs>& args) 
 }
 
 void check_filter_rules(const FilterArgs& args) {
-  if (args.fractal.loop > 0 && args.animate == Animate::none)
+  if (args.fractal.engine.loop > 0 && args.animate == Animate::none)
     throw Error(ErrorKind::invalid_argument,
                 "--loop: repeats an animation; add --animate drift or --animate superifs");
 }

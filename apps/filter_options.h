@@ -19,7 +19,7 @@ struct FilterArgs {
   std::string input;
   std::string output;
   bool preview = false;
-  FractalFilterArgs fractal{.preset = "barnsley-fern"};
+  FractalFilterArgs fractal{.engine = {.preset = "barnsley-fern"}};
   Interpolation interpolation = Interpolation::bilinear;
   std::string size;
   std::string codec;

@@ -14,22 +14,15 @@
 namespace ifsfx::app {
 
 struct FractalFilterArgs {
-  std::string preset;  // the command's default preset
-  std::string colouring;
-  bool exact = true;  // --exact (default) or --chaos
+  // The flags bind here, the engine's defaults but for the command's preset; view and background
+  // are parsed by settings().
+  video::FractalSettings engine;
   std::string view;
-  double margin = 0.05;
-  double quality = 64;
-  double mix = 0;
   std::string background = "black";
-  double drift_amount = 0.05;
-  double drift_speed = 0.2;
-  std::int64_t loop = 0;  // frames after which the animation repeats, 0 = never
-  std::uint64_t seed = 1;
-  int threads = 0;
 
   // The fractal engine's settings of these options, view and background parsed (errors name the
-  // flags); the command adds its own (animation, interpolation). The engine checks the rest.
+  // flags) and Ctrl-C's stop flag set; the command adds its own (animation, interpolation). The
+  // engine checks the rest.
   video::FractalSettings settings() const;
 };
 

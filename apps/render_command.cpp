@@ -29,13 +29,7 @@ struct RenderArgs {
   std::string size = "1024x1024";
   Mode mode = Mode::measure;
   std::string view;
-  double margin = 0.05;
-  double quality = 64;
-  int supersample = 1;
-  double gamma = 2.2;
-  double brightness = 4;
-  std::uint64_t seed = 1;
-  int threads = 0;
+  RenderOptions options;  // the options bind here; view and cancel are set by run_render
   int bits = 8;
   bool smallest = false;
   bool allow_expansive = false;
@@ -83,13 +77,9 @@ void check_mode_options(const RenderArgs& args) {
     throw Error(ErrorKind::invalid_argument, "--source: --mode steal needs a source image");
 }
 
-void run_render(const RenderArgs& args) {
-  const cv::Size size = size_option(args.size);
-  check_mode_options(args);
-  const Rgb background = colour_option(args.background.empty() ? "black" : args.background);
-  // The output policy: no output replaces an input, the two outputs differ, and both are checked
-  // before the long work.
-  StopSignals signals;
+// The output policy: no output replaces an input, the two outputs differ, and both are checked
+// before the long work.
+OutputOptions checked_outputs(const RenderArgs& args) {
   OutputOptions output{.cancel = StopSignals::token()};
   add_preset_input(output.inputs, args.preset);
   add_preset_input(output.inputs, args.colouring);
@@ -102,64 +92,71 @@ void run_render(const RenderArgs& args) {
           ErrorKind::invalid_argument,
           fmt::format("--save-map {}: must differ from -o (got the same file)", args.save_map));
   }
-  const IfsPreset preset = load_preset(args.preset, {.allow_expansive = args.allow_expansive});
+  return output;
+}
 
-  RenderOptions options;
-  options.view = view_option(args.view);
-  options.margin = args.margin;
-  options.quality = args.quality;
-  options.supersample = args.supersample;
-  options.gamma = args.gamma;
-  options.brightness = args.brightness;
-  options.seed = args.seed;
-  options.threads = args.threads;
-  options.cancel = output.cancel;
-
-  RenderStats stats;
-  cv::Mat image;
-  std::vector<OutputFile> staged;  // put in place together at the end (the image, the map)
+// The picture in the chosen mode; the steal mode's saved map joins `staged`.
+cv::Mat render_picture(const Ifs& ifs, cv::Size size, const RenderArgs& args,
+                       const RenderOptions& options, const OutputOptions& output,
+                       std::vector<OutputFile>& staged, RenderStats& stats) {
+  const Rgb background = colour_option(args.background.empty() ? "black" : args.background);
   switch (args.mode) {
     case Mode::attractor:
-      image = render_attractor(preset.ifs, size, options, &stats);
-      break;
+      return render_attractor(ifs, size, options, &stats);
     case Mode::measure:
-      image = render_measure(preset.ifs, size, options, &stats);
-      break;
+      return render_measure(ifs, size, options, &stats);
     case Mode::tops:
-      image = tops_image(preset.ifs, size, options, args.exact, args.second_symbol, background,
-                         args.output, &stats);
-      break;
+      return tops_image(
+          ifs, size,
+          {.sampling = options.sampling, .exact = args.exact, .second_symbol = args.second_symbol},
+          background, args.output, &stats);
     case Mode::steal:
-      image = steal_image(preset.ifs, size, options,
-                          {.source = args.source,
-                           .colouring = args.colouring,
-                           .exact = args.exact,
-                           .save_map = args.save_map,
-                           .background = background,
-                           .quiet = args.quiet,
-                           .output = output},
-                          args.output, staged, &stats);
-      break;
+      return steal_image(ifs, size, {.sampling = options.sampling, .exact = args.exact},
+                         {.source = args.source,
+                          .colouring = args.colouring,
+                          .save_map = args.save_map,
+                          .background = background,
+                          .quiet = args.quiet,
+                          .output = output},
+                         args.output, staged, &stats);
   }
+  return {};
+}
 
-  WriteOptions write;
-  write.bits = args.bits;
-  write.smallest = args.smallest;
-  write.metadata = render_metadata(preset, mode_name(args.mode), args.seed, stats.view);
-  OutputFile image_file(args.output, output);
-  write_image(image_file, image, write);
-  staged.push_back(std::move(image_file));
-  commit_together(staged);
-
-  if (args.quiet) return;
+void print_summary(const std::string& name, cv::Size size, const RenderArgs& args,
+                   const RenderStats& stats) {
   // The exact modes plot no chaos-game points: say so rather than print a rate of zero.
   const std::string work =
       stats.points > 0
           ? fmt::format("{:.1f} M points in {:.3f} s ({:.0f} Mpts/s)", stats.points / 1e6,
                         stats.seconds, stats.points / 1e6 / std::max(stats.seconds, 1e-9))
           : fmt::format("{} in {:.3f} s", args.exact ? "exact descent" : "rendered", stats.seconds);
-  fmt::print("{} ({}, {}x{}): {}, coverage {:.1f}% -> {}\n", preset.ifs.name, mode_name(args.mode),
-             size.width, size.height, work, 100 * stats.coverage, args.output);
+  fmt::print("{} ({}, {}x{}): {}, coverage {:.1f}% -> {}\n", name, mode_name(args.mode), size.width,
+             size.height, work, 100 * stats.coverage, args.output);
+}
+
+void run_render(const RenderArgs& args) {
+  const cv::Size size = size_option(args.size);
+  check_mode_options(args);
+  StopSignals signals;
+  const OutputOptions output = checked_outputs(args);
+  const IfsPreset preset = load_preset(args.preset, {.allow_expansive = args.allow_expansive});
+  RenderOptions options = args.options;
+  options.sampling.view = view_option(args.view);
+  options.sampling.cancel = output.cancel;
+
+  RenderStats stats;
+  std::vector<OutputFile> staged;  // put in place together at the end (the image, the map)
+  const cv::Mat image = render_picture(preset.ifs, size, args, options, output, staged, stats);
+  OutputFile image_file(args.output, output);
+  write_image(image_file, image,
+              {.bits = args.bits,
+               .smallest = args.smallest,
+               .metadata = render_metadata(preset, mode_name(args.mode), options.sampling.seed,
+                                           stats.view)});
+  staged.push_back(std::move(image_file));
+  commit_together(staged);
+  if (!args.quiet) print_summary(preset.ifs.name, size, args, stats);
 }
 
 }  // namespace
@@ -188,27 +185,29 @@ void add_render_command(CLI::App& app) {
       ->option_text(choices_text(modes, "measure"));
   cmd->add_option("--view", args->view,
                   "Plane rectangle x0,y0,x1,y1 shown (default: the attractor, auto-framed)");
-  cmd->add_option("--margin", args->margin, "Auto-framing margin, fraction of the larger side")
+  cmd->add_option("--margin", args->options.sampling.margin,
+                  "Auto-framing margin, fraction of the larger side")
       ->capture_default_str()
       ->check(number_in(0, kMaxMargin));
-  cmd->add_option("--quality", args->quality, "Chaos-game points per output pixel")
+  cmd->add_option("--quality", args->options.sampling.quality, "Chaos-game points per output pixel")
       ->capture_default_str()
       ->check(number_in(0, kMaxQuality, true));
-  cmd->add_option("--supersample", args->supersample,
+  cmd->add_option("--supersample", args->options.supersample,
                   "Render at K times the size and box-filter down (measure mode)")
       ->capture_default_str()
       ->check(CLI::Range(1, 16));
-  cmd->add_option("--gamma", args->gamma, "Display gamma of the tone map (measure mode)")
+  cmd->add_option("--gamma", args->options.gamma, "Display gamma of the tone map (measure mode)")
       ->capture_default_str()
       ->check(number_in(0, 100, true));
-  cmd->add_option("--brightness", args->brightness,
+  cmd->add_option("--brightness", args->options.brightness,
                   "k of the log-density tone map, relative to the mean density (measure mode)")
       ->capture_default_str()
       ->check(number_in(0, 1e6, true));
-  cmd->add_option("--seed", args->seed, "Random seed: the same seed gives the same image")
+  cmd->add_option("--seed", args->options.sampling.seed,
+                  "Random seed: the same seed gives the same image")
       ->capture_default_str()
       ->check(not_negative());
-  add_threads_option(*cmd, args->threads);
+  add_threads_option(*cmd, args->options.sampling.threads);
   cmd->add_option("--bits", args->bits, "Bits per channel of PNG/TIFF output: 8 or 16")
       ->capture_default_str()
       ->check(CLI::IsMember({8, 16}));

@@ -58,41 +58,21 @@ bool format_has_alpha(const std::string& path) {
   return ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr";
 }
 
-cv::Mat tops_image(const Ifs& F, cv::Size size, const RenderOptions& options, bool exact,
-                   bool second_symbol, const Rgb& background, const std::string& output,
-                   RenderStats* stats) {
+cv::Mat tops_image(const Ifs& F, cv::Size size, const TopsOptions& options, const Rgb& background,
+                   const std::string& output, RenderStats* stats) {
   const auto start = std::chrono::steady_clock::now();
-  TopsOptions tops;
-  tops.view = options.view;
-  tops.margin = options.margin;
-  tops.exact = exact;
-  tops.second_symbol = second_symbol;
-  tops.quality = options.quality;
-  tops.seed = options.seed;
-  tops.threads = options.threads;
-  tops.cancel = options.cancel;
-  if (!tops.view)
-    tops.view = fit_view(attractor_bounds(F, options.seed, options.cancel), size, options.margin);
-  std::uint64_t points = 0;
-  cv::Mat image = render_tops(F, size, tops, &points);  // BGRA float, alpha = coverage
-  cv::Mat coverage;
-  cv::extractChannel(image, coverage, 3);
-  if (stats) {
-    stats->points = exact ? 0 : points;  // the exact descent's mask points are not the work
-    stats->coverage = cv::countNonZero(coverage) / static_cast<double>(size.area());
-    stats->view = *tops.view;
-  }
-  // Off the attractor: the background colour (and alpha 0 where the format keeps it).
-  const cv::Scalar bg = background_scalar(background, CV_32F);
-  image.setTo(bg, coverage == 0);
-  if (!format_has_alpha(output)) cv::cvtColor(image, image, cv::COLOR_BGRA2BGR);
+  TopsPictureStats tops;
+  cv::Mat image = tops_picture(F, size, options, background, format_has_alpha(output), &tops);
   if (stats)
-    stats->seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    *stats = {
+        .points = tops.points,
+        .seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+        .coverage = tops.coverage,
+        .view = tops.view};
   return image;
 }
 
-cv::Mat steal_image(const Ifs& F, cv::Size size, const RenderOptions& options,
+cv::Mat steal_image(const Ifs& F, cv::Size size, const StealMapOptions& options,
                     const StealModeArgs& args, const std::string& output,
                     std::vector<OutputFile>& staged, RenderStats* stats) {
   if (args.source.empty())
@@ -100,16 +80,8 @@ cv::Mat steal_image(const Ifs& F, cv::Size size, const RenderOptions& options,
   // Read first: a missing or unreadable source fails before any long work.
   const cv::Mat source = read_image(args.source).pixels;
   const Ifs G = colouring_option(args.colouring, F);
-  StealMapOptions so;
-  so.view = options.view;
-  so.margin = options.margin;
-  so.exact = args.exact;
-  so.quality = options.quality;
-  so.seed = options.seed;
-  so.threads = options.threads;
-  so.cancel = options.cancel;
   StealMapStats ss;
-  const StealMap map = compute_steal_map(F, G, size, so, &ss);
+  const StealMap map = compute_steal_map(F, G, size, options, &ss);
   if (!args.save_map.empty()) {
     OutputFile file(args.save_map, args.output);
     save(map, file);
@@ -117,15 +89,15 @@ cv::Mat steal_image(const Ifs& F, cv::Size size, const RenderOptions& options,
   }
   const cv::Mat coloured = apply(map, source,
                                  {.background = background_scalar(args.background, source.depth()),
-                                  .threads = options.threads});
+                                  .threads = options.sampling.threads});
   if (!args.quiet)
     fmt::print("steal map{}: {} levels; {:.2f}% of pixels on the attractor{}\n",
-               args.exact ? " (exact)" : " (chaos game)", ss.levels, 100 * ss.coverage,
-               args.exact ? std::string()
-                          : fmt::format(" ({:.2f}% hit by points, {} reached by "
-                                        "Hutchinson passes, {} filled from "
-                                        "neighbours, {} rounds)",
-                                        100 * ss.hit, ss.propagated, ss.filled, ss.rounds));
+               options.exact ? " (exact)" : " (chaos game)", ss.levels, 100 * ss.coverage,
+               options.exact ? std::string()
+                             : fmt::format(" ({:.2f}% hit by points, {} reached by "
+                                           "Hutchinson passes, {} filled from "
+                                           "neighbours, {} rounds)",
+                                           100 * ss.hit, ss.propagated, ss.filled, ss.rounds));
   if (stats) {
     stats->points = ss.points;
     stats->seconds = ss.seconds;

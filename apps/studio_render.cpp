@@ -113,14 +113,14 @@ StudioRender studio_render_from_json(
     const double seed = number(body["seed"], "seed");
     if (seed < 0 || seed != std::floor(seed) || seed > 9e15)
       bad_field("seed", "must be a whole number >= 0", body["seed"].dump());
-    r.options.seed = static_cast<std::uint64_t>(seed);
+    r.options.sampling.seed = static_cast<std::uint64_t>(seed);
   }
   if (body.contains("quality")) {
-    r.options.quality = number(body["quality"], "quality");
-    if (!(r.options.quality > 0 && r.options.quality <= kMaxQuality))
+    r.options.sampling.quality = number(body["quality"], "quality");
+    if (!(r.options.sampling.quality > 0 && r.options.sampling.quality <= kMaxQuality))
       bad_field("quality", fmt::format("must be in (0, {}]", kMaxQuality), body["quality"].dump());
   }
-  r.options.view = view_option(text(body, "view", ""), "view");
+  r.options.sampling.view = view_option(text(body, "view", ""), "view");
   if (body.contains("exact")) {
     if (!body["exact"].is_boolean())
       bad_field("exact", "must be true or false", body["exact"].dump());
@@ -133,7 +133,7 @@ StudioRender studio_render_from_json(
 StudioPicture render_png(const StudioRender& r, CancelToken cancel,
                          const std::filesystem::path& scratch) {
   RenderOptions options = r.options;
-  options.cancel = cancel;
+  options.sampling.cancel = cancel;
   const std::string output = (scratch / "render.png").string();  // the format of the picture
   const Rgb background = colour_option("black");
   RenderStats stats;
@@ -144,18 +144,18 @@ StudioPicture render_png(const StudioRender& r, CancelToken cancel,
   } else if (r.mode == "measure") {
     image = render_measure(r.preset.ifs, r.size, options, &stats);
   } else if (r.mode == "tops") {
-    image = tops_image(r.preset.ifs, r.size, options, r.exact, false, background, output, &stats);
+    image = tops_image(r.preset.ifs, r.size, {.sampling = options.sampling, .exact = r.exact},
+                       background, output, &stats);
   } else {
-    image = steal_image(r.preset.ifs, r.size, options,
+    image = steal_image(r.preset.ifs, r.size, {.sampling = options.sampling, .exact = r.exact},
                         {.source = r.source.string(),
-                         .exact = r.exact,
                          .background = background,
                          .quiet = true,
                          .output = {.cancel = cancel}},
                         output, staged, &stats);
   }
   WriteOptions write;
-  write.metadata = render_metadata(r.preset, r.mode, options.seed, stats.view);
+  write.metadata = render_metadata(r.preset, r.mode, options.sampling.seed, stats.view);
   // Written under the output policy's temporary name and read back, never committed: the
   // destructor removes it.
   OutputFile file(output, {.cancel = cancel});

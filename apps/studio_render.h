@@ -44,8 +44,7 @@ struct StudioRender {
   std::filesystem::path source;  // steal mode: the source image
 };
 
-// The one place where the page's settings become library options (the sampling options may be
-// merged into one struct later: only this function changes). `source_path` turns the request's
+// The one place where the page's settings become library options. `source_path` turns the request's
 // "source" into a readable file or throws Error{invalid_argument}. Throws Error{parse} or
 // Error{invalid_argument} for a bad field, naming it.
 StudioRender studio_render_from_json(

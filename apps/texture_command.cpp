@@ -66,14 +66,12 @@ void run_texture(const TextureArgs& args) {
   }
   const SuperIfsPreset preset = load_superifs(args.preset);
 
-  TextureOptions options;
-  options.count = args.count;
-  options.steps = args.steps;
-  options.buffer = args.buffer - 1;
-  options.mode = args.mode;
-  options.seed = args.seed;
-  options.threads = args.threads;
-  options.cancel = output.cancel;
+  TextureOptions options{
+      .sampling = {.seed = args.seed, .threads = args.threads, .cancel = output.cancel},
+      .count = args.count,
+      .steps = args.steps,
+      .buffer = args.buffer - 1,
+      .mode = args.mode};
   options.loop = args.loop > 0 ? steps_in_loop(args.loop, args.crossfade) : 0;
   if (!args.source.empty()) options.source = read_image(args.source).pixels;
 

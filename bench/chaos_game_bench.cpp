@@ -14,7 +14,8 @@ namespace {
 template <auto render>
 void run(benchmark::State& state, const char* preset, double min_coverage) {
   const ifsfx::Ifs ifs = ifsfx::load_ifs(preset).ifs;
-  const ifsfx::RenderOptions options{.quality = 64, .threads = static_cast<int>(state.range(0))};
+  const ifsfx::RenderOptions options{
+      .sampling = {.quality = 64, .threads = static_cast<int>(state.range(0))}};
   ifsfx::RenderStats stats;
   double compute_seconds = 0;
   for (auto _ : state) {

@@ -33,8 +33,8 @@ cv::Mat test_frame(cv::Size size) {
 void fixed_map(benchmark::State& state, Interpolation interpolation) {
   const cv::Size size(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
   const Ifs fern = load_ifs("barnsley-fern").ifs;
-  const StealMap map =
-      compute_steal_map(fern, default_colouring(fern.size()), size, {.quality = 8});
+  const StealMap map = compute_steal_map(fern, default_colouring(fern.size()), size,
+                                         {.sampling = {.quality = 8}, .exact = false});
   const PreparedStealMap table = prepare_filter(map, size, interpolation);
   const cv::Mat frame = test_frame(size);
   cv::Mat out;
@@ -78,8 +78,9 @@ void BM_filter_drift(benchmark::State& state) {
   const Ifs fern = load_ifs("barnsley-fern").ifs;
   const Ifs G = default_colouring(fern.size());
   StealMapOptions o;
-  o.view = fit_view(attractor_bounds(fern), size, 0.05);
-  o.quality = 4;
+  o.sampling.view = fit_view(attractor_bounds(fern), size, 0.05);
+  o.sampling.quality = 4;
+  o.exact = false;  // the chaos game at 4 points per pixel
   const DriftOptions drift_options{.amount = 0.05, .speed = 0.2};
   MapSchedule schedule(
       [&](std::int64_t k) {

@@ -60,7 +60,8 @@ void BM_chaos_steal_map(benchmark::State& state) {
   std::uint64_t points = 0;
   for (auto _ : state) {
     StealMapStats stats;
-    const StealMap map = compute_steal_map(F, G, kHd, {.quality = 16, .threads = threads}, &stats);
+    const StealMap map = compute_steal_map(
+        F, G, kHd, {.sampling = {.quality = 16, .threads = threads}, .exact = false}, &stats);
     check(stats.coverage > 0.05, "fern covers too little");
     points += stats.points;
   }
@@ -74,7 +75,8 @@ void BM_exact_steal_map(benchmark::State& state) {
   const Ifs F = fern(), G = default_colouring(4);
   const int threads = static_cast<int>(state.range(0));
   for (auto _ : state) {
-    const StealMap map = compute_steal_map(F, G, kHd, {.exact = true, .threads = threads});
+    const StealMap map =
+        compute_steal_map(F, G, kHd, {.sampling = {.threads = threads}, .exact = true});
     check(cv::countNonZero(map.coverage) > 100000, "fern covers too little");
   }
 }
@@ -85,7 +87,8 @@ BENCHMARK(BM_exact_steal_map)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTim
 void BM_apply_prepared(benchmark::State& state) {
   const int threads = static_cast<int>(state.range(0));
   const cv::Size size(static_cast<int>(state.range(1)), static_cast<int>(state.range(2)));
-  const StealMap map = compute_steal_map(fern(), default_colouring(4), size, {.quality = 4});
+  const StealMap map = compute_steal_map(fern(), default_colouring(4), size,
+                                         {.sampling = {.quality = 4}, .exact = false});
   cv::Mat frame(size, CV_8UC3);
   cv::randu(frame, 0, 256);
   const PreparedStealMap prepared = prepare_apply(map, frame.size(), {.threads = threads});
@@ -111,7 +114,8 @@ BENCHMARK(BM_apply_prepared)
 // path apply took before the compact table (issue 14: 278 frames/s on one thread, 285 on two).
 void BM_cv_remap_prepared(benchmark::State& state) {
   const cv::Size size(static_cast<int>(state.range(0)), static_cast<int>(state.range(1)));
-  const StealMap map = compute_steal_map(fern(), default_colouring(4), size, {.quality = 4});
+  const StealMap map = compute_steal_map(fern(), default_colouring(4), size,
+                                         {.sampling = {.quality = 4}, .exact = false});
   cv::Mat frame(size, CV_8UC3);
   cv::randu(frame, 0, 256);
   const PreparedStealMap prepared = prepare_apply(map, frame.size());
@@ -135,7 +139,8 @@ BENCHMARK(BM_cv_remap_prepared)
 
 // The same through apply(map, frame), preparing the remap tables every call.
 void BM_apply_unprepared_1080p(benchmark::State& state) {
-  const StealMap map = compute_steal_map(fern(), default_colouring(4), kHd, {.quality = 4});
+  const StealMap map = compute_steal_map(fern(), default_colouring(4), kHd,
+                                         {.sampling = {.quality = 4}, .exact = false});
   cv::Mat frame(kHd, CV_8UC3);
   cv::randu(frame, 0, 256);
   for (auto _ : state) benchmark::DoNotOptimize(apply(map, frame, {.threads = 2}).data);

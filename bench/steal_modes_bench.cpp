@@ -52,8 +52,8 @@ const StealMap& exact_map(const std::string& name, const Ifs& F, cv::Size size) 
   static std::map<std::pair<std::string, int>, StealMap> maps;
   auto [it, added] = maps.try_emplace({name, size.width});
   if (added)
-    it->second =
-        compute_steal_map(F, default_colouring(F.size()), size, {.exact = true, .threads = 2});
+    it->second = compute_steal_map(F, default_colouring(F.size()), size,
+                                   {.sampling = {.threads = 2}, .exact = true});
   return it->second;
 }
 
@@ -63,7 +63,7 @@ void steal_mode(benchmark::State& state, const std::string& name, cv::Size size,
   const StealMap& reference = exact_map(name, F, size);
   StealMap map;
   for (auto _ : state) {
-    map = compute_steal_map(F, G, size, {.exact = exact, .threads = 2});
+    map = compute_steal_map(F, G, size, {.sampling = {.threads = 2}, .exact = exact});
     benchmark::DoNotOptimize(map.source_uv.data);
   }
   if (map.empty()) throw std::runtime_error(name + ": empty map");

@@ -39,11 +39,10 @@ void check(benchmark::State& state, bool ok, const char* what) {
 void texture_steal_2048_fig4_v3(benchmark::State& state) {
   const SuperIfs super = load_superifs("paper-fig4").super;
   const cv::Size size{2048, 2048};
-  TextureOptions options{.count = 3,
+  TextureOptions options{.sampling = {.seed = 1, .threads = threads_option},
+                         .count = 3,
                          .mode = TextureMode::steal,
-                         .source = gradient_source({1024, 1024}),
-                         .seed = 1,
-                         .threads = threads_option};
+                         .source = gradient_source({1024, 1024})};
   for (auto _ : state) {
     const cv::Mat t = render_texture(super, size, options);
     benchmark::DoNotOptimize(t.data);
@@ -59,7 +58,8 @@ BENCHMARK(texture_steal_2048_fig4_v3)
 void texture_attractor_2048_fig4_v3(benchmark::State& state) {
   const SuperIfs super = load_superifs("paper-fig4").super;
   for (auto _ : state) {
-    const cv::Mat t = render_texture(super, {2048, 2048}, {.count = 3, .threads = threads_option});
+    const cv::Mat t =
+        render_texture(super, {2048, 2048}, {.sampling = {.threads = threads_option}, .count = 3});
     benchmark::DoNotOptimize(t.data);
   }
 }
@@ -76,9 +76,11 @@ enum class StepPart { buffers, map, frame };
 void sequence_step_1920x1080(benchmark::State& state, const char* preset, StepPart part) {
   const SuperIfs super = load_superifs(preset).super;
   const cv::Mat source = gradient_source({1920, 1080});
-  TextureSequence seq(
-      super, {1920, 1080},
-      {.count = 3, .mode = TextureMode::steal, .source = source, .threads = threads_option});
+  TextureSequence seq(super, {1920, 1080},
+                      {.sampling = {.threads = threads_option},
+                       .count = 3,
+                       .mode = TextureMode::steal,
+                       .source = source});
   int previous = seq.steps_done();
   for (auto _ : state) {
     if (part == StepPart::frame) {

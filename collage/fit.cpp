@@ -103,13 +103,13 @@ CollageReport assess(const cv::Mat& target, const Ifs& ifs, const AssessOptions&
   const int bottom = margin_pixels(-bounds.y0, size, r.clipped);
   const int top = margin_pixels(bounds.y1 - 1, size, r.clipped);
   const cv::Size canvas_size(size + left + right, size + top + bottom);
-  RenderOptions render;
-  render.view = Box{-static_cast<double>(left) / size, -static_cast<double>(bottom) / size,
-                    1 + static_cast<double>(right) / size, 1 + static_cast<double>(top) / size};
-  render.quality = options.quality;
-  render.seed = options.seed;
-  render.threads = options.threads;
-  const cv::Mat canvas_a = render_attractor(ifs, canvas_size, render);
+  const Box view{-static_cast<double>(left) / size, -static_cast<double>(bottom) / size,
+                 1 + static_cast<double>(right) / size, 1 + static_cast<double>(top) / size};
+  const cv::Mat canvas_a = render_attractor(ifs, canvas_size,
+                                            {.sampling = {.view = view,
+                                                          .quality = options.quality,
+                                                          .seed = options.seed,
+                                                          .threads = options.threads}});
   const cv::Rect square(left, top, size, size);
   r.attractor = canvas_a(square).clone();
 

@@ -61,12 +61,13 @@ cv::Mat fit_preview(const cv::Mat& target, const Ifs& ifs, const PreviewOptions&
   }
   mark_misses(collage, target, covered);
 
-  TopsOptions tops;
-  tops.view = Box{0, 0, 1, 1};
-  tops.quality = options.quality;
-  tops.seed = options.seed;
-  tops.threads = options.threads;
-  const TopSymbols symbols = top_symbols(ifs, {n, n}, tops);
+  // By the chaos game at the fit's quality: the attractor as the fit measured it.
+  const TopSymbols symbols = top_symbols(ifs, {n, n},
+                                         {.sampling = {.view = Box{0, 0, 1, 1},
+                                                       .quality = options.quality,
+                                                       .seed = options.seed,
+                                                       .threads = options.threads},
+                                          .exact = false});
   cv::Mat attractor(n, n, CV_8UC3, cv::Scalar::all(0));
   for (int r = 0; r < n; ++r)
     for (int c = 0; c < n; ++c)

@@ -11,7 +11,14 @@
 
 namespace ifsfx::detail {
 
-void check_chaos_game(const ChaosGameInputs& in) {
+void check_chaos_game(const ChaosGameInputs& given) {
+  ChaosGameInputs in = given;
+  if (in.sampling) {
+    in.threads = in.sampling->threads;
+    in.quality = in.sampling->quality;
+    in.view = in.sampling->view;
+    in.margin = in.sampling->margin;
+  }
   const std::string& name = !in.name.empty() ? in.name : !in.ifs.name.empty() ? in.ifs.name : "ifs";
   validate(in.ifs, name, {.allow_expansive = true, .require_contraction = in.contracting});
   resolve_threads(in.threads);
@@ -24,15 +31,7 @@ void check_chaos_game(const ChaosGameInputs& in) {
                             "(got {})",
                             kMaxQuality, *in.quality));
   if (in.size) check_size(*in.size, "size");
-  if (in.view) {
-    const Box& v = *in.view;
-    if (!(v.x1 > v.x0) || !(v.y1 > v.y0) || !std::isfinite(v.x0) || !std::isfinite(v.x1) ||
-        !std::isfinite(v.y0) || !std::isfinite(v.y1))
-      throw Error(ErrorKind::invalid_argument,
-                  fmt::format("view: must be a rectangle x0 < x1, y0 < y1 of finite numbers "
-                              "(got {},{},{},{})",
-                              v.x0, v.y0, v.x1, v.y1));
-  }
+  if (in.view) check_view(*in.view);
   if (!(in.margin >= 0) || !std::isfinite(in.margin))
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("margin: must be a finite number ≥ 0 (got {})", in.margin));

@@ -47,12 +47,7 @@ int burn_in_of(const Ifs& ifs, const ChaosGameOptions& options) {
 
 // The chaos-game family's checks (detail::check_chaos_game), then the renderers' own options.
 void check_render_inputs(const Ifs& ifs, cv::Size size, const RenderOptions& options) {
-  detail::check_chaos_game({.ifs = ifs,
-                            .threads = options.threads,
-                            .quality = options.quality,
-                            .size = size,
-                            .view = options.view,
-                            .margin = options.margin});
+  detail::check_chaos_game({.ifs = ifs, .size = size, .sampling = &options.sampling});
   if (options.supersample < 1 || options.supersample > 16)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("supersample: must be 1 to 16 (got {})", options.supersample));
@@ -63,13 +58,6 @@ void check_render_inputs(const Ifs& ifs, cv::Size size, const RenderOptions& opt
   if (!(options.brightness > 0) || !std::isfinite(options.brightness))
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("brightness: must be positive (got {})", options.brightness));
-}
-
-Viewport viewport_for(const Ifs& ifs, cv::Size size, const RenderOptions& options) {
-  const Box view = options.view ? *options.view
-                                : fit_view(attractor_bounds(ifs, options.seed, options.cancel),
-                                           size, options.margin);
-  return {view, size};
 }
 
 std::uint64_t point_budget(cv::Size size, double quality) {
@@ -224,11 +212,12 @@ cv::Mat visit_counts(const Ifs& ifs, const Viewport& viewport, std::uint64_t poi
 cv::Mat render_attractor(const Ifs& ifs, cv::Size size, const RenderOptions& options,
                          RenderStats* stats) {
   check_render_inputs(ifs, size, options);
-  const Viewport viewport = viewport_for(ifs, size, options);
-  const std::uint64_t points = point_budget(size, options.quality);
+  const Viewport viewport = framed_viewport(ifs, size, options.sampling);
+  const std::uint64_t points = point_budget(size, options.sampling.quality);
   const auto start = std::chrono::steady_clock::now();
-  const ChaosGameOptions chaos{
-      .seed = options.seed, .threads = options.threads, .cancel = options.cancel};
+  const ChaosGameOptions chaos{.seed = options.sampling.seed,
+                               .threads = options.sampling.threads,
+                               .cancel = options.sampling.cancel};
   const detail::WalkTables walk(ifs, viewport, burn_in_of(ifs, chaos));
   auto states = scatter<HitState>(walk, points, chaos, [&] { return HitState(viewport); });
   cv::Mat mask = states[0].hits;
@@ -241,15 +230,16 @@ cv::Mat render_measure(const Ifs& ifs, cv::Size size, const RenderOptions& optio
                        RenderStats* stats) {
   check_render_inputs(ifs, size, options);
   const int k = options.supersample;
-  const Viewport viewport{viewport_for(ifs, size, options).view, size * k};
-  const std::uint64_t points = point_budget(size, options.quality);
+  const Viewport viewport{framed_viewport(ifs, size, options.sampling).view, size * k};
+  const std::uint64_t points = point_budget(size, options.sampling.quality);
 
   const auto area = static_cast<std::size_t>(viewport.size.area());
   MeasureState::Totals totals(area);
 
   const auto start = std::chrono::steady_clock::now();
-  const ChaosGameOptions chaos{
-      .seed = options.seed, .threads = options.threads, .cancel = options.cancel};
+  const ChaosGameOptions chaos{.seed = options.sampling.seed,
+                               .threads = options.sampling.threads,
+                               .cancel = options.sampling.cancel};
   const detail::WalkTables walk(ifs, viewport, burn_in_of(ifs, chaos));
   auto states =
       scatter<MeasureState>(walk, points, chaos, [&] { return MeasureState(viewport, totals); });

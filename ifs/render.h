@@ -12,20 +12,16 @@
 #include "ifs/cancel.h"
 #include "ifs/chaos_game.h"
 #include "ifs/ifs.h"
+#include "ifs/sampling.h"
 #include "ifs/view.h"
 
 namespace ifsfx {
 
 struct RenderOptions {
-  std::optional<Box> view;  // the plane rectangle shown; default: the attractor, auto-framed
-  double margin = 0.05;     // auto-framing margin, fraction of the larger side
-  double quality = 64;      // chaos-game points per output pixel
-  int supersample = 1;      // render at K× the size and box-filter down (measure mode)
-  double gamma = 2.2;       // measure mode: display gamma of the log-density tone map
-  double brightness = 4;    // measure mode: k of v = log(1 + k·count/mean) / log(1 + k·max/mean)
-  std::uint64_t seed = 1;
-  int threads = 0;     // 0 = all cores
-  CancelToken cancel;  // polled once per chunk of points: Error{interrupted} on a stop request
+  Sampling sampling;      // view, margin, quality (points per pixel), seed, threads, cancel
+  int supersample = 1;    // render at K× the size and box-filter down (measure mode)
+  double gamma = 2.2;     // measure mode: display gamma of the log-density tone map
+  double brightness = 4;  // measure mode: k of v = log(1 + k·count/mean) / log(1 + k·max/mean)
 };
 
 struct RenderStats {

@@ -100,7 +100,75 @@ struct Mask {
   cv::Mat attractor;
   AffineMap to_mask;  // plane to mask pixel
   std::vector<Preimage> pre;
+
+  bool inside(Point p) const {
+    return p.x >= 0 && p.x < viewport.size.width && p.y >= 0 && p.y < viewport.size.height;
+  }
+  bool on_attractor(Point p) const {
+    return inside(p) && attractor.at<std::uint8_t>(static_cast<int>(p.y), static_cast<int>(p.x));
+  }
+  double distance_outside(Point p) const {
+    const double fw = viewport.size.width, fh = viewport.size.height;
+    const double dx = std::max({0.0, -p.x, p.x - fw}), dy = std::max({0.0, -p.y, p.y - fh});
+    return dx * dx + dy * dy;
+  }
 };
+
+using Address = std::array<std::uint32_t, kMaxLevels>;
+
+// One symbol of the top address of mask point x (eq. 7): the highest map whose piece holds x,
+// with x's preimage under it; false when no piece holds x.
+bool top_symbol(const Mask& mask, Point x, int& chosen, Point& next) {
+  for (int n = static_cast<int>(mask.pre.size()) - 1; n >= 0; --n) {
+    const Preimage& m = mask.pre[static_cast<std::size_t>(n)];
+    const Point p = m.inverse(x);
+    if (m.forward) {
+      // A piece without area: x is on it when it is within a pixel of its own image.
+      const Point back = (*m.forward)(p);
+      if (std::hypot(back.x - x.x, back.y - x.y) > 0.75 || !mask.on_attractor(back)) continue;
+    } else if (!mask.on_attractor(p)) {
+      continue;
+    }
+    chosen = n;
+    next = p;
+    return true;
+  }
+  return false;
+}
+
+// The first `levels` symbols of the top address of mask point x, which lies on the attractor.
+void descend(const Mask& mask, Point x, int levels, Address& sigma) {
+  for (int level = 0; level < levels; ++level) {
+    int chosen = -1;
+    Point next{};
+    if (!top_symbol(mask, x, chosen, next)) {
+      // Outside every piece by rounding or at the mask's edge: take the preimage closest to the
+      // mask so that x stays bounded (inverse maps expand).
+      double best = INFINITY;
+      for (int n = static_cast<int>(mask.pre.size()) - 1; n >= 0; --n) {
+        const Point p = mask.pre[static_cast<std::size_t>(n)].inverse(x);
+        const double dist = mask.distance_outside(p);
+        if (dist < best) best = dist, chosen = n, next = p;
+      }
+      // Every preimage overflowed (maps that nearly collapse the plane expand it by 1e11 and
+      // more a level): the address ends here, repeating its last symbol.
+      if (chosen < 0) {
+        chosen = level > 0 ? static_cast<int>(sigma[static_cast<std::size_t>(level - 1)]) : 0;
+        next = x;
+      }
+    }
+    sigma[static_cast<std::size_t>(level)] = static_cast<std::uint32_t>(chosen);
+    x = next;
+  }
+}
+
+// T(x) = g_σ1 ∘ … ∘ g_σL(c), c the fixed point of g_σL (a point of G's attractor), as (u, v).
+cv::Vec2f colour_point(const Ifs& G, const Address& sigma, int levels) {
+  Point y = fixed_point(G.maps[sigma[static_cast<std::size_t>(levels - 1)]]);
+  for (int level = levels - 1; level >= 0; --level)
+    y = G.maps[sigma[static_cast<std::size_t>(level)]](y);
+  return {static_cast<float>(y.x), static_cast<float>(1 - y.y)};
+}
 
 // An output of `viewport`'s size with no pixel covered yet (and T's raster when G is given).
 Descent empty_descent(const Ifs& F, const Ifs* G, const Viewport& viewport) {
@@ -115,82 +183,24 @@ Descent empty_descent(const Ifs& F, const Ifs* G, const Viewport& viewport) {
 // The top address of each pixel centre of `viewport` (and T(x) with G), by bands of rows.
 void descend_pixels(const Ifs* G, const Mask& mask, const Viewport& viewport, int levels,
                     const DescentOptions& options, Descent& out) {
-  const int n_maps = static_cast<int>(mask.pre.size());
-  const cv::Mat& attractor = mask.attractor;
-  const cv::Mat& lookup = attractor;
-  const std::vector<Preimage>& pre = mask.pre;
   const int key_symbols = std::min(levels, out.tops.symbols());
   const int bits = out.tops.bits;
-  const double fw = mask.viewport.size.width, fh = mask.viewport.size.height;
   const AffineMap out_to_mask = mask.to_mask.compose(*viewport.plane_to_pixel().inverse(0));
-  auto in_lookup = [&](Point p) {
-    if (!(p.x >= 0 && p.x < fw && p.y >= 0 && p.y < fh)) return false;
-    return lookup.at<std::uint8_t>(static_cast<int>(p.y), static_cast<int>(p.x)) != 0;
-  };
-  auto distance_outside = [&](Point p) {
-    const double dx = std::max({0.0, -p.x, p.x - fw}), dy = std::max({0.0, -p.y, p.y - fh});
-    return dx * dx + dy * dy;
-  };
-
   constexpr int kBand = 8;
   parallel_rows(viewport.size.height, kBand, options.threads, [&](cv::Range rows) {
-    std::array<std::uint32_t, kMaxLevels> sigma{};
+    Address sigma{};
     for (int row = rows.start; row < rows.end; ++row) {
       options.cancel.check("exact descent");  // a row is W·L·N lookups at most
       for (int col = 0; col < viewport.size.width; ++col) {
         // The pixel centre, exact, in mask pixel coordinates.
-        Point x = out_to_mask(Point{col + 0.5, row + 0.5});
-        if (!(x.x >= 0 && x.x < fw && x.y >= 0 && x.y < fh)) continue;
-        if (attractor.at<std::uint8_t>(static_cast<int>(x.y), static_cast<int>(x.x)) == 0) continue;
-        for (int level = 0; level < levels; ++level) {
-          int chosen = -1;
-          Point next{};
-          for (int n = n_maps - 1; n >= 0; --n) {
-            const Preimage& m = pre[static_cast<std::size_t>(n)];
-            const Point p = m.inverse(x);
-            if (m.forward) {
-              // A piece without area: x is on it when it is within a pixel of its own image.
-              const Point back = (*m.forward)(p);
-              if (std::hypot(back.x - x.x, back.y - x.y) > 0.75 || !in_lookup(back)) continue;
-            } else if (!in_lookup(p)) {
-              continue;
-            }
-            chosen = n;
-            next = p;
-            break;
-          }
-          if (chosen < 0) {
-            // Outside every piece by rounding or at the mask's edge: take the preimage closest
-            // to the mask so that x stays bounded (inverse maps expand).
-            double best = INFINITY;
-            for (int n = n_maps - 1; n >= 0; --n) {
-              const Point p = pre[static_cast<std::size_t>(n)].inverse(x);
-              const double dist = distance_outside(p);
-              if (dist < best) best = dist, chosen = n, next = p;
-            }
-            // Every preimage overflowed (maps that nearly collapse the plane expand it by 1e11
-            // and more a level): the address ends here, repeating its last symbol.
-            if (chosen < 0) {
-              chosen = level > 0 ? static_cast<int>(sigma[static_cast<std::size_t>(level - 1)]) : 0;
-              next = x;
-            }
-          }
-          sigma[static_cast<std::size_t>(level)] = static_cast<std::uint32_t>(chosen);
-          x = next;
-        }
+        const Point x = out_to_mask(Point{col + 0.5, row + 0.5});
+        if (!mask.on_attractor(x)) continue;
+        descend(mask, x, levels, sigma);
         std::uint64_t key = 0;
         for (int k = 0; k < key_symbols; ++k)
           key |= std::uint64_t{sigma[static_cast<std::size_t>(k)]} << (64 - bits * (k + 1));
-        const std::size_t index = static_cast<std::size_t>(row) * viewport.size.width + col;
-        out.tops.keys[index] = key | 1;
-        if (G) {
-          // T(x) = g_σ1 ∘ … ∘ g_σL(c), c the fixed point of g_σL (a point of G's attractor).
-          Point y = fixed_point(G->maps[sigma[static_cast<std::size_t>(levels - 1)]]);
-          for (int level = levels - 1; level >= 0; --level)
-            y = G->maps[sigma[static_cast<std::size_t>(level)]](y);
-          out.uv.at<cv::Vec2f>(row, col) =
-              cv::Vec2f(static_cast<float>(y.x), static_cast<float>(1 - y.y));
-        }
+        out.tops.keys[static_cast<std::size_t>(row) * viewport.size.width + col] = key | 1;
+        if (G) out.uv.at<cv::Vec2f>(row, col) = colour_point(*G, sigma, levels);
       }
     }
   });

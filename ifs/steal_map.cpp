@@ -122,11 +122,8 @@ StealMap compute_steal_map(const Ifs& F, const Ifs& G, cv::Size size,
   detail::check_chaos_game({.ifs = F,
                             .name = F.name.empty() ? "drawing IFS" : F.name,
                             .contracting = true,
-                            .threads = options.threads,
-                            .quality = options.quality,
                             .size = size,
-                            .view = options.view,
-                            .margin = options.margin});
+                            .sampling = &options.sampling});
   detail::check_chaos_game(
       {.ifs = G, .name = G.name.empty() ? "colouring IFS" : G.name, .contracting = true});
   if (G.size() != F.size())
@@ -134,8 +131,7 @@ StealMap compute_steal_map(const Ifs& F, const Ifs& G, cv::Size size,
                 fmt::format("colouring IFS: must have as many maps as the drawing IFS (got {} "
                             "for {})",
                             G.size(), F.size()));
-  const Viewport viewport =
-      detail::framed_viewport(F, size, options.view, options.margin, options.seed, options.cancel);
+  const Viewport viewport = framed_viewport(F, size, options.sampling);
   StealMap map;
   StealMapStats s;
   s.view = viewport.view;
@@ -145,9 +141,9 @@ StealMap compute_steal_map(const Ifs& F, const Ifs& G, cv::Size size,
     auto descent = detail::exact_descent(F, &G, viewport,
                                          {.levels = levels,
                                           .quality = 4,
-                                          .seed = options.seed,
-                                          .threads = options.threads,
-                                          .cancel = options.cancel},
+                                          .seed = options.sampling.seed,
+                                          .threads = options.sampling.threads,
+                                          .cancel = options.sampling.cancel},
                                          &chaos);
     map.source_uv = std::move(descent.uv);
     map.coverage = descent.tops.coverage();
@@ -158,14 +154,14 @@ StealMap compute_steal_map(const Ifs& F, const Ifs& G, cv::Size size,
     const int bits = detail::symbol_bits(G.size());
     const bool short_keys = std::pow(detail::word_contraction(G), 32 / bits) * 8192 <= 1;
     const auto tops = detail::chaos_tops(F, viewport,
-                                         {.quality = options.quality,
-                                          .seed = options.seed,
-                                          .threads = options.threads,
+                                         {.quality = options.sampling.quality,
+                                          .seed = options.sampling.seed,
+                                          .threads = options.sampling.threads,
                                           .key_bits = short_keys ? 32 : 64,
-                                          .cancel = options.cancel},
+                                          .cancel = options.sampling.cancel},
                                          &chaos);
-    options.cancel.check("steal map");
-    map.source_uv = detail::uv_from_keys(tops, F, G, options.threads);
+    options.sampling.cancel.check("steal map");
+    map.source_uv = detail::uv_from_keys(tops, F, G, options.sampling.threads);
     map.coverage = tops.coverage();
     s.levels = tops.symbols();
   }

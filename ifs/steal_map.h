@@ -16,6 +16,7 @@
 #include "ifs/cancel.h"
 #include "ifs/ifs.h"
 #include "ifs/output_file.h"
+#include "ifs/sampling.h"
 #include "ifs/view.h"
 
 namespace ifsfx {
@@ -36,16 +37,11 @@ struct StealMap {
 };
 
 struct StealMapOptions {
-  std::optional<Box> view;  // plane rectangle of F shown; default: F's attractor, auto-framed
-  double margin = 0.05;     // auto-framing margin
-  bool exact = false;       // per-pixel descent (docs/design.md §3) instead of the chaos game
-  double quality = 64;      // chaos game: points per output pixel before the coverage policy
-                            // (the exact map's attractor mask uses 4 per pixel plus growth)
-  std::uint64_t seed = 1;
-  int threads = 0;  // 0 = all cores
-  // Polled between chunks of work (the attractor raster, the chaos game, the descent): a stop
-  // request ends the computation within a fraction of a second with Error{interrupted}.
-  CancelToken cancel;
+  // The plane rectangle of F shown, the chaos game's points per pixel before the coverage policy
+  // (the exact map's attractor mask uses 4 per pixel plus growth), seed, threads, and the stop
+  // flag, polled between chunks of work (the attractor raster, the chaos game, the descent).
+  Sampling sampling;
+  bool exact = true;  // per-pixel descent (docs/design.md §3); false: the chaos game
 };
 
 // What compute_steal_map did. The chaos game's coverage policy: `quality` points per pixel,

@@ -5,6 +5,8 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "ifs/sampling.h"
+
 namespace ifsfx {
 
 cv::Scalar background_scalar(const Rgb& colour, int depth) {
@@ -31,6 +33,23 @@ cv::Mat with_coverage_alpha(const cv::Mat& coloured, const cv::Mat& coverage, bo
   cv::Mat out;
   cv::merge(planes, out);
   return out;
+}
+
+cv::Mat tops_picture(const Ifs& F, cv::Size size, const TopsOptions& options, const Rgb& background,
+                     bool alpha, TopsPictureStats* stats) {
+  TopsOptions tops = options;
+  tops.sampling.view = framed_viewport(F, size, options.sampling).view;  // to report it
+  std::uint64_t points = 0;
+  cv::Mat image = render_tops(F, size, tops, &points);  // BGRA float, alpha = coverage
+  cv::Mat coverage;
+  cv::extractChannel(image, coverage, 3);
+  if (stats)
+    *stats = {.view = *tops.sampling.view,
+              .points = tops.exact ? 0 : points,
+              .coverage = cv::countNonZero(coverage) / static_cast<double>(size.area())};
+  image.setTo(background_scalar(background, CV_32F), coverage == 0);
+  if (!alpha) cv::cvtColor(image, image, cv::COLOR_BGRA2BGR);
+  return image;
 }
 
 }  // namespace ifsfx

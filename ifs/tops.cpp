@@ -13,30 +13,24 @@
 namespace ifsfx {
 
 TopSymbols top_symbols(const Ifs& F, cv::Size size, const TopsOptions& options) {
-  detail::check_chaos_game({.ifs = F,
-                            .contracting = true,
-                            .threads = options.threads,
-                            .quality = options.quality,
-                            .size = size,
-                            .view = options.view,
-                            .margin = options.margin});
-  const Viewport viewport =
-      detail::framed_viewport(F, size, options.view, options.margin, options.seed, options.cancel);
+  detail::check_chaos_game(
+      {.ifs = F, .contracting = true, .size = size, .sampling = &options.sampling});
+  const Viewport viewport = framed_viewport(F, size, options.sampling);
   detail::ChaosTopsStats chaos;
   const detail::AddressRaster tops =
       options.exact ? detail::exact_descent(F, nullptr, viewport,
                                             {.levels = 2,
-                                             .seed = options.seed,
-                                             .threads = options.threads,
-                                             .cancel = options.cancel},
+                                             .seed = options.sampling.seed,
+                                             .threads = options.sampling.threads,
+                                             .cancel = options.sampling.cancel},
                                             &chaos)
                           .tops
                     : detail::chaos_tops(F, viewport,
-                                         {.quality = options.quality,
-                                          .seed = options.seed,
-                                          .threads = options.threads,
+                                         {.quality = options.sampling.quality,
+                                          .seed = options.sampling.seed,
+                                          .threads = options.sampling.threads,
                                           .key_bits = 32,  // 32/b ≥ 2 symbols for any N ≤ 65536
-                                          .cancel = options.cancel},
+                                          .cancel = options.sampling.cancel},
                                          &chaos);
   TopSymbols out;
   out.view = viewport.view;

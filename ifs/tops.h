@@ -11,19 +11,15 @@
 
 #include "ifs/cancel.h"
 #include "ifs/ifs.h"
+#include "ifs/sampling.h"
 #include "ifs/view.h"
 
 namespace ifsfx {
 
 struct TopsOptions {
-  std::optional<Box> view;     // plane rectangle shown; default: the attractor, auto-framed
-  double margin = 0.05;        // auto-framing margin, fraction of the larger side
-  bool exact = false;          // per-pixel descent (docs/design.md §3) instead of the chaos game
+  Sampling sampling;           // view, margin, quality (chaos game), seed, threads, cancel
+  bool exact = true;           // per-pixel descent (docs/design.md §3); false: the chaos game
   bool second_symbol = false;  // render_tops: mix in the colour of the second symbol
-  double quality = 64;         // chaos game: points per output pixel (see StealMapStats)
-  std::uint64_t seed = 1;
-  int threads = 0;     // 0 = all cores
-  CancelToken cancel;  // polled between chunks of work: Error{interrupted} on a stop request
 };
 
 // The first two symbols of each pixel's top address (0-based map indices) and where the

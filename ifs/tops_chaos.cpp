@@ -20,11 +20,6 @@ int symbol_bits(std::size_t n) {
   return std::max(1, static_cast<int>(std::bit_width(std::max<std::size_t>(n, 2) - 1)));
 }
 
-Viewport framed_viewport(const Ifs& F, cv::Size size, const std::optional<Box>& view, double margin,
-                         std::uint64_t seed, const CancelToken& cancel) {
-  return {view ? *view : fit_view(attractor_bounds(F, seed, cancel), size, margin), size};
-}
-
 cv::Mat AddressRaster::coverage() const {
   cv::Mat out(viewport.size, CV_8UC1);
   for (int r = 0; r < out.rows; ++r) {

@@ -202,6 +202,15 @@ void check_size(cv::Size size, const std::string& what) {
                             size.width, size.height));
 }
 
+void check_view(const Box& v, const std::string& what) {
+  if (!(v.x1 > v.x0) || !(v.y1 > v.y0) || !std::isfinite(v.x0) || !std::isfinite(v.x1) ||
+      !std::isfinite(v.y0) || !std::isfinite(v.y1))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: must be a rectangle x0 < x1, y0 < y1 of finite numbers "
+                            "(got {},{},{},{})",
+                            what, v.x0, v.y0, v.x1, v.y1));
+}
+
 cv::Size parse_size(const std::string& text, const std::string& what) {
   std::string lowered = text;
   std::replace(lowered.begin(), lowered.end(), 'X', 'x');

@@ -71,4 +71,7 @@ cv::Size parse_size(const std::string& text, const std::string& what = "size");
 // Checks a raster size: each side in 1..32768 (Error{invalid_argument} otherwise).
 void check_size(cv::Size size, const std::string& what = "size");
 
+// Checks a view: x0 < x1, y0 < y1, all finite (Error{invalid_argument} "view: ..." otherwise).
+void check_view(const Box& view, const std::string& what = "view");
+
 }  // namespace ifsfx

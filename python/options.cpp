@@ -10,49 +10,31 @@
 
 namespace ifsfx::python {
 
-Sampling sampling(const py::object& view, double margin, double quality, int supersample,
+Keywords keywords(const py::object& view, double margin, double quality, int supersample,
                   double gamma, double brightness, std::uint64_t seed, int threads, bool exact) {
-  return {.view = view_arg(view),
-          .margin = margin,
-          .quality = quality,
-          .supersample = supersample,
-          .gamma = gamma,
-          .brightness = brightness,
-          .seed = seed,
-          .threads = threads,
+  return {.render = {.sampling = {.view = view_arg(view),
+                                  .margin = margin,
+                                  .quality = quality,
+                                  .seed = seed,
+                                  .threads = threads},
+                     .supersample = supersample,
+                     .gamma = gamma,
+                     .brightness = brightness},
           .exact = exact};
 }
 
-RenderOptions render_options(const Sampling& s, const CancelToken& cancel) {
-  return {.view = s.view,
-          .margin = s.margin,
-          .quality = s.quality,
-          .supersample = s.supersample,
-          .gamma = s.gamma,
-          .brightness = s.brightness,
-          .seed = s.seed,
-          .threads = s.threads,
-          .cancel = cancel};
+RenderOptions render_options(const Keywords& k, const CancelToken& cancel) {
+  RenderOptions o = k.render;
+  o.sampling.cancel = cancel;
+  return o;
 }
 
-TopsOptions tops_options(const Sampling& s, const CancelToken& cancel) {
-  return {.view = s.view,
-          .margin = s.margin,
-          .exact = s.exact,
-          .quality = s.quality,
-          .seed = s.seed,
-          .threads = s.threads,
-          .cancel = cancel};
+TopsOptions tops_options(const Keywords& k, const CancelToken& cancel) {
+  return {.sampling = render_options(k, cancel).sampling, .exact = k.exact};
 }
 
-StealMapOptions steal_map_options(const Sampling& s, const CancelToken& cancel) {
-  return {.view = s.view,
-          .margin = s.margin,
-          .exact = s.exact,
-          .quality = s.quality,
-          .seed = s.seed,
-          .threads = s.threads,
-          .cancel = cancel};
+StealMapOptions steal_map_options(const Keywords& k, const CancelToken& cancel) {
+  return {.sampling = render_options(k, cancel).sampling, .exact = k.exact};
 }
 
 cv::Size size_arg(const py::object& size, const std::string& what) {

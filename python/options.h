@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The one place where Python keyword arguments become the library's options structs. Every
-// binding that samples an IFS (render, steal_map) collects its keywords into a Sampling and asks
+// binding that samples an IFS (render, steal_map) collects its keywords into Keywords and asks
 // for the struct it calls with; the defaults shown in the docstrings are the library's own
-// (kDefault below reads them from the structs), so the two never drift apart.
+// (read from RenderOptions{} and Sampling{}), so the two never drift apart.
 #pragma once
 
 #include <optional>
@@ -23,25 +23,19 @@ namespace ifsfx::python {
 namespace py = pybind11;
 
 // The keywords shared by the sampling entry points, as the CLI's `render` options.
-struct Sampling {
-  std::optional<Box> view;  // view=: None (auto-framed), (x0, y0, x1, y1) or "x0,y0,x1,y1"
-  double margin = RenderOptions{}.margin;
-  double quality = RenderOptions{}.quality;
-  int supersample = RenderOptions{}.supersample;
-  double gamma = RenderOptions{}.gamma;
-  double brightness = RenderOptions{}.brightness;
-  std::uint64_t seed = RenderOptions{}.seed;
-  int threads = RenderOptions{}.threads;
-  bool exact = true;  // tops and steal: the exact descent (the CLI's default), or the chaos game
+struct Keywords {
+  RenderOptions render;  // view=: None (auto-framed), (x0, y0, x1, y1) or "x0,y0,x1,y1"
+  bool exact = StealMapOptions{}.exact;  // tops and steal: the exact descent, or the chaos game
 };
 
-// The keywords as a Sampling; `view` is parsed and checked here.
-Sampling sampling(const py::object& view, double margin, double quality, int supersample,
+// The keywords as Keywords; `view` is parsed and checked here.
+Keywords keywords(const py::object& view, double margin, double quality, int supersample,
                   double gamma, double brightness, std::uint64_t seed, int threads, bool exact);
 
-RenderOptions render_options(const Sampling& s, const CancelToken& cancel);
-TopsOptions tops_options(const Sampling& s, const CancelToken& cancel);
-StealMapOptions steal_map_options(const Sampling& s, const CancelToken& cancel);
+// The options each entry point takes, with the stop flag of run_released.
+RenderOptions render_options(const Keywords& k, const CancelToken& cancel);
+TopsOptions tops_options(const Keywords& k, const CancelToken& cancel);
+StealMapOptions steal_map_options(const Keywords& k, const CancelToken& cancel);
 
 // size=: (width, height) or "WxH", 1..32768 a side (parse_size's checks and message).
 cv::Size size_arg(const py::object& size, const std::string& what = "size");

@@ -32,21 +32,6 @@ Mode mode_arg(const std::string& mode) {
               fmt::format("mode: attractor, measure, tops or steal (got '{}')", mode));
 }
 
-// `ifsfx render --mode tops` (apps/steal_modes.cpp tops_image): the view framed first from the
-// attractor's bounds, the background colour off the attractor, alpha = coverage when kept.
-cv::Mat tops_image(const Ifs& F, cv::Size size, const Sampling& s, bool second_symbol,
-                   const Rgb& background, bool alpha, const CancelToken& cancel) {
-  TopsOptions tops = tops_options(s, cancel);
-  tops.second_symbol = second_symbol;
-  if (!tops.view) tops.view = fit_view(attractor_bounds(F, s.seed, cancel), size, s.margin);
-  cv::Mat image = render_tops(F, size, tops);  // BGRA float, alpha = coverage
-  cv::Mat coverage;
-  cv::extractChannel(image, coverage, 3);
-  image.setTo(background_scalar(background, CV_32F), coverage == 0);
-  if (!alpha) cv::cvtColor(image, image, cv::COLOR_BGRA2BGR);
-  return image;
-}
-
 py::array render(const py::object& preset, const std::string& mode_name, const py::object& size,
                  const py::object& view, double margin, double quality, int supersample,
                  double gamma, double brightness, std::uint64_t seed, int threads, bool exact,
@@ -55,8 +40,8 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
                  bool allow_expansive, bool rgb) {
   const Mode mode = mode_arg(mode_name);
   const cv::Size pixels = size_arg(size);
-  const Sampling s =
-      sampling(view, margin, quality, supersample, gamma, brightness, seed, threads, exact);
+  const Keywords k =
+      keywords(view, margin, quality, supersample, gamma, brightness, seed, threads, exact);
   const auto refuse = [&](bool given, const char* option, const char* modes) {
     if (given)
       throw Error(ErrorKind::invalid_argument,
@@ -79,15 +64,18 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
   const cv::Mat image = run_released([&](const CancelToken& cancel) {
     switch (mode) {
       case Mode::attractor:
-        return render_attractor(F.ifs, pixels, render_options(s, cancel));
+        return render_attractor(F.ifs, pixels, render_options(k, cancel));
       case Mode::measure:
-        return render_measure(F.ifs, pixels, render_options(s, cancel));
-      case Mode::tops:
-        return tops_image(F.ifs, pixels, s, second_symbol, bg, alpha, cancel);
+        return render_measure(F.ifs, pixels, render_options(k, cancel));
+      case Mode::tops: {
+        TopsOptions options = tops_options(k, cancel);
+        options.second_symbol = second_symbol;
+        return tops_picture(F.ifs, pixels, options, bg, alpha);
+      }
       case Mode::steal:
         break;
     }
-    const StealMap map = compute_steal_map(F.ifs, G, pixels, steal_map_options(s, cancel));
+    const StealMap map = compute_steal_map(F.ifs, G, pixels, steal_map_options(k, cancel));
     const cv::Mat coloured =
         apply(map, src, {.background = background_scalar(bg, src.depth()), .threads = threads});
     return with_coverage_alpha(coloured, map.coverage, alpha);
@@ -111,13 +99,14 @@ cv::Mat source_arg(const py::handle& source, py::object& keep, const std::string
 
 void bind_render(py::module_& m) {
   const RenderOptions defaults;
+  const Sampling sampled;
   m.def(
       "render", &render, py::arg("preset"), py::kw_only(), py::arg("mode") = "measure",
       py::arg("size") = py::make_tuple(1024, 1024), py::arg("view") = py::none(),
-      py::arg("margin") = defaults.margin, py::arg("quality") = defaults.quality,
+      py::arg("margin") = sampled.margin, py::arg("quality") = sampled.quality,
       py::arg("supersample") = defaults.supersample, py::arg("gamma") = defaults.gamma,
-      py::arg("brightness") = defaults.brightness, py::arg("seed") = defaults.seed,
-      py::arg("threads") = defaults.threads, py::arg("exact") = true,
+      py::arg("brightness") = defaults.brightness, py::arg("seed") = sampled.seed,
+      py::arg("threads") = sampled.threads, py::arg("exact") = TopsOptions{}.exact,
       py::arg("second_symbol") = false, py::arg("source") = py::none(),
       py::arg("colouring") = py::none(), py::arg("background") = "black", py::arg("alpha") = true,
       py::arg("dtype") = "uint8", py::arg("allow_expansive") = false, py::arg("rgb") = false,

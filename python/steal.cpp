@@ -30,13 +30,13 @@ StealMap compute(const py::object& preset, const py::object& size, const py::obj
                  std::uint64_t seed, int threads, bool allow_expansive) {
   const cv::Size pixels = size_arg(size);
   const RenderOptions d;
-  const Sampling s =
-      sampling(view, margin, quality, d.supersample, d.gamma, d.brightness, seed, threads, exact);
+  const Keywords k =
+      keywords(view, margin, quality, d.supersample, d.gamma, d.brightness, seed, threads, exact);
   const IfsPreset F = preset_arg(preset, allow_expansive);
   const Ifs G = load_colouring(colouring.is_none() ? std::string() : colouring.cast<std::string>(),
                                F.ifs, "colouring");
   return run_released([&](const CancelToken& cancel) {
-    return compute_steal_map(F.ifs, G, pixels, steal_map_options(s, cancel));
+    return compute_steal_map(F.ifs, G, pixels, steal_map_options(k, cancel));
   });
 }
 
@@ -98,11 +98,12 @@ rgb: False (default): BGR(A) in and out, like cv2; True: RGB(A).)doc")
         return fmt::format("<ifsfx.StealMap {}x{}>", map.size().width, map.size().height);
       });
 
-  const StealMapOptions d;
+  const StealMapOptions defaults;
+  const Sampling& d = defaults.sampling;
   m.def(
       "steal_map", &compute, py::arg("preset"), py::kw_only(),
       py::arg("size") = py::make_tuple(1024, 1024), py::arg("colouring") = py::none(),
-      py::arg("view") = py::none(), py::arg("margin") = d.margin, py::arg("exact") = true,
+      py::arg("view") = py::none(), py::arg("margin") = d.margin, py::arg("exact") = defaults.exact,
       py::arg("quality") = d.quality, py::arg("seed") = d.seed, py::arg("threads") = d.threads,
       py::arg("allow_expansive") = false,
       R"doc(The steal map of `preset` (drawing IFS F) through `colouring` (a preset with as many maps,

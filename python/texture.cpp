@@ -60,19 +60,18 @@ TextureFrames start(const std::string& superpreset, const py::object& size, int 
   if (first < 0)
     throw Error(ErrorKind::invalid_argument, fmt::format("frame: must be ≥ 0 (got {})", first));
   py::object keep;
-  TextureOptions options{.count = buffers,
+  TextureOptions options{.sampling = {.seed = seed, .threads = threads},
+                         .count = buffers,
                          .steps = steps,
                          .buffer = buffer - 1,
-                         .mode = mode,
-                         .seed = seed,
-                         .threads = threads};
+                         .mode = mode};
   if (!source.is_none()) options.source = source_arg(source, keep, "source", rgb).clone();
   const SuperIfsPreset preset =
       run_released([&](const CancelToken&) { return load_superifs(superpreset); });
   // The sequence keeps the token: a later frame's work polls a flag that is never set.
   auto sequence = run_released([&](const CancelToken& cancel) {
     TextureOptions o = options;
-    o.cancel = cancel;
+    o.sampling.cancel = cancel;
     auto made = std::make_shared<TextureSequence>(preset.super, pixels, o);
     return made;
   });
@@ -115,9 +114,10 @@ void bind_texture(py::module_& m) {
       },
       py::arg("superpreset"), py::kw_only(), py::arg("size") = py::make_tuple(1024, 1024),
       py::arg("buffers") = d.count, py::arg("steps") = d.steps, py::arg("buffer") = 1,
-      py::arg("mode") = "attractor", py::arg("source") = py::none(), py::arg("seed") = d.seed,
-      py::arg("threads") = d.threads, py::arg("frame") = 0, py::arg("crossfade") = 1,
-      py::arg("dtype") = "uint8", py::arg("rgb") = false,
+      py::arg("mode") = "attractor", py::arg("source") = py::none(),
+      py::arg("seed") = d.sampling.seed, py::arg("threads") = d.sampling.threads,
+      py::arg("frame") = 0, py::arg("crossfade") = 1, py::arg("dtype") = "uint8",
+      py::arg("rgb") = false,
       R"doc(A V-variable superfractal texture, as `ifsfx texture SUPERPRESET -o OUT.png` writes it (frame 0)
 or as frame `frame` + 1 of `--frames N --crossfade K -o tex_%04d.png`.
 
@@ -145,9 +145,10 @@ dtype: "uint8" (default), "uint16" or "float32". rgb: False (default): BGR like 
       },
       py::arg("superpreset"), py::kw_only(), py::arg("size") = py::make_tuple(1024, 1024),
       py::arg("buffers") = d.count, py::arg("steps") = d.steps, py::arg("buffer") = 1,
-      py::arg("mode") = "attractor", py::arg("source") = py::none(), py::arg("seed") = d.seed,
-      py::arg("threads") = d.threads, py::arg("frames") = py::none(), py::arg("crossfade") = 1,
-      py::arg("dtype") = "uint8", py::arg("first") = 0, py::arg("rgb") = false,
+      py::arg("mode") = "attractor", py::arg("source") = py::none(),
+      py::arg("seed") = d.sampling.seed, py::arg("threads") = d.sampling.threads,
+      py::arg("frames") = py::none(), py::arg("crossfade") = 1, py::arg("dtype") = "uint8",
+      py::arg("first") = 0, py::arg("rgb") = false,
       R"doc(An iterator over the frames of a texture sequence, one further V-variable step per
 `crossfade` frames, from frame `first` (default 0); `frames` of them, default None: endless.
 Frame j equals texture(..., frame=j). The burn-in runs here; each frame after it is one step.)doc");

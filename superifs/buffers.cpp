@@ -138,8 +138,9 @@ Buffers::Buffers(const SuperIfs& super, cv::Size size, const BufferOptions& opti
   if (options.history < 0)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("history: must be ≥ 0 steps (got {})", options.history));
-  resolve_threads(options.threads);  // rejects a negative count up front
-  viewport_ = {buffer_view(super_, size, options.margin), size};
+  resolve_threads(options.sampling.threads);  // rejects a negative count up front
+  if (options.sampling.view) check_view(*options.sampling.view);
+  viewport_ = {buffer_view(super_, size, options.sampling), size};
   const AffineMap to_pixel = plane_to_pixel(viewport_);
   const AffineMap to_plane = *to_pixel.inverse();
   const std::size_t n_count = super_.size(), m_count = super_.maps();
@@ -208,8 +209,8 @@ void Buffers::dilate_current() {
   const std::size_t v_count = masks_.size();
   dilated_.assign(v_count, BitMask());
   for (auto& d : dilated_) d.resize(viewport_.size);
-  parallel_rows(v_count, viewport_.size.height, band_rows, options_.threads, options_.cancel,
-                "superIFS step", [&](std::size_t v, cv::Range rows) {
+  parallel_rows(v_count, viewport_.size.height, band_rows, options_.sampling.threads,
+                options_.sampling.cancel, "superIFS step", [&](std::size_t v, cv::Range rows) {
                   dilate_rows(masks_[v], dilation_, rows.start, rows.end, dilated_[v]);
                 });
 }
@@ -219,7 +220,7 @@ StepChoices Buffers::draw_choices() const {
   // One stream per step: the choices never depend on threads or on the raster. A periodic stream
   // repeats the choices of its first period.
   const std::int64_t k = options_.period > 0 ? steps_ % options_.period : steps_;
-  Rng rng(stream_seed(options_.seed, static_cast<std::uint64_t>(k)));
+  Rng rng(stream_seed(options_.sampling.seed, static_cast<std::uint64_t>(k)));
   const MapPicker pick_ifs(ifs_probabilities_);
   StepChoices c;
   c.ifs.resize(v_count);
@@ -259,8 +260,8 @@ void Buffers::step() {
 
 // The densities and colour masses averaged over the dilation's window, by bands of rows.
 void Buffers::smooth_densities(Next& next) const {
-  parallel_rows(masks_.size(), viewport_.size.height, band_rows, options_.threads, options_.cancel,
-                "superIFS step", [&](std::size_t v, cv::Range rows) {
+  parallel_rows(masks_.size(), viewport_.size.height, band_rows, options_.sampling.threads,
+                options_.sampling.cancel, "superIFS step", [&](std::size_t v, cv::Range rows) {
                   box_rows(densities_[v], dilation_, rows.start, rows.end, next.smooth[v]);
                   box_rows(colour_masses_[v], dilation_, rows.start, rows.end,
                            next.smooth_colour[v]);
@@ -281,8 +282,8 @@ void Buffers::paint_next(const StepChoices& choices, Next& buffers) const {
   for (std::size_t m = 0; m < m_count && m_count > 1; ++m)
     map_coordinate[m] = static_cast<double>(m) / static_cast<double>(m_count - 1);
   parallel_rows(
-      v_count, size.height, band_rows, options_.threads, options_.cancel, "superIFS step",
-      [&](std::size_t v, cv::Range rows) {
+      v_count, size.height, band_rows, options_.sampling.threads, options_.sampling.cancel,
+      "superIFS step", [&](std::size_t v, cv::Range rows) {
         const int row0 = rows.start, row1 = rows.end;
         const std::uint32_t n = choices.ifs[v];
         const std::uint32_t* source = &choices.source[v * m_count];

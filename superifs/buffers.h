@@ -28,6 +28,7 @@
 #include <opencv2/core.hpp>
 
 #include "ifs/cancel.h"
+#include "ifs/sampling.h"
 #include "ifs/view.h"
 #include "superifs/superifs.h"
 
@@ -83,16 +84,16 @@ struct HistoryLevel {
 };
 
 struct BufferOptions {
-  int count = 3;           // V, the number of buffers
-  std::uint64_t seed = 1;  // the choices of step k come from stream_seed(seed, k)
+  int count = 3;  // V, the number of buffers
+  // The plane rectangle (default: the superIFS's view, else buffer_view()'s framing with the
+  // margin); the choices of step k come from stream_seed(seed, k); threads (0 = all cores); the
+  // stop flag, polled per band of rows of a step. Quality is not used: buffers are rasters.
+  Sampling sampling;
+  int history = 0;       // steps kept for the exact descent (steal coordinates, tops); 0 = none
+  bool density = false;  // also carry the measures (measure mode)
   // With period P > 0 the choices of step k come from stream_seed(seed, k mod P) instead: a
   // periodic choice stream, whose buffers close into a loop (docs/design.md §11). 0 = none.
   std::int64_t period = 0;
-  int threads = 0;       // 0 = all cores
-  int history = 0;       // steps kept for the exact descent (steal coordinates, tops); 0 = none
-  bool density = false;  // also carry the measures (measure mode)
-  double margin = 0.02;  // auto-framing margin of buffer_view()
-  CancelToken cancel;    // polled per band of rows of a step: Error{interrupted} on a stop request
 };
 
 class Buffers {
@@ -117,8 +118,8 @@ class Buffers {
   cv::Size size() const { return viewport_.size; }
   const Viewport& viewport() const { return viewport_; }
   const SuperIfs& super() const { return super_; }
-  int threads() const { return options_.threads; }
-  const CancelToken& cancel() const { return options_.cancel; }
+  int threads() const { return options_.sampling.threads; }
+  const CancelToken& cancel() const { return options_.sampling.cancel; }
 
   // The set K_v: CV_8UC1, 255 on the set, 0 elsewhere.
   const cv::Mat& mask(std::size_t v) const { return masks_.at(v); }

@@ -105,9 +105,10 @@ Ifs union_ifs(const SuperIfs& super) {
   return all;
 }
 
-Box buffer_view(const SuperIfs& super, cv::Size size, double margin) {
+Box buffer_view(const SuperIfs& super, cv::Size size, const Sampling& sampling) {
+  if (sampling.view) return *sampling.view;
   if (super.view) return *super.view;
-  return fit_view(attractor_bounds(union_ifs(super)), size, margin);
+  return fit_view(attractor_bounds(union_ifs(super)), size, sampling.margin);
 }
 
 int default_steps(const SuperIfs& super, cv::Size size) {

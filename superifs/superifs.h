@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "ifs/ifs.h"
+#include "ifs/sampling.h"
 #include "ifs/view.h"
 
 namespace ifsfx {
@@ -55,9 +56,10 @@ double colouring_contraction(const SuperIfs& super);
 // so a view that frames it frames all of them.
 Ifs union_ifs(const SuperIfs& super);
 
-// The plane rectangle the buffers live on for a raster of `size`: super.view when given, else the
-// bounds of union_ifs(super) fitted to the raster's aspect with `margin` on every side.
-Box buffer_view(const SuperIfs& super, cv::Size size, double margin = 0.02);
+// The plane rectangle the buffers live on for a raster of `size`: sampling.view when given, else
+// super.view when given, else the bounds of union_ifs(super) fitted to the raster's aspect with
+// sampling.margin on every side.
+Box buffer_view(const SuperIfs& super, cv::Size size, const Sampling& sampling = {});
 
 // Steps after which any starting buffer has converged to the V-variable family on a raster of
 // `size`: the least k with s^k · max(W, H) < 1/8 pixel for the largest factor s (below a pixel,

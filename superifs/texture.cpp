@@ -194,11 +194,8 @@ cv::Mat render_measure(const Buffers& buffers, std::size_t v) {
 
 BufferOptions buffer_options(const SuperIfs& super, cv::Size size, const TextureOptions& options) {
   BufferOptions b;
+  b.sampling = options.sampling;
   b.count = options.count;
-  b.seed = options.seed;
-  b.threads = options.threads;
-  b.margin = options.margin;
-  b.cancel = options.cancel;
   b.density = options.mode == TextureMode::measure;
   b.period = options.loop;
   if (options.mode == TextureMode::steal || options.mode == TextureMode::tops) {

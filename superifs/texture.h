@@ -58,16 +58,16 @@ cv::Mat render_buffer(const Buffers& buffers, std::size_t v, TextureMode mode,
 inline constexpr std::int64_t kMaxLoop = 1000000;
 
 struct TextureOptions {
+  // The plane rectangle (default: the superIFS's view, else its attractor auto-framed with the
+  // margin), the seed of every choice (stream_seed(seed, step)), threads, and the stop flag,
+  // polled by the burn-in, the steps and the descent (per band of rows). Quality is not used.
+  Sampling sampling;
   int count = 3;   // V, the number of buffers
   int steps = 0;   // burn-in steps; 0 = default_steps(super, size)
   int buffer = 0;  // the buffer shown, from 0
   TextureMode mode = TextureMode::attractor;
-  cv::Mat source;          // steal mode: the image frame() steals colours from (its size also
-                           // sets the descent depth); may be empty when only maps are wanted
-  std::uint64_t seed = 1;  // seeds every choice (stream_seed(seed, step))
-  int threads = 0;         // 0 = all cores
-  double margin = 0.02;    // auto-framing margin when the superIFS gives no view
-  CancelToken cancel;      // polled by the burn-in, the steps and the descent (per band of rows)
+  cv::Mat source;  // steal mode: the image frame() steals colours from (its size also sets the
+                   // descent depth); may be empty when only maps are wanted
   // A loop of this many textures, 0 = an endless sequence: the choices repeat with this period,
   // the burn-in runs until the buffers come back to themselves after a period, and texture k is
   // texture k mod loop (docs/design.md §11).

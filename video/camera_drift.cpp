@@ -3,17 +3,15 @@
 
 #include <chrono>
 
-#include "ifs/view.h"
+#include "ifs/sampling.h"
 
 namespace ifsfx::video {
 
 LiveDrift::LiveDrift(const Ifs& base, const Ifs& colouring, cv::Size size,
                      const LiveDriftOptions& options)
     : base_(base), colouring_(colouring), size_(size), options_(options) {
-  if (!options_.map.view) {
-    options_.map.view = fit_view(attractor_bounds(base_, options_.map.seed, options_.map.cancel),
-                                 size_, options_.map.margin);
-  }
+  // The view fixed from the base IFS, so that the frame does not jump as the attractor moves.
+  options_.map.sampling.view = framed_viewport(base_, size_, options_.map.sampling).view;
   if (options_.fade_frames < 1) options_.fade_frames = 1;
   current_ = std::make_shared<const PreparedStealMap>(build(0));
   previous_ = current_;
@@ -28,7 +26,7 @@ LiveDrift::~LiveDrift() {
 PreparedStealMap LiveDrift::build(double t) const {
   const Ifs now = drift(base_, t, options_.drift);
   return prepare_filter(compute_steal_map(now, colouring_, size_, options_.map), size_,
-                        options_.interpolation, options_.map.threads);
+                        options_.interpolation, options_.map.sampling.threads);
 }
 
 cv::Mat LiveDrift::filter(const cv::Mat& frame, double t, const FilterOptions& options) {

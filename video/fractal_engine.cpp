@@ -35,7 +35,7 @@ FractalEngine::FractalEngine(const FractalSettings& settings) : settings_(settin
   options_.interpolation = settings.interpolation;
   options_.mix = settings.mix;
   options_.background = settings.background;
-  options_.threads = settings.threads;
+  options_.threads = settings.sampling.threads;
   check_filter_options(options_);
   if (settings.animate == Animate::superifs) {
     super_ = load_superifs(settings.superifs).super;
@@ -61,7 +61,7 @@ FractalEngine::~FractalEngine() = default;
 DriftOptions FractalEngine::drift_options() const {
   return {.amount = settings_.drift_amount,
           .speed = settings_.drift_speed,
-          .seed = settings_.seed,
+          .seed = settings_.sampling.seed,
           .loop = static_cast<double>(settings_.loop) / frame_rate_};
 }
 
@@ -70,15 +70,7 @@ std::int64_t FractalEngine::loop_keyframes() const {
 }
 
 StealMapOptions FractalEngine::map_options() const {
-  StealMapOptions o;
-  o.view = settings_.view;
-  o.margin = settings_.margin;
-  o.exact = settings_.exact;
-  o.quality = settings_.quality;
-  o.seed = settings_.seed;
-  o.threads = settings_.threads;
-  o.cancel = settings_.cancel;
-  return o;
+  return {.sampling = settings_.sampling, .exact = settings_.exact};
 }
 
 void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double frame_rate) {
@@ -91,7 +83,7 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
   const cv::Size size = output_size.empty() ? frame_size : output_size;
   const FractalSettings& s = settings_;
   StealMapOptions map_options = this->map_options();
-  const int threads = s.threads;
+  const int threads = s.sampling.threads;
   const Interpolation interpolation = s.interpolation;
   switch (s.animate) {
     case Animate::none:
@@ -101,8 +93,7 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
     case Animate::drift: {
       // Keyframe k shows F drifted to time k·K/fps, in a view fixed from F itself so that the
       // frame does not jump as the attractor moves.
-      if (!map_options.view)
-        map_options.view = fit_view(attractor_bounds(F_, s.seed, s.cancel), size, s.margin);
+      map_options.sampling.view = framed_viewport(F_, size, s.sampling).view;
       // With a loop of L frames and Q keyframes, keyframe k shows time (k mod Q) · L / Q frames:
       // keyframe Q is keyframe 0, and the drift's own period is the loop.
       schedule_ = std::make_unique<MapSchedule>(
@@ -122,13 +113,12 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
       // Keyframe k is texture k of the V-variable sequence (paper §5, eq. 14), one step per
       // keyframe after the burn-in — a pure function of k and the seed.
       TextureOptions t;
+      t.sampling = s.sampling;
+      t.sampling.view.reset();  // the superIFS brings its own
       t.count = s.buffers;
       t.mode = TextureMode::steal;
       t.source = cv::Mat(frame_size, CV_8UC3);  // only its size: it sets the descent depth
-      t.seed = s.seed;
-      t.threads = threads;
-      t.cancel = s.cancel;
-      t.loop = loop_keyframes();  // texture k of a loop of Q is texture k mod Q
+      t.loop = loop_keyframes();                // texture k of a loop of Q is texture k mod Q
       sequence_ = std::make_shared<TextureSequence>(super_, size, t);
       schedule_ = std::make_unique<MapSchedule>(
           [=, sequence = sequence_](std::int64_t k) {

@@ -24,6 +24,7 @@
 
 #include "ifs/cancel.h"
 #include "ifs/ifs.h"
+#include "ifs/sampling.h"
 #include "ifs/steal_map.h"
 #include "ifs/timeline.h"
 #include "ifs/view.h"
@@ -50,9 +51,13 @@ struct FractalSettings {
   std::string preset = "barnsley-fern";  // F: a shipped name, a .toml/.ifs path or FILE.ifs:NAME
   std::string colouring;                 // G: a preset fitted to the unit square; "" = a tiling
   bool exact = true;                     // per-pixel descent (faster); false: the chaos game
-  std::optional<Box> view;               // plane rectangle of F shown; none = auto-framed
-  double margin = 0.05;                  // auto-framing margin, fraction of the larger side
-  double quality = 64;                   // chaos-game points per output pixel
+  // The plane rectangle of F shown (none: auto-framed; a superIFS brings its own), the margin,
+  // the chaos game's points per pixel, the seed of the chaos game, the drift and the superIFS
+  // steps, the threads (0 = all cores), and the stop flag, polled while maps are built (the steal
+  // map, the framing, the superIFS burn-in and descent): a stop request ends prepare() or a
+  // keyframe's build with Error{interrupted} within a fraction of a second. The command line
+  // passes its Ctrl-C flag; a plugin's host has none to pass.
+  Sampling sampling;
 
   // How the frame shows through it.
   double mix = 0;  // weight of the original frame blended over the fractal, 0..1
@@ -72,13 +77,6 @@ struct FractalSettings {
   // never. The loop holds ⌈loop / keyframe_interval⌉ keyframes spread evenly over it; the drift
   // is periodic with period loop / frame rate, the superIFS steps close into a loop of textures.
   std::int64_t loop = 0;
-
-  std::uint64_t seed = 1;  // the chaos game, the drift and the superIFS steps
-  int threads = 0;         // 0 = all cores
-  // Polled while maps are built (the steal map, the framing, the superIFS burn-in and descent):
-  // a stop request ends prepare() or a keyframe's build with Error{interrupted} within a fraction
-  // of a second. The command line passes its Ctrl-C flag; a plugin's host has none to pass.
-  CancelToken cancel;
 
   friend bool operator==(const FractalSettings&, const FractalSettings&) = default;
 };

@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
     const ifsfx::Ifs colouring = ifsfx::default_colouring(fern.ifs.size());
     ifsfx::StealMapStats stats;
     const ifsfx::StealMap map =
-        ifsfx::compute_steal_map(fern.ifs, colouring, size, {.exact = true}, &stats);
+        ifsfx::compute_steal_map(fern.ifs, colouring, size, {}, &stats);  // the exact descent
     const cv::Mat photo = ifsfx::read_image(argv[1]).pixels;
     ifsfx::write_image(argv[2], ifsfx::apply(map, photo));
     std::printf("%s: %dx%d, coverage %.4f\n", argv[2], size.width, size.height, stats.coverage);

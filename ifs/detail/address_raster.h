@@ -17,17 +17,13 @@
 
 #include "ifs/cancel.h"
 #include "ifs/ifs.h"
+#include "ifs/sampling.h"
 #include "ifs/view.h"
 
 namespace ifsfx::detail {
 
 // b = ceil(log2 N), at least 1.
 int symbol_bits(std::size_t n);
-
-// The framing the tops and steal-map entries share (after detail::check_chaos_game): `view`, or
-// F's attractor auto-framed with `margin` (attractor_bounds, polling `cancel`).
-Viewport framed_viewport(const Ifs& F, cv::Size size, const std::optional<Box>& view, double margin,
-                         std::uint64_t seed, const CancelToken& cancel);
 
 struct AddressRaster {
   Viewport viewport;

@@ -11,6 +11,7 @@
 #include <opencv2/core.hpp>
 
 #include "ifs/ifs.h"
+#include "ifs/sampling.h"
 #include "ifs/view.h"
 
 namespace ifsfx::detail {
@@ -31,6 +32,8 @@ struct ChaosGameInputs {
   std::optional<cv::Size> size;   // of the raster
   std::optional<Box> view;        // the plane rectangle shown
   double margin = 0;              // auto-framing margin
+  // An options type's sampling: its threads, quality, view and margin are checked as well.
+  const Sampling* sampling = nullptr;
 };
 
 // Throws Error{invalid_ifs} for the IFS (see validate()) and Error{invalid_argument} for the

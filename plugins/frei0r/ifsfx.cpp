@@ -79,8 +79,8 @@ video::FractalSettings settings_of(const ParamValues::Values& v) {
   s.animate = amount > 0 ? video::Animate::drift : video::Animate::none;
   s.drift_amount = amount;
   s.drift_speed = v.number(speed);
-  s.seed = static_cast<std::uint64_t>(whole_number(v.number(seed), "seed", 0, 1LL << 53));
-  if (!v.text(view).empty()) s.view = parse_box(v.text(view), "view");
+  s.sampling.seed = static_cast<std::uint64_t>(whole_number(v.number(seed), "seed", 0, 1LL << 53));
+  if (!v.text(view).empty()) s.sampling.view = parse_box(v.text(view), "view");
   // The engine counts a loop in frames of its nominal rate, as it places the drift's keyframes.
   const double loop_seconds = v.number(loop);
   if (!(loop_seconds >= 0 && loop_seconds <= kMaxLoop / nominal_frame_rate))

@@ -160,10 +160,7 @@ class TextureInstance {
     if (sequence_ && key_ == key) return;
     if (failed_ && failed_->first == key) throw Error(ErrorKind::invalid_argument, failed_->second);
     try {
-      TextureOptions o;
-      o.count = key.count;
-      o.mode = key.mode;
-      o.seed = key.seed;
+      TextureOptions o{.sampling = {.seed = key.seed}, .count = key.count, .mode = key.mode};
       o.loop = key.loop;
       if (!key.source.empty()) o.source = read_image(key.source).pixels;
       sequence_ = std::make_unique<TextureSequence>(load_superifs(key.preset).super, size_, o);

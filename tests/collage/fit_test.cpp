@@ -39,8 +39,8 @@ cv::Mat sierpinski_target() {
   constexpr int size = 97;
   const double half = 0.5 / (size - 1);
   RenderOptions r;
-  r.view = Box{-half, -half, 1 + half, 1 + half};
-  r.quality = 128;
+  r.sampling.view = Box{-half, -half, 1 + half, 1 + half};
+  r.sampling.quality = 128;
   return render_attractor(testing::right_sierpinski(), {size, size}, r);
 }
 
@@ -112,8 +112,8 @@ TEST(fit, attractor_of_a_five_map_ifs_comes_back) {
   // Not a tiling: the five pieces overlap. The search has to find maps of the flower onto its
   // petals, which exist exactly.
   RenderOptions r;
-  r.view = Box{0, 0, 1, 1};
-  r.quality = 128;
+  r.sampling.view = Box{0, 0, 1, 1};
+  r.sampling.quality = 128;
   const cv::Mat flower = render_attractor(testing::five_petals(), {96, 96}, r);
   FitOptions o = quick(5);
   o.max_evaluations = 4000;

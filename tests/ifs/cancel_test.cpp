@@ -27,20 +27,30 @@ TEST(cancel, every_long_computation_stops_with_interrupted) {
   std::atomic<bool> stop{true};
   const CancelToken cancel(&stop);
   const Ifs fern = testing::barnsley_fern();
-  EXPECT_TRUE(interrupted([&] { render_measure(fern, {64, 64}, {.cancel = cancel}); }));
-  EXPECT_TRUE(interrupted([&] { render_attractor(fern, {64, 64}, {.cancel = cancel}); }));
-  EXPECT_TRUE(interrupted([&] { top_symbols(fern, {64, 64}, {.cancel = cancel}); }));
-  EXPECT_TRUE(interrupted([&] { top_symbols(fern, {64, 64}, {.exact = true, .cancel = cancel}); }));
   EXPECT_TRUE(interrupted([&] {
-    compute_steal_map(fern, default_colouring(4), {64, 64}, {.cancel = cancel});
+    render_measure(fern, {64, 64}, {.sampling = {.cancel = cancel}});
   }));
   EXPECT_TRUE(interrupted([&] {
-    compute_steal_map(fern, default_colouring(4), {64, 64}, {.exact = true, .cancel = cancel});
+    render_attractor(fern, {64, 64}, {.sampling = {.cancel = cancel}});
+  }));
+  EXPECT_TRUE(interrupted([&] {
+    top_symbols(fern, {64, 64}, {.sampling = {.cancel = cancel}, .exact = false});
+  }));
+  EXPECT_TRUE(interrupted([&] {
+    top_symbols(fern, {64, 64}, {.sampling = {.cancel = cancel}, .exact = true});
+  }));
+  EXPECT_TRUE(interrupted([&] {
+    compute_steal_map(fern, default_colouring(4), {64, 64},
+                      {.sampling = {.cancel = cancel}, .exact = false});
+  }));
+  EXPECT_TRUE(interrupted([&] {
+    compute_steal_map(fern, default_colouring(4), {64, 64},
+                      {.sampling = {.cancel = cancel}, .exact = true});
   }));
   EXPECT_TRUE(interrupted([&] { attractor_bounds(fern, 1, cancel); }));
   EXPECT_TRUE(interrupted([&] { chaos_game_samples(fern, 1000, {.cancel = cancel}); }));
   stop = false;  // the same calls run to the end without a request
-  EXPECT_NO_THROW(top_symbols(fern, {64, 64}, {.exact = true, .cancel = cancel}));
+  EXPECT_NO_THROW(top_symbols(fern, {64, 64}, {.sampling = {.cancel = cancel}, .exact = true}));
 }
 
 }  // namespace

@@ -100,19 +100,20 @@ TEST(chaos_game, every_entry_point_refuses_what_the_walk_cannot_run) {
       {"visit_counts", [&](const Ifs& f, int t) { visit_counts(f, view, 100, {.threads = t}); }},
       {"render_attractor",
        [](const Ifs& f, int t) {
-         render_attractor(f, {16, 16}, {.quality = 1, .threads = t});
+         render_attractor(f, {16, 16}, {.sampling = {.quality = 1, .threads = t}});
        }},
       {"render_measure",
        [](const Ifs& f, int t) {
-         render_measure(f, {16, 16}, {.quality = 1, .threads = t});
+         render_measure(f, {16, 16}, {.sampling = {.quality = 1, .threads = t}});
        }},
       {"top_symbols",
        [](const Ifs& f, int t) {
-         top_symbols(f, {16, 16}, {.quality = 1, .threads = t});
+         top_symbols(f, {16, 16}, {.sampling = {.quality = 1, .threads = t}, .exact = false});
        }},
       {"compute_steal_map",
        [](const Ifs& f, int t) {
-         compute_steal_map(f, default_colouring(f.size()), {16, 16}, {.quality = 1, .threads = t});
+         compute_steal_map(f, default_colouring(f.size()), {16, 16},
+                           {.sampling = {.quality = 1, .threads = t}, .exact = false});
        }},
   };
   const auto message = [](const Call& call, const Ifs& f, int threads) -> std::string {
@@ -136,7 +137,7 @@ TEST(chaos_game, every_entry_point_refuses_what_the_walk_cannot_run) {
         << name;
   }
   EXPECT_THROW(chaos_game_samples(fern, 100, {.burn_in = -3}), Error);
-  EXPECT_THROW(render_measure(fern, {16, 16}, {.quality = 0}), Error);
+  EXPECT_THROW(render_measure(fern, {16, 16}, {.sampling = {.quality = 0}}), Error);
   EXPECT_THROW(attractor_bounds(Ifs{}), Error);  // would read maps[0]
 }
 

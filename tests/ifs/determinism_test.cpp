@@ -67,8 +67,8 @@ cv::Mat steal_map_bytes(const StealMap& map) {
 
 TEST(determinism, attractor_does_not_depend_on_the_thread_count) {
   expect_same_bytes_for_any_thread_count([](const Case& c, int threads) {
-    return render_attractor(c.ifs, c.size,
-                            {.quality = c.quality, .seed = c.seed, .threads = threads});
+    return render_attractor(
+        c.ifs, c.size, {.sampling = {.quality = c.quality, .seed = c.seed, .threads = threads}});
   });
 }
 
@@ -76,37 +76,34 @@ TEST(determinism, measure_does_not_depend_on_the_thread_count) {
   expect_same_bytes_for_any_thread_count([](const Case& c, int threads) {
     // Every other case supersampled: the same points on a finer raster.
     return render_measure(c.ifs, c.size,
-                          {.quality = c.quality,
-                           .supersample = c.seed % 2 == 0 ? 2 : 1,
-                           .seed = c.seed,
-                           .threads = threads});
+                          {.sampling = {.quality = c.quality, .seed = c.seed, .threads = threads},
+                           .supersample = c.seed % 2 == 0 ? 2 : 1});
   });
 }
 
 TEST(determinism, chaos_game_tops_do_not_depend_on_the_thread_count) {
   expect_same_bytes_for_any_thread_count([](const Case& c, int threads) {
-    return render_tops(
-        c.ifs, c.size,
-        {.second_symbol = true, .quality = c.quality, .seed = c.seed, .threads = threads});
+    return render_tops(c.ifs, c.size,
+                       {.sampling = {.quality = c.quality, .seed = c.seed, .threads = threads},
+                        .exact = false,
+                        .second_symbol = true});
   });
 }
 
 TEST(determinism, exact_tops_do_not_depend_on_the_thread_count) {
   expect_same_bytes_for_any_thread_count([](const Case& c, int threads) {
     return render_tops(c.ifs, c.size,
-                       {.exact = true,
-                        .second_symbol = true,
-                        .quality = c.quality,
-                        .seed = c.seed,
-                        .threads = threads});
+                       {.sampling = {.quality = c.quality, .seed = c.seed, .threads = threads},
+                        .exact = true,
+                        .second_symbol = true});
   });
 }
 
 TEST(determinism, chaos_game_steal_map_does_not_depend_on_the_thread_count) {
   expect_same_bytes_for_any_thread_count([](const Case& c, int threads) {
-    return steal_map_bytes(
-        compute_steal_map(c.ifs, default_colouring(c.ifs.size()), c.size,
-                          {.quality = c.quality, .seed = c.seed, .threads = threads}));
+    return steal_map_bytes(compute_steal_map(
+        c.ifs, default_colouring(c.ifs.size()), c.size,
+        {.sampling = {.quality = c.quality, .seed = c.seed, .threads = threads}, .exact = false}));
   });
 }
 
@@ -114,7 +111,7 @@ TEST(determinism, exact_steal_map_does_not_depend_on_the_thread_count) {
   expect_same_bytes_for_any_thread_count([](const Case& c, int threads) {
     return steal_map_bytes(compute_steal_map(
         c.ifs, default_colouring(c.ifs.size()), c.size,
-        {.exact = true, .quality = c.quality, .seed = c.seed, .threads = threads}));
+        {.sampling = {.quality = c.quality, .seed = c.seed, .threads = threads}, .exact = true}));
   });
 }
 

@@ -107,9 +107,12 @@ TEST(geometry_limits, unresolvable_views_are_refused) {
 
 TEST(geometry_limits, quality_is_bounded) {
   const Ifs fern = testing::barnsley_fern();
-  EXPECT_THROW(render_measure(fern, {8, 8}, {.quality = 1e300}), Error);
-  EXPECT_THROW(top_symbols(fern, {8, 8}, {.quality = kMaxQuality * 2}), Error);
-  EXPECT_THROW(compute_steal_map(fern, default_colouring(4), {8, 8}, {.quality = NAN}), Error);
+  EXPECT_THROW(render_measure(fern, {8, 8}, {.sampling = {.quality = 1e300}}), Error);
+  EXPECT_THROW(
+      top_symbols(fern, {8, 8}, {.sampling = {.quality = kMaxQuality * 2}, .exact = false}), Error);
+  EXPECT_THROW(compute_steal_map(fern, default_colouring(4), {8, 8},
+                                 {.sampling = {.quality = NAN}, .exact = false}),
+               Error);
 }
 
 }  // namespace

@@ -24,8 +24,8 @@ int occupied_boxes(const cv::Mat& mask, int s) {
 }
 
 TEST(render_attractor, sierpinski_box_counting_dimension_is_log3_over_log2) {
-  const cv::Mat mask =
-      render_attractor(testing::sierpinski_triangle(), {1024, 1024}, {.quality = 16, .seed = 2});
+  const cv::Mat mask = render_attractor(testing::sierpinski_triangle(), {1024, 1024},
+                                        {.sampling = {.quality = 16, .seed = 2}});
   // Least-squares slope of log N(s) against log(1/s) over box sizes 2..64 pixels.
   double sx = 0, sy = 0, sxx = 0, sxy = 0;
   int n = 0;
@@ -39,8 +39,9 @@ TEST(render_attractor, sierpinski_box_counting_dimension_is_log3_over_log2) {
 
 TEST(render_attractor, right_sierpinski_occupies_exactly_the_cells_with_disjoint_bits) {
   constexpr int k = 8, side = 1 << k;
-  const cv::Mat mask = render_attractor(testing::right_sierpinski(), {side, side},
-                                        {.view = Box{0, 0, 1, 1}, .quality = 64, .seed = 1});
+  const cv::Mat mask =
+      render_attractor(testing::right_sierpinski(), {side, side},
+                       {.sampling = {.view = Box{0, 0, 1, 1}, .quality = 64, .seed = 1}});
   int wrong = 0, occupied = 0;
   for (int row = 0; row < side; ++row)
     for (int i = 0; i < side; ++i) {
@@ -66,7 +67,8 @@ TEST(render_measure, density_follows_the_measure) {
   Ifs ifs = testing::right_sierpinski();
   ifs.probabilities = {0.7, 0.15, 0.15};
   ifs.colours = {Rgb{1, 1, 1}, Rgb{1, 1, 1}, Rgb{1, 1, 1}};
-  const cv::Mat image = render_measure(ifs, {128, 128}, {.view = Box{0, 0, 1, 1}, .seed = 1});
+  const cv::Mat image =
+      render_measure(ifs, {128, 128}, {.sampling = {.view = Box{0, 0, 1, 1}, .seed = 1}});
   cv::Mat grey;
   cv::cvtColor(image, grey, cv::COLOR_BGR2GRAY);
   const double bottom_left = cv::mean(grey(cv::Rect(0, 64, 64, 64)))[0];
@@ -84,7 +86,7 @@ TEST(render, rejects_absurd_sizes_and_options) {
     EXPECT_STREQ(e.what(), "size: each side must be 1 to 32768 pixels (got 0x100)");
   }
   EXPECT_THROW(render_attractor(fern, {40000, 10}), Error);
-  EXPECT_THROW(render_measure(fern, {64, 64}, {.quality = -1}), Error);
+  EXPECT_THROW(render_measure(fern, {64, 64}, {.sampling = {.quality = -1}}), Error);
   EXPECT_THROW(render_measure(fern, {64, 64}, {.supersample = 0}), Error);
 }
 

@@ -23,8 +23,8 @@ cv::Mat photo() {
 TEST(steal_map, identity_pair_returns_the_source_exactly_with_four_maps) {
   const cv::Mat source = photo();
   const Ifs t = square_tiling(2);
-  const StealMap map =
-      compute_steal_map(t, t, source.size(), {.view = Box{0, 0, 1, 1}, .exact = true});
+  const StealMap map = compute_steal_map(t, t, source.size(),
+                                         {.sampling = {.view = Box{0, 0, 1, 1}}, .exact = true});
   EXPECT_EQ(cv::countNonZero(map.coverage), source.size().area());
   const cv::Mat out = apply(map, source);
   // Bit for bit: the descent keeps x exact, and T(x) = x to 2^-20 of the square.
@@ -34,8 +34,8 @@ TEST(steal_map, identity_pair_returns_the_source_exactly_with_four_maps) {
 TEST(steal_map, identity_pair_returns_the_source_exactly_with_nine_maps) {
   const cv::Mat source = photo();
   const Ifs t = square_tiling(3);
-  const StealMap map =
-      compute_steal_map(t, t, source.size(), {.view = Box{0, 0, 1, 1}, .exact = true});
+  const StealMap map = compute_steal_map(t, t, source.size(),
+                                         {.sampling = {.view = Box{0, 0, 1, 1}}, .exact = true});
   const cv::Mat out = apply(map, source);
   EXPECT_GE(psnr(out, source), 40);
   EXPECT_EQ(cv::norm(out, source, cv::NORM_INF), 0);
@@ -46,8 +46,9 @@ TEST(steal_map, identity_pair_by_chaos_game_is_within_half_a_pixel) {
   for (int k : {2, 3}) {
     const Ifs t = square_tiling(k);
     StealMapStats stats;
-    const StealMap map =
-        compute_steal_map(t, t, source.size(), {.view = Box{0, 0, 1, 1}, .quality = 16}, &stats);
+    const StealMap map = compute_steal_map(
+        t, t, source.size(), {.sampling = {.view = Box{0, 0, 1, 1}, .quality = 16}, .exact = false},
+        &stats);
     EXPECT_EQ(cv::countNonZero(map.coverage), source.size().area()) << k * k << " maps";
     EXPECT_GT(stats.hit, 0.99);
     EXPECT_GE(psnr(apply(map, source), source), 27) << k * k << " maps";

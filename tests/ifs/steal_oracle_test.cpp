@@ -21,7 +21,8 @@ void expect_conjugacy(bool exact, double tolerance_pixels) {
   for (auto& g : G.maps) g = L.compose(g).compose(*L.inverse());
   const cv::Size size(256, 256);
   const Box view{0, 0, 1, 1};
-  const StealMap map = compute_steal_map(F, G, size, {.view = view, .exact = exact, .quality = 16});
+  const StealMap map =
+      compute_steal_map(F, G, size, {.sampling = {.view = view, .quality = 16}, .exact = exact});
   const Viewport vp{view, size};
   const double source = 512;  // the tolerance is in pixels of a 512×512 source
   double worst = 0;
@@ -55,7 +56,7 @@ TEST(steal_map, salem_pair_gives_salem_values_at_dyadic_points) {
   G.maps = {{a, 0, 0, 0.5, 0, 0.25}, {1 - a, 0, 0, 0.5, a, 0.25}};
   // Nine pixels whose centres are x = 0, 1/8, …, 1 on y = 1/2.
   const Box view{-1.0 / 16, 0.25, 1 + 1.0 / 16, 0.75};
-  const StealMap map = compute_steal_map(F, G, {9, 1}, {.view = view, .exact = true});
+  const StealMap map = compute_steal_map(F, G, {9, 1}, {.sampling = {.view = view}, .exact = true});
   const auto T = [&](int eighths) {
     EXPECT_NE(map.coverage.at<std::uint8_t>(0, eighths), 0) << eighths << "/8";
     return map.source_uv.at<cv::Vec2f>(0, eighths)[0];
@@ -82,21 +83,26 @@ TEST(steal_map, colouring_with_another_number_of_maps_is_refused) {
 TEST(steal_map, same_seed_gives_the_same_map_for_any_thread_count) {
   const Ifs F = testing::fern();
   const Ifs G = default_colouring(4);
-  const StealMap one = compute_steal_map(F, G, {200, 160}, {.quality = 8, .threads = 1});
-  const StealMap two = compute_steal_map(F, G, {200, 160}, {.quality = 8, .threads = 2});
-  const StealMap five = compute_steal_map(F, G, {200, 160}, {.quality = 8, .threads = 5});
+  const StealMap one = compute_steal_map(
+      F, G, {200, 160}, {.sampling = {.quality = 8, .threads = 1}, .exact = false});
+  const StealMap two = compute_steal_map(
+      F, G, {200, 160}, {.sampling = {.quality = 8, .threads = 2}, .exact = false});
+  const StealMap five = compute_steal_map(
+      F, G, {200, 160}, {.sampling = {.quality = 8, .threads = 5}, .exact = false});
   EXPECT_EQ(cv::norm(one.source_uv, two.source_uv, cv::NORM_INF), 0);
   EXPECT_EQ(cv::norm(one.source_uv, five.source_uv, cv::NORM_INF), 0);
   EXPECT_EQ(cv::norm(one.coverage, five.coverage, cv::NORM_INF), 0);
-  const StealMap e1 = compute_steal_map(F, G, {200, 160}, {.exact = true, .threads = 1});
-  const StealMap e2 = compute_steal_map(F, G, {200, 160}, {.exact = true, .threads = 2});
+  const StealMap e1 =
+      compute_steal_map(F, G, {200, 160}, {.sampling = {.threads = 1}, .exact = true});
+  const StealMap e2 =
+      compute_steal_map(F, G, {200, 160}, {.sampling = {.threads = 2}, .exact = true});
   EXPECT_EQ(cv::norm(e1.source_uv, e2.source_uv, cv::NORM_INF), 0);
 }
 
 TEST(steal_map, chaos_game_reports_its_coverage) {
   StealMapStats stats;
-  const StealMap map =
-      compute_steal_map(testing::fern(), default_colouring(4), {256, 256}, {.quality = 16}, &stats);
+  const StealMap map = compute_steal_map(testing::fern(), default_colouring(4), {256, 256},
+                                         {.sampling = {.quality = 16}, .exact = false}, &stats);
   EXPECT_GT(stats.points, 16u * 256 * 256 - 1);
   EXPECT_GE(stats.rounds, 1);
   EXPECT_GT(stats.hit, 0.05);

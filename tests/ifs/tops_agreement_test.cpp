@@ -12,7 +12,7 @@ namespace {
 
 double agreement(const Ifs& F) {
   const cv::Size size(512, 512);
-  const TopSymbols chaos = top_symbols(F, size, {.quality = 16});
+  const TopSymbols chaos = top_symbols(F, size, {.sampling = {.quality = 16}, .exact = false});
   const TopSymbols exact = top_symbols(F, size, {.exact = true});
   EXPECT_EQ(chaos.view, exact.view);
   int both = 0, same = 0;

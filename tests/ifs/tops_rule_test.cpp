@@ -26,7 +26,8 @@ void expect_split(bool exact, bool reversed, double split) {
   if (reversed) std::reverse(F.maps.begin(), F.maps.end());
   const cv::Size size(100, 100);
   const Box view{0, 0, 1, 1};
-  const TopSymbols tops = top_symbols(F, size, {.view = view, .exact = exact, .quality = 16});
+  const TopSymbols tops =
+      top_symbols(F, size, {.sampling = {.view = view, .quality = 16}, .exact = exact});
   const Viewport vp{view, size};
   int wrong = 0, checked = 0;
   for (int r = 0; r < size.height; ++r)
@@ -61,7 +62,7 @@ TEST(tops, second_symbol_subdivides_the_top_piece) {
   const Ifs F = testing::corners(0.6);
   const cv::Size size(100, 100);
   const Box view{0, 0, 1, 1};
-  const TopSymbols tops = top_symbols(F, size, {.view = view, .exact = true});
+  const TopSymbols tops = top_symbols(F, size, {.sampling = {.view = view}, .exact = true});
   const Viewport vp{view, size};
   for (int r = 0; r < size.height; ++r)
     for (int c = 0; c < size.width; ++c) {
@@ -76,7 +77,8 @@ TEST(tops, second_symbol_subdivides_the_top_piece) {
 TEST(tops, render_colours_pieces_by_first_symbol_and_leaves_the_background_transparent) {
   Ifs F = testing::corners(0.45);  // pieces apart: gaps between them
   F.colours = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 1, 1}};
-  const cv::Mat image = render_tops(F, {64, 64}, {.view = Box{0, 0, 1, 1}, .exact = true});
+  const cv::Mat image =
+      render_tops(F, {64, 64}, {.sampling = {.view = Box{0, 0, 1, 1}}, .exact = true});
   ASSERT_EQ(image.type(), CV_32FC4);
   EXPECT_EQ(image.at<cv::Vec4f>(63, 0), cv::Vec4f(0, 0, 1, 1));   // bottom-left: map 0, red
   EXPECT_EQ(image.at<cv::Vec4f>(63, 63), cv::Vec4f(0, 1, 0, 1));  // bottom-right: map 1, green

@@ -71,7 +71,8 @@ TEST(buffers, one_ifs_gives_its_attractor_for_every_v) {
   const cv::Size size{192, 192};
   cv::Mat reference;
   for (int v_count : {1, 3, 7}) {
-    Buffers k(s, size, {.count = v_count, .seed = static_cast<std::uint64_t>(v_count)});
+    Buffers k(s, size,
+              {.count = v_count, .sampling = {.seed = static_cast<std::uint64_t>(v_count)}});
     if (reference.empty()) reference = reference_attractor(s.ifs[0], k.viewport(), k.dilation());
     k.set_masks(varied_starts(size, v_count));
     k.run(default_steps(s, size));
@@ -80,7 +81,7 @@ TEST(buffers, one_ifs_gives_its_attractor_for_every_v) {
     // Independent of the raster iteration: every chaos-game point lies in the set (nothing
     // eroded), and the set is the fattened attractor, not much more.
     RenderOptions chaos;
-    chaos.view = k.viewport().view;
+    chaos.sampling.view = k.viewport().view;
     const cv::Mat points = render_attractor(s.ifs[0], size, chaos);
     cv::Mat inside;
     cv::bitwise_and(points, k.mask(0), inside);
@@ -114,7 +115,7 @@ double contained(const cv::Mat& part, const cv::Mat& whole) {
 TEST(buffers, with_one_buffer_every_piece_is_an_image_of_the_previous_buffer) {
   const SuperIfs s = paper_fig4();
   const cv::Size size{256, 256};
-  Buffers k(s, size, {.count = 1, .seed = 5});
+  Buffers k(s, size, {.count = 1, .sampling = {.seed = 5}});
   k.run(6);
   for (int step = 0; step < 4; ++step) {
     const cv::Mat before = k.mask(0).clone();
@@ -172,7 +173,7 @@ TEST(buffers, at_most_v_distinct_sub_shapes_at_the_first_level) {
   const SuperIfs s = paper_fig4();
   const cv::Size size{384, 384};
   constexpr int v_count = 3, cells = 24;
-  Buffers k(s, size, {.count = v_count, .seed = 11});
+  Buffers k(s, size, {.count = v_count, .sampling = {.seed = 11}});
   k.run(default_steps(s, size));
   std::vector<cv::Mat> before;
   for (std::size_t v = 0; v < k.count(); ++v)
@@ -199,8 +200,8 @@ TEST(buffers, at_most_v_distinct_sub_shapes_at_the_first_level) {
 TEST(buffers, burn_in_forgets_the_starting_buffers) {
   const SuperIfs s = paper_fig4();
   const cv::Size size{256, 256};
-  Buffers full(s, size, {.count = 3, .seed = 21});
-  Buffers disc(s, size, {.count = 3, .seed = 21});
+  Buffers full(s, size, {.count = 3, .sampling = {.seed = 21}});
+  Buffers disc(s, size, {.count = 3, .sampling = {.seed = 21}});
   cv::Mat small(size, CV_8UC1, cv::Scalar(0));
   cv::circle(small, {100, 140}, 6, 255, -1);
   disc.set_masks({small, small, small});
@@ -214,7 +215,7 @@ TEST(buffers, thread_count_does_not_change_pixels) {
   const cv::Size size{200, 150};
   std::vector<std::vector<cv::Mat>> results;
   for (int threads : {1, 2, 3}) {
-    Buffers k(s, size, {.count = 4, .seed = 9, .threads = threads, .density = true});
+    Buffers k(s, size, {.count = 4, .sampling = {.seed = 9, .threads = threads}, .density = true});
     k.run(9);
     std::vector<cv::Mat> r;
     for (std::size_t v = 0; v < k.count(); ++v) r.push_back(k.mask(v)), r.push_back(k.density(v));
@@ -227,8 +228,8 @@ TEST(buffers, thread_count_does_not_change_pixels) {
 
 TEST(buffers, the_seed_decides_the_texture) {
   const SuperIfs s = paper_fig4();
-  Buffers a(s, {128, 128}, {.count = 3, .seed = 1});
-  Buffers b(s, {128, 128}, {.count = 3, .seed = 2});
+  Buffers a(s, {128, 128}, {.count = 3, .sampling = {.seed = 1}});
+  Buffers b(s, {128, 128}, {.count = 3, .sampling = {.seed = 2}});
   a.run(10);
   b.run(10);
   double worst = 1;
@@ -240,7 +241,7 @@ TEST(buffers, density_is_a_probability_on_the_set_with_the_self_similar_weights)
   SuperIfs s;
   s.ifs = {sierpinski_triangle()};
   const cv::Size size{256, 256};
-  Buffers k(s, size, {.count = 2, .seed = 3, .density = true});
+  Buffers k(s, size, {.count = 2, .sampling = {.seed = 3}, .density = true});
   k.run(default_steps(s, size));
   const cv::Mat& rho = k.density(0);
   EXPECT_NEAR(cv::sum(rho)[0], 1.0, 1e-4);
@@ -270,7 +271,7 @@ TEST(buffers, colour_mass_carries_the_palette_coordinate_of_the_addresses) {
   s.ifs = {testing::square_grid(2)};
   s.view = Box{0, 0, 1, 1};
   const cv::Size size{64, 64};
-  Buffers k(s, size, {.count = 1, .seed = 4, .density = true});
+  Buffers k(s, size, {.count = 1, .sampling = {.seed = 4}, .density = true});
   k.run(16);
   const cv::Mat& rho = k.density(0);
   const cv::Mat& colour = k.colour_mass(0);
@@ -290,7 +291,7 @@ TEST(buffers, rejects_bad_arguments) {
   const SuperIfs s = paper_fig4();
   EXPECT_THROW(Buffers(s, {64, 64}, {.count = 0}), Error);
   EXPECT_THROW(Buffers(s, {0, 64}), Error);
-  EXPECT_THROW(Buffers(s, {64, 64}, {.threads = -1}), Error);
+  EXPECT_THROW(Buffers(s, {64, 64}, {.sampling = {.threads = -1}}), Error);
   Buffers k(s, {64, 64});
   EXPECT_THROW(k.set_masks({cv::Mat(64, 64, CV_8UC1)}), Error);  // V = 3 needs three
   k.step();

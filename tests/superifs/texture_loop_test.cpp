@@ -46,8 +46,9 @@ TEST_P(texture_loop, stepping_on_from_the_last_texture_gives_the_first_exactly) 
   const SuperIfs super = load_superifs(c.preset).super;
   const cv::Size size{96, 80};
   const std::int64_t n = 6;
-  TextureSequence seq(super, size,
-                      {.mode = c.mode, .source = noise_image({64, 64}, 3), .seed = 11, .loop = n});
+  TextureSequence seq(
+      super, size,
+      {.sampling = {.seed = 11}, .mode = c.mode, .source = noise_image({64, 64}, 3), .loop = n});
   ASSERT_TRUE(seq.loop_closed());
   std::vector<cv::Mat> frames;
   for (std::int64_t k = 0; k < n; ++k) frames.push_back(seq.frame_at(k).clone());
@@ -98,7 +99,8 @@ INSTANTIATE_TEST_SUITE_P(every_mode, texture_loop,
 TEST(texture_loop_measure, the_measure_comes_back_to_within_its_rounding) {
   const SuperIfs super = load_superifs("carpet-lace").super;
   const std::int64_t n = 4;
-  TextureSequence seq(super, {96, 96}, {.mode = TextureMode::measure, .seed = 2, .loop = n});
+  TextureSequence seq(super, {96, 96},
+                      {.sampling = {.seed = 2}, .mode = TextureMode::measure, .loop = n});
   ASSERT_TRUE(seq.loop_closed());
   const cv::Mat first = seq.frame_at(0).clone();
   (void)seq.frame_at(n - 1);
@@ -112,7 +114,7 @@ TEST(texture_loop_measure, the_measure_comes_back_to_within_its_rounding) {
 }
 
 TEST(texture_loop_choices, a_periodic_stream_repeats_its_choices) {
-  Buffers k(paper_fig4(), {32, 32}, {.count = 3, .seed = 5, .period = 3});
+  Buffers k(paper_fig4(), {32, 32}, {.count = 3, .sampling = {.seed = 5}, .period = 3});
   std::vector<StepChoices> seen;
   for (int i = 0; i < 7; ++i) {
     k.step();
@@ -130,8 +132,9 @@ TEST(texture_loop_choices, a_loop_does_not_depend_on_the_thread_count) {
   const SuperIfs super = load_superifs("carpet-lace").super;
   std::vector<cv::Mat> frames;
   for (int threads : {1, 2, 3}) {
-    TextureSequence seq(super, {80, 64},
-                        {.mode = TextureMode::tops, .seed = 4, .threads = threads, .loop = 5});
+    TextureSequence seq(
+        super, {80, 64},
+        {.sampling = {.seed = 4, .threads = threads}, .mode = TextureMode::tops, .loop = 5});
     frames.push_back(seq.frame_at(3).clone());
   }
   EXPECT_TRUE(testing::same_bytes(frames[0], frames[1]));

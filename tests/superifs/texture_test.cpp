@@ -46,7 +46,7 @@ Ifs turned_quadrants() {
 }
 
 void expect_identity(const SuperIfs& s, cv::Size size) {
-  Buffers k(s, size, {.count = 3, .seed = 4, .history = 10});
+  Buffers k(s, size, {.count = 3, .sampling = {.seed = 4}, .history = 10});
   k.run(12);
   const StealMap map = steal_map(k, 1);
   ASSERT_EQ(cv::countNonZero(map.coverage), size.area());
@@ -149,11 +149,12 @@ TEST(texture, every_mode_gives_the_same_bytes_for_any_thread_count) {
     const SuperIfs s = load_superifs(c.preset).super;
     for (TextureMode mode :
          {TextureMode::attractor, TextureMode::tops, TextureMode::steal, TextureMode::measure}) {
-      TextureOptions o{.count = 3, .mode = mode, .source = source, .seed = c.seed, .threads = 1};
+      TextureOptions o{
+          .sampling = {.seed = c.seed, .threads = 1}, .count = 3, .mode = mode, .source = source};
       const cv::Mat one = render_texture(s, c.size, o);
       ASSERT_FALSE(one.empty());
       for (int threads : {2, 3, 5}) {
-        o.threads = threads;
+        o.sampling.threads = threads;
         EXPECT_TRUE(testing::same_bytes(one, render_texture(s, c.size, o)))
             << c.preset << " in mode " << to_string(mode) << ": 1 thread vs " << threads;
       }
@@ -164,7 +165,7 @@ TEST(texture, every_mode_gives_the_same_bytes_for_any_thread_count) {
 TEST(texture, modes_cover_the_set_and_only_the_set) {
   const SuperIfs s = paper_fig4();
   const cv::Size size{128, 128};
-  const TextureOptions base{.count = 3, .seed = 2};
+  const TextureOptions base{.sampling = {.seed = 2}, .count = 3};
   const cv::Mat set = render_texture(s, size, base);
   ASSERT_EQ(set.type(), CV_8UC1);
   for (auto mode : {TextureMode::tops, TextureMode::measure, TextureMode::steal}) {
@@ -184,7 +185,8 @@ TEST(texture, modes_cover_the_set_and_only_the_set) {
 
 TEST(texture, every_step_of_a_sequence_is_a_new_texture) {
   const SuperIfs s = paper_fig4();
-  TextureSequence seq(s, {128, 128}, {.count = 3, .mode = TextureMode::tops, .seed = 5});
+  TextureSequence seq(s, {128, 128},
+                      {.sampling = {.seed = 5}, .count = 3, .mode = TextureMode::tops});
   EXPECT_EQ(seq.burn_in(), default_steps(s, {128, 128}));
   std::vector<cv::Mat> masks;
   for (int i = 0; i < 6; ++i) masks.push_back(seq.next_map().coverage);
@@ -195,7 +197,7 @@ TEST(texture, every_step_of_a_sequence_is_a_new_texture) {
 
 TEST(texture, map_at_is_a_function_of_the_step) {
   const SuperIfs s = paper_fig4();
-  const TextureOptions o{.count = 3, .mode = TextureMode::steal, .seed = 6};
+  const TextureOptions o{.sampling = {.seed = 6}, .count = 3, .mode = TextureMode::steal};
   TextureSequence a(s, {64, 64}, o), b(s, {64, 64}, o);
   const StealMap a1 = a.map_at(1), a3 = a.map_at(3);
   const StealMap a2 = a.map_at(2);  // stepped past, but kept
@@ -214,7 +216,7 @@ TEST(texture, map_at_is_a_function_of_the_step) {
 
 TEST(texture, frames_asked_for_in_reverse_order_are_the_frames_in_order) {
   const SuperIfs s = paper_fig4();
-  const TextureOptions o{.count = 2, .mode = TextureMode::tops, .seed = 4};
+  const TextureOptions o{.sampling = {.seed = 4}, .count = 2, .mode = TextureMode::tops};
   TextureSequence forward(s, {48, 48}, o), backward(s, {48, 48}, o);
   std::vector<cv::Mat> frames;
   for (int j = 0; j < 14; ++j) frames.push_back(forward.frame_at(position_of_frame(j, 2)).clone());
@@ -270,14 +272,33 @@ using testing::interrupted;
 TEST(texture, a_stop_request_ends_the_burn_in_the_steps_and_the_descent) {
   std::atomic<bool> stop{true};
   EXPECT_TRUE(interrupted([&] {
-    TextureSequence(paper_fig4(), {64, 64}, {.steps = 4, .cancel = CancelToken(&stop)});
+    TextureSequence(paper_fig4(), {64, 64},
+                    {.sampling = {.cancel = CancelToken(&stop)}, .steps = 4});
   }));
   stop = false;
-  TextureSequence seq(paper_fig4(), {64, 64},
-                      {.steps = 4, .mode = TextureMode::steal, .cancel = CancelToken(&stop)});
+  TextureSequence seq(
+      paper_fig4(), {64, 64},
+      {.sampling = {.cancel = CancelToken(&stop)}, .steps = 4, .mode = TextureMode::steal});
   stop = true;
   EXPECT_TRUE(interrupted([&] { seq.step(); }));
   EXPECT_TRUE(interrupted([&] { seq.steal_map(); }));
+}
+
+// Textures sample as every other picture: the same defaults, and a view given in the options
+// wins over the superIFS's own (and over the framing of one that has none).
+TEST(texture, sampling_defaults_and_the_view) {
+  EXPECT_EQ(TextureOptions{}.sampling, Sampling{});
+  EXPECT_EQ(BufferOptions{}.sampling, Sampling{});
+  SuperIfs s;
+  s.ifs = {testing::square_grid(2)};
+  const cv::Size size{32, 32};
+  EXPECT_EQ(buffer_view(s, size), fit_view(attractor_bounds(union_ifs(s)), size, 0.05));
+  s.view = Box{0, 0, 1, 1};
+  EXPECT_EQ(buffer_view(s, size), (Box{0, 0, 1, 1}));
+  EXPECT_EQ(buffer_view(s, size, {.view = Box{0, 0, 2, 2}}), (Box{0, 0, 2, 2}));
+  const Buffers k(s, size, {.count = 1, .sampling = {.view = Box{0, 0, 2, 2}}});
+  EXPECT_EQ(k.viewport().view, (Box{0, 0, 2, 2}));
+  EXPECT_THROW(Buffers(s, size, {.sampling = {.view = Box{1, 0, 0, 1}}}), Error);
 }
 
 }  // namespace

@@ -25,8 +25,9 @@ struct Fixture {
     frame.create(size, CV_8UC3);
     cv::randu(frame, 0, 256);
     options.drift = {.amount = 0.2, .speed = 1, .seed = 3};
-    options.map.quality = 8;
-    options.map.threads = 1;
+    options.map.sampling.quality = 8;
+    options.map.sampling.threads = 1;
+    options.map.exact = false;  // the chaos game's map
     options.fade_frames = 4;
   }
 };
@@ -35,7 +36,8 @@ TEST(camera_drift, the_first_frame_shows_the_map_of_time_zero) {
   const Fixture x;
   LiveDrift live(x.F, x.G, x.size, x.options);
   StealMapOptions map = x.options.map;
-  map.view = fit_view(attractor_bounds(x.F, map.seed), x.size, map.margin);
+  map.sampling.view =
+      fit_view(attractor_bounds(x.F, map.sampling.seed), x.size, map.sampling.margin);
   const PreparedStealMap table =
       prepare_filter(compute_steal_map(drift(x.F, 0, x.options.drift), x.G, x.size, map), x.size);
   const cv::Mat got = live.filter(x.frame, 0.5);
@@ -59,7 +61,8 @@ TEST(camera_drift, new_maps_arrive_from_the_worker_without_waiting) {
   for (int i = 0; i < x.options.fade_frames; ++i) now = live.filter(x.frame, t);
 
   StealMapOptions map = x.options.map;
-  map.view = fit_view(attractor_bounds(x.F, map.seed), x.size, map.margin);
+  map.sampling.view =
+      fit_view(attractor_bounds(x.F, map.sampling.seed), x.size, map.sampling.margin);
   const cv::Mat drifted = filter_frame(
       x.frame,
       prepare_filter(compute_steal_map(drift(x.F, t, x.options.drift), x.G, x.size, map), x.size));

@@ -60,7 +60,7 @@ FractalSettings drift_loop() {
   s.drift_speed = 0.5;
   s.keyframe_interval = 4;
   s.loop = 24;
-  s.seed = 5;
+  s.sampling.seed = 5;
   return s;
 }
 
@@ -80,7 +80,7 @@ TEST(fractal_engine_loop, superifs_frame_N_is_frame_0_and_the_last_step_is_like_
   s.superifs = "carpet-lace";
   s.keyframe_interval = 3;
   s.loop = 12;
-  s.seed = 4;
+  s.sampling.seed = 4;
   expect_a_seamless_loop(s, 12, 0.5);
 }
 

@@ -24,13 +24,13 @@ using testing::test_frame;
 FractalSettings drifting() {
   FractalSettings s;
   s.preset = "sierpinski-triangle";
-  s.quality = 4;
+  s.sampling.quality = 4;
   s.animate = Animate::drift;
   s.drift_amount = 0.3;
   s.drift_speed = 2;
   s.keyframe_interval = 3;
-  s.seed = 5;
-  s.threads = 2;
+  s.sampling.seed = 5;
+  s.sampling.threads = 2;
   return s;
 }
 
@@ -67,7 +67,7 @@ TEST(fractal_engine, superifs_keyframes_are_a_function_of_the_frame_number) {
   s.animate = Animate::superifs;
   s.keyframe_interval = 2;
   s.buffers = 2;
-  s.seed = 3;
+  s.sampling.seed = 3;
   const cv::Size size{40, 40};
   FractalEngine forward(s, size), backward(s, size);
   std::vector<cv::Mat> frames;
@@ -84,17 +84,27 @@ TEST(fractal_engine, mix_and_background_change_without_new_maps) {
   b.mix = 0.5;
   b.background = parse_background("original");
   EXPECT_TRUE(same_maps(a, b));
-  b.seed = 2;
+  b.sampling.seed = 2;
   EXPECT_FALSE(same_maps(a, b));
 
   const cv::Size size{50, 30};
   const cv::Mat frame = test_frame(size, 0);
   FractalEngine engine(a, size);
   engine.set_look(0.5, parse_background("original"));
-  b.seed = 1;
+  b.sampling.seed = 1;
   EXPECT_EQ(
       cv::norm(engine.filter(frame, 0), FractalEngine(b, size).filter(frame, 0), cv::NORM_INF), 0);
   EXPECT_THROW(engine.set_look(1.5, {}), Error);
+}
+
+// The filter samples as `ifsfx render` does: the library's sampling defaults, the exact descent.
+TEST(fractal_engine, settings_default_to_the_library_sampling) {
+  const FractalSettings s;
+  EXPECT_EQ(s.sampling, Sampling{});
+  EXPECT_EQ(s.exact, StealMapOptions{}.exact);
+  const FractalEngine engine(s);
+  EXPECT_EQ(engine.map_options().sampling, Sampling{});
+  EXPECT_TRUE(engine.map_options().exact);
 }
 
 TEST(fractal_engine, bad_settings_fail_before_any_frame) {
@@ -146,16 +156,16 @@ TEST(fractal_engine, a_stop_request_ends_every_map_build) {
   FractalSettings fixed;
   fixed.preset = "maple-leaf";
   fixed.exact = false;  // the chaos game's map
-  fixed.cancel = CancelToken(&stop);
+  fixed.sampling.cancel = CancelToken(&stop);
   EXPECT_TRUE(interrupted([&] { FractalEngine engine(fixed, size); }));
   FractalSettings exact = fixed;
   exact.exact = true;
   EXPECT_TRUE(interrupted([&] { FractalEngine engine(exact, size); }));
   FractalSettings framed = drifting();  // the drift's framing from the attractor's bounds
-  framed.cancel = fixed.cancel;
+  framed.sampling.cancel = fixed.sampling.cancel;
   EXPECT_TRUE(interrupted([&] { FractalEngine engine(framed, size); }));
   FractalSettings viewed = framed;  // a given view: the keyframes, built on worker threads
-  viewed.view = Box{-1, -1, 1, 1};
+  viewed.sampling.view = Box{-1, -1, 1, 1};
   EXPECT_TRUE(interrupted([&] {
     FractalEngine engine(viewed, size);
     engine.filter(test_frame(size, 0), 0);
@@ -163,7 +173,7 @@ TEST(fractal_engine, a_stop_request_ends_every_map_build) {
   FractalSettings super;
   super.animate = Animate::superifs;
   super.buffers = 2;
-  super.cancel = fixed.cancel;
+  super.sampling.cancel = fixed.sampling.cancel;
   EXPECT_TRUE(interrupted([&] { FractalEngine engine(super, size); }));
   // Without a request the same settings make frames.
   stop = false;

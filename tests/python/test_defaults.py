@@ -1,0 +1,44 @@
+# SPDX-License-Identifier: Apache-2.0
+# One set of sampling defaults through every door: the module's keyword defaults are those the
+# command line shows in `ifsfx render --help` and `ifsfx filter --help` (all read from the
+# library's Sampling and RenderOptions), and both default to the exact descent.
+import re
+
+import ifsfx
+from conftest import run_cli
+
+EXPECTED_TESTS = 2
+
+
+def help_defaults(cli, command):
+    """{flag: default} of the `--flag TYPE=DEFAULT` lines of `ifsfx COMMAND --help`."""
+    done = run_cli(cli, command, "--help")
+    assert done.returncode == 0, done.stderr
+    return {m.group(1): float(m.group(2))
+            for m in re.finditer(r"^\s+--([a-z-]+) [A-Z]+(?::[^=]*)?=([0-9.]+)", done.stdout, re.M)}
+
+
+def keyword_defaults(function):
+    """{keyword: default} of a binding, from the signature line pybind11 writes."""
+    head = function.__doc__.splitlines()[0]
+    return {m.group(1): m.group(2) for m in re.finditer(r"(\w+): [^=,]+ = ([^,)]+)", head)}
+
+
+def test_render_keywords_default_as_the_command_line(cli):
+    cli_render = help_defaults(cli, "render")
+    py = keyword_defaults(ifsfx.render)
+    for key in ("margin", "quality", "supersample", "gamma", "brightness", "seed", "threads"):
+        assert float(py[key]) == cli_render[key], key
+    assert py["exact"] == "True"
+    steal = keyword_defaults(ifsfx.steal_map)
+    for key in ("margin", "quality", "seed", "threads"):
+        assert float(steal[key]) == cli_render[key], key
+    assert steal["exact"] == "True"
+
+
+def test_filter_samples_with_the_same_defaults_as_render(cli):
+    cli_render = help_defaults(cli, "render")
+    cli_filter = help_defaults(cli, "filter")
+    for key in ("margin", "quality", "seed", "threads"):
+        assert cli_filter[key] == cli_render[key], key
+
