@@ -123,6 +123,12 @@ bad_input)
   expect "-o: --frames needs a numbered pattern like tex_%04d.png or a movie" "${common[@]}" --frames 3 -o out.png
   expect "--loop: Value -1 not in range" "${common[@]}" --loop -1 -o out.gif
   [[ -z $(ls -A | grep -v err.txt) ]] || fail "files written: $(ls -A)"
+  # A movie never replaces an input: here the GIF colours are stolen from.
+  "$ifsfx" render barnsley-fern --mode tops --size 64x64 -o source.gif -q
+  before=$(md5sum <source.gif)
+  expect "source.gif: is the same file as the input" carpet-lace --size 64x64 --mode steal \
+    --source source.gif --loop 4 -o source.gif
+  [[ $(md5sum <source.gif) == "$before" ]] || fail "the source was replaced"
   ;;
 *)
   fail "unknown case $case_name"
