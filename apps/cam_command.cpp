@@ -240,6 +240,7 @@ void run_cam(const CamArgs& args) {
   CamControls controls({.fractal = &args.fractal,
                         .fade_frames = args.fade_frames,
                         .size = granted,
+                        .fps = fps,
                         .snapshot = args.snapshot,
                         .animate = args.animate == Animate::drift},
                        recording, notice);

@@ -49,8 +49,8 @@ CamControls::CamControls(const CamControlsSetup& setup, CamRecording& recording,
       recording_(recording),
       notice_(notice),
       filter_(std::make_unique<LiveFilter>(*setup.fractal, setup.fade_frames,
-                                           setup.fractal->engine.preset, setup.size,
-                                           setup.animate)),
+                                           setup.fractal->engine.preset, setup.size, setup.animate,
+                                           setup.fps)),
       animate_(setup.animate),
       presets_(cycle_presets()) {
   for (std::size_t i = 0; i < presets_.size(); ++i) {
@@ -102,7 +102,7 @@ void CamControls::start_switch(std::size_t index) {
   pending_ = Switch{index, std::async(std::launch::async, [setup = setup_, name = presets_[index],
                                                            animate = animate_] {
                       return std::make_unique<LiveFilter>(*setup.fractal, setup.fade_frames, name,
-                                                          setup.size, animate);
+                                                          setup.size, animate, setup.fps);
                     })};
 }
 

@@ -38,6 +38,7 @@ struct CamControlsSetup {
   const FractalFilterArgs* fractal = nullptr;  // outlives the controls
   int fade_frames = 12;
   cv::Size size;         // the camera's granted frame size
+  double fps = 25;       // the camera's frame rate
   std::string snapshot;  // file pattern of the snapshots (one %d or %0Nd)
   bool animate = false;  // the drift animation on at the start
 };

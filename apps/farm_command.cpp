@@ -178,6 +178,7 @@ void run_farm_filter(const FarmArgs& args, const std::vector<std::string>& extra
     throw Error(ErrorKind::invalid_argument,
                 "farm filter: --preview, --segment and a second -o are not for farm jobs");
   const FilterArgs filter = parse_filter_options(extra);
+  check_filter_rules(filter);
   StopSignals signals;  // Ctrl-C and SIGTERM: the checks and the count stop, nothing is submitted
   // The output policy, checked before anything is planned (the join applies it again).
   OutputOptions policy{.cancel = StopSignals::token()};
@@ -248,7 +249,11 @@ void run_farm_texture(const FarmArgs& args, const std::vector<std::string>& extr
         fmt::format("--frames: the number of textures, at least 1 (got '{}')", args.frames));
   if (!video::is_sequence_pattern(args.output))
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("-o: a numbered pattern like /abs/tex_%04d.png (got {})", args.output));
+                fmt::format("-o: a numbered pattern like /abs/tex_%04d.png (got {}){}", args.output,
+                            video::is_movie_name(args.output)
+                                ? "; the shards write frames: make the movie from them, or run "
+                                  "`ifsfx texture -o MOVIE` on one machine"
+                                : ""));
   // A superIFS named by path must be seen by the nodes too; a shipped name is found anywhere.
   if (args.input.find('/') != std::string::npos) require_absolute(args.input, "SUPERPRESET");
   load_superifs(args.input);  // a bad one fails here

@@ -4,6 +4,7 @@
 #include <map>
 
 #include "apps/cli_options.h"
+#include "ifs/error.h"
 
 namespace ifsfx::app {
 
@@ -56,7 +57,8 @@ void add_filter_options(CLI::App& cmd, const std::shared_ptr<FilterArgs>& args) 
       ->option_text(choices_text(animations, "none"))
       ->group("Animation");
   cmd.add_option("--keyframe-interval", args->keyframe_interval,
-                 "Animation: frames between rebuilt maps, cross-faded in between")
+                 "Animation: frames between rebuilt maps, cross-faded in between (with --loop N: "
+                 "ceil(N / this) keyframes spread evenly over the loop)")
       ->capture_default_str()
       ->check(CLI::Range(1, 100000))
       ->group("Animation");
@@ -69,6 +71,12 @@ void add_filter_options(CLI::App& cmd, const std::shared_ptr<FilterArgs>& args) 
       ->capture_default_str()
       ->check(CLI::Range(1, 64))
       ->group("Animation");
+}
+
+void check_filter_rules(const FilterArgs& args) {
+  if (args.fractal.engine.loop > 0 && args.animate == Animate::none)
+    throw Error(ErrorKind::invalid_argument,
+                "--loop: repeats an animation; add --animate drift or --animate superifs");
 }
 
 }  // namespace ifsfx::app

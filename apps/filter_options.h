@@ -39,4 +39,8 @@ struct FilterArgs {
 // Registers the options (all but INPUT, -o, --preview, --frames, -q) on `cmd`, writing to `args`.
 void add_filter_options(CLI::App& cmd, const std::shared_ptr<FilterArgs>& args);
 
+// The rules between options that their parsing does not check and that `ifsfx farm filter` checks
+// too before it submits anything: --loop repeats an animation, so it needs --animate.
+void check_filter_rules(const FilterArgs& args);
+
 }  // namespace ifsfx::app

@@ -113,6 +113,7 @@ video::FrameRange check_filter_args(const FilterArgs& args) {
   if (movie_output) video::resolve_timing(args.output, args.codec, args.timing);
   if (args.segment && !movie_output)
     throw Error(ErrorKind::invalid_argument, "--segment: a farm segment is a movie file");
+  check_filter_rules(args);
   if (args.timing_given && !movie_output)
     throw Error(ErrorKind::invalid_argument,
                 "--fps-mode: only a movie output has frame times (got an image sequence or "

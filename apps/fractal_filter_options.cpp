@@ -6,6 +6,7 @@
 #include "apps/cli_options.h"
 #include "apps/stop_signals.h"
 #include "ifs/error.h"
+#include "superifs/texture.h"
 
 namespace ifsfx::app {
 
@@ -68,6 +69,13 @@ void add_fractal_filter_options(CLI::App& cmd, FractalFilterArgs& args) {
                  "--animate drift: cycles per second of the slowest drift")
       ->capture_default_str()
       ->check(number_in(0, video::kMaxDriftSpeed))
+      ->group(kAnimation);
+  cmd.add_option("--loop", args.engine.loop,
+                 "Animation: repeats every N frames, frame N being frame 0 again bit for bit and "
+                 "the step into it as smooth as any other (0: never): the drift is periodic "
+                 "noise, its slowest cycle a whole number of times per loop")
+      ->capture_default_str()
+      ->check(CLI::Range(std::int64_t{0}, kMaxLoop))
       ->group(kAnimation);
   cmd.add_option("--seed", args.engine.sampling.seed,
                  "Random seed: the same seed gives the same frames")

@@ -27,8 +27,8 @@ struct FractalFilterArgs {
 };
 
 // Registers --preset, --colouring, --exact/--chaos, --view, --margin, --quality, --mix and
-// --background in the help group "Fractal", --drift-amount and --drift-speed in "Animation", and
-// --seed and --threads.
+// --background in the help group "Fractal", --drift-amount, --drift-speed and --loop in
+// "Animation", and --seed and --threads.
 void add_fractal_filter_options(CLI::App& cmd, FractalFilterArgs& args);
 
 }  // namespace ifsfx::app

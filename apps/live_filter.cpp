@@ -6,11 +6,11 @@
 namespace ifsfx::app {
 
 LiveFilter::LiveFilter(const FractalFilterArgs& args, int fade_frames, const std::string& preset,
-                       cv::Size size, bool animate)
+                       cv::Size size, bool animate, double fps)
     : fade_frames_(fade_frames), size_(size) {
   video::FractalSettings settings = args.settings();
   settings.preset = preset;
-  engine_ = std::make_unique<video::FractalEngine>(settings, size);
+  engine_ = std::make_unique<video::FractalEngine>(settings, size, size, fps);
   print_warnings(engine_->warnings());
   set_animate(animate);
 }

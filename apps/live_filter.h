@@ -20,9 +20,10 @@ namespace ifsfx::app {
 class LiveFilter {
  public:
   // Computes the steal map of `preset` (a shipped name, a path, FILE.ifs:NAME) for frames of
-  // `size`, with the colouring, view and map options of `args`.
+  // `size`, with the colouring, view and map options of `args`; `fps` is the camera's rate (a
+  // --loop of N frames lasts N / fps seconds).
   LiveFilter(const FractalFilterArgs& args, int fade_frames, const std::string& preset,
-             cv::Size size, bool animate);
+             cv::Size size, bool animate, double fps = 25);
 
   const std::string& name() const { return engine_->name(); }
   bool animated() const { return drift_ != nullptr; }

@@ -28,10 +28,17 @@ namespace {
 void run_texture(const TextureArgs& args) {
   StopSignals signals;
   const TextureOutcome out = write_textures(args, {.cancel = StopSignals::token()});
+  if (!out.loop_closed && !args.quiet)
+    fmt::print(stderr,
+               "ifsfx: note: the buffers did not come back to themselves within {} steps: the "
+               "loop repeats, but its last step is not a V-variable step (another --seed may "
+               "close)\n",
+               out.burn_in);
   if (!args.quiet)
-    fmt::print("{} ({}, V = {}, {}x{}): {} steps, {} frame{} in {:.3f} s -> {}\n", out.name,
+    fmt::print("{} ({}, V = {}, {}x{}): {} steps, {} frame{} in {:.3f} s{} -> {}\n", out.name,
                to_string(args.mode), args.count, out.size.width, out.size.height, out.steps_done,
-               args.frames, args.frames == 1 ? "" : "s", out.seconds, args.output);
+               out.frames, out.frames == 1 ? "" : "s", out.seconds,
+               args.loop > 0 ? fmt::format(" (a loop of {})", args.loop) : "", args.output);
 }
 
 }  // namespace

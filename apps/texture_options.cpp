@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "apps/cli_options.h"
+#include "apps/texture_movie.h"
 #include "ifs/error.h"
 
 namespace ifsfx::app {
@@ -44,6 +45,20 @@ void add_texture_options(CLI::App& cmd, const std::shared_ptr<TextureArgs>& args
       ->check(CLI::IsMember({8, 16}));
   cmd.add_flag("-q,--quiet", args->quiet, "Do not print the summary line");
   add_seamless_options(cmd, args->tiles);
+  // Loops in time and movie output (docs/loops.md).
+  cmd.add_option("--loop", args->loop,
+                 "A loop of N frames (--frames defaults to N): frame N is frame 0 again, bit for "
+                 "bit, the superIFS choices periodic and the buffers closed, so the last frame "
+                 "flows into the first; ceil(N / --crossfade) textures spread evenly (0: none)")
+      ->capture_default_str()
+      ->check(CLI::Range(std::int64_t{0}, kMaxLoop));
+  cmd.add_option("--fps", args->fps, "Frame rate of a movie output")
+      ->capture_default_str()
+      ->check(number_in(0, 1000, true))
+      ->each([args](const std::string&) { args->fps_given = true; });
+  cmd.add_option("--codec", args->codec,
+                 "Video encoder of a movie output (default by container: .mp4/.mkv H.264, .webm "
+                 "VP9, .gif GIF, .webp animated WebP; ffv1 in .mkv is lossless)");
 }
 
 cv::Size check_texture_args(const TextureArgs& args) {
@@ -61,6 +76,11 @@ cv::Size check_texture_args(const TextureArgs& args) {
   if (args.mode == TextureMode::steal && args.source.empty())
     throw Error(ErrorKind::invalid_argument,
                 "--source: steal mode needs a source image to steal colours from");
+  if ((args.fps_given || !args.codec.empty()) && !writes_texture_movie(args))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: only a movie output (.mp4, .webm, .gif, .webp, ...) is encoded "
+                            "(got {})",
+                            args.fps_given ? "--fps" : "--codec", args.output));
   return size;
 }
 

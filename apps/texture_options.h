@@ -32,6 +32,11 @@ struct TextureArgs {
   int bits = 8;
   bool quiet = false;
   SeamlessArgs tiles;  // --seamless, --tiles, --tile-offset (apps/seamless_options.h)
+  // Loops and movies (docs/loops.md): frames in a loop (0 = none); a movie's rate and encoder.
+  std::int64_t loop = 0;
+  double fps = 25;
+  bool fps_given = false;
+  std::string codec;
 };
 
 // Registers the options (all but SUPERPRESET, -o, --frames and --frame-range) on `cmd`, writing
@@ -39,7 +44,8 @@ struct TextureArgs {
 void add_texture_options(CLI::App& cmd, const std::shared_ptr<TextureArgs>& args);
 
 // The rules between options that their parsing does not check (the size, the counts, the buffer
-// against V, steal mode's source), each failing with the option's name; returns the size.
+// against V, steal mode's source, a movie's --fps and --codec), each failing with the option's
+// name; returns the size.
 cv::Size check_texture_args(const TextureArgs& args);
 
 }  // namespace ifsfx::app

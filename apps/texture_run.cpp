@@ -11,6 +11,7 @@
 
 #include "apps/cli_options.h"
 #include "apps/seamless_options.h"
+#include "apps/texture_movie.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "superifs/superifs_file.h"
@@ -21,14 +22,22 @@
 namespace ifsfx::app {
 
 TextureOutcome write_textures(const TextureArgs& args, const TextureRun& run) {
-  const cv::Size size = check_texture_args(args);
-  // A numbered pattern (tex_%04d.png) numbers the frames from 1, also a single one.
+  cv::Size size = check_texture_args(args);
+  // A numbered pattern (tex_%04d.png) numbers the frames from 1, also a single one; a movie
+  // (.mp4, .webm, .gif, .webp, ...) holds them all (apps/texture_movie.h).
   video::check_output_name(args.output);
   const bool numbered = video::is_sequence_pattern(args.output);
-  if (args.frames > 1 && !numbered)
+  const bool movie = writes_texture_movie(args);
+  if (args.frames > 1 && !numbered && !movie)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("-o: --frames needs a numbered pattern like tex_%04d.png (got {})",
+                fmt::format("-o: --frames needs a numbered pattern like tex_%04d.png or a movie "
+                            "(.mp4, .webm, .gif, .webp, ...) (got {})",
                             args.output));
+  // A loop of L frames shows ⌈L / K⌉ textures, each K frames or a little less (ifs/timeline.h).
+  const auto position_of = [&](std::int64_t frame) {
+    return args.loop > 0 ? position_in_loop(frame, args.crossfade, args.loop)
+                         : position_of_frame(frame, args.crossfade);
+  };
   const auto path_of = [&](int frame) -> std::filesystem::path {
     return numbered ? video::sequence_path(args.output, frame + 1)
                     : std::filesystem::path(args.output);
@@ -44,8 +53,12 @@ TextureOutcome write_textures(const TextureArgs& args, const TextureRun& run) {
   OutputOptions output{.inputs = run.inputs, .cancel = run.cancel};
   add_preset_input(output.inputs, args.preset);
   output.inputs.add(args.source);
-  if (first <= last) check_writable_image(path_of(first), output, args.bits);
-  for (int frame = first + 1; frame <= last; ++frame) check_output(path_of(frame), output);
+  if (movie) {
+    size = check_texture_movie(args, size, output);
+  } else {
+    if (first <= last) check_writable_image(path_of(first), output, args.bits);
+    for (int frame = first + 1; frame <= last; ++frame) check_output(path_of(frame), output);
+  }
   const SuperIfsPreset preset = load_superifs(args.preset);
   // --seamless: the buffers on the torus of the tile (the preset's [seamless] view, else its view,
   // else the union attractor framed with no margin), laid out as --tiles and --tile-offset say.
@@ -62,6 +75,7 @@ TextureOutcome write_textures(const TextureArgs& args, const TextureRun& run) {
     options.sampling.margin = 0;
     if (preset.seamless) options.sampling.view = preset.seamless->view;
   }
+  options.loop = args.loop > 0 ? steps_in_loop(args.loop, args.crossfade) : 0;
   if (!args.source.empty()) options.source = read_image(args.source).pixels;
 
   const auto start = std::chrono::steady_clock::now();
@@ -81,6 +95,12 @@ TextureOutcome write_textures(const TextureArgs& args, const TextureRun& run) {
         {"ImageDescription", fmt::format("ifsfx texture {} -V {} --mode {} --seed {} --steps {}",
                                          name, args.count, to_string(args.mode), args.seed, step)},
     };
+    if (args.loop > 0) {  // the loop's burn-in is its own: --steps does not say which texture
+      write.metadata.back().second =
+          fmt::format("ifsfx texture {} -V {} --mode {} --seed {} --loop {} --crossfade {}", name,
+                      args.count, to_string(args.mode), args.seed, args.loop, args.crossfade);
+      write.metadata.emplace_back("ifsfx:loop", std::to_string(args.loop));
+    }
     if (args.tiles.seamless)
       for (auto& entry : seamless_metadata(textures.buffers().viewport().view, layout))
         write.metadata.push_back(entry);
@@ -90,9 +110,17 @@ TextureOutcome write_textures(const TextureArgs& args, const TextureRun& run) {
   // Frame j shows step s = j / K of the sequence crossfaded towards step s + 1 by (j mod K) / K.
   // The frames are written to temporary files and put in place together at the end: a run that
   // fails or is stopped leaves every existing frame file as it was.
+  TextureOutcome out;
+  out.name = name;
+  out.burn_in = textures.burn_in();
+  out.loop_closed = args.loop == 0 || textures.loop_closed();
+  if (movie) {
+    out.frames = static_cast<int>(write_texture_movie(args, textures, layout, output, first, last));
+    out.files.emplace_back(args.output);
+  }
   std::vector<OutputFile> written;
-  for (int frame = first; frame <= last; ++frame) {
-    const StepPosition position = position_of_frame(frame, args.crossfade);
+  for (int frame = first; frame <= last && !movie; ++frame) {
+    const StepPosition position = position_of(frame);
     OutputFile file(path_of(frame), output);
     write_image(file, laid_out(textures.frame_at(position), layout),
                 metadata(textures.burn_in() + static_cast<int>(position.step)));
@@ -100,11 +128,9 @@ TextureOutcome write_textures(const TextureArgs& args, const TextureRun& run) {
     if (run.progress) run.progress(frame - first + 1, last - first + 1);
   }
   commit_together(written);
-  TextureOutcome out;
-  out.name = name;
   out.size = size;
   out.steps_done = textures.steps_done();
-  out.frames = static_cast<int>(written.size());
+  if (!movie) out.frames = static_cast<int>(written.size());
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const OutputFile& file : written) out.files.push_back(file.target());
   return out;

@@ -30,12 +30,17 @@ struct TextureOutcome {
   cv::Size size;
   int steps_done = 0;  // the sequence's steps, burn-in included
   int frames = 0;      // frames written
+  int burn_in = 0;     // the steps before the first frame
+  // --loop: whether the buffers came back to themselves within the burn-in (TextureSequence::
+  // loop_closed); the loop repeats either way. True without --loop.
+  bool loop_closed = true;
   double seconds = 0;
-  std::vector<std::filesystem::path> files;  // the frames written, in order
+  std::vector<std::filesystem::path> files;  // the frames written, in order (or the movie)
 };
 
 // `ifsfx texture SUPERPRESET -o OUT [--frames N]`: every output name is checked before the
-// burn-in; a stop or a failure leaves every existing frame file as it was and no new one. Throws
+// burn-in; a stop or a failure leaves every existing frame file as it was and no new one (a
+// movie keeps the frames done as OUTPUT-STEM.partial.EXT, apps/texture_movie.h). Throws
 // ifsfx::Error for bad arguments and failed outputs (Error{interrupted} for a stop).
 TextureOutcome write_textures(const TextureArgs& args, const TextureRun& run);
 

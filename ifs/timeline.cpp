@@ -13,6 +13,21 @@ StepPosition position_of_frame(std::int64_t frame, int per_step) {
   return {step, static_cast<double>(frame - step * k) / static_cast<double>(k)};
 }
 
+std::int64_t steps_in_loop(std::int64_t loop_frames, int per_step) {
+  const std::int64_t k = std::max(per_step, 1);
+  return std::max<std::int64_t>(1, (std::max<std::int64_t>(loop_frames, 1) + k - 1) / k);
+}
+
+StepPosition position_in_loop(std::int64_t frame, int per_step, std::int64_t loop_frames) {
+  const std::int64_t length = std::max<std::int64_t>(loop_frames, 1);
+  const std::int64_t q = steps_in_loop(length, per_step);
+  std::int64_t j = frame % length;
+  if (j < 0) j += length;
+  // j·Q < L·Q: a loop of up to 2^31 frames cannot overflow.
+  const std::int64_t at = j * q;
+  return {at / length, static_cast<double>(at % length) / static_cast<double>(length)};
+}
+
 StepPosition position_of_steps(double steps) {
   constexpr int max_denominator = 1000;
   constexpr double tolerance = 1e-9;

@@ -276,8 +276,10 @@ void Buffers::dilate_current() {
 
 StepChoices Buffers::draw_choices() const {
   const std::size_t v_count = masks_.size(), m_count = super_.maps();
-  // One stream per step: the choices never depend on threads or on the raster.
-  Rng rng(stream_seed(options_.sampling.seed, static_cast<std::uint64_t>(steps_)));
+  // One stream per step: the choices never depend on threads or on the raster. A periodic stream
+  // repeats the choices of its first period.
+  const std::int64_t k = options_.period > 0 ? steps_ % options_.period : steps_;
+  Rng rng(stream_seed(options_.sampling.seed, static_cast<std::uint64_t>(k)));
   const MapPicker pick_ifs(ifs_probabilities_);
   StepChoices c;
   c.ifs.resize(v_count);

@@ -302,6 +302,7 @@ BufferOptions buffer_options(const SuperIfs& super, cv::Size size, const Texture
   b.sampling = options.sampling;
   b.count = options.count;
   b.density = options.mode == TextureMode::measure;
+  b.period = options.loop;
   if (options.mode == TextureMode::steal || options.mode == TextureMode::tops) {
     int pixels = std::max(size.width, size.height);
     if (!options.source.empty())
@@ -322,6 +323,46 @@ void check_options(const TextureOptions& options) {
   if (options.steps < 0)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("steps: must be ≥ 0, 0 for the default (got {})", options.steps));
+  if (options.loop < 0 || options.loop > kMaxLoop)
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("loop: must be 0..{} textures, 0 for none (got {})", kMaxLoop, options.loop));
+}
+
+// What decides every later step of the buffers: the sets and, with densities, the measures and
+// colour masses (the dilated masks, the history and the choices follow from them and the step).
+struct BufferState {
+  std::vector<cv::Mat> masks, densities, colours;
+
+  BufferState(const Buffers& buffers, bool density) {
+    for (std::size_t v = 0; v < buffers.count(); ++v) {
+      masks.push_back(buffers.mask(v).clone());
+      if (!density) continue;
+      densities.push_back(buffers.density(v).clone());
+      colours.push_back(buffers.colour_mass(v).clone());
+    }
+  }
+};
+
+// A float change of at most this much of the largest value is rounding: the measures of a closed
+// loop keep changing in their last bits (float sums in a different order), about 1e-7 of it.
+constexpr double measure_tolerance = 1e-6;
+
+bool near_equal(const cv::Mat& a, const cv::Mat& b) {
+  double largest = 0;
+  cv::minMaxLoc(cv::abs(a), nullptr, &largest);
+  return cv::norm(a, b, cv::NORM_INF) <= measure_tolerance * largest;
+}
+
+// Whether the buffers are back where `before` was: the sets bit for bit, the measures to rounding.
+bool same_state(const BufferState& before, const Buffers& now) {
+  for (std::size_t v = 0; v < before.masks.size(); ++v)
+    if (cv::norm(before.masks[v], now.mask(v), cv::NORM_INF) != 0) return false;
+  for (std::size_t v = 0; v < before.densities.size(); ++v)
+    if (!near_equal(before.densities[v], now.density(v)) ||
+        !near_equal(before.colours[v], now.colour_mass(v)))
+      return false;
+  return true;
 }
 
 }  // namespace
@@ -423,6 +464,35 @@ TextureSequence::TextureSequence(const SuperIfs& super, cv::Size size,
       buffers_(super, size, buffer_options(super, size, options)) {
   burn_in_ = options.steps > 0 ? options.steps : default_steps(super, size);
   buffers_.run(burn_in_);
+  if (options_.loop > 0) close_loop(burn_in_);
+}
+
+void TextureSequence::close_loop(int burn_in) {
+  // The choices repeat every N steps (BufferOptions::period), and a step is a monotone map of the
+  // sets (a union of lookups into dilated masks): from the full start the sets at the start of
+  // each period only shrink, in a finite lattice, so they come back to themselves after some
+  // period — and from then on the buffers repeat every N steps exactly (docs/design.md §11).
+  const std::int64_t n = options_.loop;
+  const std::int64_t limit = std::max<std::int64_t>(8 * static_cast<std::int64_t>(burn_in), 4 * n);
+  loop_closed_ = false;
+  for (std::int64_t done = 0; done < limit && !loop_closed_; done += n) {
+    const BufferState before(buffers_, options_.mode == TextureMode::measure);
+    buffers_.run(static_cast<int>(n));
+    loop_closed_ = same_state(before, buffers_);
+  }
+  // The descent of tops and steal maps reads the last `history` steps: whole periods more until
+  // they all lie on the loop.
+  const auto history = static_cast<std::int64_t>(
+      buffer_options(buffers_.super(), buffers_.size(), options_).history);
+  if (loop_closed_ && history > n) buffers_.run(static_cast<int>(n * ((history + n - 1) / n - 1)));
+  burn_in_ = buffers_.steps_done();
+  // A copy: the buffers' images are replaced by each step, never written in place, so the copy's
+  // stay as they are.
+  loop_start_ = buffers_;
+}
+
+std::int64_t TextureSequence::in_loop(std::int64_t k) const {
+  return options_.loop > 0 ? k % options_.loop : k;
 }
 
 cv::Mat TextureSequence::frame() const {
@@ -464,7 +534,9 @@ void keep(std::map<std::int64_t, T>& kept, std::int64_t k, T value) {
 }  // namespace
 
 void TextureSequence::seek(std::int64_t k) {
-  if (k < buffers_.steps_done() - burn_in_) {
+  if (k < buffers_.steps_done() - burn_in_ && loop_start_) {
+    buffers_ = *loop_start_;
+  } else if (k < buffers_.steps_done() - burn_in_) {
     // Each step's choices come from stream_seed(seed, step): the same steps again give the same
     // buffers.
     const SuperIfs super = buffers_.super();
@@ -477,6 +549,7 @@ void TextureSequence::seek(std::int64_t k) {
 
 StealMap TextureSequence::map_at(std::int64_t k) {
   check_step(k);
+  k = in_loop(k);
   std::lock_guard lock(mutex_);
   if (const auto it = kept_maps_.find(k); it != kept_maps_.end()) return it->second;
   if (k < buffers_.steps_done() - burn_in_) seek(k);
@@ -491,6 +564,7 @@ StealMap TextureSequence::map_at(std::int64_t k) {
 
 cv::Mat TextureSequence::frame_at(std::int64_t k) {
   check_step(k);
+  k = in_loop(k);
   std::lock_guard lock(mutex_);
   if (const auto it = kept_frames_.find(k); it != kept_frames_.end()) return it->second;
   seek(k);

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 
 #include <opencv2/core.hpp>
@@ -53,6 +54,9 @@ StealMap steal_map(const Buffers& buffers, std::size_t v);
 cv::Mat render_buffer(const Buffers& buffers, std::size_t v, TextureMode mode,
                       const cv::Mat& source = {});
 
+// The longest loop of textures (TextureOptions::loop).
+inline constexpr std::int64_t kMaxLoop = 1000000;
+
 struct TextureOptions {
   // The plane rectangle (default: the superIFS's view, else its attractor auto-framed with the
   // margin), the seed of every choice (stream_seed(seed, step)), threads, and the stop flag,
@@ -66,6 +70,10 @@ struct TextureOptions {
   TextureMode mode = TextureMode::attractor;
   cv::Mat source;  // steal mode: the image frame() steals colours from (its size also sets the
                    // descent depth); may be empty when only maps are wanted
+  // A loop of this many textures, 0 = an endless sequence: the choices repeat with this period,
+  // the burn-in runs until the buffers come back to themselves after a period, and texture k is
+  // texture k mod loop (docs/design.md §11).
+  std::int64_t loop = 0;
 };
 
 // One texture: V buffers burnt in for options.steps, buffer options.buffer rendered in
@@ -75,14 +83,17 @@ struct TextureOptions {
 cv::Mat render_texture(const SuperIfs& super, cv::Size size, const TextureOptions& options = {});
 
 // An endless, non-repeating sequence of textures of one family: the burnt-in buffers, then one
-// V-variable step per texture. The video filter calls next_map() (or map_at(k) for keyframe k)
+// V-variable step per texture. With options.loop = N, a loop instead: textures k and k + N are
+// one texture, and the step from texture N − 1 to texture N = 0 is one V-variable step like every
+// other (docs/design.md §11). The video filter calls next_map() (or map_at(k) for keyframe k)
 // every K frames and colours its frames with apply(map, frame). For steal maps, construct it
 // with mode steal or tops: the other modes keep no history to descend through.
 //   TextureSequence seq(super, {1920, 1080}, {.count = 3});
 //   for (;;) { StealMap T = seq.next_map(); ... apply(T, frame) ... }
 class TextureSequence {
  public:
-  // Validates the options and runs the burn-in (options.steps, or the default).
+  // Validates the options and runs the burn-in (options.steps, or the default); with a loop, then
+  // whole periods until the buffers close (at most max(8 · burn-in, 4 · loop) steps more).
   TextureSequence(const SuperIfs& super, cv::Size size, const TextureOptions& options = {});
 
   // The current texture rendered in options.mode.
@@ -111,16 +122,29 @@ class TextureSequence {
   cv::Mat frame_at(StepPosition position);
 
   int steps_done() const { return buffers_.steps_done(); }
+  std::int64_t loop() const { return options_.loop; }  // textures in the loop, 0 = none
+  // Steps before texture 0: the burn-in, and with a loop the periods until the buffers closed.
   int burn_in() const { return burn_in_; }
+  // With a loop: whether the buffers came back to themselves, so that stepping on from texture
+  // N − 1 gives texture 0 exactly (sets, tops, steal maps; the measure to 1e-6 of its largest
+  // value). False when they did not within the limit: the loop still repeats (texture k is texture
+  // k mod N), but its last step is not one V-variable step. True without a loop.
+  bool loop_closed() const { return loop_closed_; }
   const Buffers& buffers() const { return buffers_; }
 
  private:
   // Moves the buffers to step k (from the burn-in again when k is behind them).
   void seek(std::int64_t k);
+  // With a loop: whole periods after the burn-in until the buffers close (docs/design.md §11).
+  void close_loop(int burn_in);
+  // k, or k mod the loop.
+  std::int64_t in_loop(std::int64_t k) const;
 
   TextureOptions options_;
   Buffers buffers_;
   int burn_in_ = 0;
+  bool loop_closed_ = true;
+  std::optional<Buffers> loop_start_;            // with a loop: the buffers of texture 0
   std::mutex mutex_;                             // serialises map_at and frame_at
   std::map<std::int64_t, StealMap> kept_maps_;   // the last maps map_at made, by k
   std::map<std::int64_t, cv::Mat> kept_frames_;  // the last frames frame_at made, by k

@@ -20,21 +20,28 @@ double gradient(std::uint64_t stream, std::int64_t i) {
   return static_cast<double>(h >> 11) * 0x1.0p-52 - 1.0;
 }
 
+// Lattice point i on a ring of `cells` points (0: no ring, the endless lattice).
+std::int64_t wrap(std::int64_t i, std::int64_t cells) {
+  if (cells <= 0) return i;
+  const std::int64_t r = i % cells;
+  return r < 0 ? r + cells : r;
+}
+
 // Perlin's 1-D gradient noise with the quintic fade: smooth (C²), zero at lattice points, about
-// [−0.5, 0.5].
-double gradient_noise(double x, std::uint64_t stream) {
+// [−0.5, 0.5]. With cells > 0 the lattice is a ring of that many points: periodic in x.
+double gradient_noise(double x, std::uint64_t stream, std::int64_t cells) {
   const double cell = std::floor(x);
   const auto i = static_cast<std::int64_t>(cell);
   const double f = x - cell;
   const double fade = f * f * f * (f * (f * 6 - 15) + 10);
-  const double left = gradient(stream, i) * f;
-  const double right = gradient(stream, i + 1) * (f - 1);
+  const double left = gradient(stream, wrap(i, cells)) * f;
+  const double right = gradient(stream, wrap(i + 1, cells)) * (f - 1);
   return left + fade * (right - left);
 }
 
-}  // namespace
-
-double fbm(double x, std::uint64_t seed, std::uint64_t channel, int octaves) {
+// fBm with the slowest octave on a ring of `cycles` cells (0: endless), octave o on cycles · 2^o.
+double octaves_sum(double x, std::int64_t cycles, std::uint64_t seed, std::uint64_t channel,
+                   int octaves) {
   // Gradient noise is zero on its lattice, and the lattices of octaves 2^o apart share every
   // whole x: unshifted, every coefficient of every map would be back on its base value at once,
   // every 1/speed seconds (the animation "breathing" back to the preset). Each octave of each
@@ -44,8 +51,9 @@ double fbm(double x, std::uint64_t seed, std::uint64_t channel, int octaves) {
   for (int o = 0; o < octaves; ++o) {
     const std::uint64_t stream = stream_seed(seed, channel * 64 + o);
     const double phase = static_cast<double>(mix64(~stream) >> 11) * 0x1.0p-53;
-    sum += amplitude * gradient_noise(x * frequency + phase, stream);
-    at_zero += amplitude * gradient_noise(phase, stream);
+    const std::int64_t cells = cycles << o;
+    sum += amplitude * gradient_noise(x * frequency + phase, stream, cells);
+    at_zero += amplitude * gradient_noise(phase, stream, cells);
     norm += amplitude;
     amplitude *= 0.5;
     frequency *= 2;
@@ -55,6 +63,22 @@ double fbm(double x, std::uint64_t seed, std::uint64_t channel, int octaves) {
   // their difference in ±(1 + |offset|): scaled back by that, the result stays in [−1, 1].
   const double offset = 2 * at_zero / norm;
   return (2 * sum / norm - offset) / (1 + std::abs(offset));
+}
+
+}  // namespace
+
+double fbm(double x, std::uint64_t seed, std::uint64_t channel, int octaves) {
+  return octaves_sum(x, 0, seed, channel, octaves);
+}
+
+double fbm_periodic(double x, std::int64_t cycles, std::uint64_t seed, std::uint64_t channel,
+                    int octaves) {
+  cycles = std::max<std::int64_t>(cycles, 1);
+  // x on [0, cycles): a whole period later is the same point, bit for bit.
+  const double period = static_cast<double>(cycles);
+  x -= std::floor(x / period) * period;
+  if (!(x < period)) x = 0;
+  return octaves_sum(x, cycles, seed, channel, octaves);
 }
 
 Ifs drift(const Ifs& base, double t, const DriftOptions& options) {
@@ -71,16 +95,30 @@ Ifs drift(const Ifs& base, double t, const DriftOptions& options) {
   if (options.octaves < 1 || options.octaves > 16)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("drift octaves: must be in 1..16 (got {})", options.octaves));
+  if (!(options.loop >= 0 && options.loop <= kMaxDriftLoop))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("drift loop: must be in [0, {:g}] seconds (got {})", kMaxDriftLoop,
+                            options.loop));
   const Box bounds = attractor_bounds(base, options.seed);
   const double extent = std::max({bounds.width(), bounds.height(), 1e-9});
-  const double x = t * options.speed;
+  // A loop: time as the fraction u of the loop, on a noise of whole cycles per loop.
+  const bool loop = options.loop > 0 && options.speed > 0;
+  const std::int64_t cycles =
+      loop ? std::max<std::int64_t>(1, std::llround(options.loop * options.speed)) : 0;
+  double u = loop ? t / options.loop : 0;
+  u -= std::floor(u);
+  const double x = loop ? u * static_cast<double>(cycles) : t * options.speed;
+  const auto noise = [&](std::uint64_t channel) {
+    return loop ? fbm_periodic(x, cycles, options.seed, channel, options.octaves)
+                : fbm(x, options.seed, channel, options.octaves);
+  };
   Ifs out = base;
   for (std::size_t n = 0; n < base.size(); ++n) {
     const AffineMap& f = base.maps[n];
     auto k = f.coefficients();
     for (std::size_t j = 0; j < 6; ++j) {
       const double scale = j < 4 ? options.amount : options.amount * extent;
-      k[j] += scale * fbm(x, options.seed, n * 6 + j, options.octaves);
+      k[j] += scale * noise(n * 6 + j);
     }
     AffineMap g = AffineMap::from_coefficients(k);
     // Keep the map contractive: scale its linear part back to the cap (translation kept).

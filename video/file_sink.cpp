@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <string_view>
 
@@ -16,6 +17,7 @@ extern "C" {
 
 #include "video/audio_remux.h"
 #include "video/av_util.h"
+#include "video/palette.h"
 
 namespace ifsfx::video {
 
@@ -94,7 +96,18 @@ AVPixelFormat pick_pixel_format(const AVCodec* encoder) {
   if (encoder->id == AV_CODEC_ID_MJPEG) std::swap(yuv420[0], yuv420[1]);
   for (AVPixelFormat f : yuv420)
     if (supports(f)) return f;
+  // GIF: a palette of the picture's own colours (video/palette.h), not a fixed 3-3-2 one.
+  if (supports(AV_PIX_FMT_PAL8)) return AV_PIX_FMT_PAL8;
   return formats[0];
+}
+
+// Muxer options: animated images (GIF, WebP) loop for ever, as browsers and viewers expect of
+// them (FFmpeg's WebP muxer would play once). Other containers have no say in looping.
+AVDictionary* muxer_options(const AVOutputFormat* container) {
+  AVDictionary* options = nullptr;
+  const std::string_view name = container->name;
+  if (name == "gif" || name == "webp") av_dict_set(&options, "loop", "0", 0);
+  return options;
 }
 
 // The chroma block of a pixel format: 2×2 for 4:2:0, 2×1 for 4:2:2, 1×1 for 4:4:4 and RGB.
@@ -145,6 +158,12 @@ Rational supported_rate(const AVCodec* encoder, Rational rate) {
 }
 
 }  // namespace
+
+bool is_movie_name(const std::filesystem::path& path) noexcept {
+  const AVOutputFormat* format = av_guess_format(nullptr, path.c_str(), nullptr);
+  return format != nullptr && format->video_codec != AV_CODEC_ID_NONE &&
+         !std::string_view(format->name).starts_with("image2");
+}
 
 std::string resolve_encoder(const std::filesystem::path& path, const std::string& codec) {
   return find_encoder(path, guess_container(path), codec)->name;
@@ -238,9 +257,13 @@ struct FileSink::Impl {
   // Converts and encodes one picture at `pts`, lasting `duration`; the audio follows up to its end.
   void emit(const cv::Mat& image, std::int64_t pts, std::int64_t duration) {
     check_av(av_frame_make_writable(frame.get()), ErrorKind::io, what(), "out of memory");
-    const std::uint8_t* src[4] = {image.data, nullptr, nullptr, nullptr};
-    const int src_stride[4] = {static_cast<int>(image.step), 0, 0, 0};
-    sws_scale(sws.get(), src, src_stride, 0, image.rows, frame->data, frame->linesize);
+    if (codec->pix_fmt == AV_PIX_FMT_PAL8) {
+      to_palette(image);
+    } else {
+      const std::uint8_t* src[4] = {image.data, nullptr, nullptr, nullptr};
+      const int src_stride[4] = {static_cast<int>(image.step), 0, 0, 0};
+      sws_scale(sws.get(), src, src_stride, 0, image.rows, frame->data, frame->linesize);
+    }
     frame->pts = pts;
     durations[pts] = duration;
     // The audio before this frame goes first: an AAC priming packet (before time 0) must reach
@@ -253,6 +276,20 @@ struct FileSink::Impl {
     // Audio up to the end of this frame: the muxer interleaves it, and a file closed after this
     // frame has its sound up to there.
     if (audio) audio->copy_until(seconds(end_pts));
+  }
+
+  // A palette picture (GIF): the indices, and the palette as opaque ARGB words (an entry with
+  // alpha 0 would be taken for transparency).
+  void to_palette(const cv::Mat& image) {
+    const IndexedImage indexed = to_indexed(image);
+    for (int r = 0; r < image.rows; ++r)
+      std::memcpy(frame->data[0] + static_cast<std::ptrdiff_t>(r) * frame->linesize[0],
+                  indexed.indices.ptr(r), static_cast<std::size_t>(image.cols));
+    auto* palette = reinterpret_cast<std::uint32_t*>(frame->data[1]);
+    for (std::size_t i = 0; i < 256; ++i) {
+      const cv::Vec3b c = i < indexed.palette.size() ? indexed.palette[i] : cv::Vec3b();
+      palette[i] = 0xff000000u | (std::uint32_t{c[2]} << 16) | (std::uint32_t{c[1]} << 8) | c[0];
+    }
   }
 
   // Constant timing: the held-back frame fills the slots from where the output stands up to
@@ -338,6 +375,7 @@ struct FileSink::Impl {
     frame->width = c->width;
     frame->height = c->height;
     check_av(av_frame_get_buffer(frame.get(), 0), ErrorKind::io, what(), "out of memory");
+    if (c->pix_fmt == AV_PIX_FMT_PAL8) return;  // to_palette() instead
     sws.reset(sws_getContext(c->width, c->height, AV_PIX_FMT_BGR24, c->width, c->height, c->pix_fmt,
                              SWS_BICUBIC, nullptr, nullptr, nullptr));
     if (!sws)
@@ -387,8 +425,10 @@ FileSink::FileSink(const std::filesystem::path& path, const FileSinkOptions& opt
   try {
     check_av(avio_open(&raw->pb, s.out->temporary().c_str(), AVIO_FLAG_WRITE), ErrorKind::io,
              s.what(), "cannot write");
-    check_av(avformat_write_header(raw, nullptr), ErrorKind::io, s.what(),
-             "cannot write the header");
+    AVDictionary* muxing = muxer_options(container);
+    const int header = avformat_write_header(raw, &muxing);
+    av_dict_free(&muxing);
+    check_av(header, ErrorKind::io, s.what(), "cannot write the header");
   } catch (...) {
     s.discard_temp();
     throw;

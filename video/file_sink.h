@@ -93,6 +93,11 @@ class FileSink final : public FrameSink {
   std::unique_ptr<Impl> impl_;
 };
 
+// Whether `path` names a movie container FileSink writes (.mp4, .mkv, .webm, .mov, .avi, .gif,
+// .webp, ...): FFmpeg knows its extension as a container of video that is not a still image
+// format. Never throws.
+bool is_movie_name(const std::filesystem::path& path) noexcept;
+
 // The encoder `codec` names (or the default of the container `path` names), checked as close() of
 // a FileSink would check it; for --help and for errors before work. Throws as FileSink does.
 std::string resolve_encoder(const std::filesystem::path& path, const std::string& codec);

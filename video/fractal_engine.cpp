@@ -28,6 +28,10 @@ FractalEngine::FractalEngine(const FractalSettings& settings) : settings_(settin
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("keyframe interval: must be 1 or more frames (got {})",
                             settings.keyframe_interval));
+  if (settings.loop < 0 || settings.loop > kMaxLoop)
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("loop: must be 0..{} frames, 0 for none (got {})", kMaxLoop, settings.loop));
   options_.interpolation = settings.interpolation;
   options_.mix = settings.mix;
   options_.background = settings.background;
@@ -57,7 +61,12 @@ FractalEngine::~FractalEngine() = default;
 DriftOptions FractalEngine::drift_options() const {
   return {.amount = settings_.drift_amount,
           .speed = settings_.drift_speed,
-          .seed = settings_.sampling.seed};
+          .seed = settings_.sampling.seed,
+          .loop = static_cast<double>(settings_.loop) / frame_rate_};
+}
+
+std::int64_t FractalEngine::loop_keyframes() const {
+  return settings_.loop > 0 ? steps_in_loop(settings_.loop, settings_.keyframe_interval) : 0;
 }
 
 StealMapOptions FractalEngine::map_options() const {
@@ -85,10 +94,15 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
       // Keyframe k shows F drifted to time k·K/fps, in a view fixed from F itself so that the
       // frame does not jump as the attractor moves.
       map_options.sampling.view = framed_viewport(F_, size, s.sampling).view;
+      // With a loop of L frames and Q keyframes, keyframe k shows time (k mod Q) · L / Q frames:
+      // keyframe Q is keyframe 0, and the drift's own period is the loop.
       schedule_ = std::make_unique<MapSchedule>(
           [=, F = F_, G = G_, drift_options = drift_options(), interval = s.keyframe_interval,
-           fps = frame_rate](std::int64_t k) {
-            const Ifs now = drift(F, static_cast<double>(k) * interval / fps, drift_options);
+           fps = frame_rate, loop = s.loop, q = loop_keyframes()](std::int64_t k) {
+            const double frames = loop > 0 ? static_cast<double>(k % q) *
+                                                 static_cast<double>(loop) / static_cast<double>(q)
+                                           : static_cast<double>(k) * interval;
+            const Ifs now = drift(F, frames / fps, drift_options);
             return prepare_filter(compute_steal_map(now, G, size, map_options), frame_size,
                                   interpolation, threads);
           },
@@ -104,6 +118,7 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
       t.count = s.buffers;
       t.mode = TextureMode::steal;
       t.source = cv::Mat(frame_size, CV_8UC3);  // only its size: it sets the descent depth
+      t.loop = loop_keyframes();                // texture k of a loop of Q is texture k mod Q
       sequence_ = std::make_shared<TextureSequence>(super_, size, t);
       schedule_ = std::make_unique<MapSchedule>(
           [=, sequence = sequence_](std::int64_t k) {
@@ -133,6 +148,9 @@ cv::Mat FractalEngine::filter(const cv::Mat& frame, std::int64_t index) {
 }
 
 void FractalEngine::filter(const cv::Mat& frame, std::int64_t index, cv::Mat& out) {
+  if (settings_.loop > 0 && settings_.animate != Animate::none)
+    return filter_at(frame, position_in_loop(index, settings_.keyframe_interval, settings_.loop),
+                     out);
   filter_at(frame, position_of_frame(index, settings_.keyframe_interval), out);
 }
 
@@ -142,6 +160,13 @@ void FractalEngine::filter_at(const cv::Mat& frame, double seconds, cv::Mat& out
   const double nearest = std::round(frames);
   if (std::abs(frames - nearest) <= 1e-6 * std::max(1.0, std::abs(frames)))
     return filter(frame, static_cast<std::int64_t>(nearest), out);
+  if (settings_.loop > 0 && settings_.animate != Animate::none) {
+    // Between two frames of a loop: its place in the loop, in keyframes.
+    const auto length = static_cast<double>(settings_.loop);
+    const double in_loop = frames - std::floor(frames / length) * length;
+    return filter_at(
+        frame, position_of_steps(in_loop * static_cast<double>(loop_keyframes()) / length), out);
+  }
   filter_at(frame, position_of_steps(frames / settings_.keyframe_interval), out);
 }
 

@@ -73,6 +73,10 @@ struct FractalSettings {
   std::string superifs = "paper-fig4";  // superifs: the superIFS (its view and colouring
                                         // replace preset, colouring and view)
   int buffers = 3;                      // superifs: V
+  // Frames after which the animation is back at frame 0, bit for bit (docs/design.md §11); 0 =
+  // never. The loop holds ⌈loop / keyframe_interval⌉ keyframes spread evenly over it; the drift
+  // is periodic with period loop / frame rate, the superIFS steps close into a loop of textures.
+  std::int64_t loop = 0;
 
   friend bool operator==(const FractalSettings&, const FractalSettings&) = default;
 };
@@ -123,13 +127,16 @@ class FractalEngine {
   StealMapOptions map_options() const;
   // How frames show through the maps (interpolation, mix, background, threads).
   const FilterOptions& filter_options() const { return options_; }
-  // The drift of the settings (amount, speed, seed).
+  // The drift of the settings (amount, speed, seed; with a loop, its length in seconds at the
+  // prepared frame rate).
   DriftOptions drift_options() const;
   // Frames that waited for a keyframe (see MapSchedule::stalls); 0 for a fixed map.
   std::int64_t stalls() const;
 
  private:
   void filter_at(const cv::Mat& frame, StepPosition position, cv::Mat& out);
+  // Keyframes in one loop (0 without a loop).
+  std::int64_t loop_keyframes() const;
 
   FractalSettings settings_;
   double frame_rate_ = 25;

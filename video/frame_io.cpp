@@ -3,9 +3,14 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+#include <opencv2/imgproc.hpp>
+
 extern "C" {
 #include <libavutil/rational.h>
 }
+
+#include "ifs/error.h"
 
 namespace ifsfx::video {
 
@@ -18,6 +23,37 @@ Rational rate_from_fps(double fps) {
     return {static_cast<int>(std::lround(ntsc)) * 1000, 1001};
   const AVRational q = av_d2q(fps, 1000000);
   return {q.num, q.den};
+}
+
+cv::Mat to_bgr8(const cv::Mat& image) {
+  cv::Mat eight;
+  switch (image.depth()) {
+    case CV_8U:
+      eight = image;
+      break;
+    case CV_16U:
+      image.convertTo(eight, CV_8U, 1.0 / 257);
+      break;
+    default:
+      image.convertTo(eight, CV_8U, 255);
+      break;
+  }
+  cv::Mat bgr;
+  switch (eight.channels()) {
+    case 1:
+      cv::cvtColor(eight, bgr, cv::COLOR_GRAY2BGR);
+      break;
+    case 4:
+      cv::cvtColor(eight, bgr, cv::COLOR_BGRA2BGR);
+      break;
+    case 3:
+      bgr = eight;
+      break;
+    default:
+      throw Error(ErrorKind::unsupported,
+                  fmt::format("image: {} channels are not a colour image", eight.channels()));
+  }
+  return bgr;
 }
 
 }  // namespace ifsfx::video

@@ -44,6 +44,10 @@ struct Frame {
   Rational time_base{0, 1};
 };
 
+// An image as a frame: 8-bit BGR (CV_8UC3), grey expanded, alpha dropped with the colour kept,
+// 16-bit and float (0..1) scaled. Throws Error{unsupported} for 2 channels or more than 4.
+cv::Mat to_bgr8(const cv::Mat& image);
+
 // A sound track that goes with a source's frames: the file that holds it, and the time on that
 // file's clock that Frame::timestamp 0 stands for.
 struct AudioTrack {

@@ -39,38 +39,6 @@ std::optional<Pattern> find_number(const std::string& text) {
   return p;
 }
 
-cv::Mat to_bgr8(const cv::Mat& image) {
-  cv::Mat eight;
-  switch (image.depth()) {
-    case CV_8U:
-      eight = image;
-      break;
-    case CV_16U:
-      image.convertTo(eight, CV_8U, 1.0 / 257);
-      break;
-    default:
-      image.convertTo(eight, CV_8U, 255);
-      break;
-  }
-  cv::Mat bgr;
-  switch (eight.channels()) {
-    case 1:
-      cv::cvtColor(eight, bgr, cv::COLOR_GRAY2BGR);
-      break;
-    case 4:
-      cv::cvtColor(eight, bgr, cv::COLOR_BGRA2BGR);
-      break;
-    case 3:
-      bgr = eight;
-      break;
-    default:
-      throw Error(
-          ErrorKind::unsupported,
-          fmt::format("image sequence: {} channels are not a colour image", eight.channels()));
-  }
-  return bgr;
-}
-
 bool is_file(const std::filesystem::path& p) {
   std::error_code ec;
   return std::filesystem::is_regular_file(p, ec);

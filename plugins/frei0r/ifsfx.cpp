@@ -8,6 +8,7 @@
 // reported once on stderr, and frames pass through unchanged until it is fixed. Unchanged rather
 // than black: in an editor the clip stays visible while a preset name is being typed, and a render
 // that was started with a typo still holds the footage; the stderr line says why it is unfiltered.
+#include <cmath>
 #include <cstring>
 #include <future>
 #include <memory>
@@ -22,6 +23,7 @@
 #include "plugins/frei0r/host.h"
 #include "plugins/frei0r/host_clock.h"
 #include "plugins/frei0r/params.h"
+#include "superifs/texture.h"
 #include "video/fractal_engine.h"
 
 namespace ifsfx::frei0r {
@@ -30,7 +32,7 @@ namespace {
 constexpr const char* plugin_name = "ifsfx";
 
 // The parameters, in the order hosts address them by position. Do not reorder or rename.
-enum Param { preset, colouring, mix, background, exact, drift, speed, seed, view, rate };
+enum Param { preset, colouring, mix, background, exact, drift, speed, seed, view, rate, loop };
 constexpr ParamInfo table[] = {
     {"preset", ParamType::text,
      "The drawing IFS F: a shipped name (see `ifsfx presets`), a .toml/.ifs path or FILE.ifs:NAME",
@@ -53,6 +55,10 @@ constexpr ParamInfo table[] = {
      "Animation: frames per second to count by when the host gives no frame times (FFmpeg 5.1 "
      "at widths that are not a multiple of 64)",
      default_count_rate},
+    {"loop", ParamType::number,
+     "Animation: seconds after which the drift repeats, frame for frame, rounded to whole frames "
+     "of 25 fps (0: never)",
+     0},
 };
 
 // The engine's settings for parameter values; throws ifsfx::Error naming the parameter.
@@ -75,6 +81,13 @@ video::FractalSettings settings_of(const ParamValues::Values& v) {
   s.drift_speed = v.number(speed);
   s.sampling.seed = static_cast<std::uint64_t>(whole_number(v.number(seed), "seed", 0, 1LL << 53));
   if (!v.text(view).empty()) s.sampling.view = parse_box(v.text(view), "view");
+  // The engine counts a loop in frames of its nominal rate, as it places the drift's keyframes.
+  const double loop_seconds = v.number(loop);
+  if (!(loop_seconds >= 0 && loop_seconds <= kMaxLoop / nominal_frame_rate))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("loop: must be 0..{:g} seconds (got {})", kMaxLoop / nominal_frame_rate,
+                            loop_seconds));
+  s.loop = std::llround(loop_seconds * nominal_frame_rate);
   frame_rate_parameter(v.number(rate));
   return s;
 }

@@ -34,7 +34,7 @@ namespace {
 constexpr const char* plugin_name = "ifsfx-texture";
 
 // The parameters, in the order hosts address them by position. Do not reorder or rename.
-enum Param { preset, buffers, mode, source, seed, speed, crossfade, rate };
+enum Param { preset, buffers, mode, source, seed, speed, crossfade, rate, loop };
 constexpr ParamInfo table[] = {
     {"preset", ParamType::text,
      "The superIFS: a shipped name (paper-fig4, carpet-lace, ...) or a .super.toml path", 0,
@@ -51,6 +51,10 @@ constexpr ParamInfo table[] = {
     {"crossfade", ParamType::flag, "Blend each texture into the next instead of cutting", 1},
     {"rate", ParamType::number, "Frames per second to count by when the host gives no frame times",
      default_count_rate},
+    {"loop", ParamType::number,
+     "Seconds after which the sequence repeats, frame for frame: ceil(loop x speed) textures, "
+     "the last fading into the first (0: never)",
+     0},
 };
 
 // What the textures depend on (speed and crossfade only pick among them).
@@ -60,6 +64,7 @@ struct SequenceKey {
   TextureMode mode = TextureMode::tops;
   std::string source;
   std::uint64_t seed = 1;
+  std::int64_t loop = 0;  // textures in a loop, 0 = none
   friend bool operator==(const SequenceKey&, const SequenceKey&) = default;
 };
 
@@ -73,6 +78,14 @@ SequenceKey key_of(const ParamValues::Values& v) {
     throw Error(ErrorKind::invalid_argument,
                 "source: steal mode needs an image to steal colours from");
   k.seed = static_cast<std::uint64_t>(whole_number(v.number(seed), "seed", 0, 1LL << 53));
+  const double seconds = v.number(loop), steps_per_second = v.number(speed);
+  if (!(seconds >= 0 && seconds <= 86400))
+    throw Error(ErrorKind::invalid_argument,
+                "loop: must be 0..86400 seconds (got " + std::to_string(seconds) + ")");
+  // Whole textures per loop, at least the speed asks for (a hair's rounding excepted).
+  if (seconds > 0 && steps_per_second > 0 && std::isfinite(steps_per_second))
+    k.loop = std::clamp<std::int64_t>(
+        static_cast<std::int64_t>(std::ceil(seconds * steps_per_second - 1e-9)), 1, kMaxLoop);
   return k;
 }
 
@@ -116,11 +129,20 @@ class TextureInstance {
         throw Error(ErrorKind::invalid_argument, "speed: must be 0 or more steps per second (got " +
                                                      std::to_string(steps_per_second) + ")");
       frame_rate_parameter(v.number(rate));
-      sequence_for(key_of(v));
+      const SequenceKey key = key_of(v);
+      sequence_for(key);
       if (time.counted && steps_per_second > 0)
         clock_reporter_.report(fmt::format(
             "the host gives no frame times; animating by frame count at {:g} fps", time.rate));
-      StepPosition at = position_of_steps(time.seconds * steps_per_second);
+      double steps = time.seconds * steps_per_second;
+      if (key.loop > 0) {
+        // The place in the loop, as a fraction of it, on its whole number of textures.
+        const double seconds = v.number(loop);
+        double u = time.seconds / seconds;
+        u -= std::floor(u);
+        steps = u * static_cast<double>(key.loop);
+      }
+      StepPosition at = position_of_steps(steps);
       if (!v.flag(crossfade)) at.phase = 0;
       to_rgba(sequence_->frame_at(at), result);
       reporter_.clear();
@@ -139,6 +161,7 @@ class TextureInstance {
     if (failed_ && failed_->first == key) throw Error(ErrorKind::invalid_argument, failed_->second);
     try {
       TextureOptions o{.sampling = {.seed = key.seed}, .count = key.count, .mode = key.mode};
+      o.loop = key.loop;
       if (!key.source.empty()) o.source = read_image(key.source).pixels;
       sequence_ = std::make_unique<TextureSequence>(load_superifs(key.preset).super, size_, o);
     } catch (const std::exception& e) {

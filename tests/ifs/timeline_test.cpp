@@ -31,5 +31,27 @@ TEST(timeline, positions_off_any_small_fraction_are_kept_as_given) {
   EXPECT_EQ(position_of_steps(-0.25), (StepPosition{-1, 0.75}));
 }
 
+TEST(timeline, a_loop_holds_enough_steps_that_none_lasts_longer_than_per_step_frames) {
+  EXPECT_EQ(steps_in_loop(48, 12), 4);
+  EXPECT_EQ(steps_in_loop(50, 12), 5);  // 10 frames a step, not 12.5
+  EXPECT_EQ(steps_in_loop(5, 12), 1);
+  EXPECT_EQ(steps_in_loop(8, 1), 8);
+}
+
+TEST(timeline, frame_L_of_a_loop_is_frame_0_and_frame_L_minus_1_fades_towards_step_0) {
+  EXPECT_EQ(position_in_loop(48, 12, 48), position_in_loop(0, 12, 48));
+  EXPECT_EQ(position_in_loop(47, 12, 48), (StepPosition{3, 11.0 / 12}));
+  EXPECT_EQ(position_in_loop(-1, 12, 48), position_in_loop(47, 12, 48));
+  // 50 frames, 5 steps of 10 frames each.
+  EXPECT_EQ(position_in_loop(49, 12, 50), (StepPosition{4, 0.9}));
+  EXPECT_EQ(position_in_loop(125, 12, 50), (StepPosition{2, 0.5}));
+}
+
+TEST(timeline, a_loop_of_whole_steps_keeps_the_positions_of_the_endless_animation_bit_for_bit) {
+  for (int k : {1, 3, 7, 12})
+    for (std::int64_t j = 0; j < 20 * k; ++j)
+      EXPECT_EQ(position_in_loop(j, k, 20 * k), position_of_frame(j, k)) << k << " " << j;
+}
+
 }  // namespace
 }  // namespace ifsfx

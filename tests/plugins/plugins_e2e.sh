@@ -127,6 +127,23 @@ ffmpeg_texture)
   [[ -f src_0010.png && ! -f src_0011.png ]] || fail "ffmpeg wrote $(ls src_*.png | wc -l) frames"
   same_frames src_%04d.png cli_%04d.png 10
   ;;
+ffmpeg_loop)
+  # The loop parameter (seconds): 0.48 s at 25 fps is `--loop 12`, frame for frame, for the drift
+  # filter and the texture source; frame 12 is frame 0 again.
+  clip clip.mkv 256:120 -c:v ffv1 -pix_fmt bgr0
+  "$ifsfx" filter clip.mkv -o cli.mkv --codec ffv1 --preset sierpinski-triangle --animate drift \
+    --drift-amount 0.3 --drift-speed 1 --seed 4 --loop 12 -q
+  ffmpeg -v error -y -i clip.mkv -vf "frei0r=ifsfx:sierpinski-triangle||0|black|y|0.3|1|4||25|0.48" \
+    -c:v ffv1 -pix_fmt bgr0 ffmpeg.mkv
+  same_frames ffmpeg.mkv cli.mkv 30
+  "$ifsfx" texture paper-fig4 --mode tops --size 160x120 -V 3 --seed 2 --frames 30 --loop 12 \
+    --crossfade 2 -o cli_%04d.png -q
+  ffmpeg -v error -y -f lavfi \
+    -i "frei0r_src=size=160x120:framerate=25:filter_name=ifsfx-texture:filter_params=paper-fig4|3|tops||2|12.5|y|25|0.48" \
+    -frames:v 30 -start_number 1 src_%04d.png
+  same_frames src_%04d.png cli_%04d.png 30
+  cmp -s src_0001.png src_0013.png || fail "texture source: frame 12 is not frame 0"
+  ;;
 melt)
   # melt (MLT) with parameters by name: the FFmpeg result.
   need melt

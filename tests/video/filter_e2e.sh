@@ -110,6 +110,27 @@ drift_range)
   [[ $(wc -l < psnr.log) == 8 ]] || fail "compared $(wc -l < psnr.log) frames"
   [[ $p == 1000 ]] || fail "drifted frames 6-13 differ from the full run's (PSNR $p dB)"
   ;;
+loop)
+  # A still picture for 30 frames: only the animation changes. With --loop 12 frame 12 is frame 0
+  # again, bit for bit (FFV1), for the drift and the superIFS steps, and so on around the loop.
+  ffmpeg -v error -y -f lavfi -i "testsrc2=size=128x96:rate=25" -frames:v 1 still.png
+  ffmpeg -v error -y -loop 1 -i still.png -frames:v 30 -c:v ffv1 clip.mkv
+  for animate in drift superifs; do
+    "$ifsfx" filter clip.mkv -o $animate.mkv --codec ffv1 --animate $animate --loop 12 \
+      --keyframe-interval 5 --drift-amount 0.2 --seed 3 -q
+    ffmpeg -v error -i $animate.mkv -f framemd5 - | grep -v '^#' | awk -F', *' '{print $6}' >$animate.md5
+    [[ $(wc -l <$animate.md5) == 30 ]] || fail "$animate: $(wc -l <$animate.md5) frames"
+    for i in $(seq 1 18); do
+      [[ $(sed -n "${i}p" $animate.md5) == $(sed -n "$((i + 12))p" $animate.md5) ]] ||
+        fail "$animate: frame $((i + 11)) differs from frame $((i - 1))"
+    done
+    [[ $(sort -u $animate.md5 | wc -l) == 12 ]] || fail "$animate: not 12 different frames in the loop"
+  done
+  # --loop repeats an animation: without one it is refused in one line.
+  if "$ifsfx" filter clip.mkv -o none.mkv --loop 12 -q 2>err.txt; then fail "--loop without --animate accepted"; fi
+  grep -q "^ifsfx: --loop: repeats an animation; add --animate drift or --animate superifs$" err.txt ||
+    fail "--loop without --animate: $(cat err.txt)"
+  ;;
 superifs_range)
   ffmpeg -v error -y -i "$data/vtest.avi" -frames:v 12 -vf scale=128:96 -c:v ffv1 clip.mkv
   common=(--codec ffv1 --animate superifs --superifs paper-fig4 --keyframe-interval 3 --seed 5 -q)
