@@ -51,8 +51,7 @@ std::int64_t write_texture_movie(const TextureArgs& args, TextureSequence& textu
                                          .name = args.preset});
   video::FileSinkOptions o;
   o.codec = args.codec;
-  o.size = {source.size().width * layout.tiles.width,
-            source.size().height * layout.tiles.height};
+  o.size = {source.size().width * layout.tiles.width, source.size().height * layout.tiles.height};
   o.frame_rate = rate;
   o.time_base = source.time_base();
   o.threads = args.threads;

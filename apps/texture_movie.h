@@ -26,8 +26,9 @@ bool writes_texture_movie(const TextureArgs& args);
 cv::Size check_texture_movie(const TextureArgs& args, cv::Size size, const OutputOptions& output);
 
 // Writes frames first..last of `textures` (crossfaded, or placed in the loop), each laid out as
-// `layout` says (--seamless --tiles), into the movie and returns how many. A stop or an error keeps the frames done as OUTPUT-STEM.partial.EXT and throws
-// (Error{interrupted} naming it after Ctrl-C).
+// `layout` says (--seamless --tiles), into the movie and returns how many. A stop or an error keeps
+// the frames done as OUTPUT-STEM.partial.EXT and throws (Error{interrupted} naming it after
+// Ctrl-C).
 std::int64_t write_texture_movie(const TextureArgs& args, TextureSequence& textures,
                                  const TileLayout& layout, const OutputOptions& output,
                                  std::int64_t first, std::int64_t last);

@@ -24,7 +24,7 @@ StepPosition position_of_frame(std::int64_t frame, int per_step);
 // ⌈loop_frames / per_step⌉, so that steps are never more than per_step frames apart (both ≥ 1).
 std::int64_t steps_in_loop(std::int64_t loop_frames, int per_step);
 
-// Frame `frame` of an animation that repeats every `loop_frames` frames (docs/design.md §11): frame
+// Frame `frame` of an animation that repeats every `loop_frames` frames (docs/design.md §12): frame
 // j = frame mod loop_frames, floored, stands at j·Q / loop_frames steps, Q = steps_in_loop(…), the
 // Q steps spread evenly over the loop: {⌊j·Q / L⌋, (j·Q mod L) / L}. Step Q is step 0 again (the
 // caller takes steps modulo Q), so frame L is frame 0 and frame L − 1 fades towards step 0. When

@@ -96,7 +96,7 @@ struct BufferOptions {
   int history = 0;       // steps kept for the exact descent (steal coordinates, tops); 0 = none
   bool density = false;  // also carry the measures (measure mode)
   // With period P > 0 the choices of step k come from stream_seed(seed, k mod P) instead: a
-  // periodic choice stream, whose buffers close into a loop (docs/design.md §11). 0 = none.
+  // periodic choice stream, whose buffers close into a loop (docs/design.md §12). 0 = none.
   std::int64_t period = 0;
 };
 

@@ -471,7 +471,7 @@ void TextureSequence::close_loop(int burn_in) {
   // The choices repeat every N steps (BufferOptions::period), and a step is a monotone map of the
   // sets (a union of lookups into dilated masks): from the full start the sets at the start of
   // each period only shrink, in a finite lattice, so they come back to themselves after some
-  // period — and from then on the buffers repeat every N steps exactly (docs/design.md §11).
+  // period — and from then on the buffers repeat every N steps exactly (docs/design.md §12).
   const std::int64_t n = options_.loop;
   const std::int64_t limit = std::max<std::int64_t>(8 * static_cast<std::int64_t>(burn_in), 4 * n);
   loop_closed_ = false;

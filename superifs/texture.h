@@ -72,7 +72,7 @@ struct TextureOptions {
                    // descent depth); may be empty when only maps are wanted
   // A loop of this many textures, 0 = an endless sequence: the choices repeat with this period,
   // the burn-in runs until the buffers come back to themselves after a period, and texture k is
-  // texture k mod loop (docs/design.md §11).
+  // texture k mod loop (docs/design.md §12).
   std::int64_t loop = 0;
 };
 
@@ -85,7 +85,7 @@ cv::Mat render_texture(const SuperIfs& super, cv::Size size, const TextureOption
 // An endless, non-repeating sequence of textures of one family: the burnt-in buffers, then one
 // V-variable step per texture. With options.loop = N, a loop instead: textures k and k + N are
 // one texture, and the step from texture N − 1 to texture N = 0 is one V-variable step like every
-// other (docs/design.md §11). The video filter calls next_map() (or map_at(k) for keyframe k)
+// other (docs/design.md §12). The video filter calls next_map() (or map_at(k) for keyframe k)
 // every K frames and colours its frames with apply(map, frame). For steal maps, construct it
 // with mode steal or tops: the other modes keep no history to descend through.
 //   TextureSequence seq(super, {1920, 1080}, {.count = 3});
@@ -135,7 +135,7 @@ class TextureSequence {
  private:
   // Moves the buffers to step k (from the burn-in again when k is behind them).
   void seek(std::int64_t k);
-  // With a loop: whole periods after the burn-in until the buffers close (docs/design.md §11).
+  // With a loop: whole periods after the burn-in until the buffers close (docs/design.md §12).
   void close_loop(int burn_in);
   // k, or k mod the loop.
   std::int64_t in_loop(std::int64_t k) const;

@@ -6,7 +6,7 @@
 // every 1/speed seconds. The drifted IFS is a pure function of (base, t, seed): the same seed
 // gives the same animation for any frame range or thread count.
 //
-// With a loop of T seconds the drift is periodic in time (docs/design.md §11): each octave is
+// With a loop of T seconds the drift is periodic in time (docs/design.md §12): each octave is
 // gradient noise on a lattice that wraps around a whole number of cells per loop, the slowest
 // octave making round(T · speed) cycles (at least one), so time T is time 0 again, bit for bit,
 // and the way through it is as smooth as anywhere else.

@@ -73,7 +73,7 @@ struct FractalSettings {
   std::string superifs = "paper-fig4";  // superifs: the superIFS (its view and colouring
                                         // replace preset, colouring and view)
   int buffers = 3;                      // superifs: V
-  // Frames after which the animation is back at frame 0, bit for bit (docs/design.md §11); 0 =
+  // Frames after which the animation is back at frame 0, bit for bit (docs/design.md §12); 0 =
   // never. The loop holds ⌈loop / keyframe_interval⌉ keyframes spread evenly over it; the drift
   // is periodic with period loop / frame rate, the superIFS steps close into a loop of textures.
   std::int64_t loop = 0;

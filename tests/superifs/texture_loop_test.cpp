@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Loops of textures (docs/design.md §11): with periodic choices the buffers close, so texture N is
+// Loops of textures (docs/design.md §12): with periodic choices the buffers close, so texture N is
 // texture 0 — stepping on from texture N − 1, not by definition — in every mode, and the last step
 // of the loop is one V-variable step like the others.
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// `--loop N` through the fractal engine (docs/design.md §11): frame N is frame 0, byte for byte,
+// `--loop N` through the fractal engine (docs/design.md §12): frame N is frame 0, byte for byte,
 // for the drift and the superIFS animation, by frame number and by a host's time, and the step
 // from frame N − 1 into it changes the picture as much as the other steps do.
 #include <vector>
