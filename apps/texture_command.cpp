@@ -52,17 +52,22 @@ void add_texture_command(CLI::App& app) {
       ->required();
   cmd->add_option("-o,--output", args->output,
                   "Output image (.png, .tif, .exr, .jpg); with --frames a pattern like "
-                  "tex_%04d.png (one %d or %0Nd), numbered from 1")
+                  "tex_%04d.png (one %d or %0Nd), numbered from 1, or a movie (.mp4, .webm, "
+                  ".gif, .webp: GIF and WebP loop for ever)")
       ->required();
-  cmd->add_option("--frames", args->frames,
-                  "Frames to write: a sequence of textures, one per further step")
-      ->capture_default_str();
+  auto* frames = cmd->add_option("--frames", args->frames,
+                                 "Frames to write: a sequence of textures, one per further step "
+                                 "(default: 1, or the --loop's length)")
+                     ->capture_default_str();
   add_texture_options(*cmd, args);
   // Written by `ifsfx farm texture` into its shards' scripts.
   cmd->add_option("--frame-range", args->frame_range,
                   "Write only frames START:END (from 0) of the --frames sequence")
       ->group("");
-  cmd->callback([args] { run_texture(*args); });
+  cmd->callback([args, frames] {
+    if (frames->count() == 0 && args->loop > 0) args->frames = static_cast<int>(args->loop);
+    run_texture(*args);
+  });
 }
 
 }  // namespace ifsfx::app
