@@ -16,6 +16,7 @@
 #include "python/arrays.h"
 #include "python/errors.h"
 #include "python/options.h"
+#include "python/presets.h"
 #include "video/fractal_engine.h"
 
 namespace ifsfx::python {
@@ -49,8 +50,6 @@ class Filter {
       : settings_(std::move(settings)), output_size_(output_size), fps_(fps), rgb_(rgb) {
     settings_.sampling.cancel = CancelToken(stop_.get());
     engine_ = std::make_unique<video::FractalEngine>(settings_);
-    for (const std::string& warning : engine_->warnings())
-      if (PyErr_WarnEx(PyExc_UserWarning, warning.c_str(), 1) != 0) throw py::error_already_set();
     if (!(fps > 0 && fps <= 1000))
       throw Error(ErrorKind::invalid_argument,
                   fmt::format("fps: must be in (0, 1000] (got {})", fps));
@@ -176,6 +175,9 @@ must have that size (ValueError otherwise).
                                    .buffers = buffers,
                                    .superifs = spec_arg(superifs, "superifs"),
                                    .loop = loop});
+             // The preset as render() loads it: an unknown name is a ValueError, a Fractint
+             // entry that contracts only on average a UserWarning.
+             if (settings.animate != video::Animate::superifs) preset_arg(py::str(settings.preset));
              return std::make_unique<Filter>(settings, optional_size(size, "size"),
                                              optional_size(frame_size, "frame_size"), fps, rgb);
            }),
