@@ -39,10 +39,11 @@ inline constexpr std::chrono::milliseconds kSignalPoll{40};
 // the work's Error{interrupted} is dropped and the handler's exception is raised instead. The
 // work must not touch Python objects.
 //   cv::Mat image = run_released([&](const CancelToken& cancel) { return render(..., cancel); });
+// With `stop` as the stop flag: for work whose library object polls a flag it was made with
+// (the Filter's engine); the caller clears it after a stop.
 template <class Work>
-auto run_released(Work&& work) {
+auto run_released(Work&& work, std::atomic<bool>& stop) {
   using Result = decltype(work(CancelToken{}));
-  std::atomic<bool> stop{false};
   const CancelToken token(&stop);
   std::optional<Result> result;
   std::exception_ptr error;
@@ -78,6 +79,12 @@ auto run_released(Work&& work) {
   if (raised) throw py::error_already_set();
   if (error) std::rethrow_exception(error);
   return std::move(*result);
+}
+
+template <class Work>
+auto run_released(Work&& work) {
+  std::atomic<bool> stop{false};
+  return run_released(std::forward<Work>(work), stop);
 }
 
 }  // namespace ifsfx::python

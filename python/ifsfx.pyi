@@ -112,6 +112,68 @@ def apply(
     rgb: bool = False,
 ) -> _Image: ...
 
+def fit(
+    target: _Path | npt.ArrayLike,
+    n: int = 4,
+    *,
+    seed: int = 1,
+    init: Literal["search", "moments"] = "search",
+    threshold: float | None = None,
+    invert: bool = False,
+    size: int | str = 128,
+    max_seconds: float = 30.0,
+    max_evaluations: int = 250000,
+    threads: int = 0,
+    name: str | None = None,
+    rgb: bool = False,
+) -> Ifs: ...
+
+class Filter:
+    def __init__(
+        self,
+        preset: _Path = "barnsley-fern",
+        *,
+        colouring: _Path | None = None,
+        view: _View = None,
+        margin: float = 0.05,
+        quality: float = 64.0,
+        mix: float = 0.0,
+        background: _Colour = "black",
+        exact: bool = True,
+        seed: int = 1,
+        threads: int = 0,
+        interpolation: Literal["bilinear", "nearest"] = "bilinear",
+        animate: Literal["none", "drift", "superifs"] | None = "none",
+        drift_amount: float = 0.05,
+        drift_speed: float = 0.2,
+        keyframe_interval: int = 12,
+        superifs: _Path = "paper-fig4",
+        buffers: int = 3,
+        loop: int = 0,
+        size: _Size | None = None,
+        frame_size: _Size | None = None,
+        fps: float = 25.0,
+        rgb: bool = False,
+    ) -> None: ...
+    def __call__(
+        self, frame: npt.NDArray[np.uint8], index: int | None = None
+    ) -> npt.NDArray[np.uint8]: ...
+    def apply(
+        self, frame: npt.NDArray[np.uint8], index: int | None = None
+    ) -> npt.NDArray[np.uint8]: ...
+    @property
+    def index(self) -> int: ...
+    @index.setter
+    def index(self, index: int) -> None: ...
+    @property
+    def name(self) -> str: ...
+    @property
+    def frame_size(self) -> tuple[int, int] | None: ...
+    @property
+    def size(self) -> tuple[int, int] | None: ...
+    @property
+    def stalls(self) -> int: ...
+
 class TextureFrames(Iterator[_Image]):
     def __iter__(self) -> TextureFrames: ...
     def __next__(self) -> _Image: ...

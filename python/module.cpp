@@ -3,6 +3,8 @@
 #include <pybind11/pybind11.h>
 
 #include "python/errors.h"
+#include "python/filter.h"
+#include "python/fit.h"
 #include "python/fractaldb.h"
 #include "python/presets.h"
 #include "python/render.h"
@@ -29,4 +31,6 @@ float32 in BGR order, like cv2. Long computations release the GIL and stop on Ct
   ifsfx::python::bind_steal(m);
   ifsfx::python::bind_texture(m);
   ifsfx::python::bind_fractaldb(m);
+  ifsfx::python::bind_fit(m);
+  ifsfx::python::bind_filter(m);
 }

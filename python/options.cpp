@@ -37,6 +37,84 @@ StealMapOptions steal_map_options(const Keywords& k, const CancelToken& cancel) 
   return {.sampling = render_options(k, cancel).sampling, .exact = k.exact};
 }
 
+Interpolation interpolation_arg(const std::string& name) {
+  if (name == "bilinear") return Interpolation::bilinear;
+  if (name == "nearest") return Interpolation::nearest;
+  throw Error(ErrorKind::invalid_argument,
+              fmt::format("interpolation: bilinear or nearest (got '{}')", name));
+}
+
+std::string spec_arg(const py::object& spec, const std::string& what) {
+  if (spec.is_none()) return {};
+  if (py::isinstance<py::str>(spec)) return spec.cast<std::string>();
+  if (py::hasattr(spec, "__fspath__"))
+    return py::str(spec.attr("__fspath__")()).cast<std::string>();
+  throw Error(ErrorKind::invalid_argument,
+              fmt::format("{}: a name or a path (got {})", what,
+                          std::string(py::str(py::type::of(spec).attr("__name__")))));
+}
+
+video::Background filter_background_arg(const py::object& background) {
+  if (py::isinstance<py::str>(background))
+    return video::parse_background(background.cast<std::string>(), "background");
+  // (R, G, B): through the parser, so that a bad one gets its message.
+  if (py::isinstance<py::sequence>(background) && py::len(background) == 3) {
+    const py::sequence rgb = background.cast<py::sequence>();
+    if (py::isinstance<py::int_>(rgb[0]) && py::isinstance<py::int_>(rgb[1]) &&
+        py::isinstance<py::int_>(rgb[2]))
+      return video::parse_background(
+          fmt::format("{},{},{}", rgb[0].cast<long long>(), rgb[1].cast<long long>(),
+                      rgb[2].cast<long long>()),
+          "background");
+  }
+  throw Error(ErrorKind::invalid_argument,
+              fmt::format("background: black, white, original, #rrggbb or (R, G, B) (got {})",
+                          std::string(py::repr(background))));
+}
+
+namespace {
+
+video::Animate animate_arg(const py::object& animate) {
+  const std::string name = animate.is_none() ? "none" : py::str(animate).cast<std::string>();
+  if (!animate.is_none() && !py::isinstance<py::str>(animate))
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("animate: none, drift or superifs (got {})", std::string(py::repr(animate))));
+  if (name == "none") return video::Animate::none;
+  if (name == "drift") return video::Animate::drift;
+  if (name == "superifs") return video::Animate::superifs;
+  throw Error(ErrorKind::invalid_argument,
+              fmt::format("animate: none, drift or superifs (got '{}')", name));
+}
+
+}  // namespace
+
+video::FractalSettings fractal_settings(const FilterKeywords& k) {
+  video::FractalSettings s{.preset = spec_arg(k.preset, "preset"),
+                           .colouring = spec_arg(k.colouring, "colouring"),
+                           .exact = k.exact,
+                           .sampling = {.view = view_arg(k.view),
+                                        .margin = k.margin,
+                                        .quality = k.quality,
+                                        .seed = k.seed,
+                                        .threads = k.threads},
+                           .mix = k.mix,
+                           .background = filter_background_arg(k.background),
+                           .interpolation = interpolation_arg(k.interpolation),
+                           .animate = animate_arg(k.animate),
+                           .drift_amount = k.drift_amount,
+                           .drift_speed = k.drift_speed,
+                           .keyframe_interval = k.keyframe_interval,
+                           .superifs = k.superifs,
+                           .buffers = k.buffers,
+                           .loop = k.loop};
+  // The command's rule (check_filter_rules), in the keywords' words.
+  if (s.loop > 0 && s.animate == video::Animate::none)
+    throw Error(ErrorKind::invalid_argument,
+                "loop: repeats an animation; add animate=\"drift\" or animate=\"superifs\"");
+  return s;
+}
+
 cv::Size size_arg(const py::object& size, const std::string& what) {
   if (py::isinstance<py::str>(size)) return parse_size(size.cast<std::string>(), what);
   if (py::isinstance<py::sequence>(size) && py::len(size) == 2) {

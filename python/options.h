@@ -17,6 +17,7 @@
 #include "ifs/steal_map.h"
 #include "ifs/tops.h"
 #include "ifs/view.h"
+#include "video/fractal_engine.h"
 
 namespace ifsfx::python {
 
@@ -36,6 +37,29 @@ Keywords keywords(const py::object& view, double margin, double quality, int sup
 RenderOptions render_options(const Keywords& k, const CancelToken& cancel);
 TopsOptions tops_options(const Keywords& k, const CancelToken& cancel);
 StealMapOptions steal_map_options(const Keywords& k, const CancelToken& cancel);
+
+// The keywords of ifsfx.Filter as the settings of its FractalEngine, as `ifsfx filter` fills them
+// from its flags (defaults: FractalSettings{}); `view`, `background`, `interpolation` and
+// `animate` are parsed here, the rest checked by the engine. Throws Error{invalid_argument}
+// naming the keyword, as the command's rules (--loop needs an animation).
+struct FilterKeywords {
+  py::object preset, colouring, view, background, animate;
+  std::string interpolation;
+  double margin, quality, mix, drift_amount, drift_speed;
+  bool exact;
+  std::uint64_t seed;
+  int threads, keyframe_interval, buffers;
+  std::string superifs;
+  std::int64_t loop;
+};
+video::FractalSettings fractal_settings(const FilterKeywords& k);
+
+// interpolation=: "bilinear" or "nearest".
+Interpolation interpolation_arg(const std::string& name);
+// background= of the filter: "black", "white", "original", "#rrggbb", "R,G,B" or (R, G, B).
+video::Background filter_background_arg(const py::object& background);
+// A preset, colouring or superIFS named by a str or an os.PathLike ("" for None).
+std::string spec_arg(const py::object& spec, const std::string& what);
 
 // size=: (width, height) or "WxH", 1..32768 a side (parse_size's checks and message).
 cv::Size size_arg(const py::object& size, const std::string& what = "size");

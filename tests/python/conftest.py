@@ -2,7 +2,10 @@
 # Shared fixtures of the Python module's tests: the built `ifsfx` command (IFSFX_CLI, set by
 # CTest) and a source image made here, so that no test depends on files outside the tree.
 import os
+import signal
 import subprocess
+import threading
+import time
 
 import numpy as np
 import pytest
@@ -57,3 +60,23 @@ def photo(tmp_path_factory):
     path = tmp_path_factory.mktemp("photo") / "photo.png"
     ifsfx.write_image(str(path), image)
     return image, path
+
+
+def interrupted_after(delay, work):
+    """Runs work(), sending SIGINT to this process `delay` s after it starts; returns the
+    seconds from the signal to the KeyboardInterrupt."""
+    sent = []
+
+    def send():
+        sent.append(time.monotonic())
+        os.kill(os.getpid(), signal.SIGINT)
+
+    timer = threading.Timer(delay, send)
+    timer.start()
+    try:
+        work()
+    except KeyboardInterrupt:
+        return time.monotonic() - sent[0]
+    finally:
+        timer.cancel()
+    raise AssertionError("the work finished before the interrupt")

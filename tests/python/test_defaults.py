@@ -1,13 +1,14 @@
 # SPDX-License-Identifier: Apache-2.0
 # One set of sampling defaults through every door: the module's keyword defaults are those the
 # command line shows in `ifsfx render --help` and `ifsfx filter --help` (all read from the
-# library's Sampling and RenderOptions), and both default to the exact descent.
+# library's Sampling and RenderOptions), and both default to the exact descent; fit() and Filter
+# default as `ifsfx fit --help` and `ifsfx filter --help` show.
 import re
 
 import ifsfx
 from conftest import run_cli
 
-EXPECTED_TESTS = 2
+EXPECTED_TESTS = 4
 
 
 def help_defaults(cli, command):
@@ -42,3 +43,45 @@ def test_filter_samples_with_the_same_defaults_as_render(cli):
     for key in ("margin", "quality", "seed", "threads"):
         assert cli_filter[key] == cli_render[key], key
 
+
+
+def all_help_defaults(cli, command):
+    """{flag: default text} of every `[-x,]--flag TYPE...=DEFAULT` line of the help."""
+    done = run_cli(cli, command, "--help")
+    assert done.returncode == 0, done.stderr
+    return {m.group(1): m.group(2)
+            for m in re.finditer(r"^\s+(?:-\w,)?--([a-z-]+) [^=\n]*?=(\S+)", done.stdout, re.M)}
+
+
+def same(py, cli_text):
+    """A keyword default (its repr in the signature) equals the help's default text."""
+    value = py.strip("'")
+    try:
+        return float(value) == float(cli_text)
+    except ValueError:
+        return value == cli_text
+
+
+def test_fit_keywords_default_as_the_fit_command(cli):
+    cli_fit = all_help_defaults(cli, "fit")
+    py = keyword_defaults(ifsfx.fit)
+    names = {"maps": "n", "seed": "seed", "init": "init", "size": "size",
+             "max-seconds": "max_seconds", "max-evaluations": "max_evaluations",
+             "threads": "threads"}
+    for flag, key in names.items():
+        assert same(py[key], cli_fit[flag]), (flag, py[key], cli_fit[flag])
+    assert "threshold" not in cli_fit and py["threshold"] == "None"  # Otsu
+    assert py["invert"] == "False"
+
+
+def test_filter_keywords_default_as_the_filter_command(cli):
+    cli_filter = all_help_defaults(cli, "filter")
+    py = keyword_defaults(ifsfx.Filter.__init__)
+    flags = ["preset", "margin", "quality", "mix", "background", "seed", "threads",
+             "interpolation", "animate", "drift-amount", "drift-speed", "keyframe-interval",
+             "superifs", "buffers", "loop", "fps"]
+    for flag in flags:
+        key = flag.replace("-", "_")
+        assert same(py[key], cli_filter[flag]), (flag, py[key], cli_filter[flag])
+    assert py["exact"] == "True" and py["view"] == "None" and py["colouring"] == "None"
+    assert py["size"] == "None"  # the frame's, as --size

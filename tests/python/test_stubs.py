@@ -7,7 +7,7 @@ import os
 
 import ifsfx
 
-EXPECTED_TESTS = 3
+EXPECTED_TESTS = 4
 
 STUBS = os.path.join(os.path.dirname(ifsfx.__file__), "ifsfx.pyi")
 
@@ -49,7 +49,7 @@ def test_each_function_has_the_stub_keywords_and_defaults():
         assert names == built_names, node.name
         assert defaults == built_defaults, node.name
         checked += 1
-    assert checked == 10  # presets, load_preset, render, ..., textures
+    assert checked == 11  # presets, load_preset, render, ..., textures, fit
 
 
 def check_function(node, built):
@@ -86,3 +86,12 @@ def test_the_fractaldb_submodule_has_the_stub_names_keywords_and_defaults():
                 check_function(init, cls.__init__)
                 checked += 1
     assert checked == 7  # 5 functions, Category() and Dataset()
+
+
+def test_the_filter_class_has_the_stub_members_keywords_and_defaults():
+    stub = next(n for n in stub_tree().body if isinstance(n, ast.ClassDef) and n.name == "Filter")
+    methods = {n.name: n for n in stub.body if isinstance(n, ast.FunctionDef)}
+    built = {name for name in dir(ifsfx.Filter) if not name.startswith("_")}
+    assert set(methods) - {"__init__", "__call__"} == built
+    for name in ("__init__", "__call__", "apply"):
+        check_function(methods[name], getattr(ifsfx.Filter, name))

@@ -2,39 +2,18 @@
 # Long computations release the GIL (other Python threads run meanwhile, and two renders run at
 # once) and stop on Ctrl-C: a SIGINT during a render raises KeyboardInterrupt within half a
 # second.
-import os
-import signal
 import threading
 import time
 
 import numpy as np
 
 import ifsfx
+from conftest import interrupted_after
 
 EXPECTED_TESTS = 4
 
 # Seconds of work on one core: far longer than the test waits.
 LONG = dict(mode="measure", size=(1024, 1024), quality=20000, threads=1)
-
-
-def interrupted_after(delay, work):
-    """Runs work(), sending SIGINT to this process `delay` s after it starts; returns the
-    seconds from the signal to the KeyboardInterrupt."""
-    sent = []
-
-    def send():
-        sent.append(time.monotonic())
-        os.kill(os.getpid(), signal.SIGINT)
-
-    timer = threading.Timer(delay, send)
-    timer.start()
-    try:
-        work()
-    except KeyboardInterrupt:
-        return time.monotonic() - sent[0]
-    finally:
-        timer.cancel()
-    raise AssertionError("the work finished before the interrupt")
 
 
 def test_sigint_during_a_render_raises_keyboard_interrupt_within_half_a_second():
