@@ -195,11 +195,11 @@ mkdir -p "$W/tex-farm" "$W/tex-single"
   fail "farm texture files differ from texture --frames"
 ok "farm texture, K=3: 7 files identical (${SECONDS} s)"
 
-# farm texture of a loop (docs/loops.md): every shard closes the same loop, so the files are the
-# single run's, and frame 8 is frame 0 again. (Any texture option is handed on alike, --seamless
-# too.)
+# farm texture of a seamless loop (docs/loops.md, docs/seamless.md): every shard closes the same
+# loop on the same torus, so the files are the single run's (two periods across each), and frame 8
+# is frame 0 again.
 mkdir -p "$W/loop-farm" "$W/loop-single"
-loop=(--frames 9 --loop 8 --size 48x48 --crossfade 2 --mode tops --seed 5)
+loop=(--frames 9 --loop 8 --size 48x48 --crossfade 2 --mode tops --seed 5 --seamless --tiles 2x1)
 "$IFSFX" farm texture carpet-lace "${loop[@]}" -o "$W/loop-farm/t_%03d.png" --shards 2 \
   --cpus-per-task=1 --submit --wait >"$W/loop.out" 2>&1 || { cat "$W/loop.out"; fail "farm texture --loop failed"; }
 "$IFSFX" texture carpet-lace "${loop[@]}" -o "$W/loop-single/t_%03d.png" -q || fail "texture --loop failed"
@@ -208,7 +208,8 @@ loop=(--frames 9 --loop 8 --size 48x48 --crossfade 2 --mode tops --seed 5)
 [ "$(wc -l <"$W/loop-single.md5")" = 9 ] && cmp -s "$W/loop-single.md5" "$W/loop-farm.md5" ||
   fail "farm texture --loop files differ from texture --loop"
 cmp -s "$W/loop-farm/t_001.png" "$W/loop-farm/t_009.png" || fail "farm texture --loop: frame 8 is not frame 0"
-ok "farm texture --loop 8, K=2: 9 files identical, frame 8 = frame 0 (${SECONDS} s)"
+oiiotool --info "$W/loop-farm/t_001.png" | grep -q " 96 x   48," || fail "farm texture --seamless --tiles 2x1: not 96x48"
+ok "farm texture --seamless --tiles 2x1 --loop 8, K=2: 9 files identical, frame 8 = frame 0 (${SECONDS} s)"
 
 # Bad input: one line on stderr, a non-zero exit, no job folder, nothing in the queue.
 refused() {  # EXPECTED-TEXT ARGS...
