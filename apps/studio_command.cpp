@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// `ifsfx studio [PRESET] [--source IMAGE|MOVIE] [--camera /dev/videoN] [--port N] [--folder DIR]
-// [--open]`: a local web editor served by the
-// engine (docs/studio.md). An HTTP server (cpp-httplib) on 127.0.0.1 serves the page's files
+// `ifsfx studio [PRESET] [--source IMAGE|MOVIE] [--camera /dev/videoN] [--port N] [--listen ADDR]
+// [--folder DIR] [--open]`: a local web editor served by the engine (docs/studio.md). An HTTP
+// server (cpp-httplib) on 127.0.0.1 (or --listen's address) serves the page's files
 // (apps/studio/web, installed in share/ifsfx/studio) and a small JSON API; the page sends the
 // whole preset with every render, and the server renders it with `ifsfx render`'s library calls
-// (apps/studio_render.h). Safety: loopback only, a per-run secret token on every API request (a
-// header or the cookie set from the URL), Host and Origin checked against the loopback names
+// (apps/studio_render.h). Safety: loopback only unless --listen, a per-run secret token on every
+// API request (a header or the cookie set from the URL), Host and Origin checked (studio_hosts.h)
 // (DNS rebinding, cross-site requests), bodies capped, files read and written only in --folder.
 #include <spawn.h>
 #include <sys/socket.h>
@@ -38,6 +38,7 @@
 #include "apps/commands.h"
 #include "apps/stop_signals.h"
 #include "apps/studio_folder.h"
+#include "apps/studio_hosts.h"
 #include "apps/studio_http.h"
 #include "apps/studio_render.h"
 #include "apps/studio_routes.h"
@@ -65,6 +66,7 @@ constexpr const char* kTokenCookie = "ifsfx_token";
 struct StudioArgs {
   std::string preset = "barnsley-fern";
   int port = 0;
+  std::string listen = "127.0.0.1";  // --listen ADDR (apps/studio_hosts.h)
   std::string folder = ".";
   bool open = false;
   std::string source;  // --source IMAGE|MOVIE
@@ -134,7 +136,7 @@ int count_param(const httplib::Request& req, const char* name, int most) {
 class Studio {
  public:
   explicit Studio(const StudioArgs& args)
-      : args_(args), web_(web_folder()), token_(random_token()) {
+      : args_(args), web_(web_folder()), token_(random_token()), hosts_(args.listen) {
     folder_ = fs::canonical(args.folder);
     if (!fs::is_directory(folder_))
       throw Error(ErrorKind::invalid_argument,
@@ -171,12 +173,19 @@ class Studio {
   void run() {
     configure();
     routes();
-    port_ = args_.port == 0 ? server_.bind_to_any_port("127.0.0.1")
-                            : (server_.bind_to_port("127.0.0.1", args_.port) ? args_.port : -1);
+    const std::string& address = hosts_.listen();
+    port_ = args_.port == 0 ? server_.bind_to_any_port(address)
+                            : (server_.bind_to_port(address, args_.port) ? args_.port : -1);
     if (port_ <= 0)
-      throw Error(ErrorKind::io,
-                  fmt::format("--port {}: cannot listen on 127.0.0.1 (in use?)", args_.port));
-    const std::string url = fmt::format("http://127.0.0.1:{}/?token={}", port_, token_);
+      throw Error(ErrorKind::io, fmt::format("--port {}: cannot listen on {} (in use, or not an "
+                                             "address of this machine?)",
+                                             args_.port, address));
+    if (!hosts_.loopback_only())
+      fmt::print(stderr,
+                 "ifsfx: warning: studio: listening on {} port {}: other machines can connect; "
+                 "whoever has the URL's token can render and read and write files in {}\n",
+                 address, port_, folder_.string());
+    const std::string url = fmt::format("http://{}:{}/?token={}", hosts_.url_host(), port_, token_);
     std::printf("ifsfx studio: %s\n", url.c_str());
     std::fflush(stdout);
     if (args_.open) open_browser(url);
@@ -196,18 +205,6 @@ class Studio {
   }
 
  private:
-  // Host must name the loopback (a DNS-rebinding page reaches us under its own name), Origin,
-  // when sent, must be this server.
-  bool loopback_host(const std::string& host) const {
-    for (const char* name : {"127.0.0.1", "localhost", "[::1]"})
-      if (host == name || host == fmt::format("{}:{}", name, port_)) return true;
-    return false;
-  }
-  bool allowed_origin(const std::string& origin) const {
-    for (const char* name : {"127.0.0.1", "localhost", "[::1]"})
-      if (origin == fmt::format("http://{}:{}", name, port_)) return true;
-    return false;
-  }
   bool has_token(const httplib::Request& req) const {
     if (req.has_header(kTokenHeader) && same_secret(req.get_header_value(kTokenHeader), token_))
       return true;
@@ -264,13 +261,16 @@ class Studio {
     server_.set_tcp_nodelay(true);  // small answers at once, not after a delayed ACK
     server_.set_payload_max_length(kMaxUploadBytes);  // JSON bodies are checked to kMaxBody
     server_.set_pre_routing_handler([this](const httplib::Request& req, httplib::Response& res) {
-      if (!loopback_host(req.get_header_value("Host"))) {
-        send_error(
-            res, 403,
-            "Host: must be 127.0.0.1 or localhost (got " + req.get_header_value("Host") + ")");
+      // Host must name this server (a DNS-rebinding page reaches us under its own name), Origin,
+      // when sent, must be this server (apps/studio_hosts.h).
+      if (!hosts_.allowed_host(req.get_header_value("Host"), port_)) {
+        send_error(res, 403,
+                   "Host: must be 127.0.0.1, localhost or the --listen address (got " +
+                       req.get_header_value("Host") + ")");
         return httplib::Server::HandlerResponse::Handled;
       }
-      if (req.has_header("Origin") && !allowed_origin(req.get_header_value("Origin"))) {
+      if (req.has_header("Origin") &&
+          !hosts_.allowed_origin(req.get_header_value("Origin"), port_)) {
         send_error(res, 403,
                    "Origin: must be this server (got " + req.get_header_value("Origin") + ")");
         return httplib::Server::HandlerResponse::Handled;
@@ -528,6 +528,7 @@ class Studio {
   fs::path web_, folder_, scratch_;
   std::string token_;
   IfsPreset initial_;
+  StudioHosts hosts_;
   httplib::Server server_;
   int port_ = 0;
   std::atomic<bool> done_{false};
@@ -548,9 +549,14 @@ void add_studio_command(CLI::App& app) {
   cmd->add_option("preset", args->preset,
                   "Preset to open: a shipped name, a .toml/.ifs path, or FILE.ifs:NAME")
       ->capture_default_str();
-  cmd->add_option("--port", args->port, "Port on 127.0.0.1 (0: a free one)")
+  cmd->add_option("--port", args->port, "Port to listen on (0: a free one)")
       ->capture_default_str()
       ->check(CLI::Range(0, 65535));
+  cmd->add_option("--listen", args->listen,
+                  "Address to listen on: the loopback only by default; another address of this "
+                  "machine, or 0.0.0.0 (::) for all, lets other machines connect (with a warning; "
+                  "the token is still needed)")
+      ->capture_default_str();
   cmd->add_option("--folder", args->folder,
                   "Folder of source images (steal mode) and saved presets")
       ->capture_default_str();

@@ -25,8 +25,8 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 pass() { echo "ok: $*"; }
 
 pid=
-start_studio() {  # start_studio [PRESET]
-  TMPDIR="$work/tmp" "$ifsfx" studio "${1:-barnsley-fern}" --folder "$work/folder" >"$work/stdout" 2>"$work/stderr" &
+start_studio() {  # start_studio [PRESET [OPTION...]]
+  TMPDIR="$work/tmp" "$ifsfx" studio "${1:-barnsley-fern}" "${@:2}" --folder "$work/folder" >"$work/stdout" 2>"$work/stderr" &
   pid=$!
   url=
   for _ in $(seq 100); do
@@ -97,6 +97,8 @@ c=$(code GET /api/presets -H "Cookie: ifsfx_token=$token"); [[ $c == 200 ]] && p
 c=$(code GET /api/presets "${auth[@]}" -H "Host: evil.example:$port"); [[ $c == 403 ]] && pass "bad Host: 403" || fail "bad Host: $c"
 c=$(code GET / -H "Host: evil.example"); [[ $c == 403 ]] && pass "bad Host on the page: 403" || fail "bad Host on the page: $c"
 c=$(code GET /api/presets "${auth[@]}" -H "Host: localhost:$port"); [[ $c == 200 ]] && pass "Host localhost: 200" || fail "Host localhost: $c"
+c=$(code GET /api/presets "${auth[@]}" -H "Host: 192.0.2.7:$port"); [[ $c == 403 ]] && pass "another address as Host, loopback only: 403" || fail "another address as Host: $c"
+c=$(code GET /api/presets "${auth[@]}" -H "Host: localhost:1"); [[ $c == 403 ]] && pass "another port in Host: 403" || fail "another port in Host: $c"
 c=$(code POST /api/render "${auth[@]}" -H "Origin: http://evil.example" --data '{}'); [[ $c == 403 ]] && pass "bad Origin: 403" || fail "bad Origin: $c"
 
 # The page and its files
@@ -318,6 +320,20 @@ curl -s -o /dev/null "-H" "X-Ifsfx-Token: $token" -X POST "$base/api/render" \
 sleep 0.5
 stop_check TERM 143
 wait
+
+# --listen: other machines may connect (a warning says so); the token and the Host rule still hold
+start_studio barnsley-fern --listen 0.0.0.0
+grep -q "^ifsfx: warning: studio: listening on 0.0.0.0 port $port: other machines can connect" "$work/stderr" &&
+  pass "--listen 0.0.0.0: the warning" || fail "--listen 0.0.0.0: no warning ($(cat "$work/stderr"))"
+[[ $url == http://127.0.0.1:$port/* ]] && pass "--listen 0.0.0.0: the URL names 127.0.0.1" || fail "--listen URL $url"
+c=$(code GET /api/presets "${auth[@]}" -H "Host: 192.0.2.7:$port"); [[ $c == 200 ]] && pass "--listen 0.0.0.0: an address as Host: 200" || fail "--listen 0.0.0.0: an address as Host: $c"
+c=$(code GET /api/presets "${auth[@]}" -H "Host: evil.example:$port"); [[ $c == 403 ]] && pass "--listen 0.0.0.0: another name as Host: 403" || fail "--listen 0.0.0.0: another name: $c"
+c=$(code GET /api/presets "${auth[@]}" -H "Origin: http://evil.example:$port"); [[ $c == 403 ]] && pass "--listen 0.0.0.0: bad Origin: 403" || fail "--listen 0.0.0.0: bad Origin: $c"
+c=$(code GET /api/presets -H "Host: 192.0.2.7:$port"); [[ $c == 403 ]] && pass "--listen 0.0.0.0: no token: 403" || fail "--listen 0.0.0.0: no token: $c"
+kill -INT "$pid"; wait "$pid"
+out=$("$ifsfx" studio --listen example.com --folder "$work/folder" 2>&1); rc=$?
+[[ $rc == 2 && $out == "ifsfx: --listen: must be an IPv4 or IPv6 address"* ]] && pass "--listen NAME: refused ($out)" ||
+  fail "--listen NAME: exit $rc ($out)"
 
 ((failures == 0)) || { echo "$failures failure(s)"; exit 1; }
 echo "all passed"
