@@ -33,7 +33,7 @@
 
 namespace ifsfx {
 
-enum class PresetFormat { toml, fractint };
+enum class PresetFormat { toml, fractint, fractaldb };
 
 struct IfsPreset {
   Ifs ifs;
@@ -110,15 +110,18 @@ std::vector<PresetSummary> list_presets_in(const std::string& path,
                                            const ValidateOptions& options = {});
 
 // Loads an IFS named on the command line: a shipped preset's name ("barnsley-fern"), a path to a
-// .toml or .ifs file, or "FILE.ifs:NAME" for one entry of a Fractint file (the first when no
-// name). Shipped names are a .toml file's stem or an entry name of a shipped .ifs file, matched
-// exactly, else ignoring case; a bare file name that is not on disk may name a shipped file
+// .toml or .ifs file, "FILE.ifs:NAME" for one entry of a Fractint file (the first when no
+// name), or a FractalDB category file, FILE.csv (rows a,b,c,d,e,f,p: fractaldb::read_category;
+// named by its stem, its p normalised). Shipped names are a .toml file's stem or an entry name of a
+// shipped .ifs file, matched exactly, else ignoring case; a bare file name that is not on disk may
+// name a shipped file
 // ("fractint-classics.ifs:coral"). Only the entry picked from a Fractint file must be usable.
 // The IFS is validated (see validate()) with `origin` as the culprit: maps must contract
 // (factor < 1) unless options.allow_expansive or the preset's own allow_expansive key says that
 // contracting on average is enough. A Fractint entry whose maps contract only on average (a map
 // of factor ≥ 1, such as a point reflection) is accepted as Fractint renders it, with one line in
-// `warnings` saying so; an IFS that does not contract on average is refused in every case.
+// `warnings` saying so, and so is a FractalDB category (its search keeps random IFSs that contract
+// on average); an IFS that does not contract on average is refused in every case.
 // Throws Error{not_found} for an unknown name (suggesting the closest one) or a missing file,
 // naming it, and the parse errors above.
 IfsPreset load_ifs(const std::string& spec, const ValidateOptions& options = {});

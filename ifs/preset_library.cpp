@@ -15,6 +15,7 @@
 #include <fmt/ranges.h>
 
 #include "ifs/error.h"
+#include "ifs/fractaldb_csv.h"
 #include "ifs/fractint.h"
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"
@@ -184,6 +185,19 @@ IfsPreset pick_entry(const SourceText& source, const std::string& name) {
   return std::move(*picked->preset);
 }
 
+// A FractalDB category CSV as a preset (ifs/fractaldb_csv.h): the file's own checks, which
+// refuse a row set that does not contract on average.
+IfsPreset fractaldb_category(const SourceText& source) {
+  const fractaldb::Category category = fractaldb::parse_category(source.text, source.filename);
+  IfsPreset preset;
+  preset.ifs = category.ifs();
+  preset.description = fmt::format("FractalDB category {}", category.name);
+  preset.origin = source.origin;
+  preset.text = source.text;
+  preset.format = PresetFormat::fractaldb;
+  return preset;
+}
+
 IfsPreset resolve(const std::string& spec) {
   if (spec.empty())
     throw Error(ErrorKind::invalid_argument,
@@ -203,9 +217,12 @@ IfsPreset resolve(const std::string& spec) {
     preset.origin = source.origin;
     return preset;
   }
+  if (ends_with(spec, ".csv")) return fractaldb_category(read_source(spec));
   if (spec.find('/') != std::string::npos)
     throw Error(ErrorKind::unsupported,
-                fmt::format("{}: preset files end in .toml or .ifs (got neither)", spec));
+                fmt::format("{}: preset files end in .toml, .ifs or .csv (a FractalDB category) "
+                            "(got none of them)",
+                            spec));
   return find_shipped(spec);
 }
 
@@ -225,11 +242,17 @@ std::vector<PresetSummary> list_shipped_presets() {
 
 namespace {
 
+// Fractint and FractalDB render IFSs that contract only on average (a map of factor ≥ 1 among
+// contracting ones); their files are taken so, with a warning (load_ifs).
+bool contracts_on_average(PresetFormat format) {
+  return format == PresetFormat::fractint || format == PresetFormat::fractaldb;
+}
+
 // Fractint validates an entry as we do, when it is picked: an IFS that contracts on average.
 void validate_entry(const IfsPreset& preset, const ValidateOptions& options) {
   ValidateOptions relaxed = options;
   relaxed.allow_expansive =
-      options.allow_expansive || preset.allow_expansive || preset.format == PresetFormat::fractint;
+      options.allow_expansive || preset.allow_expansive || contracts_on_average(preset.format);
   validate(preset.ifs, preset.origin, relaxed);
 }
 
@@ -301,9 +324,8 @@ IfsPreset load_ifs(const std::string& spec, const ValidateOptions& options) {
   }
   // Fractint renders IFSs that contract only on average; so do we, saying so once, unless the
   // caller or the file already accepted that.
-  const bool fractint = preset.format == PresetFormat::fractint;
   const bool allowed = options.allow_expansive || preset.allow_expansive;
-  if (fractint && !allowed) {
+  if (contracts_on_average(preset.format) && !allowed) {
     std::vector<std::string> maps, factors;
     for (std::size_t i = 0; i < preset.ifs.size(); ++i)
       if (const double s = preset.ifs.maps[i].contraction(); s >= 1) {
@@ -312,10 +334,11 @@ IfsPreset load_ifs(const std::string& spec, const ValidateOptions& options) {
       }
     if (!maps.empty())
       preset.warnings.push_back(fmt::format(
-          "{}: {} {} {} not contract (factor{} {}); accepted as Fractint renders it, since the "
-          "IFS contracts on average (mean log factor {:.3g})",
+          "{}: {} {} {} not contract (factor{} {}); accepted as {} renders it, since the IFS "
+          "contracts on average (mean log factor {:.3g})",
           preset.origin, maps.size() == 1 ? "map" : "maps", fmt::join(maps, ", "),
           maps.size() == 1 ? "does" : "do", maps.size() == 1 ? "" : "s", fmt::join(factors, ", "),
+          preset.format == PresetFormat::fractint ? "Fractint" : "FractalDB",
           mean_log_contraction(preset.ifs)));
   }
   return preset;

@@ -422,9 +422,45 @@ TEST(load_ifs, a_toml_file_is_read_and_validated_under_its_path) {
   expect_error(typo, ErrorKind::parse, typo + ":1: map 1: needs 6 numbers a b c d e f (got 5)");
 }
 
+// A FractalDB category file (ifs/fractaldb_csv.h) is a preset too: named by its stem, its p
+// normalised, its rows the maps in their order.
+TEST(load_ifs, reads_a_fractaldb_category_csv) {
+  const TempDir dir;
+  const std::string path = dir.write(
+      "00042.csv", "0.5,0,0,0.5,0,0,0.5\n0.5,0,0,0.5,0.5,0,0.25\n0.5,0,0,0.5,0,0.5,0.25\n");
+  const IfsPreset p = load_ifs(path);
+  EXPECT_EQ(p.format, PresetFormat::fractaldb);
+  EXPECT_EQ(p.ifs.name, "00042");
+  EXPECT_EQ(p.description, "FractalDB category 00042");
+  EXPECT_EQ(p.origin, path);
+  ASSERT_EQ(p.ifs.size(), 3u);
+  EXPECT_EQ(p.ifs.maps[2], (AffineMap{0.5, 0, 0, 0.5, 0, 0.5}));
+  EXPECT_EQ(p.ifs.probabilities, (std::vector<double>{0.5, 0.25, 0.25}));
+  EXPECT_TRUE(p.warnings.empty());
+  // A map that does not contract among ones that do: taken as FractalDB renders it, said once.
+  const std::string mixed = dir.write("00007.csv", "-1,0,0,-1,0,0,0.1\n0.3,0,0,0.3,0.5,0,0.9\n");
+  const IfsPreset m = load_ifs(mixed);
+  ASSERT_EQ(m.warnings.size(), 1u);
+  EXPECT_NE(
+      m.warnings[0].find(mixed + ": map 1 does not contract (factor 1); accepted as FractalDB "
+                                 "renders it"),
+      std::string::npos)
+      << m.warnings[0];
+  // The file's own errors, with its name and line.
+  const std::string bad = dir.write("00008.csv", "0.5,0,0,0.5,0,0,1\n0.5,0,0\n");
+  try {
+    load_ifs(bad);
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::parse);
+    EXPECT_EQ(std::string(e.what()).rfind(bad + ":2: ", 0), 0u) << e.what();
+  }
+}
+
 TEST(load_ifs, rejects_other_files_and_superifs_presets) {
   expect_error("some/fern.txt", ErrorKind::unsupported,
-               "some/fern.txt: preset files end in .toml or .ifs (got neither)");
+               "some/fern.txt: preset files end in .toml, .ifs or .csv (a FractalDB category) "
+               "(got none of them)");
   expect_error("mine.super.toml", ErrorKind::unsupported,
                "mine.super.toml: a superIFS preset, not an IFS (got a .super.toml file)");
   expect_error("", ErrorKind::invalid_argument,

@@ -14,7 +14,7 @@ import pytest
 
 import ifsfx
 from ifsfx import fractaldb
-from conftest import run_cli
+from conftest import cli_image, run_cli
 
 EXPECTED_TESTS = 11
 
@@ -63,6 +63,18 @@ def test_images_equal_the_files_of_the_command(cli, categories, tmp_path):
             assert label == data.key(i)[0]
             assert np.array_equal(image, ifsfx.read_image(str(out / data.path(i)))), data.path(i)
             assert np.array_equal(image, data[i][0])
+
+
+def test_a_category_csv_is_a_preset_of_render_as_on_the_command_line(cli, categories, tmp_path):
+    path = str(categories / "00001.csv")
+    preset = ifsfx.load_preset(path)
+    assert preset.name == "00001" and len(preset) == 2
+    assert preset.description == "FractalDB category 00001"
+    assert np.allclose(preset.maps, MAPS["00001"])
+    for mode in ("measure", "tops"):
+        image = ifsfx.render(path, mode=mode, size=(96, 80))
+        assert np.array_equal(image, cli_image(cli, tmp_path, "render", path, "--mode", mode,
+                                               "--size", "96x80", name=f"{mode}.png")), mode
 
 
 def test_the_same_seed_gives_the_same_images_and_the_seed_moves_the_patches(categories):
