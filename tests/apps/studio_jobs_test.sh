@@ -10,6 +10,8 @@
 # 500) and leaves no temporary file. Tiny sizes: it runs in the Release and the sanitizer passes.
 # Usage: studio_jobs_test.sh IFSFX WORKDIR
 set -uo pipefail
+# shellcheck source=studio_start.sh
+source "$(dirname "$0")/studio_start.sh"
 ifsfx=$1
 work=$2
 bound_ms=${IFSFX_STOP_BOUND_MS:-500}
@@ -40,21 +42,6 @@ ln -s /etc/hostname folder/out.png
 ln -s /etc/hostname folder/link.mp4
 
 pid=
-start_studio() {  # start_studio [ARGS...]
-  TMPDIR="$work/tmp" "$ifsfx" studio barnsley-fern --folder "$work/folder" "$@" >"$work/stdout" 2>"$work/stderr" &
-  pid=$!
-  url=
-  for _ in $(seq 100); do
-    url=$(sed -n 's/^ifsfx studio: //p' "$work/stdout")
-    [[ -n $url ]] && break
-    sleep 0.1
-  done
-  [[ -n $url ]] || { cat "$work/stderr"; echo "FAIL: no URL printed"; exit 1; }
-  base=${url%%/\?token=*}
-  token=${url##*token=}
-  port=${base##*:}
-  auth=(-H "X-Ifsfx-Token: $token")
-}
 
 # code METHOD PATH [curl args...]: the HTTP status; the body in $work/body
 code() {
@@ -79,7 +66,7 @@ wait_job() {
 }
 hidden_files() { find "$work/folder" -name '.*' | wc -l; }
 
-start_studio --source "$work/elsewhere/source.mp4"
+start_studio barnsley-fern --source "$work/elsewhere/source.mp4"
 
 # ---- the token, Host and Origin on the new endpoints ----
 for path in /api/jobs /api/session /api/movies /api/superifs "/api/file?name=clip.mp4"; do
@@ -309,7 +296,7 @@ TMPDIR="$work/tmp" "$ifsfx" studio --folder "$work/folder" --camera /dev/video99
 rc=$?
 [[ $rc != 0 ]] && grep -q '/dev/video99' stderr && pass "--camera /dev/video99: exit $rc, $(cat stderr)" || fail "missing camera: exit $rc $(cat stderr)"
 [[ -z $(ls -A tmp) ]] && pass "--camera /dev/video99: no scratch folder left" || fail "missing camera left $(ls -A tmp)"
-start_studio --camera /dev/null
+start_studio barnsley-fern --camera /dev/null
 c=$(code GET /api/session "${auth[@]}"); [[ $(field "d['camera']") == /dev/null ]] || fail "session camera: $(cat body)"
 c=$(code POST /api/camera/frame "${auth[@]}" --data "$preset")
 [[ $c == 503 ]] && grep -q '/dev/null' body && pass "a camera that fails: 503 naming it ($(cat body))" || fail "failing camera: $c $(cat body)"

@@ -10,6 +10,8 @@
 # connection held open (HTTP keep-alive).
 # Usage: studio_server_test.sh IFSFX WORKDIR
 set -uo pipefail
+# shellcheck source=studio_start.sh
+source "$(dirname "$0")/studio_start.sh"
 ifsfx=$1
 work=$2
 bound_ms=${IFSFX_STOP_BOUND_MS:-500}
@@ -25,21 +27,6 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 pass() { echo "ok: $*"; }
 
 pid=
-start_studio() {  # start_studio [PRESET [OPTION...]]
-  TMPDIR="$work/tmp" "$ifsfx" studio "${1:-barnsley-fern}" "${@:2}" --folder "$work/folder" >"$work/stdout" 2>"$work/stderr" &
-  pid=$!
-  url=
-  for _ in $(seq 100); do
-    url=$(sed -n 's/^ifsfx studio: //p' "$work/stdout")
-    [[ -n $url ]] && break
-    sleep 0.1
-  done
-  [[ -n $url ]] || { cat "$work/stderr"; echo "FAIL: no URL printed"; exit 1; }
-  base=${url%%/\?token=*}
-  token=${url##*token=}
-  port=${base##*:}
-  auth=(-H "X-Ifsfx-Token: $token")
-}
 
 # code METHOD PATH [curl args...]: the HTTP status (the body in $work/body, headers in
 # $work/headers)
@@ -81,7 +68,7 @@ stop_check() {  # stop_check SIGNAL EXPECTED_EXIT
   [[ -z $(find "$work/folder" -name '.*') ]] || fail "$signal: hidden files left in the folder"
 }
 
-start_studio
+start_studio barnsley-fern
 [[ $url == http://127.0.0.1:* ]] && pass "listens on 127.0.0.1" || fail "URL $url"
 ss -ltn 2>/dev/null | grep -q "127.0.0.1:$port " && pass "bound to loopback only" || true
 
