@@ -14,10 +14,10 @@
 
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"
-#include "video/camera_drift.h"
+#include "engine/camera_drift.h"
 #include "video/camera_pipeline.h"
 #include "video/camera_synthetic.h"
-#include "video/fractal_filter.h"
+#include "engine/fractal_filter.h"
 
 namespace {
 
@@ -77,7 +77,7 @@ BENCHMARK(BM_cam_fixed_map)
     ->Unit(benchmark::kSecond);
 
 // `ifsfx cam --animate drift`: maps rebuilt on a worker as fast as it goes, faded in, never
-// waited for (video/camera_drift.h). `maps` counts the maps built during the run.
+// waited for (engine/camera_drift.h). `maps` counts the maps built during the run.
 void BM_cam_drift(benchmark::State& state) {
   const Setup setup;
   for (auto _ : state) {

@@ -8,10 +8,10 @@
 # it at the end. Run as root.
 #
 #   bench/farm_bench.sh [IFSFX] [FRAMES] [SIZE] [LOOPS]
-#     defaults: build/release/apps/ifsfx 200 1920x1080 50 (the large input: the clip LOOPS times)
+#     defaults: build/release/cli/ifsfx 200 1920x1080 50 (the large input: the clip LOOPS times)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-ifsfx=$(realpath "${1:-build/release/apps/ifsfx}")
+ifsfx=$(realpath "${1:-build/release/cli/ifsfx}")
 frames=${2:-200}
 size=${3:-1920x1080}
 loops=${4:-50}

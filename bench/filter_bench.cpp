@@ -14,9 +14,9 @@
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"
 #include "ifs/view.h"
-#include "video/drift.h"
-#include "video/fractal_filter.h"
-#include "video/map_schedule.h"
+#include "engine/drift.h"
+#include "engine/fractal_filter.h"
+#include "engine/map_schedule.h"
 
 namespace {
 

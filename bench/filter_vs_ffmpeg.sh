@@ -8,9 +8,9 @@
 # Reports wall time and CPU time (user + sys) of each; the steal map is computed once before the
 # first frame (a fixed cost shown apart: "pipeline" is ifsfx's own timing of decode→encode).
 #
-#   bench/filter_vs_ffmpeg.sh [IFSFX] [FRAMES] [SIZE]     defaults: build/apps/ifsfx 150 1920x1080
+#   bench/filter_vs_ffmpeg.sh [IFSFX] [FRAMES] [SIZE]     defaults: build/cli/ifsfx 150 1920x1080
 set -euo pipefail
-ifsfx=$(realpath "${1:-build/apps/ifsfx}")
+ifsfx=$(realpath "${1:-build/cli/ifsfx}")
 frames=${2:-150}
 size=${3:-1920x1080}
 work=$(mktemp -d)

@@ -13,7 +13,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 portable=${1:-build/release} native=${2:-build/native} rounds=${3:-3}
 for dir in "$portable" "$native"; do
-  for program in bench/chaos_game_bench bench/steal_bench apps/ifsfx; do
+  for program in bench/chaos_game_bench bench/steal_bench cli/ifsfx; do
     [ -x "$dir/$program" ] || { echo "native_vs_portable: no $dir/$program (build it first)" >&2; exit 2; }
   done
 done
@@ -38,7 +38,7 @@ for b in json.load(sys.stdin)["benchmarks"]:
           >>"$work/results"
     done
     if ((flam3)); then
-      bash bench/vs-flam3.sh "$dir/apps/ifsfx" |
+      bash bench/vs-flam3.sh "$dir/cli/ifsfx" |
         awk -v kind="$kind" '/Mpts per CPU-second/ { print kind, "vs-flam3:" $1, "-", $3, "Mpts" }' \
           >>"$work/results"
     fi

@@ -61,7 +61,7 @@ export limit
 run decode bash -c 'ff -f null -'
 run rgba bash -c 'ff -vf format=rgba -f null -'
 run plugin bash -c "ff -vf frei0r=ifsfx:$preset -f null -"
-run ifsfx bash -c "\"$build/apps/ifsfx\" filter in.mp4 -o out.mkv --codec ffv1 --preset $preset --frames 0:\$((limit - 1)) -q"
+run ifsfx bash -c "\"$build/cli/ifsfx\" filter in.mp4 -o out.mkv --codec ffv1 --preset $preset --frames 0:\$((limit - 1)) -q"
 
 echo "input: $frames frames $size H.264; cores $cpus of $(nproc); load $(cut -d' ' -f1 /proc/loadavg)"
 cores=$(taskset -cp $$ | awk -F': ' '{ n = split($2, r, ","); c = 0

@@ -5,9 +5,9 @@
 # while a movie-filter job runs (960x720, drift, on the job threads at nice 5), then N times
 # while a 4096x4096 measure still runs. Prints p50 and p95 of each (curl's total time); asserts
 # nothing.
-# Usage: bench/studio_jobs_latency.sh [IFSFX] [N]   (default build/release/apps/ifsfx, 20)
+# Usage: bench/studio_jobs_latency.sh [IFSFX] [N]   (default build/release/cli/ifsfx, 20)
 set -euo pipefail
-ifsfx=$(realpath "${1:-build/release/apps/ifsfx}")
+ifsfx=$(realpath "${1:-build/release/cli/ifsfx}")
 n=${2:-20}
 work=$(mktemp -d)
 trap 'kill -INT "$pid" 2>/dev/null; wait "$pid" 2>/dev/null; rm -rf "$work"' EXIT

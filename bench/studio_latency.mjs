@@ -11,7 +11,7 @@
 // and max of each, the server's render times (coarse and full), the coarse sizes the page chose
 // and the load average. Figures only: nothing is asserted.
 // Usage: node bench/studio_latency.mjs [IFSFX [NODE_MODULES]] [--moves N] [--modes a,b]
-//   IFSFX defaults to build/release/apps/ifsfx, NODE_MODULES to build/release/studio-node/
+//   IFSFX defaults to build/release/cli/ifsfx, NODE_MODULES to build/release/studio-node/
 //   node_modules (ctest -R studio.node_setup installs playwright-core there).
 import { spawn } from 'node:child_process';
 import { existsSync, mkdtempSync, rmSync } from 'node:fs';
@@ -29,7 +29,7 @@ const option = (name, fallback) => {
 const moves = Number(option('--moves', '100'));
 const modes = option('--modes', 'tops,steal,measure').split(',');
 const root = path.resolve(path.dirname(new URL(import.meta.url).pathname), '..');
-const ifsfx = args[0] || path.join(root, 'build/release/apps/ifsfx');
+const ifsfx = args[0] || path.join(root, 'build/release/cli/ifsfx');
 const nodeModules = args[1] || path.join(root, 'build/release/studio-node/node_modules');
 const chromium = '/usr/bin/chromium';
 for (const [what, p] of [['ifsfx', ifsfx], ['playwright-core', path.join(nodeModules, 'playwright-core')], ['chromium', chromium]])

@@ -7,7 +7,7 @@
 #   bench/vs-flam3.sh [path/to/ifsfx] [samples-per-pixel] [threads]     defaults: 64 2
 set -euo pipefail
 cd "$(dirname "$0")/.."
-ifsfx=${1:-build/release/apps/ifsfx}
+ifsfx=${1:-build/release/cli/ifsfx}
 spp=${2:-64}
 threads=${3:-2}
 width=1920 height=1080

@@ -9,14 +9,14 @@
 #   share/doc/ifsfx/README.md, docs/            the README and the pages it links    runtime
 #   share/doc/ifsfx/copyright                   Debian copyright (cmake/debian-copyright) runtime
 #   share/doc/ifsfx-dev/copyright               the same, for the -dev package        dev
-#   include/ifsfx/{ifs,superifs,collage,video}/ public headers (not detail/)         dev
-#   LIBDIR/libifsfx_{ifs,superifs,collage,video}.a                                   dev
+#   include/ifsfx/{ifs,superifs,collage,fractaldb,engine,video}/ public headers (not detail/)         dev
+#   LIBDIR/libifsfx_{ifs,superifs,collage,fractaldb,engine,video}.a                                dev
 #   LIBDIR/cmake/ifsfx/                         find_package(ifsfx CONFIG)           dev
 #   LIBDIR/pkgconfig/ifsfx.pc                   pkg-config --cflags --libs ifsfx     dev
 #
 # LIBDIR is GNUInstallDirs' CMAKE_INSTALL_LIBDIR: lib, or lib/x86_64-linux-gnu for prefix /usr.
 # bin/ifsfx finds ifsfx-full by the path from BINDIR to LIBEXECDIR fixed at configure time
-# (apps/CMakeLists.txt), so the two move together under any prefix.
+# (cli/CMakeLists.txt), so the two move together under any prefix.
 # The presets are built into the program (cmake/embed_presets.cmake); the copies are there to be
 # read, copied and changed (`ifsfx render my-fern.toml`), like a package's examples.
 #
@@ -34,7 +34,7 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(IFSFX_LIBRARIES)
-foreach(lib ifs superifs collage video)
+foreach(lib ifs superifs collage fractaldb engine video)
   if(TARGET ${lib})
     list(APPEND IFSFX_LIBRARIES ${lib})
     # libifsfx_video.a, not libvideo.a, once it lies beside every other library of the system.
@@ -60,7 +60,7 @@ install(FILES ${IFSFX_MAN_PAGE} DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
 install(FILES ${IFSFX_COMPLETION} DESTINATION ${CMAKE_INSTALL_DATADIR}/bash-completion/completions
         RENAME ifsfx)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/presets/ DESTINATION ${CMAKE_INSTALL_DATADIR}/ifsfx/presets)
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/apps/studio/web/ DESTINATION ${CMAKE_INSTALL_DATADIR}/ifsfx/studio)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/studio/web/ DESTINATION ${CMAKE_INSTALL_DATADIR}/ifsfx/studio)
 install(FILES ${PROJECT_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DOCDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/docs/ DESTINATION ${CMAKE_INSTALL_DOCDIR}/docs)
 # Debian wants /usr/share/doc/PACKAGE/copyright in every package: the machine-readable copyright
@@ -106,7 +106,7 @@ endforeach()
 # Static libraries: every library they use goes into Libs/Requires (not *.private), or a plain
 # `pkg-config --libs ifsfx` would not link. Dependent libraries come first.
 set(IFSFX_PC_LIBS)
-foreach(lib video collage superifs ifs)
+foreach(lib video engine fractaldb collage superifs ifs)
   if(lib IN_LIST IFSFX_LIBRARIES)
     string(APPEND IFSFX_PC_LIBS " -lifsfx_${lib}")
   endif()

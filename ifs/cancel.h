@@ -22,6 +22,9 @@ class CancelToken {
   bool requested() const noexcept {
     return flag_ != nullptr && flag_->load(std::memory_order_relaxed);
   }
+  // The flag watched (null for a token that never stops), for loops that poll a flag.
+  const std::atomic<bool>* flag() const noexcept { return flag_; }
+
   // Throws Error{interrupted} "WHAT: interrupted" when a stop was requested.
   void check(const char* what) const;
 

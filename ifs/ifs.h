@@ -33,6 +33,8 @@ struct Ifs {
 
   // Contraction factor of the IFS: the largest factor of its maps (paper §2).
   double contraction() const;
+
+  friend bool operator==(const Ifs&, const Ifs&) = default;
 };
 
 // Probabilities ∝ |det f_n| with a floor, so that a degenerate map (det 0, e.g. the fern's stem)

@@ -99,4 +99,18 @@ void write_image(OutputFile& file, const cv::Mat& image, const WriteOptions& opt
   detail::write_oiio(path, file.temporary(), pixels, options.smallest, attributes_of(options));
 }
 
+std::string encode_image(const cv::Mat& image, const std::string& extension,
+                         const WriteOptions& options) {
+  const fs::path name = "image" + extension;  // what picks the format, and names it in messages
+  if (image.empty())
+    throw Error(ErrorKind::invalid_argument, fmt::format("{}: empty image", name.string()));
+  check_bits(name, options.bits);
+  const std::string ext = detail::lower_extension(name);
+  const int cv_depth = float_format(ext) ? CV_32F : options.bits == 16 ? CV_16U : CV_8U;
+  std::vector<unsigned char> bytes;
+  detail::write_oiio(name, name, to_file_depth(image, cv_depth), options.smallest,
+                     attributes_of(options), &bytes);
+  return {bytes.begin(), bytes.end()};
+}
+
 }  // namespace ifsfx

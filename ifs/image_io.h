@@ -42,6 +42,13 @@ void write_image(const std::filesystem::path& path, const cv::Mat& image,
 // is not used (the OutputFile has its own).
 void write_image(OutputFile& out, const cv::Mat& image, const WriteOptions& options = {});
 
+// The bytes write_image would put in a file named with `extension` (".png", ".jpg", ...), for a
+// caller that sends them elsewhere (an HTTP response): the same encoder, conversion, options and
+// metadata, so the same bytes; no file is touched. Throws Error{unsupported} or Error{io} as
+// write_image does.
+std::string encode_image(const cv::Mat& image, const std::string& extension,
+                         const WriteOptions& options = {});
+
 // Throws Error{unsupported} if no writer handles `path`'s extension or it cannot hold `bits` per
 // channel, Error{invalid_argument} for bits other than 8 or 16, and what check_output throws — the
 // checks write_image makes, for use before long work.

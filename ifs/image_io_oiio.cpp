@@ -3,6 +3,7 @@
 // (ifs/detail/image_formats.h).
 #include <algorithm>
 #include <fstream>
+#include <optional>
 #include <string_view>
 #include <system_error>
 
@@ -11,6 +12,7 @@
 // then pull this object, and OpenImageIO with it, out of libifsfx_ifs.a.
 #include <fmt/format.h>
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <nlohmann/json.hpp>
 #include <opencv2/imgproc.hpp>
@@ -117,7 +119,7 @@ bool oiio_can_write(const fs::path& path) {
 }
 
 void write_oiio(const fs::path& target, const fs::path& file, const cv::Mat& image, bool smallest,
-                const ImageAttributes& attributes) {
+                const ImageAttributes& attributes, std::vector<unsigned char>* memory) {
   const bool is_float = image.depth() == CV_32F;
   const OIIO::TypeDesc format = is_float                  ? OIIO::TypeDesc::FLOAT
                                 : image.depth() == CV_16U ? OIIO::TypeDesc::UINT16
@@ -146,7 +148,11 @@ void write_oiio(const fs::path& target, const fs::path& file, const cv::Mat& ima
     constexpr int kPngFilterSub = 0x10;
     if (!smallest) spec.attribute("png:filter", kPngFilterSub);
   }
-  bool ok = out && out->open(file.string(), spec);
+  // In memory: the same writer and spec through an I/O proxy, so the same bytes as the file.
+  std::optional<OIIO::Filesystem::IOVecOutput> proxy;
+  if (memory != nullptr) proxy.emplace(*memory);
+  bool ok = out && (!proxy || out->set_ioproxy(&*proxy));
+  ok = ok && out->open(proxy ? target.string() : file.string(), spec);
   ok = ok && out->write_image(format, pixels.data);
   ok = out && out->close() && ok;
   if (!ok) {

@@ -2,7 +2,7 @@
 // OpenImageIO's side of ifs/image_io.h for a binary that must not load OpenImageIO: the light
 // `ifsfx`, which writes PNG through libpng (ifs/png_writer.cpp: the pixels and text attributes
 // OpenImageIO would write) and hands every command that reads an image or writes another format
-// to the full binary before it gets here (apps/light_main.cpp). Linked as an object ahead of
+// to the full binary before it gets here (cli/light_main.cpp). Linked as an object ahead of
 // libifs.a, these definitions keep the linker from taking image_io_oiio.o out of the archive;
 // anything but PNG asked of them after all is refused, never written or read.
 #include <fmt/format.h>
@@ -36,8 +36,9 @@ bool oiio_can_write(const fs::path& path) {
 }
 
 void write_oiio(const fs::path& target, const fs::path& file, const cv::Mat& pixels, bool smallest,
-                const ImageAttributes& attributes) {
+                const ImageAttributes& attributes, std::vector<unsigned char>* memory) {
   if (!is_png(target)) refuse(target, "writes only PNG");
+  if (memory != nullptr) refuse(target, "writes images only to files");
   write_png(target, file, pixels, smallest, attributes);
 }
 

@@ -68,7 +68,7 @@ bool encode(png_structp png, png_infop info, const Layout& layout, png_bytepp ro
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   // OpenImageIO writes the image's origin (0, 0) as an oFFs chunk: so does this writer, so that
   // both binaries' PNGs are the same bytes (`ifsfx studio` renders in ifsfx-full and promises the
-  // bytes of `ifsfx render`, tests/apps/studio_server_test.sh).
+  // bytes of `ifsfx render`, tests/studio/studio_server_test.sh).
   png_set_oFFs(png, info, 0, 0, PNG_OFFSET_PIXEL);
   if (text_count > 0) png_set_text(png, info, text, text_count);
   // The fastest write filters every row by its left neighbour alone (PNG_FILTER_SUB) instead of

@@ -17,7 +17,7 @@
 #include "python/errors.h"
 #include "python/options.h"
 #include "python/presets.h"
-#include "video/fractal_engine.h"
+#include "engine/fractal_engine.h"
 
 namespace ifsfx::python {
 namespace {
@@ -45,11 +45,11 @@ class Filter {
   }
 
  public:
-  Filter(video::FractalSettings settings, std::optional<cv::Size> output_size,
+  Filter(engine::FractalSettings settings, std::optional<cv::Size> output_size,
          std::optional<cv::Size> frame_size, double fps, bool rgb)
       : settings_(std::move(settings)), output_size_(output_size), fps_(fps), rgb_(rgb) {
     settings_.sampling.cancel = CancelToken(stop_.get());
-    engine_ = std::make_unique<video::FractalEngine>(settings_);
+    engine_ = std::make_unique<engine::FractalEngine>(settings_);
     if (!(fps > 0 && fps <= 1000))
       throw Error(ErrorKind::invalid_argument,
                   fmt::format("fps: must be in (0, 1000] (got {})", fps));
@@ -112,20 +112,20 @@ class Filter {
     {
       const py::gil_scoped_release release;
       const std::lock_guard lock(mutex_);
-      engine_ = std::make_unique<video::FractalEngine>(settings_);
+      engine_ = std::make_unique<engine::FractalEngine>(settings_);
       frame_size_.reset();
     }
     *stop_ = false;
   }
 
-  video::FractalSettings settings_;
+  engine::FractalSettings settings_;
   std::optional<cv::Size> output_size_, frame_size_;
   double fps_;
   bool rgb_;
   std::int64_t next_ = 0;
   std::unique_ptr<std::atomic<bool>> stop_ = std::make_unique<std::atomic<bool>>(false);
   std::mutex mutex_;
-  std::unique_ptr<video::FractalEngine> engine_;
+  std::unique_ptr<engine::FractalEngine> engine_;
 };
 
 std::optional<cv::Size> optional_size(const py::object& size, const std::string& what) {
@@ -136,7 +136,7 @@ std::optional<cv::Size> optional_size(const py::object& size, const std::string&
 }  // namespace
 
 void bind_filter(py::module_& m) {
-  const video::FractalSettings d;
+  const engine::FractalSettings d;
   py::class_<Filter>(m, "Filter", R"doc(
 The video filter of `ifsfx filter`, frame by frame: each frame coloured through the fractal's
 steal map, for frames that come from cv2.VideoCapture, PyAV or a camera. A frame is a pure
@@ -156,7 +156,7 @@ must have that size (ValueError otherwise).
                        double drift_amount, double drift_speed, int keyframe_interval,
                        const py::object& superifs, int buffers, std::int64_t loop,
                        const py::object& size, const py::object& frame_size, double fps, bool rgb) {
-             const video::FractalSettings settings =
+             const engine::FractalSettings settings =
                  fractal_settings({.preset = preset,
                                    .colouring = colouring,
                                    .view = view,
@@ -175,13 +175,10 @@ must have that size (ValueError otherwise).
                                    .buffers = buffers,
                                    .superifs = spec_arg(superifs, "superifs"),
                                    .loop = loop});
-             // The preset as render() loads it: an unknown name is a ValueError, a Fractint
-             // entry that contracts only on average a UserWarning.
-             if (settings.animate != video::Animate::superifs) preset_arg(py::str(settings.preset));
              return std::make_unique<Filter>(settings, optional_size(size, "size"),
                                              optional_size(frame_size, "frame_size"), fps, rgb);
            }),
-           py::arg("preset") = d.preset, py::kw_only(), py::arg("colouring") = py::none(),
+           py::arg("preset") = engine::kDefaultPreset, py::kw_only(), py::arg("colouring") = py::none(),
            py::arg("view") = py::none(), py::arg("margin") = d.sampling.margin,
            py::arg("quality") = d.sampling.quality, py::arg("mix") = d.mix,
            py::arg("background") = "black", py::arg("exact") = d.exact,

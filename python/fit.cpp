@@ -10,7 +10,7 @@
 #include <pybind11/stl.h>
 #include <opencv2/core.hpp>
 
-#include "apps/fit_run.h"
+#include "run/fit_run.h"
 #include "collage/fit.h"
 #include "collage/target.h"
 #include "ifs/error.h"

@@ -14,8 +14,8 @@
 
 #include "ifs/error.h"
 #include "ifs/fractaldb_csv.h"
-#include "ifs/fractaldb_render.h"
-#include "ifs/fractaldb_search.h"
+#include "fractaldb/render.h"
+#include "fractaldb/search.h"
 #include "python/arrays.h"
 #include "python/errors.h"
 #include "python/options.h"

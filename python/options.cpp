@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "python/options.h"
 
+#include "python/presets.h"
+
 #include <cctype>
 #include <string>
 
@@ -54,15 +56,15 @@ std::string spec_arg(const py::object& spec, const std::string& what) {
                           std::string(py::str(py::type::of(spec).attr("__name__")))));
 }
 
-video::Background filter_background_arg(const py::object& background) {
+engine::Background filter_background_arg(const py::object& background) {
   if (py::isinstance<py::str>(background))
-    return video::parse_background(background.cast<std::string>(), "background");
+    return engine::parse_background(background.cast<std::string>(), "background");
   // (R, G, B): through the parser, so that a bad one gets its message.
   if (py::isinstance<py::sequence>(background) && py::len(background) == 3) {
     const py::sequence rgb = background.cast<py::sequence>();
     if (py::isinstance<py::int_>(rgb[0]) && py::isinstance<py::int_>(rgb[1]) &&
         py::isinstance<py::int_>(rgb[2]))
-      return video::parse_background(
+      return engine::parse_background(
           fmt::format("{},{},{}", rgb[0].cast<long long>(), rgb[1].cast<long long>(),
                       rgb[2].cast<long long>()),
           "background");
@@ -74,25 +76,23 @@ video::Background filter_background_arg(const py::object& background) {
 
 namespace {
 
-video::Animate animate_arg(const py::object& animate) {
+engine::Animate animate_arg(const py::object& animate) {
   const std::string name = animate.is_none() ? "none" : py::str(animate).cast<std::string>();
   if (!animate.is_none() && !py::isinstance<py::str>(animate))
     throw Error(
         ErrorKind::invalid_argument,
         fmt::format("animate: none, drift or superifs (got {})", std::string(py::repr(animate))));
-  if (name == "none") return video::Animate::none;
-  if (name == "drift") return video::Animate::drift;
-  if (name == "superifs") return video::Animate::superifs;
+  if (name == "none") return engine::Animate::none;
+  if (name == "drift") return engine::Animate::drift;
+  if (name == "superifs") return engine::Animate::superifs;
   throw Error(ErrorKind::invalid_argument,
               fmt::format("animate: none, drift or superifs (got '{}')", name));
 }
 
 }  // namespace
 
-video::FractalSettings fractal_settings(const FilterKeywords& k) {
-  video::FractalSettings s{.preset = spec_arg(k.preset, "preset"),
-                           .colouring = spec_arg(k.colouring, "colouring"),
-                           .exact = k.exact,
+engine::FractalSettings fractal_settings(const FilterKeywords& k) {
+  engine::FractalSettings s{.exact = k.exact,
                            .sampling = {.view = view_arg(k.view),
                                         .margin = k.margin,
                                         .quality = k.quality,
@@ -109,9 +109,17 @@ video::FractalSettings fractal_settings(const FilterKeywords& k) {
                            .buffers = k.buffers,
                            .loop = k.loop};
   // The command's rule (check_filter_rules), in the keywords' words.
-  if (s.loop > 0 && s.animate == video::Animate::none)
+  if (s.loop > 0 && s.animate == engine::Animate::none)
     throw Error(ErrorKind::invalid_argument,
                 "loop: repeats an animation; add animate=\"drift\" or animate=\"superifs\"");
+  // F and G as data, the preset read as render() reads it (an unknown name is a ValueError, a
+  // Fractint entry that contracts only on average a UserWarning); a superIFS brings its own.
+  if (s.animate != engine::Animate::superifs) {
+    IfsPreset F = preset_arg(k.preset);
+    const std::string colouring = spec_arg(k.colouring, "colouring");
+    if (!colouring.empty()) s.colouring = load_colouring(colouring, F.ifs, "colouring");
+    s.drawing = std::move(F.ifs);
+  }
   return s;
 }
 

@@ -17,7 +17,7 @@
 #include "ifs/steal_map.h"
 #include "ifs/tops.h"
 #include "ifs/view.h"
-#include "video/fractal_engine.h"
+#include "engine/fractal_engine.h"
 
 namespace ifsfx::python {
 
@@ -52,12 +52,12 @@ struct FilterKeywords {
   std::string superifs;
   std::int64_t loop;
 };
-video::FractalSettings fractal_settings(const FilterKeywords& k);
+engine::FractalSettings fractal_settings(const FilterKeywords& k);
 
 // interpolation=: "bilinear" or "nearest".
 Interpolation interpolation_arg(const std::string& name);
 // background= of the filter: "black", "white", "original", "#rrggbb", "R,G,B" or (R, G, B).
-video::Background filter_background_arg(const py::object& background);
+engine::Background filter_background_arg(const py::object& background);
 // A preset, colouring or superIFS named by a str or an os.PathLike ("" for None).
 std::string spec_arg(const py::object& spec, const std::string& what);
 

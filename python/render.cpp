@@ -13,6 +13,8 @@
 #include "ifs/steal_map.h"
 #include "ifs/steal_picture.h"
 #include "ifs/tops.h"
+#include "run/render_modes.h"
+#include "run/render_still.h"
 #include "python/arrays.h"
 #include "python/errors.h"
 #include "python/options.h"
@@ -21,64 +23,38 @@
 namespace ifsfx::python {
 namespace {
 
-enum class Mode { attractor, measure, tops, steal };
-
-Mode mode_arg(const std::string& mode) {
-  if (mode == "attractor") return Mode::attractor;
-  if (mode == "measure") return Mode::measure;
-  if (mode == "tops") return Mode::tops;
-  if (mode == "steal") return Mode::steal;
-  throw Error(ErrorKind::invalid_argument,
-              fmt::format("mode: attractor, measure, tops or steal (got '{}')", mode));
-}
-
 py::array render(const py::object& preset, const std::string& mode_name, const py::object& size,
                  const py::object& view, double margin, double quality, int supersample,
                  double gamma, double brightness, std::uint64_t seed, int threads, bool exact,
                  bool second_symbol, const py::object& source, const py::object& colouring,
                  const py::object& background, bool alpha, const py::object& dtype,
                  bool allow_expansive, bool rgb) {
-  const Mode mode = mode_arg(mode_name);
+  const app::RenderMode mode = app::parse_render_mode(mode_name);
   const cv::Size pixels = size_arg(size);
   const Keywords k =
       keywords(view, margin, quality, supersample, gamma, brightness, seed, threads, exact);
-  const auto refuse = [&](bool given, const char* option, const char* modes) {
-    if (given)
-      throw Error(ErrorKind::invalid_argument,
-                  fmt::format("{}: only with mode {} (got mode {})", option, modes, mode_name));
-  };
-  const bool tops = mode == Mode::tops, steal = mode == Mode::steal;
-  refuse(!steal && !source.is_none(), "source", "steal");
-  refuse(!steal && !colouring.is_none(), "colouring", "steal");
-  refuse(!tops && second_symbol, "second_symbol", "tops");
-  if (steal && source.is_none())
-    throw Error(ErrorKind::invalid_argument, "source: mode steal needs a source image");
-  const Rgb bg = colour_arg(background);
+  app::check_mode_options(mode,
+                          {.source = {"source", !source.is_none()},
+                           .colouring = {"colouring", !colouring.is_none()},
+                           .second_symbol = {"second_symbol", second_symbol}},
+                          "mode");
+  const bool steal = mode == app::RenderMode::steal;
+  app::StillJob job{.mode = mode,
+                    .size = pixels,
+                    .exact = k.exact,
+                    .second_symbol = second_symbol,
+                    .background = colour_arg(background),
+                    .alpha = alpha};
   const IfsPreset F = preset_arg(preset, allow_expansive);
   py::object keep;
-  const cv::Mat src = steal ? source_arg(source, keep, "source", rgb) : cv::Mat();
-  const Ifs G =
-      steal ? load_colouring(colouring.is_none() ? std::string() : colouring.cast<std::string>(),
-                             F.ifs, "colouring")
-            : Ifs{};
+  if (steal) {
+    job.source = source_arg(source, keep, "source", rgb);
+    job.colouring = load_colouring(
+        colouring.is_none() ? std::string() : colouring.cast<std::string>(), F.ifs, "colouring");
+  }
   const cv::Mat image = run_released([&](const CancelToken& cancel) {
-    switch (mode) {
-      case Mode::attractor:
-        return render_attractor(F.ifs, pixels, render_options(k, cancel));
-      case Mode::measure:
-        return render_measure(F.ifs, pixels, render_options(k, cancel));
-      case Mode::tops: {
-        TopsOptions options = tops_options(k, cancel);
-        options.second_symbol = second_symbol;
-        return tops_picture(F.ifs, pixels, options, bg, alpha);
-      }
-      case Mode::steal:
-        break;
-    }
-    const StealMap map = compute_steal_map(F.ifs, G, pixels, steal_map_options(k, cancel));
-    const cv::Mat coloured =
-        apply(map, src, {.background = background_scalar(bg, src.depth()), .threads = threads});
-    return with_coverage_alpha(coloured, map.coverage, alpha);
+    job.options = render_options(k, cancel);
+    return app::render_still(F.ifs, job).image;
   });
   return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
 }

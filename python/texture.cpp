@@ -31,7 +31,7 @@ struct TextureFrames {
   bool rgb = false;  // frames in RGB order
 };
 
-// The settings `ifsfx texture` checks (apps/texture_options.cpp), with the keywords' names.
+// The settings `ifsfx texture` checks (run/texture_options.cpp), with the keywords' names.
 void check_texture_args(int buffers, int buffer, int crossfade, TextureMode mode,
                         const py::object& source) {
   if (buffers < 1 || buffers > 1000)

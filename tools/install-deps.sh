@@ -31,7 +31,7 @@ packages=(
   slurmctld slurmd slurm-client munge
   # `ifsfx studio`: its HTTP server; its tests: curl, and the page in a real headless browser,
   # Debian's chromium driven by playwright-core from npm (installed by the test setup into the
-  # build tree, tests/apps/studio_node_setup.sh)
+  # build tree, tests/studio/studio_node_setup.sh)
   libcpp-httplib-dev curl chromium nodejs
 )
 # npm: Debian's package, unless a node from elsewhere (NodeSource) brings its own npm.

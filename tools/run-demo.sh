@@ -7,7 +7,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/install-deps.sh
 bash tools/build.sh release
-ifsfx=build/release/apps/ifsfx
+ifsfx=build/release/cli/ifsfx
 clip=/usr/share/doc/opencv-doc/examples/data/vtest.avi
 mkdir -p out
 

@@ -17,7 +17,7 @@ extern "C" {
 
 #include "video/audio_remux.h"
 #include "video/av_util.h"
-#include "video/palette.h"
+#include "engine/palette.h"
 
 namespace ifsfx::video {
 
@@ -96,7 +96,7 @@ AVPixelFormat pick_pixel_format(const AVCodec* encoder) {
   if (encoder->id == AV_CODEC_ID_MJPEG) std::swap(yuv420[0], yuv420[1]);
   for (AVPixelFormat f : yuv420)
     if (supports(f)) return f;
-  // GIF: a palette of the picture's own colours (video/palette.h), not a fixed 3-3-2 one.
+  // GIF: a palette of the picture's own colours (engine/palette.h), not a fixed 3-3-2 one.
   if (supports(AV_PIX_FMT_PAL8)) return AV_PIX_FMT_PAL8;
   return formats[0];
 }
@@ -281,7 +281,7 @@ struct FileSink::Impl {
   // A palette picture (GIF): the indices, and the palette as opaque ARGB words (an entry with
   // alpha 0 would be taken for transparency).
   void to_palette(const cv::Mat& image) {
-    const IndexedImage indexed = to_indexed(image);
+    const engine::IndexedImage indexed = engine::to_indexed(image);
     for (int r = 0; r < image.rows; ++r)
       std::memcpy(frame->data[0] + static_cast<std::ptrdiff_t>(r) * frame->linesize[0],
                   indexed.indices.ptr(r), static_cast<std::size_t>(image.cols));

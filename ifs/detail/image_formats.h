@@ -39,9 +39,11 @@ void write_png(const std::filesystem::path& target, const std::filesystem::path&
 bool oiio_can_write(const std::filesystem::path& path);
 
 // `pixels` (BGR order, the depth the file holds: CV_8U, CV_16U or CV_32F) written by OpenImageIO
-// to `file` in the format of `target`'s extension; `smallest` as write_png's for PNG. Throws
-// Error{io} "TARGET: cannot write (...)".
+// to `file` in the format of `target`'s extension — or, with `memory`, into it instead, the bytes
+// the file would hold; `smallest` as write_png's for PNG. Throws Error{io} "TARGET: cannot write
+// (...)".
 void write_oiio(const std::filesystem::path& target, const std::filesystem::path& file,
-                const cv::Mat& pixels, bool smallest, const ImageAttributes& attributes);
+                const cv::Mat& pixels, bool smallest, const ImageAttributes& attributes,
+                std::vector<unsigned char>* memory = nullptr);
 
 }  // namespace ifsfx::detail

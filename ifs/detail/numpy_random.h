@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // NumPy's legacy global generator (numpy.random.seed, random, randint, uniform: RandomState over
 // MT19937), draw for draw, for the FractalDB reference generator's chaos game and category search
-// (ifs/fractaldb_render.h, ifs/fractaldb_search.h), which seed it and draw from it. MT19937 is
+// (fractaldb/render.h, fractaldb/search.h), which seed it and draw from it. MT19937 is
 // specified by the C++ standard (std::mt19937 seeded with s is init_genrand(s), as
 // numpy.random.seed(s) for an integer s < 2^32); the conversions below are NumPy's.
 #pragma once

@@ -2,7 +2,7 @@
 // The checks the public entry points of one family share, written once (OpenImageIO's IBAprep):
 // every function of the family calls its helper first, so each refuses the same bad input with
 // the same message, naming the library's own parameter ("quality", "threads"), never a
-// command-line flag (the command line translates: apps/cli_errors.h).
+// command-line flag (the command line translates: cli/cli_errors.h).
 #pragma once
 
 #include <optional>

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The `ifsfx` frei0r filter: the fractal filter of `ifsfx filter` (paper §6) inside FFmpeg, MLT
 // (melt, Kdenlive, Shotcut) and GStreamer. A thin adapter: the parameters become one
-// video::FractalSettings and every frame goes through one video::FractalEngine, the object
+// engine::FractalSettings and every frame goes through one engine::FractalEngine, the object
 // `ifsfx filter` itself uses — no mathematics here.
 //
 // A bad parameter (unknown preset, unreadable file, bad colour or view) never stops the host: it is
@@ -19,12 +19,13 @@
 #include <opencv2/core.hpp>
 
 #include "ifs/error.h"
+#include "ifs/preset.h"
 #include "ifs/view.h"
 #include "plugins/frei0r/host.h"
 #include "plugins/frei0r/host_clock.h"
 #include "plugins/frei0r/params.h"
 #include "superifs/texture.h"
-#include "video/fractal_engine.h"
+#include "engine/fractal_engine.h"
 
 namespace ifsfx::frei0r {
 namespace {
@@ -61,13 +62,48 @@ constexpr ParamInfo table[] = {
      0},
 };
 
+// The presets of the parameters, loaded: hosts pass every parameter again with every frame, and
+// a preset is read again only when its text changes (one that failed is not tried again either).
+class LoadedPresets {
+ public:
+  void load(const std::string& preset, const std::string& colouring) {
+    if (preset == preset_ && colouring == colouring_) {
+      if (!error_.empty()) throw Error(ErrorKind::invalid_argument, error_);
+      if (loaded_) return;
+    }
+    preset_ = preset;
+    colouring_ = colouring;
+    error_.clear();
+    loaded_ = false;
+    try {
+      IfsPreset F = load_ifs(preset);
+      G_.reset();
+      if (!colouring.empty()) G_ = load_colouring(colouring, F.ifs, "colouring");
+      F_ = std::move(F.ifs);
+      loaded_ = true;
+    } catch (const Error& e) {
+      error_ = e.what();
+      throw;
+    }
+  }
+  const Ifs& drawing() const { return F_; }
+  const std::optional<Ifs>& colouring() const { return G_; }
+
+ private:
+  bool loaded_ = false;
+  std::string preset_, colouring_, error_;
+  Ifs F_;
+  std::optional<Ifs> G_;
+};
+
 // The engine's settings for parameter values; throws ifsfx::Error naming the parameter.
-video::FractalSettings settings_of(const ParamValues::Values& v) {
-  video::FractalSettings s;
-  s.preset = v.text(preset).empty() ? table[preset].text : v.text(preset);
-  s.colouring = v.text(colouring);
+engine::FractalSettings settings_of(const ParamValues::Values& v, LoadedPresets& presets) {
+  engine::FractalSettings s;
+  presets.load(v.text(preset).empty() ? table[preset].text : v.text(preset), v.text(colouring));
+  s.drawing = presets.drawing();
+  s.colouring = presets.colouring();
   s.mix = v.number(mix);
-  s.background = video::parse_background(v.text(background), "background");
+  s.background = engine::parse_background(v.text(background), "background");
   // Frames are RGBA: the colour's channels in that order.
   const cv::Scalar bgr = s.background.colour;
   s.background.colour = cv::Scalar(bgr[2], bgr[1], bgr[0], 255);
@@ -76,7 +112,7 @@ video::FractalSettings settings_of(const ParamValues::Values& v) {
   if (!(amount >= 0 && amount <= 1))
     throw Error(ErrorKind::invalid_argument,
                 "drift: must be in [0, 1] (got " + std::to_string(amount) + ")");
-  s.animate = amount > 0 ? video::Animate::drift : video::Animate::none;
+  s.animate = amount > 0 ? engine::Animate::drift : engine::Animate::none;
   s.drift_amount = amount;
   s.drift_speed = v.number(speed);
   s.sampling.seed = static_cast<std::uint64_t>(whole_number(v.number(seed), "seed", 0, 1LL << 53));
@@ -108,16 +144,16 @@ class FilterInstance {
   void changed() {
     std::lock_guard lock(mutex_);
     if (!engine_ || prefetch_.valid()) return;
-    std::optional<video::FractalSettings> s;
+    std::optional<engine::FractalSettings> s;
     try {
-      s = settings_of(values_.values());
+      s = settings_of(values_.values(), presets_);
     } catch (const Error&) {
       return;  // reported by the next frame
     }
     if (same_maps(engine_->settings(), *s)) return;
     prefetch_settings_ = *s;
     prefetch_ = std::async(std::launch::async, [s = *s, size = size_] {
-      return std::make_unique<video::FractalEngine>(s, size, size, nominal_frame_rate);
+      return std::make_unique<engine::FractalEngine>(s, size, size, nominal_frame_rate);
     });
   }
 
@@ -131,8 +167,8 @@ class FilterInstance {
     // Every frame is counted, filtered or not: the count is the clock of a host without times.
     const HostClock::Reading at = clock_->next(host_time, v.number(rate));
     try {
-      const video::FractalSettings s = settings_of(v);
-      if (at.counted && s.animate != video::Animate::none)
+      const engine::FractalSettings s = settings_of(v, presets_);
+      if (at.counted && s.animate != engine::Animate::none)
         clock_reporter_.report(fmt::format(
             "the host gives no frame times; animating by frame count at {:g} fps", at.rate));
       engine_for(s);
@@ -154,13 +190,13 @@ class FilterInstance {
  private:
   // An engine for `s`: the one in use (a new mix or background needs no new maps), the prefetched
   // one, or a new one. Settings that failed are not tried again on every frame.
-  void engine_for(const video::FractalSettings& s) {
+  void engine_for(const engine::FractalSettings& s) {
     if (engine_ && same_maps(engine_->settings(), s)) {
       if (engine_->settings() != s) engine_->set_look(s.mix, s.background);
       return;
     }
     if (failed_ && failed_->first == s) throw Error(ErrorKind::invalid_argument, failed_->second);
-    std::unique_ptr<video::FractalEngine> next;
+    std::unique_ptr<engine::FractalEngine> next;
     if (prefetch_.valid()) {
       try {
         next = prefetch_.get();  // waits: it has been working since the parameter changed
@@ -170,7 +206,7 @@ class FilterInstance {
       if (next && !same_maps(prefetch_settings_, s)) next.reset();
     }
     try {
-      if (!next) next = std::make_unique<video::FractalEngine>(s, size_, size_, nominal_frame_rate);
+      if (!next) next = std::make_unique<engine::FractalEngine>(s, size_, size_, nominal_frame_rate);
       next->set_look(s.mix, s.background);
     } catch (const std::exception& e) {
       failed_.emplace(s, e.what());
@@ -186,10 +222,11 @@ class FilterInstance {
   Reporter clock_reporter_{plugin_name};  // once per instance (and per rate), never cleared
   std::optional<HostClock> clock_;        // made by the first frame, which shows who the host is
   std::mutex mutex_;  // a parameter set from another thread while a frame is made (GStreamer)
-  std::unique_ptr<video::FractalEngine> engine_;
-  std::future<std::unique_ptr<video::FractalEngine>> prefetch_;
-  video::FractalSettings prefetch_settings_;
-  std::optional<std::pair<video::FractalSettings, std::string>> failed_;
+  LoadedPresets presets_;
+  std::unique_ptr<engine::FractalEngine> engine_;
+  std::future<std::unique_ptr<engine::FractalEngine>> prefetch_;
+  engine::FractalSettings prefetch_settings_;
+  std::optional<std::pair<engine::FractalSettings, std::string>> failed_;
 };
 
 }  // namespace

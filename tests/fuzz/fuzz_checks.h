@@ -21,8 +21,8 @@
 #include <opencv2/core.hpp>
 
 #include "ifs/error.h"
-#include "ifs/fractaldb_dataset.h"
-#include "ifs/fractaldb_render.h"
+#include "fractaldb/dataset.h"
+#include "fractaldb/render.h"
 #include "ifs/ifs.h"
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"

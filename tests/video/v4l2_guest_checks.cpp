@@ -34,7 +34,7 @@
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"
-#include "video/fractal_filter.h"
+#include "engine/fractal_filter.h"
 #include "video/v4l2_capture.h"
 #include "video/v4l2_convert.h"
 #include "video/v4l2_device.h"

@@ -1,0 +1,254 @@
+// SPDX-License-Identifier: Apache-2.0
+// `ifsfx render PRESET -o OUT`: an IFS rendered to a still image by the chaos game.
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "cli/cli_options.h"
+#include "cli/option_groups.h"
+#include "cli/commands.h"
+#include "run/render_metadata.h"
+#include "run/seamless_options.h"
+#include "run/render_modes.h"
+#include "run/render_still.h"
+#include "run/picture_options.h"
+#include "cli/stop_signals.h"
+#include "ifs/error.h"
+#include "ifs/image_io.h"
+#include "ifs/output_file.h"
+#include "ifs/preset.h"
+#include "ifs/render.h"
+
+namespace ifsfx::app {
+namespace {
+
+struct RenderArgs {
+  std::string preset;
+  std::string output;
+  std::string size = "1024x1024";
+  RenderMode mode = RenderMode::measure;
+  std::string view;
+  RenderOptions options;  // the options bind here; view and cancel are set by run_render
+  int bits = 8;
+  bool smallest = false;
+  bool allow_expansive = false;
+  bool quiet = false;
+  // tops and steal modes (run/picture_options.h)
+  std::string source;
+  std::string colouring;
+  bool exact = true;              // --exact (default) or --chaos
+  bool map_method_given = false;  // either was on the command line
+  bool second_symbol = false;
+  std::string save_map;
+  std::string background;
+  // --seamless, --tiles, --tile-offset (run/seamless_options.h)
+  SeamlessArgs tiles;
+  bool margin_given = false;  // --margin was on the command line
+};
+
+// The tops/steal options are refused in the modes that would ignore them (run/render_modes.h).
+void check_mode_options(const RenderArgs& args) {
+  app::check_mode_options(args.mode,
+                          {.source = {"--source", !args.source.empty()},
+                           .colouring = {"--colouring", !args.colouring.empty()},
+                           .save_map = {"--save-map", !args.save_map.empty()},
+                           .second_symbol = {"--second-symbol", args.second_symbol},
+                           .map_method = {"--exact/--chaos", args.map_method_given},
+                           .background = {"--background", !args.background.empty()}},
+                          "--mode");
+}
+
+// The output policy: no output replaces an input, the two outputs differ, and both are checked
+// before the long work.
+OutputOptions checked_outputs(const RenderArgs& args) {
+  OutputOptions output{.cancel = StopSignals::token()};
+  add_preset_input(output.inputs, args.preset);
+  add_preset_input(output.inputs, args.colouring);
+  output.inputs.add(args.source);
+  check_writable_image(args.output, output, args.bits);
+  if (!args.save_map.empty()) {
+    check_output(args.save_map, output);
+    if (same_output(args.save_map, args.output))
+      throw Error(
+          ErrorKind::invalid_argument,
+          fmt::format("--save-map {}: must differ from -o (got the same file)", args.save_map));
+  }
+  return output;
+}
+
+// The steal map's figures (the coverage policy's, for the chaos game).
+void print_steal_summary(const StealMapStats& ss, bool exact) {
+  fmt::print("steal map{}: {} levels; {:.2f}% of pixels on the attractor{}\n",
+             exact ? " (exact)" : " (chaos game)", ss.levels, 100 * ss.coverage,
+             exact ? std::string()
+                   : fmt::format(" ({:.2f}% hit by points, {} reached by Hutchinson passes, {} "
+                                 "filled from neighbours, {} rounds)",
+                                 100 * ss.hit, ss.propagated, ss.filled, ss.rounds));
+}
+
+// The picture in the chosen mode (run/render_still.h); the steal mode's map, with --save-map,
+// joins `staged`, to be put in place with the image (commit_together). With --seamless the modes
+// render one period, laid out as --tiles and --tile-offset say (the steal mode lays out its map,
+// so that --save-map colours the whole picture too).
+StillResult render_picture(const Ifs& ifs, cv::Size size, const RenderArgs& args,
+                           const RenderOptions& options, const TileLayout& layout,
+                           const OutputOptions& output, std::vector<OutputFile>& staged) {
+  StillJob job{.mode = args.mode,
+               .size = size,
+               .options = options,
+               .exact = args.exact,
+               .second_symbol = args.second_symbol,
+               .background = colour_option(args.background.empty() ? "black" : args.background),
+               .alpha = format_has_alpha(args.output),
+               .layout = layout};
+  if (args.mode == RenderMode::steal) {
+    // Read first: a missing or unreadable source fails before any long work.
+    job.source = read_image(args.source).pixels;
+    job.colouring = colouring_option(args.colouring, ifs);
+  }
+  StillResult still = render_still(ifs, job);
+  if (still.map && !args.save_map.empty()) {
+    OutputFile file(args.save_map, output);
+    save(*still.map, file);
+    staged.push_back(std::move(file));
+  }
+  if (still.map && !args.quiet) print_steal_summary(still.steal, args.exact);
+  return still;
+}
+
+// `size`: the picture's (the tile's times --tiles with --seamless).
+void print_summary(const std::string& name, cv::Size size, const RenderArgs& args,
+                   const RenderStats& stats) {
+  // The exact modes plot no chaos-game points: say so rather than print a rate of zero.
+  const std::string work =
+      stats.points > 0
+          ? fmt::format("{:.1f} M points in {:.3f} s ({:.0f} Mpts/s)", stats.points / 1e6,
+                        stats.seconds, stats.points / 1e6 / std::max(stats.seconds, 1e-9))
+          : fmt::format("{} in {:.3f} s", args.exact ? "exact descent" : "rendered", stats.seconds);
+  fmt::print("{} ({}{}, {}x{}): {}, coverage {:.1f}% -> {}\n", name, to_string(args.mode),
+             args.tiles.seamless ? ", seamless" : "", size.width, size.height, work,
+             100 * stats.coverage, args.output);
+}
+
+void run_render(const RenderArgs& args) {
+  const cv::Size size = size_option(args.size);
+  check_mode_options(args);
+  StopSignals signals;
+  const OutputOptions output = checked_outputs(args);
+  const IfsPreset preset = load_preset(args.preset, {.allow_expansive = args.allow_expansive});
+  const TileLayout layout = tile_layout(args.tiles, preset.seamless, size);
+  RenderOptions options = args.options;
+  options.sampling.view = view_option(args.view);
+  options.sampling.cancel = output.cancel;
+  options.sampling.seamless = args.tiles.seamless;
+  if (options.sampling.seamless) {
+    // The tile: --view, the preset's own, or the attractor framed with no margin (a margin would
+    // put empty bands between the periods).
+    if (!options.sampling.view && preset.seamless) options.sampling.view = preset.seamless->view;
+    if (!args.margin_given) options.sampling.margin = 0;
+  }
+
+  std::vector<OutputFile> staged;  // put in place together at the end (the image, the map)
+  const StillResult still = render_picture(preset.ifs, size, args, options, layout, output, staged);
+  const cv::Mat& image = still.image;
+  const RenderStats& stats = still.stats;
+  auto metadata = render_metadata(preset, to_string(args.mode), options.sampling.seed, stats.view);
+  if (options.sampling.seamless)
+    for (auto& entry : seamless_metadata(stats.view, layout)) metadata.push_back(entry);
+  OutputFile image_file(args.output, output);
+  write_image(image_file, image,
+              {.bits = args.bits, .smallest = args.smallest, .metadata = std::move(metadata)});
+  staged.push_back(std::move(image_file));
+  commit_together(staged);
+  if (!args.quiet) print_summary(preset.ifs.name, image.size(), args, stats);
+}
+
+}  // namespace
+
+void add_render_command(CLI::App& app) {
+  auto args = std::make_shared<RenderArgs>();
+  auto* cmd = app.add_subcommand("render", "Render an IFS preset to a still image");
+  cmd->add_option(
+         "preset", args->preset,
+         "Preset: a shipped name (see `ifsfx presets`), a .toml/.ifs path, or FILE.ifs:NAME")
+      ->required();
+  cmd->add_option("-o,--output", args->output,
+                  "Output image; format by extension: .png (8/16-bit), .tif, .exr (float), .jpg")
+      ->required();
+  cmd->add_option("--size", args->size, "Output size WxH in pixels")->capture_default_str();
+  std::map<std::string, RenderMode> modes;
+  std::string mode_help;
+  for (const RenderModeInfo& info : render_modes()) {
+    modes.emplace(info.name, info.mode);
+    mode_help += fmt::format("{}{}: {}", mode_help.empty() ? "" : "; ", info.name, info.help);
+  }
+  cmd->add_option("--mode", args->mode, mode_help)
+      ->transform(choice(modes))
+      ->default_str("measure")
+      ->option_text(choices_text(modes, "measure"));
+  cmd->add_option("--view", args->view,
+                  "Plane rectangle x0,y0,x1,y1 shown (default: the attractor, auto-framed)");
+  auto* margin = cmd->add_option("--margin", args->options.sampling.margin,
+                                 "Auto-framing margin, fraction of the larger side (0 with "
+                                 "--seamless)")
+                     ->capture_default_str()
+                     ->check(number_in(0, kMaxMargin));
+  cmd->add_option("--quality", args->options.sampling.quality, "Chaos-game points per output pixel")
+      ->capture_default_str()
+      ->check(number_in(0, kMaxQuality, true));
+  cmd->add_option("--supersample", args->options.supersample,
+                  "Render at K times the size and box-filter down (measure mode)")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 16));
+  cmd->add_option("--gamma", args->options.gamma, "Display gamma of the tone map (measure mode)")
+      ->capture_default_str()
+      ->check(number_in(0, 100, true));
+  cmd->add_option("--brightness", args->options.brightness,
+                  "k of the log-density tone map, relative to the mean density (measure mode)")
+      ->capture_default_str()
+      ->check(number_in(0, 1e6, true));
+  cmd->add_option("--seed", args->options.sampling.seed,
+                  "Random seed: the same seed gives the same image")
+      ->capture_default_str()
+      ->check(not_negative());
+  add_threads_option(*cmd, args->options.sampling.threads);
+  cmd->add_option("--bits", args->bits, "Bits per channel of PNG/TIFF output: 8 or 16")
+      ->capture_default_str()
+      ->check(CLI::IsMember({8, 16}));
+  cmd->add_flag("--smallest", args->smallest,
+                "PNG output: the smallest file (zlib level 9, filter chosen per row) instead "
+                "of the fastest to write (level 1, sub filter)");
+  cmd->add_flag("--allow-expansive", args->allow_expansive,
+                "Accept maps with factor >= 1 when the IFS contracts on average");
+  cmd->add_flag("-q,--quiet", args->quiet, "Do not print the summary line");
+  cmd->add_option("--source", args->source,
+                  "steal mode: image to steal colours from (any format OpenImageIO reads)");
+  cmd->add_option("--colouring", args->colouring,
+                  "steal mode: colouring IFS preset with as many maps, fitted to the source "
+                  "(default: a tiling of the source for the number of maps)");
+  // The exact descent is the default: faster than the chaos game for every shipped preset at
+  // 720p and 1080p, and without noise (bench/README.md, steal_modes_bench).
+  auto* map_method = cmd->add_flag(
+      "--exact,!--chaos", args->exact,
+      "tops/steal modes: top addresses by exact per-pixel descent (default; no noise or holes), "
+      "or with --chaos by the chaos game, the paper's method (--quality points per pixel)");
+  cmd->add_flag("--second-symbol", args->second_symbol,
+                "tops mode: mix in the colour of the second symbol of the top address");
+  cmd->add_option("--save-map", args->save_map,
+                  "steal mode: also save the steal map, for `ifsfx apply MAP IMAGE`");
+  cmd->add_option("--background", args->background,
+                  "tops/steal modes: colour off the attractor in formats without alpha "
+                  "(black, white, #rrggbb, R,G,B); PNG/TIFF/EXR get a transparent background")
+      ->default_str("black");
+  add_seamless_options(*cmd, args->tiles);
+  cmd->callback([args, map_method, margin] {
+    args->map_method_given = map_method->count() > 0;
+    args->margin_given = margin->count() > 0;
+    run_render(*args);
+  });
+}
+
+}  // namespace ifsfx::app

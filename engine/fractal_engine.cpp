@@ -1,0 +1,192 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "engine/fractal_engine.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+#include <fmt/format.h>
+
+#include "ifs/error.h"
+#include "ifs/preset.h"
+#include "superifs/superifs_file.h"
+#include "superifs/texture.h"
+#include "engine/drift.h"
+#include "engine/map_schedule.h"
+
+namespace ifsfx::engine {
+
+Ifs default_drawing() { return load_ifs(kDefaultPreset).ifs; }
+
+bool same_maps(const FractalSettings& a, const FractalSettings& b) {
+  FractalSettings looks_like_b = a;
+  looks_like_b.mix = b.mix;
+  looks_like_b.background = b.background;
+  return looks_like_b == b;
+}
+
+FractalEngine::FractalEngine(const FractalSettings& settings) : settings_(settings) {
+  if (settings.keyframe_interval < 1)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("keyframe interval: must be 1 or more frames (got {})",
+                            settings.keyframe_interval));
+  if (settings.loop < 0 || settings.loop > kMaxLoop)
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("loop: must be 0..{} frames, 0 for none (got {})", kMaxLoop, settings.loop));
+  options_.interpolation = settings.interpolation;
+  options_.mix = settings.mix;
+  options_.background = settings.background;
+  options_.threads = settings.sampling.threads;
+  check_filter_options(options_);
+  if (settings.animate == Animate::superifs) {
+    super_ = load_superifs(settings.superifs).super;
+    name_ = super_.name.empty() ? settings.superifs : super_.name;
+    return;
+  }
+  // As load_ifs accepts a preset: maps that contract on average will do.
+  F_ = settings.drawing;
+  validate(F_, F_.name.empty() ? "drawing" : F_.name, {.allow_expansive = true});
+  G_ = settings.colouring ? *settings.colouring : default_colouring(F_.size());
+  if (G_.size() != F_.size())
+    throw Error(ErrorKind::invalid_ifs,
+                fmt::format("colouring: must have as many maps as {} (got {} for {})", F_.name,
+                            G_.size(), F_.size()));
+  validate(G_, "colouring", {.allow_expansive = true});
+  name_ = F_.name;
+  if (settings.animate == Animate::drift) drift(F_, 0, drift_options());  // checks them
+}
+
+FractalEngine::FractalEngine(const FractalSettings& settings, cv::Size frame_size,
+                             cv::Size output_size, double frame_rate)
+    : FractalEngine(settings) {
+  prepare(frame_size, output_size, frame_rate);
+}
+
+FractalEngine::~FractalEngine() = default;
+
+DriftOptions FractalEngine::drift_options() const {
+  return {.amount = settings_.drift_amount,
+          .speed = settings_.drift_speed,
+          .seed = settings_.sampling.seed,
+          .loop = static_cast<double>(settings_.loop) / frame_rate_};
+}
+
+std::int64_t FractalEngine::loop_keyframes() const {
+  return settings_.loop > 0 ? steps_in_loop(settings_.loop, settings_.keyframe_interval) : 0;
+}
+
+StealMapOptions FractalEngine::map_options() const {
+  return {.sampling = settings_.sampling, .exact = settings_.exact};
+}
+
+void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double frame_rate) {
+  if (table_ || schedule_)
+    throw Error(ErrorKind::invalid_argument, "fractal engine: already prepared");
+  if (!(frame_rate > 0) || !std::isfinite(frame_rate))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("frame rate: must be a positive number (got {})", frame_rate));
+  frame_rate_ = frame_rate;
+  const cv::Size size = output_size.empty() ? frame_size : output_size;
+  const FractalSettings& s = settings_;
+  StealMapOptions map_options = this->map_options();
+  const int threads = s.sampling.threads;
+  const Interpolation interpolation = s.interpolation;
+  switch (s.animate) {
+    case Animate::none:
+      table_ = std::make_shared<const PreparedStealMap>(prepare_filter(
+          compute_steal_map(F_, G_, size, map_options), frame_size, interpolation, threads));
+      return;
+    case Animate::drift: {
+      // Keyframe k shows F drifted to time k·K/fps, in a view fixed from F itself so that the
+      // frame does not jump as the attractor moves.
+      map_options.sampling.view = framed_viewport(F_, size, s.sampling).view;
+      // With a loop of L frames and Q keyframes, keyframe k shows time (k mod Q) · L / Q frames:
+      // keyframe Q is keyframe 0, and the drift's own period is the loop.
+      schedule_ = std::make_unique<MapSchedule>(
+          [=, F = F_, G = G_, drift_options = drift_options(), interval = s.keyframe_interval,
+           fps = frame_rate, loop = s.loop, q = loop_keyframes()](std::int64_t k) {
+            const double frames = loop > 0 ? static_cast<double>(k % q) *
+                                                 static_cast<double>(loop) / static_cast<double>(q)
+                                           : static_cast<double>(k) * interval;
+            const Ifs now = drift(F, frames / fps, drift_options);
+            return prepare_filter(compute_steal_map(now, G, size, map_options), frame_size,
+                                  interpolation, threads);
+          },
+          s.keyframe_interval);
+      return;
+    }
+    case Animate::superifs: {
+      // Keyframe k is texture k of the V-variable sequence (paper §5, eq. 14), one step per
+      // keyframe after the burn-in — a pure function of k and the seed.
+      TextureOptions t;
+      t.sampling = s.sampling;
+      t.sampling.view.reset();  // the superIFS brings its own
+      t.count = s.buffers;
+      t.mode = TextureMode::steal;
+      t.source = cv::Mat(frame_size, CV_8UC3);  // only its size: it sets the descent depth
+      t.loop = loop_keyframes();                // texture k of a loop of Q is texture k mod Q
+      sequence_ = std::make_shared<TextureSequence>(super_, size, t);
+      schedule_ = std::make_unique<MapSchedule>(
+          [=, sequence = sequence_](std::int64_t k) {
+            return prepare_filter(sequence->map_at(std::max<std::int64_t>(k, 0)), frame_size,
+                                  interpolation, threads);
+          },
+          s.keyframe_interval);
+      return;
+    }
+  }
+}
+
+void FractalEngine::set_look(double mix, const Background& background) {
+  FilterOptions options = options_;
+  options.mix = mix;
+  options.background = background;
+  check_filter_options(options);
+  options_ = options;
+  settings_.mix = mix;
+  settings_.background = background;
+}
+
+cv::Mat FractalEngine::filter(const cv::Mat& frame, std::int64_t index) {
+  cv::Mat out;
+  filter(frame, index, out);
+  return out;
+}
+
+void FractalEngine::filter(const cv::Mat& frame, std::int64_t index, cv::Mat& out) {
+  if (settings_.loop > 0 && settings_.animate != Animate::none)
+    return filter_at(frame, position_in_loop(index, settings_.keyframe_interval, settings_.loop),
+                     out);
+  filter_at(frame, position_of_frame(index, settings_.keyframe_interval), out);
+}
+
+void FractalEngine::filter_at(const cv::Mat& frame, double seconds, cv::Mat& out) {
+  // A time on the frame grid is that frame, exactly: the picture `ifsfx filter` gives for it.
+  const double frames = seconds * frame_rate_;
+  const double nearest = std::round(frames);
+  if (std::abs(frames - nearest) <= 1e-6 * std::max(1.0, std::abs(frames)))
+    return filter(frame, static_cast<std::int64_t>(nearest), out);
+  if (settings_.loop > 0 && settings_.animate != Animate::none) {
+    // Between two frames of a loop: its place in the loop, in keyframes.
+    const auto length = static_cast<double>(settings_.loop);
+    const double in_loop = frames - std::floor(frames / length) * length;
+    return filter_at(
+        frame, position_of_steps(in_loop * static_cast<double>(loop_keyframes()) / length), out);
+  }
+  filter_at(frame, position_of_steps(frames / settings_.keyframe_interval), out);
+}
+
+void FractalEngine::filter_at(const cv::Mat& frame, StepPosition position, cv::Mat& out) {
+  if (table_) return filter_frame(frame, *table_, options_, out);
+  if (!schedule_)
+    throw Error(ErrorKind::invalid_argument, "fractal engine: prepare() before filtering");
+  const MapSchedule::Blend b = schedule_->at(position);
+  filter_frame(frame, *b.from, *b.to, b.t, options_, out);
+}
+
+std::int64_t FractalEngine::stalls() const {
+  return schedule_ ? schedule_->stalls() : 0;
+}
+
+}  // namespace ifsfx::engine

@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: Apache-2.0
+// The options of `ifsfx filter` that shape the picture and the output encoding, shared by the
+// filter command and `ifsfx farm filter` (which hands them on, unchanged, to every shard).
+#pragma once
+
+#include <memory>
+#include <string>
+
+
+#include "run/fractal_filter_options.h"
+#include "ifs/steal_map.h"
+#include "video/file_sink.h"
+#include "engine/fractal_engine.h"
+
+namespace ifsfx::app {
+
+struct FilterArgs {
+  std::string input;
+  std::string output;
+  bool preview = false;
+  FractalFilterArgs fractal;
+  Interpolation interpolation = Interpolation::bilinear;
+  std::string size;
+  std::string codec;
+  std::string frames;
+  double fps = 25;
+  bool skip_gaps = false;
+  video::FrameTiming timing = video::FrameTiming::automatic;
+  bool timing_given = false;
+  engine::Animate animate = engine::Animate::none;
+  int keyframe_interval = engine::kDefaultKeyframeInterval;
+  std::string superifs = "paper-fig4";
+  int buffers = 3;
+  bool quiet = false;
+  bool segment = false;  // a farm shard's segment: the source's clock, no audio
+};
+
+
+// The rules between options that their parsing does not check and that `ifsfx farm filter` checks
+// too before it submits anything: --loop repeats an animation, so it needs --animate.
+void check_filter_rules(const FilterArgs& args);
+
+}  // namespace ifsfx::app

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "run/fit_run.h"
+
+#include <filesystem>
+
+#include <fmt/format.h>
+
+#include "collage/target.h"
+#include "ifs/error.h"
+#include "ifs/utf8.h"
+#include "ifs/view.h"
+
+namespace ifsfx::app {
+
+// The working raster's side from "S" or "SxS".
+int working_size(const std::string& text) {
+  if (text.find('x') == std::string::npos) {
+    int side = 0;
+    try {
+      std::size_t used = 0;
+      side = std::stoi(text, &used);
+      if (used != text.size()) side = 0;
+    } catch (const std::exception&) {
+      side = 0;
+    }
+    if (side <= 0)
+      throw Error(ErrorKind::parse, fmt::format("--size: expected S or SxS (got '{}')", text));
+    return side;
+  }
+  const cv::Size size = parse_size(text, "--size");
+  if (size.width != size.height)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--size: the working raster is square (got {})", text));
+  return size.width;
+}
+
+void check_fit_maps(int maps) {
+  if (maps < 1 || maps > 32)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("-n: the number of maps must be in 1..32 (got {})", maps));
+}
+
+cv::Mat fit_raster(const FitArgs& args) {
+  collage::TargetOptions target_options;
+  target_options.threshold = args.threshold;
+  target_options.invert = args.invert;
+  const cv::Mat mask = collage::load_target(args.target, target_options);
+  return collage::working_raster(mask, {.size = working_size(args.size)});
+}
+
+collage::FitOptions fit_options(const FitArgs& args, const CancelToken& cancel) {
+  collage::FitOptions options;
+  options.maps = args.maps;
+  options.seed = args.seed;
+  options.init = args.init;
+  options.max_seconds = args.max_seconds;
+  options.max_evaluations = args.max_evaluations;
+  options.threads = args.threads;
+  options.cancel = cancel;
+  options.name = valid_utf8(std::filesystem::path(args.target).stem().string());
+  return options;
+}
+
+std::string fit_summary(const FitArgs& args, const collage::FitResult& result) {
+  return fmt::format("fitted by ifsfx fit to {}: IoU {:.3f}, s {:.3f}", args.target,
+                     result.report.iou, result.report.contraction);
+}
+
+}  // namespace ifsfx::app

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "run/fractal_filter_options.h"
+
+#include <fmt/format.h>
+
+#include "run/arguments.h"
+#include "ifs/error.h"
+#include "ifs/preset.h"
+#include "superifs/texture.h"
+
+namespace ifsfx::app {
+
+engine::FractalSettings FractalFilterArgs::settings(std::vector<std::string>* warnings) const {
+  IfsPreset F = load_ifs(preset);
+  if (F.ifs.name.empty()) F.ifs.name = preset;
+  if (warnings) warnings->insert(warnings->end(), F.warnings.begin(), F.warnings.end());
+  std::optional<Ifs> G;
+  if (!colouring.empty()) G = load_colouring(colouring, F.ifs, "colouring");
+  return settings_of(std::move(F.ifs), std::move(G));
+}
+
+engine::FractalSettings FractalFilterArgs::settings_of(Ifs drawing,
+                                                       std::optional<Ifs> colouring_ifs) const {
+  engine::FractalSettings s = engine;
+  s.drawing = std::move(drawing);
+  s.colouring = std::move(colouring_ifs);
+  s.sampling.view = view_option(view);
+  s.background = engine::parse_background(background);
+  return s;
+}
+
+}  // namespace ifsfx::app

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "run/texture_options.h"
+
+#include <map>
+
+#include <fmt/format.h>
+
+#include "run/arguments.h"
+#include "run/texture_movie.h"
+#include "ifs/error.h"
+
+namespace ifsfx::app {
+
+cv::Size check_texture_args(const TextureArgs& args) {
+  const cv::Size size = size_option(args.size);
+  if (args.frames < 1)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--frames: must be ≥ 1 (got {})", args.frames));
+  if (args.crossfade < 1)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--crossfade: must be ≥ 1 frame per step (got {})", args.crossfade));
+  if (args.buffer < 1 || args.buffer > args.count)  // the library counts buffers from 0
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--buffer: must be 1..{} for V = {} (got {})", args.count, args.count,
+                            args.buffer));
+  if (args.mode == TextureMode::steal && args.source.empty())
+    throw Error(ErrorKind::invalid_argument,
+                "--source: steal mode needs a source image to steal colours from");
+  if ((args.fps_given || !args.codec.empty()) && !writes_texture_movie(args))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: only a movie output (.mp4, .webm, .gif, .webp, ...) is encoded "
+                            "(got {})",
+                            args.fps_given ? "--fps" : "--codec", args.output));
+  return size;
+}
+
+}  // namespace ifsfx::app
