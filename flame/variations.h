@@ -53,7 +53,8 @@ enum class VariationPlace {
 // How a variation standing in the pre_/post_ lists combines with the point it is given.
 enum class Assign {
   replace,  // p ← w·V(p): Apophysis 7X, JWildfire and Ember's rule for pre_ and post_
-  add,      // p ← p + w·V(p): pre_blur, whose V is a random offset
+  add,      // p ← p + w·V(p): the random offsets (pre_blur, blur, gaussian_blur, pie, arch,
+            // square, sineblur, blur_circle), as Ember applies them
 };
 
 struct Variation {
