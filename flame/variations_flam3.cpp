@@ -378,8 +378,9 @@ Point flux(const VariationInput& in, Rng&) {
 }
 
 // The Möbius map (a·z + b)/(c·z + d) of complex a, b, c, d.
-constexpr VariationParameter kMobius[] = {{"re_a", 1}, {"im_a", 0}, {"re_b", 0}, {"im_b", 0},
-                                          {"re_c", 0}, {"im_c", 0}, {"re_d", 1}, {"im_d", 0}};
+constexpr VariationParameter kMobius[] = {
+    {"mobius_re_a", 1}, {"mobius_im_a", 0}, {"mobius_re_b", 0}, {"mobius_im_b", 0},
+    {"mobius_re_c", 0}, {"mobius_im_c", 0}, {"mobius_re_d", 1}, {"mobius_im_d", 0}};
 Point mobius(const VariationInput& in, Rng&) {
   const auto [x, y] = in.p;
   const auto& k = in.params;
