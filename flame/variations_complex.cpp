@@ -89,7 +89,7 @@ Point csch_v(const VariationInput& in, Rng&) {
 Point coth_v(const VariationInput& in, Rng&) {
   const auto [x, y] = in.p;
   const double d = 1 / (std::cosh(2 * x) - std::cos(2 * y));
-  return scaled(in.w * d, std::sinh(2 * x), -std::sin(2 * y));
+  return scaled(in.w * d, std::sinh(2 * x), std::sin(2 * y));
 }
 
 }  // namespace

@@ -226,7 +226,9 @@ Point juliascope(const VariationInput& in, Rng& rng) {
   const Polar q = polar(in);
   const double p = in.params[0], d = in.params[1];
   const double p3 = std::trunc(std::abs(p) * psi(rng));
-  const double t = (lambda(rng) * q.phi() + 2 * kPi * p3) / p;
+  // The sign of φ alternates with the branch (the programs' rule; the paper draws Λ at random).
+  const double sign = std::fmod(p3, 2.0) == 0 ? 1.0 : -1.0;
+  const double t = (sign * q.phi() + 2 * kPi * p3) / p;
   return scaled(in.w * std::pow(q.r2(), d / p / 2), std::cos(t), std::sin(t));
 }
 
@@ -310,7 +312,7 @@ Point square(const VariationInput& in, Rng& rng) {
 
 Point rays(const VariationInput& in, Rng& rng) {
   const double k = in.w * std::tan(psi(rng) * kPi * in.w) / (polar(in).r2() + kEps);
-  return scaled(in.w * k, std::cos(in.p.x), std::sin(in.p.x));
+  return scaled(in.w * k, std::cos(in.p.x), std::sin(in.p.y));
 }
 
 Point blade(const VariationInput& in, Rng& rng) {

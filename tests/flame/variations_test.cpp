@@ -141,6 +141,28 @@ TEST(variations, julian_lands_on_one_of_its_power_branches) {
   }
 }
 
+TEST(variations, juliascope_mirrors_phi_on_odd_branches) {
+  // power 2, dist 1 at (0, 4): branch 0 at φ/2 = π/4, branch 1 at (−φ + 2π)/2 = 3π/4; y > 0 on
+  // both (a random sign, as the paper's Λ, would put half the points below the axis).
+  const double s = std::sqrt(2.0);
+  std::set<int> branches;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Point q = eval("juliascope", {0, 4}, 1, {2, 1}, {}, seed);
+    EXPECT_NEAR(std::abs(q.x), s, 1e-9);
+    EXPECT_NEAR(q.y, s, 1e-9);
+    branches.insert(q.x > 0);
+  }
+  EXPECT_EQ(branches.size(), 2u);
+}
+
+TEST(variations, rays_points_along_cos_x_sin_y) {
+  // w² tan(Ψπw)/r² · (cos x, sin y), as flam3 draws it (the paper prints sin x)
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const Point q = eval("rays", {0, kPi / 2}, 1, {}, {}, seed);  // (cos 0, sin π/2) = (1, 1)
+    EXPECT_NEAR(q.x, q.y, 1e-9 * std::abs(q.x));
+  }
+}
+
 TEST(variations, blur_stays_within_the_weight) {
   for (std::uint64_t seed = 1; seed <= 50; ++seed) {
     const Point q = eval("blur", {5, 5}, 0.5, {}, {}, seed);
