@@ -135,6 +135,9 @@ void read_variations(const Where& at, const std::string& what, const pugi::xml_n
     const std::string_view n = a.name();
     if (known_attribute(n)) continue;
     if (std::optional<Found> f = variation_of(n)) {
+      for (const Found& g : found)
+        if (g.v == f->v && g.list == f->list)
+          at.fail(what + ": " + std::string(n), "a variation may be given once");
       f->weight = number(at, what + ": " + std::string(n), a.value());
       found.push_back(*f);
     } else {

@@ -2,8 +2,10 @@
 // The paper's variations (Draves & Reckase, appendix) at points where their formulas are worked
 // by hand: r = √(x² + y²), θ = atan2(x, y) (measured from the y axis), φ = atan2(y, x).
 #include <cmath>
+#include <fstream>
 #include <numbers>
 #include <set>
+#include <sstream>
 
 #include "variation_check.h"
 
@@ -23,6 +25,14 @@ TEST(variations, registry_names_are_unique_and_ids_are_positions) {
     EXPECT_NE(v.function, nullptr) << v.name;
   }
   EXPECT_EQ(find_variation("no_such_variation"), nullptr);
+}
+
+TEST(variations, docs_flames_md_lists_every_variation_of_the_registry) {
+  std::ifstream in(std::string(IFSFX_SOURCE_DIR) + "/docs/flames.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  for (const Variation& v : variations())
+    EXPECT_NE(text.str().find("| `" + std::string(v.name) + "` |"), std::string::npos) << v.name;
 }
 
 TEST(variations, linear_scales_by_the_weight) {
