@@ -12,6 +12,9 @@ packages=(
   libopencv-dev libopenimageio-dev libpng-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  # fractal flames (flame/): the XML reader; flam3's programs and palettes (flam3-render is the
+  # reference renderer of the tests and bench, flam3-palettes.xml is read at run time)
+  libpugixml-dev flam3-utils flam3-palette
   # the Python module (python/): pybind11 and Python's headers; NumPy and pytest for its tests
   pybind11-dev python3-dev python3-numpy python3-pytest
   # bench/fractaldb_vs_reference.py runs the FractalDB reference generator, which draws with PIL
