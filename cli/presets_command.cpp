@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.h"
+#include "flame/flame_file.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "superifs/superifs_file.h"
@@ -37,6 +38,20 @@ std::string preset_lines(const std::vector<PresetSummary>& presets) {
   return out;
 }
 
+// One line per flame of a flame file: index, name, xforms, or why it cannot be rendered.
+std::string flame_lines(const std::string& file) {
+  const std::vector<flame::FlameEntry> flames = flame::list_flames(file);
+  std::size_t width = 0;
+  for (const auto& f : flames) width = std::max(width, f.name.size());
+  std::string out;
+  for (const auto& f : flames)
+    out += f.problem.empty()
+               ? fmt::format("{}:{:<{}}  {:>2} xforms  (or {}:{})\n", file, f.name, width, f.xforms,
+                             file, f.index)
+               : fmt::format("{}:{:<{}}  not usable: {}\n", file, f.name, width, f.problem);
+  return out;
+}
+
 }  // namespace
 
 void add_presets_command(CLI::App& app) {
@@ -52,13 +67,15 @@ void add_presets_command(CLI::App& app) {
                 "`ifsfx filter --animate superifs`) instead");
   cmd->add_option("file", *files,
                   "List the presets of these files instead: every entry of a Fractint .ifs file "
-                  "(render one as FILE.ifs:NAME), with why an entry cannot be used, or the "
-                  "preset of a .toml file");
+                  "(render one as FILE.ifs:NAME), every flame of a .flame file (FILE.flame:NAME "
+                  "or FILE.flame:INDEX), with why an entry cannot be used, or the preset of a "
+                  ".toml file");
   cmd->callback([super, files] {
     if (!files->empty()) {
       if (*super) throw Error(ErrorKind::invalid_argument, "--super: lists shipped presets only");
       std::string out;
-      for (const auto& file : *files) out += preset_lines(list_presets_in(file));
+      for (const auto& file : *files)
+        out += flame::is_flame_spec(file) ? flame_lines(file) : preset_lines(list_presets_in(file));
       std::fputs(out.c_str(), stdout);
       return;
     }

@@ -16,6 +16,7 @@
 #include "run/render_still.h"
 #include "run/picture_options.h"
 #include "cli/stop_signals.h"
+#include "flame/flame_write.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
@@ -43,6 +44,7 @@ struct RenderArgs {
   bool map_method_given = false;  // either was on the command line
   bool second_symbol = false;
   std::string save_map;
+  std::string save_flame;  // also write the IFS as a flame file (flame/flame_write.h)
   std::string background;
   // --seamless, --tiles, --tile-offset (run/seamless_options.h)
   SeamlessArgs tiles;
@@ -69,13 +71,19 @@ OutputOptions checked_outputs(const RenderArgs& args) {
   add_preset_input(output.inputs, args.colouring);
   output.inputs.add(args.source);
   check_writable_image(args.output, output, args.bits);
-  if (!args.save_map.empty()) {
-    check_output(args.save_map, output);
-    if (same_output(args.save_map, args.output))
-      throw Error(
-          ErrorKind::invalid_argument,
-          fmt::format("--save-map {}: must differ from -o (got the same file)", args.save_map));
+  for (const auto& [flag, path] : {std::pair{"--save-map", &args.save_map},
+                                   std::pair{"--save-flame", &args.save_flame}}) {
+    if (path->empty()) continue;
+    check_output(*path, output);
+    if (same_output(*path, args.output))
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("{} {}: must differ from -o (got the same file)", flag, *path));
   }
+  if (!args.save_map.empty() && !args.save_flame.empty() &&
+      same_output(args.save_map, args.save_flame))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--save-flame {}: must differ from --save-map (got the same file)",
+                            args.save_flame));
   return output;
 }
 
@@ -153,6 +161,16 @@ void run_render(const RenderArgs& args) {
 
   std::vector<OutputFile> staged;  // put in place together at the end (the image, the map)
   const StillResult still = render_picture(preset.ifs, size, args, options, layout, output, staged);
+  if (!args.save_flame.empty()) {
+    // The IFS as a flame drawing this measure, framed as this picture (flame_from_ifs).
+    OutputFile file(args.save_flame, output);
+    write_file(file, flame::flame_xml(flame::flame_from_ifs(
+                         preset.ifs, {.size = size,
+                                      .sampling = options.sampling,
+                                      .brightness = options.brightness,
+                                      .gamma = options.gamma})));
+    staged.push_back(std::move(file));
+  }
   const cv::Mat& image = still.image;
   const RenderStats& stats = still.stats;
   auto metadata = render_metadata(preset, to_string(args.mode), options.sampling.seed, stats.view);
@@ -239,6 +257,9 @@ void add_render_command(CLI::App& app) {
                 "tops mode: mix in the colour of the second symbol of the top address");
   cmd->add_option("--save-map", args->save_map,
                   "steal mode: also save the steal map, for `ifsfx apply MAP IMAGE`");
+  cmd->add_option("--save-flame", args->save_flame,
+                  "Also write the IFS as a flame file (.flame) that flam3, Apophysis, JWildfire "
+                  "and Fractorium open, drawing its measure framed as this picture");
   cmd->add_option("--background", args->background,
                   "tops/steal modes: colour off the attractor in formats without alpha "
                   "(black, white, #rrggbb, R,G,B); PNG/TIFF/EXR get a transparent background")
