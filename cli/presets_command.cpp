@@ -38,17 +38,21 @@ std::string preset_lines(const std::vector<PresetSummary>& presets) {
   return out;
 }
 
-// One line per flame of a flame file: index, name, xforms, or why it cannot be rendered.
+// One line per flame of a flame file: how to pick it (FILE:NAME, or FILE:INDEX for a flame
+// without a name), its xforms, or why it cannot be rendered.
 std::string flame_lines(const std::string& file) {
   const std::vector<flame::FlameEntry> flames = flame::list_flames(file);
+  const auto pick = [&](const flame::FlameEntry& f) {
+    return fmt::format("{}:{}", file, f.name.empty() ? std::to_string(f.index) : f.name);
+  };
   std::size_t width = 0;
-  for (const auto& f : flames) width = std::max(width, f.name.size());
+  for (const auto& f : flames) width = std::max(width, pick(f).size());
   std::string out;
   for (const auto& f : flames)
     out += f.problem.empty()
-               ? fmt::format("{}:{:<{}}  {:>2} xforms  (or {}:{})\n", file, f.name, width, f.xforms,
-                             file, f.index)
-               : fmt::format("{}:{:<{}}  not usable: {}\n", file, f.name, width, f.problem);
+               ? fmt::format("{:<{}}  {:>2} xforms{}\n", pick(f), width, f.xforms,
+                             f.name.empty() ? "" : fmt::format("  (or {}:{})", file, f.index))
+               : fmt::format("{:<{}}  not usable: {}\n", pick(f), width, f.problem);
   return out;
 }
 

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+# End-to-end checks of flame files on the command line (docs/flames.md): one CHECK per run.
+#   flame_cli_test.sh IFSFX WORKDIR CHECK
+set -euo pipefail
+ifsfx=$1 work=$2 check=$3
+rm -rf "$work" && mkdir -p "$work" && cd "$work"
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+case "$check" in
+  save_flame)
+    # --save-flame writes the IFS as a flame beside the picture; `ifsfx presets` lists it, and
+    # flam3-render (where installed) renders it.
+    "$ifsfx" render sierpinski-triangle --size 64x64 --quality 4 -q -o t.png --save-flame t.flame
+    [ -s t.png ] || fail "no picture"
+    grep -q '<flame ' t.flame || fail "no <flame> in t.flame: $(head -c 200 t.flame)"
+    [ "$(grep -c '<xform ' t.flame)" -eq 3 ] || fail "not 3 xforms: $(cat t.flame)"
+    "$ifsfx" presets t.flame >list.txt
+    grep -Eq '^t\.flame:sierpinski-triangle +3 xforms +\(or t\.flame:0\)$' list.txt ||
+      fail "presets t.flame: $(cat list.txt)"
+    if command -v flam3-render >/dev/null; then
+      env out=flam3.png flam3-render <t.flame >/dev/null 2>&1 || fail "flam3-render refused t.flame"
+      [ -s flam3.png ] || fail "flam3-render wrote nothing"
+    fi
+    ;;
+  bad_input)
+    # The flame file may not be the picture; a file that is not XML is one line naming it.
+    rc=0
+    "$ifsfx" render sierpinski-triangle -o same.png --save-flame same.png 2>err.txt || rc=$?
+    [ "$rc" -ne 0 ] && grep -q '^ifsfx: --save-flame same.png: must differ from -o' err.txt ||
+      fail "same file: rc $rc, $(cat err.txt)"
+    [ ! -e same.png ] || fail "same.png written"
+    echo 'not xml at all' >bad.flame
+    rc=0
+    "$ifsfx" presets bad.flame >out.txt 2>err.txt || rc=$?
+    [ "$rc" -ne 0 ] && [ "$(wc -l <err.txt)" -eq 1 ] && grep -q '^ifsfx: bad.flame' err.txt ||
+      fail "not XML: rc $rc, $(cat err.txt)"
+    ;;
+  *) fail "unknown check $check" ;;
+esac
+echo "PASS: $check"
