@@ -15,9 +15,10 @@ FlameRaster flame_raster(const Camera& camera, int supersample, int gutter) {
   r.bins_x = camera.width * supersample + 2 * gutter;
   r.bins_y = camera.height * supersample + 2 * gutter;
   r.ppu = camera.scale * std::exp2(camera.zoom);
-  // flam3 turns the plotted point by −rotate about the centre (its pictures turn clockwise for
-  // a positive angle in the y-down plane); checked against flam3-render (tests/flame).
-  const double t = -camera.rotate * std::numbers::pi / 180;
+  // The plotted point turns by +rotate about the centre, (x, y) ↦ (x·cos t − y·sin t,
+  // x·sin t + y·cos t) in the y-down plane: clockwise on the screen, as flam3-render draws it
+  // (tests/flame/render_test.cpp checks a one-point flame against it).
+  const double t = camera.rotate * std::numbers::pi / 180;
   const double c = std::cos(t), s = std::sin(t);
   const double k = r.ppu * supersample;
   const double cx = camera.center.x, cy = camera.center.y;

@@ -3,8 +3,8 @@
 // flame plane to the bins of the supersampled histogram. The flame plane's y points down the
 // picture (flame/flame.h): pixel column j, row i covers x ∈ [j, j + 1), y ∈ [i, i + 1) of
 //   x_pix = (x' − cx)·ppu + W/2,   y_pix = (y' − cy)·ppu + H/2,   ppu = scale·2^zoom,
-// where (x', y') is the point turned by `rotate` degrees about the centre; a bin is 1/ss of a
-// pixel, and `gutter` bins surround the picture for the spatial filter to read.
+// where (x', y') is the point turned by `rotate` degrees about the centre (clockwise on screen); a
+// bin is 1/ss of a pixel, and `gutter` bins surround the picture for the spatial filter to read.
 #pragma once
 
 #include "flame/flame.h"

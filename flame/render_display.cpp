@@ -118,8 +118,8 @@ cv::Mat display(const FlameHistogram& pixels, const ToneMapping& tone, int chann
                              std::clamp(p.r + under * 255 * bg.r, 0.0, 255.0),
                              255 * (p.alpha + under * bg.a)};
         for (int k = 0; k < channels; ++k) {
-          if (depth == CV_8U)
-            out.ptr<std::uint8_t>(i)[j * channels + k] = cv::saturate_cast<std::uint8_t>(v[k]);
+          if (depth == CV_8U)  // truncated, as flam3 writes its 8-bit pictures
+            out.ptr<std::uint8_t>(i)[j * channels + k] = static_cast<std::uint8_t>(v[k]);
           else if (depth == CV_16U)
             out.ptr<std::uint16_t>(i)[j * channels + k] =
                 cv::saturate_cast<std::uint16_t>(v[k] * 65535 / 255);
