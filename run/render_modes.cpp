@@ -15,7 +15,8 @@ constexpr std::array kModes{
     RenderModeInfo{.mode = RenderMode::attractor, .name = "attractor", .help = "the set"},
     RenderModeInfo{.mode = RenderMode::measure,
                    .name = "measure",
-                   .help = "log-density of the invariant measure, coloured by map"},
+                   .help = "log-density of the invariant measure, coloured by map",
+                   .flames = true},
     RenderModeInfo{.mode = RenderMode::tops,
                    .name = "tops",
                    .help = "each pixel coloured by the first symbol of its top address",
@@ -70,6 +71,14 @@ RenderMode parse_render_mode(const std::string& text, const std::string& what) {
     if (key == info.name) return info.mode;
   throw Error(ErrorKind::invalid_argument,
               fmt::format("{}: {} (got '{}')", what, render_mode_names(), text));
+}
+
+void check_flame_mode(RenderMode mode, const std::string& mode_word) {
+  if (!render_mode_info(mode).flames)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{} {}: a flame renders in mode {} (its attractor, tops and colour "
+                            "stealing through the chaos game are not built yet)",
+                            mode_word, to_string(mode), modes_taking(&RenderModeInfo::flames)));
 }
 
 void check_mode_options(RenderMode mode, const ModeOptions& options, const std::string& mode_word) {
