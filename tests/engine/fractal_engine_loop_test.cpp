@@ -16,7 +16,7 @@ namespace ifsfx::engine {
 namespace {
 
 using ifsfx::testing::same_bytes;
-using testing::test_frame;
+using video::testing::test_frame;
 
 double mean_difference(const cv::Mat& a, const cv::Mat& b) {
   cv::Mat d;
