@@ -11,13 +11,8 @@
 #include <fmt/format.h>
 
 #include "cli/cli_options.h"
-#include "cli/option_groups.h"
 #include "cli/commands.h"
-#include "run/render_metadata.h"
-#include "run/seamless_options.h"
-#include "run/render_modes.h"
-#include "run/render_still.h"
-#include "run/picture_options.h"
+#include "cli/option_groups.h"
 #include "cli/stop_signals.h"
 #include "flame/flame_file.h"
 #include "flame/flame_write.h"
@@ -27,6 +22,11 @@
 #include "ifs/output_file.h"
 #include "ifs/preset.h"
 #include "ifs/render.h"
+#include "run/picture_options.h"
+#include "run/render_metadata.h"
+#include "run/render_modes.h"
+#include "run/render_still.h"
+#include "run/seamless_options.h"
 
 namespace ifsfx::app {
 namespace {
@@ -82,8 +82,8 @@ OutputOptions checked_outputs(const RenderArgs& args) {
   add_preset_input(output.inputs, args.colouring);
   output.inputs.add(args.source);
   check_writable_image(args.output, output, args.bits);
-  for (const auto& [flag, path] : {std::pair{"--save-map", &args.save_map},
-                                   std::pair{"--save-flame", &args.save_flame}}) {
+  for (const auto& [flag, path] :
+       {std::pair{"--save-map", &args.save_map}, std::pair{"--save-flame", &args.save_flame}}) {
     if (path->empty()) continue;
     check_output(*path, output);
     if (same_output(*path, args.output))
@@ -175,11 +175,11 @@ void run_render(const RenderArgs& args) {
   if (!args.save_flame.empty()) {
     // The IFS as a flame drawing this measure, framed as this picture (flame_from_ifs).
     OutputFile file(args.save_flame, output);
-    write_file(file, flame::flame_xml(flame::flame_from_ifs(
-                         preset.ifs, {.size = size,
-                                      .sampling = options.sampling,
-                                      .brightness = options.brightness,
-                                      .gamma = options.gamma})));
+    write_file(file,
+               flame::flame_xml(flame::flame_from_ifs(preset.ifs, {.size = size,
+                                                                   .sampling = options.sampling,
+                                                                   .brightness = options.brightness,
+                                                                   .gamma = options.gamma})));
     staged.push_back(std::move(file));
   }
   const cv::Mat& image = still.image;
@@ -236,11 +236,12 @@ void run_flame_render(const RenderArgs& args) {
   staged.push_back(std::move(image_file));
   commit_together(staged);
   if (!args.quiet)
-    fmt::print("{} (flame, {}x{}): {:.1f} M points in {:.3f} s ({:.0f} Mpts/s), coverage {:.1f}% -> "
-               "{}\n",
-               f.name.empty() ? args.preset : f.name, image.cols, image.rows, stats.points / 1e6,
-               stats.seconds, stats.points / 1e6 / std::max(stats.seconds, 1e-9),
-               100 * stats.coverage, args.output);
+    fmt::print(
+        "{} (flame, {}x{}): {:.1f} M points in {:.3f} s ({:.0f} Mpts/s), coverage {:.1f}% -> "
+        "{}\n",
+        f.name.empty() ? args.preset : f.name, image.cols, image.rows, stats.points / 1e6,
+        stats.seconds, stats.points / 1e6 / std::max(stats.seconds, 1e-9), 100 * stats.coverage,
+        args.output);
 }
 
 }  // namespace

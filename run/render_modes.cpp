@@ -49,7 +49,9 @@ std::string modes_taking(bool RenderModeInfo::*takes) {
 
 }  // namespace
 
-std::span<const RenderModeInfo> render_modes() { return kModes; }
+std::span<const RenderModeInfo> render_modes() {
+  return kModes;
+}
 
 const RenderModeInfo& render_mode_info(RenderMode mode) {
   for (const RenderModeInfo& info : kModes)
@@ -96,8 +98,9 @@ void check_mode_options(RenderMode mode, const ModeOptions& options, const std::
   refuse(options.map_method, &RenderModeInfo::map_method);
   refuse(options.background, &RenderModeInfo::background);
   if (info.source && !options.source.given)
-    throw Error(ErrorKind::invalid_argument, fmt::format("{}: {} {} needs a source image",
-                                                         options.source.name, mode_word, info.name));
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("{}: {} {} needs a source image", options.source.name, mode_word, info.name));
 }
 
 }  // namespace ifsfx::app

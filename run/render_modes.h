@@ -36,7 +36,9 @@ struct RenderModeInfo {
 // Every mode, in the order the help lists them.
 std::span<const RenderModeInfo> render_modes();
 const RenderModeInfo& render_mode_info(RenderMode mode);
-inline const char* to_string(RenderMode mode) { return render_mode_info(mode).name; }
+inline const char* to_string(RenderMode mode) {
+  return render_mode_info(mode).name;
+}
 
 // "attractor, measure, tops or steal".
 std::string render_mode_names();

@@ -6,11 +6,11 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/fractal_engine.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "same_bytes.h"
 #include "tests/video/test_frames.h"
-#include "engine/fractal_engine.h"
 
 namespace ifsfx::engine {
 namespace {
