@@ -33,15 +33,14 @@ bool is_rgb(PixelFormat format) {
   return format == PixelFormat::rgba || format == PixelFormat::bgra || format == PixelFormat::bgrx;
 }
 
-std::uint8_t to_byte(float value) {
-  return static_cast<std::uint8_t>(std::clamp(std::floor(value + 0.5f), 0.0f, 255.0f));
-}
+// OBS's matrix for cv::transform, which rounds and saturates to bytes in SIMD: `to_bgr` takes
+// (y, u, v) bytes to (b, g, r) bytes (M's rows in BGR order, the constant scaled to bytes),
+// `to_yuv` is its inverse; each sample is first clamped to the frame's range [lo, hi], as OBS's
+// shader does.
+struct Colours {
+  cv::Matx34f to_bgr, to_yuv;
+  cv::Scalar lo, hi;
 
-// OBS's matrix as tables of bytes: rgb = Σ_k F_k[yuv_k] (each term of M's row times the sample,
-// clamped to the frame's range first, as OBS's shader does; the constant in the luma table), and
-// the inverse, yuv = Σ_c B_c[rgb_c]. Linear, so a mean of samples is the mean of their terms.
-class Colours {
- public:
   explicit Colours(const YuvMatrix& yuv) {
     const auto& m = yuv.matrix;
     cv::Matx33f F;
@@ -55,93 +54,82 @@ class Colours {
     if (!invertible)
       throw Error(ErrorKind::invalid_argument, "colour matrix: must be invertible (got singular)");
     const cv::Vec3f back = B * offset;
-    for (int v = 0; v < 256; ++v)
-      for (int k = 0; k < 3; ++k) {
-        const auto K = static_cast<std::size_t>(k);
-        const float lo = 255.0f * yuv.range_min[K], hi = 255.0f * yuv.range_max[K];
-        const float sample = std::clamp(static_cast<float>(v), lo, hi);
-        for (int c = 0; c < 3; ++c) {
-          to_rgb_[K][static_cast<std::size_t>(v)][c] = F(c, k) * sample + (k == 0 ? offset[c] : 0);
-          // From rgb channel k to yuv channel c; the offset with the red channel's table.
-          to_yuv_[K][static_cast<std::size_t>(v)][c] =
-              B(c, k) * static_cast<float>(v) - (k == 0 ? back[c] : 0);
-        }
-      }
+    for (int c = 0; c < 3; ++c) {
+      for (int k = 0; k < 3; ++k) to_bgr(2 - c, k) = F(c, k), to_yuv(c, 2 - k) = B(c, k);
+      to_bgr(2 - c, 3) = offset[c], to_yuv(c, 3) = -back[c];
+    }
+    for (std::size_t k = 0; k < 3; ++k) {
+      lo[static_cast<int>(k)] = std::ceil(255.0 * yuv.range_min[k] - 1e-3);
+      hi[static_cast<int>(k)] = std::floor(255.0 * yuv.range_max[k] + 1e-3);
+    }
   }
-
-  // BGR bytes of one YUV sample.
-  cv::Vec3b bgr(std::uint8_t y, std::uint8_t u, std::uint8_t v) const {
-    const cv::Vec3f rgb = to_rgb_[0][y] + to_rgb_[1][u] + to_rgb_[2][v];
-    return {to_byte(rgb[2]), to_byte(rgb[1]), to_byte(rgb[0])};
-  }
-  // YUV (unrounded) of BGR bytes.
-  cv::Vec3f yuv(const cv::Vec3b& bgr) const {
-    return to_yuv_[0][bgr[2]] + to_yuv_[1][bgr[1]] + to_yuv_[2][bgr[0]];
-  }
-
- private:
-  std::array<std::array<cv::Vec3f, 256>, 3> to_rgb_, to_yuv_;
 };
 
-// Row y of a YUV frame as one Y, U and V sample per pixel.
-void read_row(PixelFormat format, const std::vector<cv::Mat>& p, int y, int width, std::uint8_t* Y,
-              std::uint8_t* U, std::uint8_t* V) {
+// Each column twice: chroma sampled once per two pixels, to `width` pixels.
+cv::Mat widen(const cv::Mat& half, int width, int height) {
+  cv::Mat wide;
+  cv::resize(half, wide, {half.cols * 2, half.rows * (half.rows == height ? 1 : 2)}, 0, 0,
+             cv::INTER_NEAREST);
+  return wide(cv::Rect(0, 0, width, height));
+}
+
+// The Y, U and V samples of each pixel of a YUV frame, chroma by nearest sample.
+std::vector<cv::Mat> full_planes(PixelFormat format, const std::vector<cv::Mat>& p, cv::Size size) {
   switch (format) {
     case PixelFormat::nv12: {
-      const std::uint8_t* uv = p[1].ptr(y / 2);
-      std::copy_n(p[0].ptr(y), width, Y);
-      for (int x = 0; x < width; ++x) U[x] = uv[(x / 2) * 2], V[x] = uv[(x / 2) * 2 + 1];
-      return;
+      cv::Mat uv[2];
+      cv::split(p[1], uv);
+      return {p[0], widen(uv[0], size.width, size.height), widen(uv[1], size.width, size.height)};
     }
     case PixelFormat::i420:
-      std::copy_n(p[0].ptr(y), width, Y);
-      for (int x = 0; x < width; ++x) U[x] = p[1].ptr(y / 2)[x / 2], V[x] = p[2].ptr(y / 2)[x / 2];
+      return {p[0], widen(p[1], size.width, size.height), widen(p[2], size.width, size.height)};
+    case PixelFormat::yuy2:
+    case PixelFormat::uyvy: {
+      cv::Mat m[4];  // Y0 U Y1 V, or U Y0 V Y1
+      cv::split(p[0], m);
+      const bool yuyv = format == PixelFormat::yuy2;
+      cv::Mat pairs;
+      cv::merge(std::vector<cv::Mat>{m[yuyv ? 0 : 1], m[yuyv ? 2 : 3]}, pairs);
+      const cv::Mat luma = pairs.reshape(1, size.height)(cv::Rect(0, 0, size.width, size.height));
+      return {luma, widen(m[yuyv ? 1 : 0], size.width, size.height),
+              widen(m[yuyv ? 3 : 2], size.width, size.height)};
+    }
+    default:
+      return {p[0], p[1], p[2]};
+  }
+}
+
+// Writes luma `Y` (size of the frame) into the planes.
+void write_luma(PixelFormat format, const cv::Mat& Y, std::vector<cv::Mat>& p) {
+  if (format != PixelFormat::yuy2 && format != PixelFormat::uyvy) return Y.copyTo(p[0]);
+  // Pairs of pixels into the macropixels' two luma bytes.
+  cv::Mat even = Y;
+  if (Y.cols % 2) cv::copyMakeBorder(Y, even, 0, 0, 0, 1, cv::BORDER_REPLICATE);
+  cv::Mat pairs[2];
+  cv::split(even.reshape(2, Y.rows), pairs);
+  const int first = format == PixelFormat::yuy2 ? 0 : 1;
+  const int from_to[] = {0, first, 1, first + 2};
+  const cv::Mat sources[] = {pairs[0], pairs[1]};
+  cv::mixChannels(sources, 2, &p[0], 1, from_to, 2);
+}
+
+// Writes chroma `UV` (CV_8UC2, the chroma grid's size) into the planes.
+void write_chroma(PixelFormat format, const cv::Mat& UV, std::vector<cv::Mat>& p) {
+  switch (format) {
+    case PixelFormat::nv12:
+      UV.copyTo(p[1]);
       return;
     case PixelFormat::yuy2:
     case PixelFormat::uyvy: {
-      const std::uint8_t* m = p[0].ptr(y);
-      const bool yuyv = format == PixelFormat::yuy2;  // Y0 U Y1 V, else U Y0 V Y1
-      for (int x = 0; x < width; ++x) {
-        const std::uint8_t* macro = m + (x / 2) * 4;
-        Y[x] = macro[(yuyv ? 0 : 1) + (x & 1) * 2];
-        U[x] = macro[yuyv ? 1 : 0], V[x] = macro[yuyv ? 3 : 2];
-      }
+      const int u = format == PixelFormat::yuy2 ? 1 : 0;
+      const int from_to[] = {0, u, 1, u + 2};
+      cv::mixChannels(&UV, 1, &p[0], 1, from_to, 2);
       return;
     }
-    default:
-      std::copy_n(p[0].ptr(y), width, Y);
-      std::copy_n(p[1].ptr(y), width, U);
-      std::copy_n(p[2].ptr(y), width, V);
-  }
-}
-
-void write_luma(PixelFormat format, std::vector<cv::Mat>& p, int y, const float* Y, int width) {
-  if (format == PixelFormat::yuy2 || format == PixelFormat::uyvy) {
-    std::uint8_t* m = p[0].ptr(y) + (format == PixelFormat::yuy2 ? 0 : 1);
-    for (int x = 0; x < width; ++x) m[(x / 2) * 4 + (x & 1) * 2] = to_byte(Y[x]);
-    return;
-  }
-  std::uint8_t* row = p[0].ptr(y);
-  for (int x = 0; x < width; ++x) row[x] = to_byte(Y[x]);
-}
-
-// Chroma row cy: sample cx is (U[cx], V[cx]).
-void write_chroma(PixelFormat format, std::vector<cv::Mat>& p, int cy, const float* U,
-                  const float* V, int count) {
-  for (int cx = 0; cx < count; ++cx) {
-    const std::uint8_t u = to_byte(U[cx]), v = to_byte(V[cx]);
-    switch (format) {
-      case PixelFormat::nv12:
-        p[1].ptr(cy)[2 * cx] = u, p[1].ptr(cy)[2 * cx + 1] = v;
-        break;
-      case PixelFormat::yuy2:
-        p[0].ptr(cy)[4 * cx + 1] = u, p[0].ptr(cy)[4 * cx + 3] = v;
-        break;
-      case PixelFormat::uyvy:
-        p[0].ptr(cy)[4 * cx] = u, p[0].ptr(cy)[4 * cx + 2] = v;
-        break;
-      default:
-        p[1].ptr(cy)[cx] = u, p[2].ptr(cy)[cx] = v;
+    default: {
+      cv::Mat* planes = &p[1];
+      const int from_to[] = {0, 0, 1, 1};
+      cv::mixChannels(&UV, 1, planes, 2, from_to, 2);
     }
   }
 }
@@ -178,13 +166,11 @@ cv::Mat to_engine(PixelFormat format, const std::vector<cv::Mat>& planes, const 
   }
   if (is_rgb(format)) return planes[0].clone();
   const Colours colours(yuv);
-  out.create(size, CV_8UC3);
-  std::vector<std::uint8_t> Y(static_cast<std::size_t>(size.width)), U(Y.size()), V(Y.size());
-  for (int y = 0; y < size.height; ++y) {
-    read_row(format, planes, y, size.width, Y.data(), U.data(), V.data());
-    auto* row = out.ptr<cv::Vec3b>(y);
-    for (std::size_t x = 0; x < Y.size(); ++x) row[x] = colours.bgr(Y[x], U[x], V[x]);
-  }
+  cv::Mat samples;
+  cv::merge(full_planes(format, planes, size), samples);
+  cv::max(samples, colours.lo, samples);
+  cv::min(samples, colours.hi, samples);
+  cv::transform(samples, out, colours.to_bgr);
   return out;
 }
 
@@ -193,27 +179,27 @@ void from_engine(const cv::Mat& picture, PixelFormat format, const YuvMatrix& yu
   if (format == PixelFormat::rgba) return cv::cvtColor(picture, planes[0], cv::COLOR_BGRA2RGBA);
   if (is_rgb(format)) return picture.copyTo(planes[0]);
   const Colours colours(yuv);
+  cv::Mat samples;
+  cv::transform(picture, samples, colours.to_yuv);
+  cv::Mat Y;
+  cv::extractChannel(samples, Y, 0);
+  write_luma(format, Y, planes);
+  // The chroma of a block is that of its pixels' mean colour.
   const Subsampling s = subsampling(format);
-  const int width = picture.cols, chroma_width = (width + s.x - 1) / s.x;
-  std::vector<float> Y(static_cast<std::size_t>(width));
-  std::vector<float> U(static_cast<std::size_t>(chroma_width)), V(U.size());
-  std::vector<int> n(U.size());
-  for (int cy = 0; cy < (picture.rows + s.y - 1) / s.y; ++cy) {
-    std::fill(U.begin(), U.end(), 0.0f), std::fill(V.begin(), V.end(), 0.0f);
-    std::fill(n.begin(), n.end(), 0);
-    // The chroma of a block is the mean of its pixels'.
-    for (int y = cy * s.y; y < std::min(picture.rows, (cy + 1) * s.y); ++y) {
-      const auto* row = picture.ptr<cv::Vec3b>(y);
-      for (int x = 0; x < width; ++x) {
-        const cv::Vec3f c = colours.yuv(row[x]);
-        const auto cx = static_cast<std::size_t>(x / s.x);
-        Y[static_cast<std::size_t>(x)] = c[0], U[cx] += c[1], V[cx] += c[2], ++n[cx];
-      }
-      write_luma(format, planes, y, Y.data(), width);
-    }
-    for (std::size_t cx = 0; cx < U.size(); ++cx) U[cx] /= float(n[cx]), V[cx] /= float(n[cx]);
-    write_chroma(format, planes, cy, U.data(), V.data(), chroma_width);
+  if (s.x > 1 || s.y > 1) {
+    // An odd last column or row is a block of its own: repeated, its mean is its own colour.
+    cv::Mat even = picture, mean;
+    const int right = s.x > 1 ? picture.cols % 2 : 0, bottom = s.y > 1 ? picture.rows % 2 : 0;
+    if (right || bottom)
+      cv::copyMakeBorder(picture, even, 0, bottom, 0, right, cv::BORDER_REPLICATE);
+    cv::resize(even, mean, {even.cols / s.x, even.rows / s.y}, 0, 0, cv::INTER_AREA);
+    cv::transform(mean, samples, colours.to_yuv);
   }
+  cv::Mat UV;
+  const int from_to[] = {1, 0, 2, 1};
+  UV.create(samples.size(), CV_8UC2);
+  cv::mixChannels(&samples, 1, &UV, 1, from_to, 2);
+  write_chroma(format, UV, planes);
 }
 
 }  // namespace ifsfx::obs

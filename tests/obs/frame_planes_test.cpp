@@ -40,7 +40,7 @@ std::vector<cv::Mat> make_planes(PixelFormat format, cv::Size size,
 }
 
 TEST(frame_planes, yuv_formats_give_back_what_they_were_given_within_one_step) {
-  const cv::Size size(34, 18);
+  const cv::Size size(33, 17);  // odd: a last column and row of blocks of their own
   const cv::Mat bgr = blocky_picture(size);
   for (PixelFormat f : {PixelFormat::nv12, PixelFormat::i420, PixelFormat::yuy2, PixelFormat::uyvy,
                         PixelFormat::i444}) {
