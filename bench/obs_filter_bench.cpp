@@ -7,7 +7,7 @@
 // max) and to its being shown (one frame later by design), and the time OBS's thread spends in
 // the filter. Target (issue 33): 0 dropped, p95 ready latency ≤ 33 ms, on 2 cores.
 //
-//   build/release/bench/obs_filter_bench [SECONDS]   # default 10 s per mode
+//   build/release/bench/obs_filter_bench [SECONDS [KEYFRAME_INTERVAL]]   # default 10 s, 12
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -109,10 +109,13 @@ void run(const char* name, const PluginSettings& settings, const Webcam& cam, do
 
 int main(int argc, char** argv) {
   const double seconds = argc > 1 ? std::stod(argv[1]) : 10;
+  const int interval = argc > 2 ? std::stoi(argv[2]) : 12;
   const Webcam cam;
   PropertyValues values;  // the filter's defaults: sierpinski-triangle, as `ifsfx cam`
   run("fixed/1280x720@30 nv12", settings_of(values), cam, seconds);
   values.animate = "drift";
-  run("drift/1280x720@30 nv12", settings_of(values), cam, seconds);
+  values.keyframe_interval = interval;
+  run(fmt::format("drift/1280x720@30 nv12, a map every {} frames", interval).c_str(),
+      settings_of(values), cam, seconds);
   return 0;
 }

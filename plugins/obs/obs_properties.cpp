@@ -6,6 +6,7 @@
 
 #include "ifs/preset.h"
 #include "superifs/superifs_file.h"
+#include "superifs/texture.h"
 #include "video/drift.h"
 
 namespace ifsfx::obs {
@@ -63,7 +64,7 @@ void add_animation(obs_properties_t* p) {
     obs_property_list_add_string(superifs, s.name.c_str(), s.name.c_str());
   obs_properties_add_int(p, "buffers", text("Buffers"), 1, 64, 1);
   obs_properties_add_int(p, "keyframe_interval", text("KeyframeInterval"), 1, 100000, 1);
-  obs_properties_add_int(p, "loop", text("Loop"), 0, INT_MAX, 1);
+  obs_properties_add_int(p, "loop", text("Loop"), 0, static_cast<int>(kMaxLoop), 1);
 }
 
 }  // namespace

@@ -68,9 +68,11 @@ TEST(filter_worker, rejected_settings_keep_the_last_good_picture) {
 
 TEST(filter_worker, a_preset_that_fails_to_build_says_why) {
   FilterWorker worker(30);
-  // Settings that load but do not build: the colouring IFS must have as many maps as F.
+  // Settings the worker cannot build (the colouring IFS must have as many maps as F), given to it
+  // although check_settings, OBS's update's check, refuses them too.
   PluginSettings s = preset("sierpinski-triangle");
   s.engine.colouring = "barnsley-fern";
+  EXPECT_THROW(check_settings(s), Error) << "checked at once, in OBS's update";
   worker.configure(s);
   const cv::Mat picture = test_picture();
   cv::Mat out;
