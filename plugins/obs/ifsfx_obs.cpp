@@ -8,7 +8,9 @@
 // (NV12, I420, YUY2, UYVY, RGBA, BGRA, BGRX, I444 are filtered; any other passes through) and the
 // picture is written back into the same frame. Settings that do not work (an unknown preset, a
 // bad view) show their one-line message in the dialog and keep the last good picture.
+#include <algorithm>
 #include <exception>
+#include <iterator>
 #include <memory>
 #include <optional>
 

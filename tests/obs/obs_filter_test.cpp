@@ -66,6 +66,16 @@ class obs_filter : public ::testing::Test {
   }
 };
 
+TEST_F(obs_filter, is_named_and_described_from_its_locale) {
+  // The module's data folder is where OBS was told (plugins/obs/data, installed as
+  // share/obs/obs-plugins/ifsfx-obs): its en-US.ini names the filter and its properties.
+  EXPECT_STREQ(obs_source_get_display_name("ifsfx_fractal_filter"), "ifsfx fractal");
+  obs_properties_t* props = obs_get_source_properties("ifsfx_fractal_filter");
+  ASSERT_NE(props, nullptr);
+  EXPECT_STREQ(obs_property_description(obs_properties_get(props, "mix")), "Mix with the original");
+  obs_properties_destroy(props);
+}
+
 TEST_F(obs_filter, bgra_pictures_are_the_clis_bit_for_bit) {
   const std::vector<cv::Mat> frames = {test_frame(0), test_frame(1), test_frame(2)};
   const std::vector<cv::Mat> expected = cli_frames(frames, kFixedFlags, "fixed");
