@@ -2,17 +2,26 @@
 #include "plugins/obs/frame_planes.h"
 
 #include <gtest/gtest.h>
-#include <media-io/video-io.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
 namespace ifsfx::obs {
 namespace {
 
+// BT.709 in limited range, as OBS's matrix (rgb = M · (y, u, v, 1), all in [0, 1]): Kr = 0.2126,
+// Kb = 0.0722, luma 16..235 and chroma 16..240 of 255, chroma centred on 128.
 YuvMatrix bt709_limited() {
+  const float kr = 0.2126f, kb = 0.0722f, kg = 1 - kr - kb;
+  const float ys = 255.0f / 219, cs = 255.0f / 224, y0 = 16.0f / 255, c0 = 128.0f / 255;
+  const float rv = cs * 2 * (1 - kr), bu = cs * 2 * (1 - kb);
+  const float gu = -bu * kb / kg, gv = -rv * kr / kg;
   YuvMatrix m;
-  video_format_get_parameters(VIDEO_CS_709, VIDEO_RANGE_PARTIAL, m.matrix.data(),
-                              m.range_min.data(), m.range_max.data());
+  m.matrix = {ys, 0,  rv, -ys * y0 - rv * c0,         //
+              ys, gu, gv, -ys * y0 - (gu + gv) * c0,  //
+              ys, bu, 0,  -ys * y0 - bu * c0,         //
+              0,  0,  0,  1};
+  m.range_min = {16.0f / 255, 16.0f / 255, 16.0f / 255};
+  m.range_max = {235.0f / 255, 240.0f / 255, 240.0f / 255};
   return m;
 }
 
