@@ -112,7 +112,8 @@ case "$check" in
     [ "$(complete_words ifsfx ren)" = render ] || fail "completion of 'ren': $(complete_words ifsfx ren)"
     [ "$(complete_words ifsfx render --mode '')" = "attractor measure steal tops" ] ||
       fail "completion of --mode: $(complete_words ifsfx render --mode '')"
-    [ "$(complete_words ifsfx render --save)" = --save-map ] || fail "completion of --save"
+    [ "$(complete_words ifsfx render --save-m)" = --save-map ] || fail "completion of --save-m"
+    [ "$(complete_words ifsfx render --save-f)" = --save-flame ] || fail "completion of --save-f"
     [ "$(complete_words ifsfx texture paper)" = paper-fig4 ] || fail "completion of a superpreset"
     [ "$(complete_words ifsfx filter --preset maple)" = maple-leaf ] || fail "completion of --preset"
     ;;
