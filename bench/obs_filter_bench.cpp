@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// The OBS filter's live path without OBS: a synthetic 1280×720 NV12 webcam at 30 fps (the format
-// OBS's V4L2 source hands a filter for most cameras) through plugins/obs's FilterWorker, called as
+// The OBS filter's live path without OBS: a synthetic 1280×720 NV12 webcam at 30 fps (BT.709
+// limited range) through plugins/obs's FilterWorker, called as
 // OBS's video thread calls the filter — once per frame interval, never waiting. Per mode (fixed
 // map, drift): frames whose picture was never shown (dropped), frames that showed a picture again
 // (repeated), a frame's latency from reaching the filter to its picture being ready (p50, p95,
