@@ -79,10 +79,10 @@ if(TARGET ifsfx-obs)
   set(CPACK_DEBIAN_OBS_PACKAGE_RECOMMENDS obs-studio)
   set(CPACK_COMPONENT_OBS_DESCRIPTION
       "fractal kaleidoscope filter for OBS Studio (ifsfx)
-The ifsfx fractal filter as an OBS Studio video filter: add \"ifsfx fractal\"
-to a webcam or media source and every frame is coloured through the steal
-map of an IFS (colour stealing), optionally drifting or stepping through a
-V-variable superfractal, computed off OBS's video thread.")
+The fractal filter of ifsfx inside OBS Studio: add the filter named
+ifsfx fractal to a webcam or media source and every frame is coloured
+through the steal map of an IFS (colour stealing), optionally drifting or
+stepping through a V-variable superfractal, computed off OBS's video thread.")
 endif()
 
 include(CPack)

@@ -24,11 +24,14 @@ cv::Mat test_picture() {
 
 // Exchanges copies of `picture` at 30 fps timestamps until one comes back filtered (at most 10 s).
 Shown exchange_until_filtered(FilterWorker& worker, const cv::Mat& picture, cv::Mat& out,
-                              std::uint64_t& timestamp) {
+                              std::uint64_t& timestamp, bool flip = false) {
   for (int i = 0; i < 1000; ++i) {
     out = picture.clone();
-    FrameData f{
-        .format = PixelFormat::bgra, .size = kSize, .timestamp = timestamp, .planes = {out}};
+    FrameData f{.format = PixelFormat::bgra,
+                .size = kSize,
+                .flip = flip,
+                .timestamp = timestamp,
+                .planes = {out}};
     timestamp += 1'000'000'000 / 30;
     const Shown shown = worker.exchange(f);
     if (shown.written) return shown;
@@ -53,6 +56,20 @@ TEST(filter_worker, pictures_are_the_engines) {
   engine::FractalEngine engine(preset("maple-leaf").engine, kSize, kSize, 30);
   EXPECT_EQ(cv::norm(out, engine.filter(picture, 0), cv::NORM_INF), 0);
   EXPECT_GE(worker.stats().passed, 1) << "frames before the maps were ready pass unchanged";
+}
+
+TEST(filter_worker, a_frame_stored_upside_down_is_filtered_upright) {
+  FilterWorker worker(30);
+  worker.configure(preset("maple-leaf"));
+  const cv::Mat upright = test_picture();
+  cv::Mat stored, out;
+  cv::flip(upright, stored, 0);
+  std::uint64_t t = 0;
+  ASSERT_TRUE(exchange_until_filtered(worker, stored, out, t, true).written);
+  engine::FractalEngine engine(preset("maple-leaf").engine, kSize, kSize, 30);
+  cv::Mat expected;
+  cv::flip(engine.filter(upright, 0), expected, 0);  // stored as the frame is
+  EXPECT_EQ(cv::norm(out, expected, cv::NORM_INF), 0);
 }
 
 TEST(filter_worker, rejected_settings_keep_the_last_good_picture) {
