@@ -29,6 +29,7 @@ import tempfile
 import xml.etree.ElementTree as ET
 
 SSIM_TOL, COLOUR_TOL = 0.02, 1.0
+EMBER_ONLY = ("var_color", "name", "animate", "motion_frequency", "motion_function")
 
 
 def cpu_run(cmd, env=None, stdin=None):
@@ -52,6 +53,11 @@ def resized(flame, longest, quality):
     for attr in ("temporal_samples", "passes"):
         if attr in flame.attrib:
             flame.set(attr, "1")
+    # Ember's per-xform attributes that do not change the picture (flam3-render would warn
+    # "unrecognized variation" about them, and ifsfx ignores them too).
+    for xf in list(flame.iter("xform")) + list(flame.iter("finalxform")):
+        for attr in EMBER_ONLY:
+            xf.attrib.pop(attr, None)
     return flame
 
 
