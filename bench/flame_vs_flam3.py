@@ -29,6 +29,7 @@ import tempfile
 import xml.etree.ElementTree as ET
 
 SSIM_TOL, COLOUR_TOL = 0.02, 1.0
+Z_ONLY = ("flatten", "zscale", "ztranslate", "zcone", "zblur")
 EMBER_ONLY = ("var_color", "name", "animate", "motion_frequency", "motion_function")
 
 
@@ -58,6 +59,15 @@ def resized(flame, longest, quality):
     for xf in list(flame.iter("xform")) + list(flame.iter("finalxform")):
         for attr in EMBER_ONLY:
             xf.attrib.pop(attr, None)
+        # Ember's 3-D variations that are 2-D ones in the plane, as flam3 knows them: linear3D
+        # is linear at z = 0; flatten and the z-only ones change nothing (docs/flames.md).
+        for prefix in ("", "pre_", "post_"):
+            if prefix + "linear3D" in xf.attrib:
+                w = float(xf.attrib.pop(prefix + "linear3D"))
+                xf.set(prefix + "linear", repr(float(xf.get(prefix + "linear", "0")) + w))
+            for name in Z_ONLY:
+                for attr in [a for a in xf.attrib if a == prefix + name or a.startswith(prefix + name + "_")]:
+                    xf.attrib.pop(attr)
     return flame
 
 

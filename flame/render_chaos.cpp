@@ -142,9 +142,10 @@ void plot(const Plan& plan, const Step& from, Point p, double c, Bins& bins) {
     for (int k = 0; k < 4; ++k) bin[k] += e[static_cast<std::size_t>(k)];
     return;
   }
-  // Linear palette: the two entries around 255·c, mixed in 1/256 steps (integers, so no
-  // rounding call in the loop).
-  const auto x = static_cast<std::uint32_t>(c * 255 * 256);
+  // Linear palette: entries ⌊256·c⌋ and the next, mixed by the fraction, in 1/256 steps
+  // (integers, no rounding call in the loop); from 255 on, the last entry. flam3-render's
+  // colours of Fractorium's linear-palette flames say 256·c, not 255·c.
+  const auto x = static_cast<std::uint32_t>(std::min(c * 256, 255.0) * 256);
   const std::size_t i = std::min<std::uint32_t>(x >> 8, 254);
   const std::uint64_t w = x - (static_cast<std::uint32_t>(i) << 8);
   const auto& e0 = from.colours[i];
