@@ -13,6 +13,7 @@
 #include "apps/seamless_options.h"
 #include "apps/steal_modes.h"
 #include "apps/stop_signals.h"
+#include "flame/flame_write.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
@@ -42,6 +43,7 @@ struct RenderArgs {
   bool map_method_given = false;  // either was on the command line
   bool second_symbol = false;
   std::string save_map;
+  std::string save_flame;  // --save-flame: the preset as a flame file (docs/flames.md)
   std::string background;
   // --seamless, --tiles, --tile-offset (apps/seamless_options.h)
   SeamlessArgs tiles;
@@ -95,6 +97,15 @@ OutputOptions checked_outputs(const RenderArgs& args) {
       throw Error(
           ErrorKind::invalid_argument,
           fmt::format("--save-map {}: must differ from -o (got the same file)", args.save_map));
+  }
+  if (!args.save_flame.empty()) {
+    check_output(args.save_flame, output);
+    if (same_output(args.save_flame, args.output) ||
+        (!args.save_map.empty() && same_output(args.save_flame, args.save_map)))
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("--save-flame {}: must differ from the other outputs (got the same "
+                              "file)",
+                              args.save_flame));
   }
   return output;
 }
@@ -176,6 +187,16 @@ void run_render(const RenderArgs& args) {
   write_image(image_file, image,
               {.bits = args.bits, .smallest = args.smallest, .metadata = std::move(metadata)});
   staged.push_back(std::move(image_file));
+  if (!args.save_flame.empty()) {
+    // The same maps, framing and tone as this render's measure, as flam3 and its kin read them.
+    OutputFile flame_file(args.save_flame, output);
+    write_file(flame_file,
+               flame::flame_xml(flame::flame_from_ifs(preset.ifs, {.size = size,
+                                                                   .sampling = options.sampling,
+                                                                   .brightness = options.brightness,
+                                                                   .gamma = options.gamma})));
+    staged.push_back(std::move(flame_file));
+  }
   commit_together(staged);
   if (!args.quiet) print_summary(preset.ifs.name, image.size(), args, stats);
 }
@@ -254,6 +275,9 @@ void add_render_command(CLI::App& app) {
                 "tops mode: mix in the colour of the second symbol of the top address");
   cmd->add_option("--save-map", args->save_map,
                   "steal mode: also save the steal map, for `ifsfx apply MAP IMAGE`");
+  cmd->add_option("--save-flame", args->save_flame,
+                  "Also save the preset as a flame file (.flame) that flam3, Apophysis and "
+                  "Fractorium open, framed and toned as this render's measure");
   cmd->add_option("--background", args->background,
                   "tops/steal modes: colour off the attractor in formats without alpha "
                   "(black, white, #rrggbb, R,G,B); PNG/TIFF/EXR get a transparent background")
