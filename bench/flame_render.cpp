@@ -9,11 +9,11 @@
 #include <string_view>
 
 #include <fmt/format.h>
-#include <opencv2/imgcodecs.hpp>
 
 #include "flame/flame_file.h"
 #include "flame/render.h"
 #include "ifs/error.h"
+#include "ifs/image_io.h"
 #include "ifs/view.h"
 
 int main(int argc, char** argv) {
@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
     const flame::Flame f = flame::read_flame(spec);
     flame::FlameRenderStats stats;
     const cv::Mat image = flame::render_flame(f, options, &stats);
-    if (!cv::imwrite(out, image)) throw Error(ErrorKind::io, fmt::format("{}: cannot write", out));
+    write_image(out, image);
     fmt::print("points {} reseeded {} seconds {:.3f} coverage {:.4f}\n", stats.points,
                stats.reseeded, stats.seconds, stats.coverage);
   } catch (const std::exception& e) {

@@ -29,6 +29,8 @@ import tempfile
 import xml.etree.ElementTree as ET
 
 SSIM_TOL, COLOUR_TOL = 0.02, 1.0
+Z_ONLY = ("flatten", "zscale", "ztranslate", "zcone", "zblur")
+EMBER_ONLY = ("var_color", "name", "animate", "motion_frequency", "motion_function")
 
 
 def cpu_run(cmd, env=None, stdin=None):
@@ -52,6 +54,20 @@ def resized(flame, longest, quality):
     for attr in ("temporal_samples", "passes"):
         if attr in flame.attrib:
             flame.set(attr, "1")
+    # Ember's per-xform attributes that do not change the picture (flam3-render would warn
+    # "unrecognized variation" about them, and ifsfx ignores them too).
+    for xf in list(flame.iter("xform")) + list(flame.iter("finalxform")):
+        for attr in EMBER_ONLY:
+            xf.attrib.pop(attr, None)
+        # Ember's 3-D variations that are 2-D ones in the plane, as flam3 knows them: linear3D
+        # is linear at z = 0; flatten and the z-only ones change nothing (docs/flames.md).
+        for prefix in ("", "pre_", "post_"):
+            if prefix + "linear3D" in xf.attrib:
+                w = float(xf.attrib.pop(prefix + "linear3D"))
+                xf.set(prefix + "linear", repr(float(xf.get(prefix + "linear", "0")) + w))
+            for name in Z_ONLY:
+                for attr in [a for a in xf.attrib if a == prefix + name or a.startswith(prefix + name + "_")]:
+                    xf.attrib.pop(attr)
     return flame
 
 

@@ -34,7 +34,7 @@ struct FlameRenderOptions {
   std::function<void(double fraction)> progress;
   int channels = 3;   // 3: BGR over the flame's background; 4: BGRA, alpha = the flame's cover
   int depth = CV_8U;  // CV_8U, CV_16U or CV_32F (float in [0, 1])
-  int burn_in = 100;  // iterations each walker discards before plotting (flam3's fuse)
+  int burn_in = 15;   // iterations each walker discards before plotting (flam3's fuse)
 };
 
 struct FlameRenderStats {

@@ -12,7 +12,9 @@
 namespace ifsfx::flame::detail {
 namespace {
 
-constexpr std::uint64_t kChunkPoints = std::uint64_t{1} << 15;
+// flam3's sub-batch: each walker plots this many points from its own random start. Flames
+// whose maps do not contract (a pure rotation draws one circle per start) show the count.
+constexpr std::uint64_t kChunkPoints = 10000;
 constexpr double kUnit = 65536;   // one hit of full colour, in the integer sums
 constexpr double kEscape = 1e10;  // a point beyond this (or not a number) is re-seeded
 
@@ -140,15 +142,15 @@ void plot(const Plan& plan, const Step& from, Point p, double c, Bins& bins) {
     for (int k = 0; k < 4; ++k) bin[k] += e[static_cast<std::size_t>(k)];
     return;
   }
-  const double x = c * 255;
-  const auto i = std::min<std::size_t>(static_cast<std::size_t>(x), 254);
-  const double f = x - static_cast<double>(i);
+  // Linear palette: entries ⌊256·c⌋ and the next, mixed by the fraction, in 1/256 steps
+  // (integers, no rounding call in the loop); from 255 on, the last entry. flam3-render's
+  // colours of Fractorium's linear-palette flames say 256·c, not 255·c.
+  const auto x = static_cast<std::uint32_t>(std::min(c * 256, 255.0) * 256);
+  const std::size_t i = std::min<std::uint32_t>(x >> 8, 254);
+  const std::uint64_t w = x - (static_cast<std::uint32_t>(i) << 8);
   const auto& e0 = from.colours[i];
   const auto& e1 = from.colours[i + 1];
-  for (int k = 0; k < 4; ++k) {
-    const auto s = static_cast<std::size_t>(k);
-    bin[k] += static_cast<std::uint64_t>(std::lround((1 - f) * e0[s] + f * e1[s]));
-  }
+  for (std::size_t k = 0; k < 4; ++k) bin[k] += (e0[k] * (256 - w) + e1[k] * w) >> 8;
 }
 
 // One chunk: a walker from a random start in [−1, 1]² (colour random in [0, 1)), burn_in

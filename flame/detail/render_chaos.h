@@ -21,7 +21,7 @@ struct ChaosRun {
   std::uint64_t points = 0;  // iterations plotted (after each walker's burn-in)
   std::uint64_t seed = 1;
   int threads = 0;
-  int burn_in = 100;
+  int burn_in = 15;
   CancelToken cancel;
   std::function<void(double)> progress;  // fraction of the points done
 };

@@ -64,6 +64,18 @@ TEST(render_flame, a_point_lands_where_the_camera_formula_puts_it) {
   EXPECT_EQ(img.at<cv::Vec3b>(42, 16), cv::Vec3b(0, 255, 0));
 }
 
+TEST(render_flame, gives_bgra_and_16_bit_and_float_pictures) {
+  // The red point at full density: display value 256·(α^1/α) = 256, clipped to white's 255.
+  const cv::Mat f = render_flame(two_points(), {.channels = 4, .depth = CV_32F});
+  ASSERT_EQ(f.type(), CV_32FC4);
+  EXPECT_EQ(f.at<cv::Vec4f>(16, 48), cv::Vec4f(0, 0, 1, 1));
+  EXPECT_EQ(f.at<cv::Vec4f>(0, 0), cv::Vec4f(0, 0, 0, 0));  // uncovered: transparent
+  const cv::Mat w = render_flame(two_points(), {.depth = CV_16U});
+  ASSERT_EQ(w.type(), CV_16UC3);
+  EXPECT_EQ(w.at<cv::Vec3w>(42, 16), cv::Vec3w(0, 65535, 0));
+  EXPECT_THROW(render_flame(two_points(), {.channels = 2}), Error);
+}
+
 TEST(render_flame, rotate_turns_the_plotted_points_clockwise_about_the_centre) {
   // By 90°: (dx, dy) = (0.4, −0.2) from the centre ↦ (−dy, dx) = (0.2, 0.4) → (40, 40).
   Flame f = two_points();
