@@ -189,14 +189,18 @@ void print_text_report(const FitArgs& args, const cv::Mat& raster,
       "  contraction s                 {:.4f}\n"
       "  collage theorem               {:.4f} <= h(L, A) <= {:.4f}\n"
       "  measured h(L, A)              {:.4f}  ({:.1f} px, +-{:.1f} px raster){}\n"
-      "  IoU(L, A)                     {:.3f} at {}x{}, {:.3f} at {}x{}  (collage IoU(L, W(L)) "
-      "{:.3f})\n",
+      "  IoU(L, A)                     {:.3f} at {}x{}{}  (collage IoU(L, W(L)) {:.3f})\n",
       args.target, args.output, args.maps, raster.cols, raster.rows, result.runs,
-      result.evaluations, result.seconds, result.time_capped ? " (stopped by --max-seconds)" : "",
+      result.evaluations, result.seconds,
+      result.interrupted   ? " (interrupted)"
+      : result.time_capped ? " (stopped by --max-seconds)"
+                           : "",
       r.pixel, r.collage_distance, r.collage_distance * px, r.contraction, r.lower_bound,
       r.upper_bound, r.hausdorff, r.hausdorff * px, r.raster_error * px,
       r.bound_holds() ? "" : "  ABOVE THE BOUND: please report this as a bug", r.iou, raster.cols,
-      raster.rows, r.fine_iou, r.fine_size, r.fine_size, r.collage_iou);
+      raster.rows,
+      r.fine_size > 0 ? fmt::format(", {:.3f} at {}x{}", r.fine_iou, r.fine_size, r.fine_size) : "",
+      r.collage_iou);
   // Components of L the attractor leaves (mostly) out: too small for a map of their own, and
   // not reached by a neighbour's.
   for (const auto& part : r.parts)

@@ -87,6 +87,8 @@ int submit(JobQueue& jobs, FitRequest request) {
       job.set_result({{"best_iou", best}, {"evaluations", p.evaluations}});
     };
     const collage::FitResult result = collage::fit(raster, options);
+    // A cancelled job ends cancelled (the fit keeps its best so far for the command line).
+    if (result.interrupted) throw Error(ErrorKind::interrupted, "fit: cancelled");
     const collage::CollageReport& r = result.report;
     const std::string text = to_toml(result.ifs, fit_summary(shown, result));
     const IfsPreset preset = parse_ifs_toml(text, result.ifs.name + ".toml");

@@ -71,10 +71,11 @@ CollageReport assess(const cv::Mat& target, const Ifs& ifs, const AssessOptions&
 
 // What the fit optimises after its start.
 enum class FitMethod {
-  // Issue 32: the attractor itself. The collage search (Initialisation::search) gives the best
-  // few distinct starts; each is refined by CMA-ES on the attractor loss (attractor_loss.h) over
-  // all maps at once, coarse to fine (32², 64², the working raster), with perturb-and-accept
-  // escapes between (attractor_fit.h).
+  // Issue 32: the attractor itself. The collage stages below run on 60% of the budget; then
+  // the best attractor so far, the maps searched on a cut partition (cut_partition.h) and the
+  // best distinct runs are refined by CMA-ES on the attractor loss (attractor_loss.h) over all
+  // maps at once, coarse to fine (32², 64², the working raster), with perturb-and-accept
+  // escapes between (attractor_fit.h) and ICP last.
   attractor,
   // Issues 14–15: the collage objective W(L) against L, then a polish on W^k(L); the attractor
   // is only rendered to choose between candidates.
@@ -109,7 +110,7 @@ struct FitProgress {
   int run = 0;           // 0-based
   int runs = 0;          // moments: runs planned; search: restarts + 1 (kicks run on after them)
   long evaluations = 0;  // objective evaluations so far, all runs
-  double objective = 0;  // best value of this run so far
+  double objective = 0;  // best value of this run so far (phase attractor: the attractor loss)
   double best = 0;       // best value of all runs so far
   double best_iou = 0;   // IoU(L, A) of the best IFS so far; 0 until the first is rendered
   double seconds = 0;    // since the fit started
@@ -119,8 +120,7 @@ struct FitOptions {
   int maps = 4;  // N, 1..32
   std::uint64_t seed = 1;
   Initialisation init = Initialisation::search;
-  // FitMethod::attractor needs Initialisation::search's pool; with moments it runs from the
-  // moment-matched start alone.
+  // Initialisation::search only: with moments the fit is issue 14's, whatever the method.
   FitMethod method = FitMethod::attractor;
   // FitMethod::attractor: the distinct starts taken from the collage search's runs.
   int starts = 3;
@@ -129,7 +129,8 @@ struct FitOptions {
   // kick the best maps so far, for as long as the budget lasts.
   int restarts = 5;
   // Objective evaluations over the whole fit: what ends it reproducibly. A move of one map in
-  // a descent counts 1/N, a move on W^k(L) counts k.
+  // a descent counts 1/N, a move on W^k(L) counts k, an attractor loss one per 5000 chaos-game
+  // points (3.3 on 64², 13 on 128²), about the same time as one collage evaluation.
   long max_evaluations = 250000;
   // Wall-clock cap over the whole fit, rendering included (seconds); 0 = none (then the same
   // seed gives the same maps on any machine and thread count). The stages have shares of it (and
@@ -180,7 +181,7 @@ struct FitResult {
 // (CollageObjective::iterated). Of all candidates, the one whose rendered attractor overlaps L
 // best (IoU) wins.
 //   auto result = fit(working_raster(load_target("hand.png")), {.maps = 10});
-// FitMethod::attractor replaces the last stages by the attractor's own (see FitMethod).
+// FitMethod::attractor adds the attractor's own stages after these (see FitMethod).
 // A stop request (options.cancel) ends the fit with the best IFS so far (result.interrupted);
 // it throws Error{interrupted} only when nothing was found yet.
 // Throws Error{invalid_argument} for N outside 1..32 or above the number of pixels of L.

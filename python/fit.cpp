@@ -101,6 +101,8 @@ IfsPreset fit(const py::object& target, int maps, std::uint64_t seed, const std:
     if (!is_path) options.name = "fitted";
     if (name) options.name = *name;
     const collage::FitResult result = collage::fit(raster, options);
+    // A stop raises KeyboardInterrupt in Python, as before (the command keeps the best so far).
+    if (result.interrupted) throw Error(ErrorKind::interrupted, "fit: interrupted");
     preset.description = app::fit_summary(args, result);
     return result.ifs;
   });
