@@ -2,7 +2,6 @@
 #include "collage/fit_attractor.h"
 
 #include <algorithm>
-#include <numeric>
 
 #include "collage/attractor_fit.h"
 #include "collage/attractor_loss.h"
