@@ -164,9 +164,13 @@ void print_json_report(const FitArgs& args, const cv::Mat& raster,
       {"bound_holds", r.bound_holds()},
       {"iou", r.iou},
       {"collage_iou", r.collage_iou},
+      {"fine_iou", r.fine_iou},
+      {"fine_size", r.fine_size},
+      {"interrupted", result.interrupted},
       {"pixel", r.pixel},
       {"clipped", r.clipped},
       {"init", args.init == collage::Initialisation::moments ? "moments" : "search"},
+      {"method", args.method == collage::FitMethod::collage ? "collage" : "attractor"},
       {"parts", parts},
       {"ifs",
        {{"name", result.ifs.name}, {"maps", maps}, {"probabilities", result.ifs.probabilities}}},
@@ -185,12 +189,17 @@ void print_text_report(const FitArgs& args, const cv::Mat& raster,
       "  contraction s                 {:.4f}\n"
       "  collage theorem               {:.4f} <= h(L, A) <= {:.4f}\n"
       "  measured h(L, A)              {:.4f}  ({:.1f} px, +-{:.1f} px raster){}\n"
-      "  IoU(L, A)                     {:.3f}  (collage IoU(L, W(L)) {:.3f})\n",
+      "  IoU(L, A)                     {:.3f} at {}x{}{}  (collage IoU(L, W(L)) {:.3f})\n",
       args.target, args.output, args.maps, raster.cols, raster.rows, result.runs,
-      result.evaluations, result.seconds, result.time_capped ? " (stopped by --max-seconds)" : "",
+      result.evaluations, result.seconds,
+      result.interrupted   ? " (interrupted)"
+      : result.time_capped ? " (stopped by --max-seconds)"
+                           : "",
       r.pixel, r.collage_distance, r.collage_distance * px, r.contraction, r.lower_bound,
       r.upper_bound, r.hausdorff, r.hausdorff * px, r.raster_error * px,
-      r.bound_holds() ? "" : "  ABOVE THE BOUND: please report this as a bug", r.iou,
+      r.bound_holds() ? "" : "  ABOVE THE BOUND: please report this as a bug", r.iou, raster.cols,
+      raster.rows,
+      r.fine_size > 0 ? fmt::format(", {:.3f} at {}x{}", r.fine_iou, r.fine_size, r.fine_size) : "",
       r.collage_iou);
   // Components of L the attractor leaves (mostly) out: too small for a map of their own, and
   // not reached by a neighbour's.
@@ -215,13 +224,20 @@ void run_fit(const FitArgs& args) {
 
   const cv::Mat raster = fit_raster(args);
 
-  const collage::FitResult result =
-      fit_with_progress(raster, fit_options(args, policy.cancel), args.progress);
-  write_fit_outputs(args, output, format, policy, raster, result);
+  collage::FitOptions options = fit_options(args, policy.cancel);
+  options.fine_target = fit_fine_raster(args);
+  const collage::FitResult result = fit_with_progress(raster, options, args.progress);
+  // Stopped with a fit in hand: the best so far is written all the same, then the stop reported.
+  OutputOptions write_policy = policy;
+  if (result.interrupted) write_policy.cancel = {};
+  write_fit_outputs(args, output, format, write_policy, raster, result);
   if (args.json)
     print_json_report(args, raster, result);
   else
     print_text_report(args, raster, result);
+  if (result.interrupted)
+    throw Error(ErrorKind::interrupted,
+                fmt::format("fit: interrupted; the best IFS so far is in {}", output.string()));
 }
 
 }  // namespace
@@ -250,6 +266,15 @@ void add_fit_command(CLI::App& app) {
       ->transform(choice(inits))
       ->default_str("search")
       ->option_text(choices_text(inits, "search"));
+  const std::map<std::string, collage::FitMethod> methods{
+      {"attractor", collage::FitMethod::attractor}, {"collage", collage::FitMethod::collage}};
+  cmd->add_option("--method", args->method,
+                  "What is optimised after the start. attractor: the rendered attractor itself, "
+                  "coarse to fine, from the best few starts, with random escapes; collage: the "
+                  "collage W(L) and its iterates (the fit before issue 32)")
+      ->transform(choice(methods))
+      ->default_str("attractor")
+      ->option_text(choices_text(methods, "attractor"));
   cmd->add_option("--threshold", args->threshold,
                   "Grey (or alpha) level in [0, 1] between shape and background; default: Otsu "
                   "(alpha: 0.5)")

@@ -11,7 +11,10 @@
 #include <opencv2/imgproc.hpp>
 
 #include "collage/combine.h"
+#include "collage/cut_partition.h"
 #include "collage/distance.h"
+#include "collage/fit_attractor.h"
+#include "collage/fitting.h"
 #include "collage/initialise.h"
 #include "collage/optimise.h"
 #include "collage/refine.h"
@@ -24,9 +27,12 @@
 
 namespace ifsfx::collage {
 
-namespace {
+using detail::Budget;
+using detail::Chooser;
+using detail::Clock;
+using detail::Fitting;
 
-using Clock = std::chrono::steady_clock;
+namespace {
 
 constexpr int kMaxMaps = 32;
 
@@ -64,7 +70,47 @@ std::vector<PartCoverage> part_coverage(const cv::Mat& target, const cv::Mat& at
   return parts;
 }
 
+// L and A on the target's grid, grown (by whole pixels, so the grids coincide) to hold the
+// attractor's bounding box: a part of A outside the square still counts in h and IoU.
+struct Canvas {
+  cv::Mat l, a;     // CV_8UC1 0/255
+  cv::Rect square;  // where the target's raster lies in them
+};
+
+Canvas render_on_canvas(const cv::Mat& target, const Ifs& ifs, const AssessOptions& options,
+                        bool& clipped) {
+  const int size = target.cols;
+  const Box bounds = attractor_bounds(ifs, options.seed);
+  const int left = margin_pixels(-bounds.x0, size, clipped);
+  const int right = margin_pixels(bounds.x1 - 1, size, clipped);
+  const int bottom = margin_pixels(-bounds.y0, size, clipped);
+  const int top = margin_pixels(bounds.y1 - 1, size, clipped);
+  const cv::Size canvas_size(size + left + right, size + top + bottom);
+  const Box view{-static_cast<double>(left) / size, -static_cast<double>(bottom) / size,
+                 1 + static_cast<double>(right) / size, 1 + static_cast<double>(top) / size};
+  Canvas c;
+  c.a = render_attractor(ifs, canvas_size,
+                         {.sampling = {.view = view,
+                                       .quality = options.quality,
+                                       .seed = options.seed,
+                                       .threads = options.threads}});
+  c.square = cv::Rect(left, top, size, size);
+  c.l = cv::Mat(canvas_size, CV_8UC1, cv::Scalar(0));
+  target.copyTo(c.l(c.square));
+  return c;
+}
+
 }  // namespace
+
+double attractor_iou(const cv::Mat& target, const Ifs& ifs, const AssessOptions& options) {
+  if (target.type() != CV_8UC1 || target.rows != target.cols || cv::countNonZero(target) == 0)
+    throw Error(ErrorKind::invalid_argument,
+                "attractor_iou: the target must be a non-empty square CV_8UC1 raster");
+  validate(ifs, "attractor_iou");
+  bool clipped = false;
+  const Canvas canvas = render_on_canvas(target, ifs, options, clipped);
+  return iou(canvas.l, canvas.a);
+}
 
 const char* to_string(FitPhase phase) noexcept {
   switch (phase) {
@@ -74,6 +120,8 @@ const char* to_string(FitPhase phase) noexcept {
       return "search";
     case FitPhase::refine:
       return "refine";
+    case FitPhase::attractor:
+      return "attractor";
   }
   return "?";
 }
@@ -95,210 +143,20 @@ CollageReport assess(const cv::Mat& target, const Ifs& ifs, const AssessOptions&
   r.collage = collage_raster(target, ifs.maps);
   r.collage_iou = iou(target, r.collage);
 
-  // Render A on the target's grid, grown (by whole pixels, so the grids coincide) to hold the
-  // attractor's bounding box: a part of A outside the square still counts in h and IoU.
-  const Box bounds = attractor_bounds(ifs, options.seed);
-  const int left = margin_pixels(-bounds.x0, size, r.clipped);
-  const int right = margin_pixels(bounds.x1 - 1, size, r.clipped);
-  const int bottom = margin_pixels(-bounds.y0, size, r.clipped);
-  const int top = margin_pixels(bounds.y1 - 1, size, r.clipped);
-  const cv::Size canvas_size(size + left + right, size + top + bottom);
-  const Box view{-static_cast<double>(left) / size, -static_cast<double>(bottom) / size,
-                 1 + static_cast<double>(right) / size, 1 + static_cast<double>(top) / size};
-  const cv::Mat canvas_a = render_attractor(ifs, canvas_size,
-                                            {.sampling = {.view = view,
-                                                          .quality = options.quality,
-                                                          .seed = options.seed,
-                                                          .threads = options.threads}});
-  const cv::Rect square(left, top, size, size);
-  r.attractor = canvas_a(square).clone();
-
-  cv::Mat canvas_l(canvas_size, CV_8UC1, cv::Scalar(0));
-  target.copyTo(canvas_l(square));
-  if (cv::countNonZero(canvas_a) == 0) {
+  const Canvas canvas = render_on_canvas(target, ifs, options, r.clipped);
+  r.attractor = canvas.a(canvas.square).clone();
+  if (cv::countNonZero(canvas.a) == 0) {
     r.hausdorff = std::numeric_limits<double>::infinity();
     r.iou = 0;
   } else {
-    r.hausdorff = hausdorff(canvas_l, canvas_a) / size;
-    r.iou = iou(canvas_l, canvas_a);
+    r.hausdorff = hausdorff(canvas.l, canvas.a) / size;
+    r.iou = iou(canvas.l, canvas.a);
   }
   r.parts = part_coverage(target, r.attractor);
   return r;
 }
 
 namespace {
-
-// The clock and the evaluation count of one fit.
-class Budget {
- public:
-  explicit Budget(const FitOptions& o)
-      : start_(Clock::now()),
-        deadline_(o.max_seconds > 0 ? start_ + std::chrono::duration_cast<Clock::duration>(
-                                                   std::chrono::duration<double>(o.max_seconds))
-                                    : Clock::time_point::max()),
-        seconds_(o.max_seconds),
-        max_evaluations_(o.max_evaluations) {}
-
-  double seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
-  Clock::time_point deadline() const { return deadline_; }
-  bool expired() const { return Clock::now() >= deadline_; }
-  // Whether a unit of work expected to take `seconds` ends before the deadline.
-  bool room_for(double seconds) const {
-    return deadline_ == Clock::time_point::max() ||
-           Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                              std::chrono::duration<double>(seconds)) <
-               deadline_;
-  }
-  long evaluations_left() const { return max_evaluations_ - evaluations; }
-  // The time when `fraction` of max_seconds has passed, less `reserve` seconds (never, without
-  // a cap), and the evaluation count at `fraction` of max_evaluations.
-  Clock::time_point at(double fraction, double reserve = 0) const {
-    if (deadline_ == Clock::time_point::max()) return deadline_;
-    return start_ + std::chrono::duration_cast<Clock::duration>(
-                        std::chrono::duration<double>(fraction * seconds_ - reserve));
-  }
-  long evaluations_at(double fraction) const {
-    return static_cast<long>(fraction * static_cast<double>(max_evaluations_));
-  }
-
-  long evaluations = 0;
-  bool capped = false;
-
- private:
-  Clock::time_point start_, deadline_;
-  double seconds_;
-  long max_evaluations_;
-};
-
-// The candidates of a fit, judged by their rendered attractor: keeps the best by IoU(L, A).
-class Chooser {
- public:
-  Chooser(const cv::Mat& target, const CollageObjective& objective, const FitOptions& options,
-          Budget& budget)
-      : target_(target), objective_(objective), options_(options), budget_(budget) {}
-
-  // Renders the attractor of `maps` and keeps them if it beats the best so far. Skipped when
-  // the rendering would not end before the deadline (the first candidate is always rendered,
-  // so that a fit always has an answer).
-  void consider(std::vector<AffineMap> maps) {
-    options_.cancel.check("fit");
-    Ifs ifs;
-    ifs.name = options_.name;
-    ifs.maps = std::move(maps);
-    ifs.probabilities = default_probabilities(ifs.maps);
-    if (!(ifs.contraction() < 1)) return;  // past the objective's wall: never chosen
-    if (!result.ifs.maps.empty() && !budget_.room_for(reserve())) {
-      budget_.capped = true;
-      return;
-    }
-    const double before = budget_.seconds();
-    CollageReport report =
-        assess(target_, ifs, {options_.quality, options_.seed, options_.threads});
-    assess_seconds_ = std::max(assess_seconds_, budget_.seconds() - before);
-    if (report.iou > best_iou) {
-      best_iou = report.iou;
-      result.ifs = std::move(ifs);
-      result.report = std::move(report);
-      result.objective = objective_(result.ifs.maps);
-    }
-  }
-
-  // Seconds to keep free before the deadline for the renderings that judge a last candidate.
-  double reserve() const { return 1.5 * assess_seconds_; }
-
-  FitResult result;
-  double best_iou = -1;
-
- private:
-  const cv::Mat& target_;
-  const CollageObjective& objective_;
-  const FitOptions& options_;
-  Budget& budget_;
-  double assess_seconds_ = 0;
-};
-
-std::vector<double> to_vector(const std::vector<AffineMap>& maps) {
-  std::vector<double> x;
-  for (const auto& f : maps)
-    for (double k : f.coefficients()) x.push_back(k);
-  return x;
-}
-
-std::vector<AffineMap> to_maps(std::span<const double> x) {
-  std::vector<AffineMap> maps;
-  for (std::size_t i = 0; i + 6 <= x.size(); i += 6)
-    maps.push_back({x[i], x[i + 1], x[i + 2], x[i + 3], x[i + 4], x[i + 5]});
-  return maps;
-}
-
-// What every run shares: the objective, the budget, the chooser and the progress reports.
-struct Fitting {
-  const cv::Mat& target;
-  const FitOptions& options;
-  const CollageObjective objective;
-  Budget budget;
-  Chooser chooser;
-  double best_objective = std::numeric_limits<double>::infinity();
-  int runs = 0;
-
-  Fitting(const cv::Mat& t, const FitOptions& o)
-      : target(t),
-        options(o),
-        objective(t, o.objective),
-        budget(o),
-        chooser(t, objective, o, budget),
-        runs(o.restarts + 1) {}
-
-  void report(FitPhase phase, int run, double objective_value) const {
-    if (!options.progress) return;
-    options.progress({phase, run, runs, budget.evaluations, objective_value,
-                      std::min(best_objective, objective_value), std::max(chooser.best_iou, 0.0),
-                      budget.seconds()});
-  }
-
-  // One run from `start`: CMA-ES on the collage objective with `evaluations` and until
-  // `deadline`, then ICP; both results are rendered and judged.
-  void refine(int run, const std::vector<AffineMap>& start, double sigma, long evaluations,
-              Clock::time_point deadline) {
-    CmaesOptions cmaes;
-    cmaes.sigma = sigma;
-    cmaes.max_evaluations = evaluations;
-    // Room is left for rendering the two candidates of the run.
-    cmaes.deadline = std::min(deadline, budget.at(1.0, 2 * chooser.reserve()));
-    cmaes.seed = stream_seed(options.seed ^ 0x636f6c6c616765ULL, static_cast<std::uint64_t>(run));
-    cmaes.threads = options.threads;
-    cmaes.cancel = options.cancel;
-    const long evaluations_before = budget.evaluations;
-    if (options.progress)
-      cmaes.progress = [&](const CmaesProgress& p) {
-        options.progress({FitPhase::refine, run, runs, evaluations_before + p.evaluations, p.best,
-                          std::min(best_objective, p.best), std::max(chooser.best_iou, 0.0),
-                          budget.seconds()});
-      };
-    const auto found = minimise_cmaes(
-        [&](std::span<const double> x) { return objective(to_maps(x)); }, to_vector(start), cmaes);
-    budget.evaluations += found.evaluations;
-    if (found.deadline_reached) budget.capped = true;
-    best_objective = std::min(best_objective, found.value);
-
-    // Candidates: the searched maps and their ICP refinement. The collage objective guides the
-    // search; the attractor is what the user gets.
-    const auto searched = to_maps(found.x);
-    chooser.consider(searched);
-    if (options.refine_iterations > 0)
-      chooser.consider(refine_icp(target, searched,
-                                  {options.refine_iterations, options.objective.max_factor,
-                                   budget.at(1.0, chooser.reserve()), options.cancel}));
-    report(FitPhase::refine, run, found.value);
-  }
-
-  // A time limit for a run given its share of what is left.
-  Clock::time_point share_of_time(int run) const {
-    if (options.max_seconds <= 0) return Clock::time_point::max();
-    return Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(
-                              (options.max_seconds - budget.seconds()) / (runs - run)));
-  }
-};
 
 // Issue 14's fit: every run starts from a moment-matched split (principal axes, then k-means++).
 void fit_from_moments(Fitting& fitting) {
@@ -352,19 +210,31 @@ struct Pool {
   std::vector<Footprint> footprints;
 };
 
-// Searches the partitions of `target` (the first always, the next ones while less than a
-// quarter of the time is spent) and pools the maps kept for every piece, with the
+// The shares of the budget (time and evaluations alike) at which the stages of the search
+// initialisation end: the pool, the runs that choose and descend, CMA-ES on the collage.
+struct Shares {
+  double pool, descend, cmaes;
+  double polish = 1;  // where the polish on W^k(L) ends
+};
+Shares shares(FitMethod method) {
+  // The attractor's stages need most of the budget: the collage only gives them starts.
+  return method == FitMethod::collage ? Shares{0.25, 0.45, 0.5} : Shares{0.15, 0.27, 0.3, 0.6};
+}
+
+// Searches the partitions of `target` (the first always, the next ones while less than the
+// pool's share of the time is spent) and pools the maps kept for every piece, with the
 // moment-matched start maps; their footprints are taken on `objective`'s raster.
 Pool search_pool(Fitting& fitting, const cv::Mat& target, const CollageObjective& objective) {
   const FitOptions& options = fitting.options;
   SearchOptions search = options.search;
   search.threads = options.threads;
   search.cancel = options.cancel;
-  search.deadline = fitting.budget.at(0.25);
+  const double share = shares(options.method).pool;
+  search.deadline = fitting.budget.at(share);
   Pool pool;
   pool.maps = initial_maps(target, options.maps);
   for (int p = 0; p < options.partitions; ++p) {
-    if (p > 0 && Clock::now() >= fitting.budget.at(0.25)) break;
+    if (p > 0 && Clock::now() >= fitting.budget.at(share)) break;
     fitting.report(FitPhase::partition, 0, fitting.best_objective);
     const cv::Mat labels = partition_of(target, options, p);
     fitting.report(FitPhase::search, 0, fitting.best_objective);
@@ -376,6 +246,43 @@ Pool search_pool(Fitting& fitting, const cv::Mat& target, const CollageObjective
                [&](std::size_t i, int) { pool.footprints[i] = objective.footprint(pool.maps[i]); });
   fitting.budget.evaluations += std::ssize(pool.maps) / options.maps;
   return pool;
+}
+
+// FitMethod::attractor's extra start: N maps chosen from the maps searched for L cut a quarter
+// from either end of its principal axis (cut_partition.h) — one large copy of L and small ones
+// at the end, as self-similar shapes such as a fern are made — descended on the collage.
+// Nothing when L cannot be cut so (N = 1, or an end too small).
+std::optional<std::vector<AffineMap>> cut_start(Fitting& fitting, const cv::Mat& target,
+                                                DescentOptions descent) {
+  const FitOptions& options = fitting.options;
+  if (options.maps < 2) return std::nullopt;
+  SearchOptions search = options.search;
+  search.threads = options.threads;
+  search.cancel = options.cancel;
+  search.deadline = fitting.budget.at(0.65);
+  Pool pool;
+  for (const bool from_low : {true, false}) {
+    try {
+      const cv::Mat labels = cut_partition(target, options.maps, 0.25, from_low);
+      for (const auto& piece : search_pieces(target, labels, options.maps, search))
+        for (const auto& c : piece) pool.maps.push_back(c.map);
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::invalid_argument) throw;
+    }
+  }
+  if (std::ssize(pool.maps) < options.maps) return std::nullopt;
+  for (const auto& f : pool.maps) pool.footprints.push_back(fitting.objective.footprint(f));
+  fitting.budget.evaluations += std::ssize(pool.maps) / options.maps;
+  std::vector<AffineMap> start;
+  for (std::size_t i : select_maps(fitting.objective, pool.footprints, options.maps,
+                                   {.deadline = search.deadline, .cancel = options.cancel}))
+    start.push_back(pool.maps[i]);
+  // A move costs one map's image: N of them make one evaluation; 5% of the budget.
+  descent.max_evaluations = std::max(12L, fitting.budget.evaluations_at(0.05) * options.maps);
+  descent.deadline = fitting.budget.at(0.65);
+  const DescentResult descended = descend_each_map(fitting.objective, start, descent);
+  fitting.budget.evaluations += descended.evaluations / options.maps;
+  return descended.maps;
 }
 
 // A start for a later run: the best maps so far with one or two of them swapped for pool maps
@@ -421,21 +328,44 @@ std::optional<std::vector<AffineMap>> chosen_start(Fitting& fitting, const Pool&
 struct Runs {
   std::vector<AffineMap> best;
   int run = 0;
+  // The descended maps of every run, best first, with their collage objective; no two alike.
+  std::vector<std::pair<double, std::vector<AffineMap>>> distinct;
 };
 
-// Runs until 45% of the budget: the greedy choice first, then the next-best ones (up to
-// options.restarts), then kicks of the best maps so far, each descended map by map.
+// Whether two sets of maps differ (some coefficient by more than 0.01, in order).
+bool differ(const std::vector<AffineMap>& a, const std::vector<AffineMap>& b) {
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const auto x = a[i].coefficients(), y = b[i].coefficients();
+    for (std::size_t k = 0; k < x.size(); ++k)
+      if (std::abs(x[k] - y[k]) > 0.01) return true;
+  }
+  return false;
+}
+
+// Adds the descended maps of a run to `runs.distinct` unless a run found them already.
+void keep_distinct(Runs& runs, double value, const std::vector<AffineMap>& maps) {
+  for (const auto& [v, m] : runs.distinct)
+    if (!differ(m, maps)) return;
+  runs.distinct.emplace_back(value, maps);
+  std::stable_sort(runs.distinct.begin(), runs.distinct.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+}
+
+// Runs until the descent's share of the budget (45% for FitMethod::collage): the greedy choice
+// first, then the next-best ones (up to options.restarts), then kicks of the best maps so far, each
+// descended map by map.
 Runs choose_and_descend(Fitting& fitting, const Pool& pool, DescentOptions& descent) {
   const FitOptions& options = fitting.options;
   Budget& budget = fitting.budget;
   std::vector<std::vector<std::size_t>> tried;
   Runs runs;
   double best_value = std::numeric_limits<double>::infinity();
+  const double share = shares(options.method).descend;
   int run = 0;
   for (;; ++run) {
     // The first run always happens, so that a fit has an answer however small its budget.
     if (run > 0 &&
-        (budget.evaluations >= budget.evaluations_at(0.45) || Clock::now() >= descent.deadline))
+        (budget.evaluations >= budget.evaluations_at(share) || Clock::now() >= descent.deadline))
       break;
     std::vector<AffineMap> start;
     if (run <= options.restarts) {
@@ -448,12 +378,13 @@ Runs choose_and_descend(Fitting& fitting, const Pool& pool, DescentOptions& desc
     fitting.report(FitPhase::refine, run, fitting.best_objective);
     // A move costs one map's image: N of them make one evaluation.
     descent.max_evaluations =
-        std::max(12L, (budget.evaluations_at(0.45) - budget.evaluations) * options.maps);
+        std::max(12L, (budget.evaluations_at(share) - budget.evaluations) * options.maps);
     const DescentResult descended = descend_each_map(fitting.objective, start, descent);
     budget.evaluations += descended.evaluations / options.maps;
     fitting.best_objective = std::min(fitting.best_objective, descended.value);
     // Render only what may beat the best attractor: objective and IoU go together closely.
     if (descended.value < 1.05 * best_value) fitting.chooser.consider(descended.maps);
+    keep_distinct(runs, descended.value, descended.maps);
     if (descended.value < best_value) {
       best_value = descended.value;
       runs.best = descended.maps;
@@ -494,7 +425,7 @@ void polish_attractor(Fitting& fitting, const Pool& pool, DescentOptions& descen
   polish.pixel_step = 0.5;
   polish.halvings = 3;
   polish.sweeps = 1;  // one at a time, in polish_sweeps
-  polish.deadline = budget.at(1.0, 2 * fitting.chooser.reserve());
+  polish.deadline = budget.at(shares(options.method).polish, 2 * fitting.chooser.reserve());
   descent.deadline = polish.deadline;
   std::vector<AffineMap> current = fitting.chooser.result.ifs.maps;
   double current_value = std::numeric_limits<double>::infinity();
@@ -533,16 +464,28 @@ void fit_from_search(Fitting& fitting) {
   DescentOptions descent;
   descent.threads = options.threads;
   descent.cancel = options.cancel;
-  descent.deadline = budget.at(0.45);
+  descent.deadline = budget.at(shares(options.method).descend);
   const Runs runs = choose_and_descend(fitting, pool, descent);
   if (runs.best.empty()) return;  // not even one run: the budget is spent
-
   // All maps at once: CMA-ES on the collage objective, then ICP (each kept only if its
   // attractor is better).
+  const Shares share = shares(options.method);
   if (!budget.expired())
     fitting.refine(runs.run, runs.best, 0.005,
-                   std::max(2L, budget.evaluations_at(0.5) - budget.evaluations), budget.at(0.5));
+                   std::max(2L, budget.evaluations_at(share.cmaes) - budget.evaluations),
+                   budget.at(share.cmaes));
+  budget.cap_at(share.polish);
   polish_attractor(fitting, pool, descent, runs.run);
+  budget.uncap();
+  if (options.method != FitMethod::attractor || fitting.chooser.result.ifs.maps.empty()) return;
+  // The attractor's own stages, from the best attractor so far, the cut start and the best
+  // distinct runs.
+  std::vector<std::vector<AffineMap>> starts = {fitting.chooser.result.ifs.maps};
+  if (auto cut = cut_start(fitting, coarse_raster(fitting.target), descent))
+    starts.push_back(std::move(*cut));
+  for (const auto& [value, maps] : runs.distinct)
+    if (std::ssize(starts) < std::max(1, options.starts)) starts.push_back(maps);
+  optimise_attractor(fitting, std::move(starts), fitting.chooser.result.runs);
 }
 
 }  // namespace
@@ -559,16 +502,32 @@ FitResult fit(const cv::Mat& target, const FitOptions& options) {
   if (!(options.max_seconds >= 0))
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("max_seconds: must be ≥ 0 (got {})", options.max_seconds));
+  if (!options.fine_target.empty() && (options.fine_target.type() != CV_8UC1 ||
+                                       options.fine_target.rows != options.fine_target.cols))
+    throw Error(ErrorKind::invalid_argument, "fine_target: must be a square CV_8UC1 raster");
   Fitting fitting(target, options);
-  if (options.init == Initialisation::moments)
-    fit_from_moments(fitting);
-  else
-    fit_from_search(fitting);
+  bool interrupted = false;
+  try {
+    if (options.init == Initialisation::moments)
+      fit_from_moments(fitting);
+    else
+      fit_from_search(fitting);
+  } catch (const Error& e) {
+    // A stop request keeps the best so far, when there is one.
+    if (e.kind() != ErrorKind::interrupted || fitting.chooser.result.ifs.maps.empty()) throw;
+    interrupted = true;
+  }
 
   FitResult result = std::move(fitting.chooser.result);
   if (result.ifs.maps.empty())
     throw Error(ErrorKind::invalid_argument,
                 "fit: no contractive IFS was found within the budget (raise max_seconds)");
+  result.interrupted = interrupted;
+  if (!options.fine_target.empty() && cv::countNonZero(options.fine_target) > 0 && !interrupted) {
+    result.report.fine_size = options.fine_target.cols;
+    result.report.fine_iou = attractor_iou(options.fine_target, result.ifs,
+                                           {options.quality / 4, options.seed, options.threads});
+  }
   result.evaluations = fitting.budget.evaluations;
   result.time_capped = fitting.budget.capped;
   result.seconds = fitting.budget.seconds();

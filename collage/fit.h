@@ -43,10 +43,14 @@ struct CollageReport {
   double raster_error = 0;
   double iou = 0;          // |L ∩ A| / |L ∪ A| on the raster (A outside the square counts)
   double collage_iou = 0;  // |L ∩ W(L)| / |L ∪ W(L)| on the raster
-  double pixel = 0;        // the raster's pixel size in plane units, 1/S
-  bool clipped = false;    // A reaches beyond the measuring canvas (the square grown by 1 each way)
-  cv::Mat collage;         // W(L) on the working raster, CV_8UC1 0/255
-  cv::Mat attractor;       // A on the working raster, CV_8UC1 0/255
+  // IoU(L, A) on a finer raster of the target's frame (FitOptions::fine_target, e.g. 4S): thin
+  // parts and holes that the working raster blurs show here. 0 when no fine raster was given.
+  double fine_iou = 0;
+  int fine_size = 0;     // that raster's side; 0 when none
+  double pixel = 0;      // the raster's pixel size in plane units, 1/S
+  bool clipped = false;  // A reaches beyond the measuring canvas (the square grown by 1 each way)
+  cv::Mat collage;       // W(L) on the working raster, CV_8UC1 0/255
+  cv::Mat attractor;     // A on the working raster, CV_8UC1 0/255
   std::vector<PartCoverage> parts;  // L's components, largest first
 
   // The collage theorem's bound holds for what was measured (within the raster's error).
@@ -65,6 +69,23 @@ struct AssessOptions {
 //   auto r = assess(raster, sierpinski);  // r.collage_distance ≈ √3/12 for a filled triangle
 CollageReport assess(const cv::Mat& target, const Ifs& ifs, const AssessOptions& options = {});
 
+// What the fit optimises after its start.
+enum class FitMethod {
+  // Issue 32: the attractor itself. The collage stages below run on 60% of the budget; then
+  // the best attractor so far, the maps searched on a cut partition (cut_partition.h) and the
+  // best distinct runs are refined by CMA-ES on the attractor loss (attractor_loss.h) over all
+  // maps at once, coarse to fine (32², 64², the working raster), with perturb-and-accept
+  // escapes between (attractor_fit.h) and ICP last.
+  attractor,
+  // Issues 14–15: the collage objective W(L) against L, then a polish on W^k(L); the attractor
+  // is only rendered to choose between candidates.
+  collage,
+};
+
+// IoU(L, A) alone, A rendered as assess() renders it: what CollageReport::fine_iou measures on a
+// finer raster of the target's frame. Throws as assess() does.
+double attractor_iou(const cv::Mat& target, const Ifs& ifs, const AssessOptions& options = {});
+
 // Where the starting maps come from.
 enum class Initialisation {
   // Issue 14's: split L along principal axes (restarts: k-means++ splits) and match each part's
@@ -80,6 +101,7 @@ enum class FitPhase {
   partition,  // splitting L into the N ranges
   search,     // searching maps L → range and choosing N of them
   refine,     // descents, CMA-ES and ICP on the collage objective, the polish on W^k(L)
+  attractor,  // CMA-ES and escapes on the attractor loss (FitMethod::attractor)
 };
 const char* to_string(FitPhase phase) noexcept;
 
@@ -88,7 +110,7 @@ struct FitProgress {
   int run = 0;           // 0-based
   int runs = 0;          // moments: runs planned; search: restarts + 1 (kicks run on after them)
   long evaluations = 0;  // objective evaluations so far, all runs
-  double objective = 0;  // best value of this run so far
+  double objective = 0;  // best value of this run so far (phase attractor: the attractor loss)
   double best = 0;       // best value of all runs so far
   double best_iou = 0;   // IoU(L, A) of the best IFS so far; 0 until the first is rendered
   double seconds = 0;    // since the fit started
@@ -98,12 +120,17 @@ struct FitOptions {
   int maps = 4;  // N, 1..32
   std::uint64_t seed = 1;
   Initialisation init = Initialisation::search;
+  // Initialisation::search only: with moments the fit is issue 14's, whatever the method.
+  FitMethod method = FitMethod::attractor;
+  // FitMethod::attractor: the distinct starts taken from the collage search's runs.
+  int starts = 3;
   // moments: CMA-ES runs after the first, each from a seeded k-means++ split. search: runs
   // after the first that start from the next-best choice of maps from the pool; later runs
   // kick the best maps so far, for as long as the budget lasts.
   int restarts = 5;
   // Objective evaluations over the whole fit: what ends it reproducibly. A move of one map in
-  // a descent counts 1/N, a move on W^k(L) counts k.
+  // a descent counts 1/N, a move on W^k(L) counts k, an attractor loss one per 5000 chaos-game
+  // points (3.3 on 64², 13 on 128²), about the same time as one collage evaluation.
   long max_evaluations = 250000;
   // Wall-clock cap over the whole fit, rendering included (seconds); 0 = none (then the same
   // seed gives the same maps on any machine and thread count). The stages have shares of it (and
@@ -125,6 +152,9 @@ struct FitOptions {
   // itself (its threads and cancel are the fit's).
   int partitions = 4;
   SearchOptions search;
+  // Optional: the target on a finer raster of the same frame (working_raster of the same mask at
+  // a larger size, e.g. 4S); the report's fine_iou is measured there.
+  cv::Mat fine_target;
   // Called after every CMA-ES generation and at every change of phase, on the calling thread
   // (the library never prints).
   std::function<void(const FitProgress&)> progress;
@@ -140,6 +170,7 @@ struct FitResult {
   int runs = 0;          // runs done
   double seconds = 0;
   bool time_capped = false;  // max_seconds cut the search short
+  bool interrupted = false;  // the cancel token stopped the fit; the best so far is kept
 };
 
 // Fits N maps to `target` (a working raster). Initialisation::moments: every run starts from a
@@ -150,6 +181,9 @@ struct FitResult {
 // (CollageObjective::iterated). Of all candidates, the one whose rendered attractor overlaps L
 // best (IoU) wins.
 //   auto result = fit(working_raster(load_target("hand.png")), {.maps = 10});
+// FitMethod::attractor adds the attractor's own stages after these (see FitMethod).
+// A stop request (options.cancel) ends the fit with the best IFS so far (result.interrupted);
+// it throws Error{interrupted} only when nothing was found yet.
 // Throws Error{invalid_argument} for N outside 1..32 or above the number of pixels of L.
 FitResult fit(const cv::Mat& target, const FitOptions& options = {});
 

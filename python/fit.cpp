@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "python/fit.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -93,9 +94,15 @@ IfsPreset fit(const py::object& target, int maps, std::uint64_t seed, const std:
         is_path ? app::fit_raster(args)
                 : collage::working_raster(shape, {.size = app::working_size(args.size)});
     collage::FitOptions options = app::fit_options(args, cancel);
+    options.fine_target =
+        is_path ? app::fit_fine_raster(args)
+                : collage::working_raster(
+                      shape, {.size = std::min(4 * app::working_size(args.size), 2048)});
     if (!is_path) options.name = "fitted";
     if (name) options.name = *name;
     const collage::FitResult result = collage::fit(raster, options);
+    // A stop raises KeyboardInterrupt in Python, as before (the command keeps the best so far).
+    if (result.interrupted) throw Error(ErrorKind::interrupted, "fit: interrupted");
     preset.description = app::fit_summary(args, result);
     return result.ifs;
   });

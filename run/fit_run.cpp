@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "run/fit_run.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include <fmt/format.h>
@@ -48,11 +49,20 @@ cv::Mat fit_raster(const FitArgs& args) {
   return collage::working_raster(mask, {.size = working_size(args.size)});
 }
 
+cv::Mat fit_fine_raster(const FitArgs& args) {
+  collage::TargetOptions target_options;
+  target_options.threshold = args.threshold;
+  target_options.invert = args.invert;
+  const cv::Mat mask = collage::load_target(args.target, target_options);
+  return collage::working_raster(mask, {.size = std::min(4 * working_size(args.size), 2048)});
+}
+
 collage::FitOptions fit_options(const FitArgs& args, const CancelToken& cancel) {
   collage::FitOptions options;
   options.maps = args.maps;
   options.seed = args.seed;
   options.init = args.init;
+  options.method = args.method;
   options.max_seconds = args.max_seconds;
   options.max_evaluations = args.max_evaluations;
   options.threads = args.threads;
@@ -62,8 +72,11 @@ collage::FitOptions fit_options(const FitArgs& args, const CancelToken& cancel) 
 }
 
 std::string fit_summary(const FitArgs& args, const collage::FitResult& result) {
-  return fmt::format("fitted by ifsfx fit to {}: IoU {:.3f}, s {:.3f}", args.target,
-                     result.report.iou, result.report.contraction);
+  const collage::CollageReport& r = result.report;
+  const std::string fine =
+      r.fine_size > 0 ? fmt::format(" ({}²: {:.3f})", r.fine_size, r.fine_iou) : std::string();
+  return fmt::format("fitted by ifsfx fit to {}: IoU {:.3f}{}, s {:.3f}", args.target, r.iou, fine,
+                     r.contraction);
 }
 
 }  // namespace ifsfx::app

@@ -74,6 +74,7 @@ int submit(JobQueue& jobs, FitRequest request) {
     FitArgs shown = request.args;
     shown.target = request.name;
     collage::FitOptions options = fit_options(shown, job.cancel());
+    options.fine_target = fit_fine_raster(request.args);
     const double seconds = request.args.max_seconds;
     const auto evaluations = static_cast<double>(request.args.max_evaluations);
     options.progress = [&job, seconds, evaluations](const collage::FitProgress& p) {
@@ -86,6 +87,8 @@ int submit(JobQueue& jobs, FitRequest request) {
       job.set_result({{"best_iou", best}, {"evaluations", p.evaluations}});
     };
     const collage::FitResult result = collage::fit(raster, options);
+    // A cancelled job ends cancelled (the fit keeps its best so far for the command line).
+    if (result.interrupted) throw Error(ErrorKind::interrupted, "fit: cancelled");
     const collage::CollageReport& r = result.report;
     const std::string text = to_toml(result.ifs, fit_summary(shown, result));
     const IfsPreset preset = parse_ifs_toml(text, result.ifs.name + ".toml");
@@ -100,6 +103,8 @@ int submit(JobQueue& jobs, FitRequest request) {
                     {"best_iou", r.iou},
                     {"iou", r.iou},
                     {"collage_iou", r.collage_iou},
+                    {"fine_iou", r.fine_iou},
+                    {"fine_size", r.fine_size},
                     {"contraction", r.contraction},
                     {"collage_distance", r.collage_distance},
                     {"runs", result.runs},

@@ -248,6 +248,7 @@ int main(int argc, char** argv) try {
   write_shape(out, "fish", fish(data));
   write_shape(out, "butterfly", butterfly(data));
   write_shape(out, "rings", logo_rings(data));
+  write_shape(out, "logo", logo_alpha(data));
   write_shape(out, "letters-cv", logo_letters(data, 4));
   write_shape(out, "letters-op", logo_letters(data, 0));
   write_shape(out, "sweets", sweets(data));

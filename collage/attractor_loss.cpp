@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "collage/attractor_loss.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <opencv2/imgproc.hpp>
+
+#include "collage/distance.h"
+#include "ifs/error.h"
+#include "ifs/ifs.h"
+#include "ifs/rng.h"
+
+namespace ifsfx::collage {
+
+namespace {
+
+// Chaos-game steps before the first point counts: from the square's centre, s^24 of the
+// square's size away from A at worst.
+constexpr std::size_t kBurnIn = 24;
+constexpr std::size_t kLanes = 8;
+
+// L resampled to R×R by area, a pixel kept where L covers half of it.
+cv::Mat level_raster(const cv::Mat& target, int size) {
+  if (size == target.cols) return target.clone();
+  cv::Mat coverage, raster;
+  cv::resize(target, coverage, {size, size}, 0, 0, cv::INTER_AREA);
+  cv::threshold(coverage, raster, 127, 255, cv::THRESH_BINARY);
+  return raster;
+}
+
+// The distance at continuous pixel point (x, y) of the canvas, bilinear between pixel centres;
+// outside the centres' square, the nearest centre's distance plus the way to it (an upper bound).
+double lookup(const cv::Mat& distance, double x, double y) {
+  double u = x - 0.5, v = y - 0.5, out = 0;
+  const double hi = distance.cols - 1;
+  if (!(u >= 0 && v >= 0 && u < hi && v < hi)) {  // rare: A's points lie near L
+    const double cu = std::clamp(u, 0.0, hi), cv = std::clamp(v, 0.0, hi);
+    out = std::hypot(u - cu, v - cv);
+    u = std::min(cu, hi - 0.5);
+    v = std::min(cv, hi - 0.5);
+  }
+  const int c0 = static_cast<int>(u), r0 = static_cast<int>(v);
+  const double fu = u - c0, fv = v - r0;
+  const float* row0 = distance.ptr<float>(r0);
+  const float* row1 = row0 + distance.cols;
+  const double top = row0[c0] + fu * (row0[c0 + 1] - row0[c0]);
+  const double bottom = row1[c0] + fu * (row1[c0 + 1] - row1[c0]);
+  return top + fv * (bottom - top) + out;
+}
+
+}  // namespace
+
+AttractorLoss::AttractorLoss(const cv::Mat& target, const AttractorLossOptions& options)
+    : options_(options) {
+  if (target.type() != CV_8UC1 || target.rows != target.cols || cv::countNonZero(target) == 0)
+    throw Error(ErrorKind::invalid_argument,
+                "attractor loss: the target must be a non-empty square CV_8UC1 working raster");
+  if (options.size < 8 || options.size > target.cols)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("attractor loss: the level's size must be in 8..{} (got {})",
+                            target.cols, options.size));
+  if (!(options.points > 0))
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("attractor loss: points per pixel must be > 0 (got {})", options.points));
+  size_ = options.size;
+  pad_ = size_ / 4;
+  side_ = size_ + 2 * pad_;
+  target_ = level_raster(target, size_);
+  if (cv::countNonZero(target_) == 0)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("attractor loss: the target vanishes on a {}² raster", size_));
+  cv::Mat canvas(side_, side_, CV_8UC1, cv::Scalar(0));
+  target_.copyTo(canvas(cv::Rect(pad_, pad_, size_, size_)));
+  distance_ = distance_to(canvas);
+  for (int i = 0; i < side_ * side_; ++i)
+    if (canvas.data[i]) inside_.push_back(i);
+  Rng rng(stream_seed(options.seed, 0x61747472ULL));
+  const auto count =
+      kLanes * (static_cast<std::size_t>(options.points * size_ * size_) / kLanes + kBurnIn);
+  draws_.resize(count);
+  for (float& u : draws_) u = static_cast<float>(rng.uniform());
+}
+
+double AttractorLoss::play(std::span<const AffineMap> maps, std::vector<std::uint8_t>* hits) const {
+  // Probabilities ∝ |det| (the renderer's default, ifs.h): the points spread evenly over A.
+  const std::vector<double> p = default_probabilities({maps.begin(), maps.end()});
+  std::array<float, 33> cumulative{};
+  double sum = 0;
+  for (std::size_t n = 0; n < p.size(); ++n) cumulative[n] = static_cast<float>(sum += p[n]);
+  const std::size_t count = p.size();
+  // kLanes chains side by side, each on its own run of the draws: independent steps that the
+  // processor overlaps, where one chain waits for every step's result before the next.
+  const std::size_t steps = draws_.size() / kLanes;
+  std::array<Point, kLanes> x;
+  x.fill({0.5, 0.5});
+  std::array<double, kLanes> spill{};
+  for (std::size_t t = 0; t < steps; ++t)
+    for (std::size_t lane = 0; lane < kLanes; ++lane) {
+      const float u = draws_[lane * steps + t];
+      // Branch-free: the draws pick maps at random, which no branch predictor follows.
+      std::size_t n = 0;
+      for (std::size_t k = 0; k + 1 < count; ++k) n += u >= cumulative[k];
+      x[lane] = maps[n](x[lane]);
+      if (t < kBurnIn) continue;
+      const double px = x[lane].x * size_ + pad_, py = (1 - x[lane].y) * size_ + pad_;
+      spill[lane] += lookup(distance_, px, py);
+      if (hits && px >= 0 && py >= 0 && px < side_ && py < side_)
+        (*hits)[static_cast<std::size_t>(static_cast<int>(py) * side_ + static_cast<int>(px))] = 1;
+    }
+  double total = 0;
+  for (double s : spill) total += s;
+  return total;
+}
+
+AttractorTerms AttractorLoss::terms(std::span<const AffineMap> maps) const {
+  if (maps.empty()) throw Error(ErrorKind::invalid_argument, "attractor loss: no maps (got 0)");
+  std::vector<std::uint8_t> hits(static_cast<std::size_t>(side_ * side_), 0);
+  const double spill = play(maps, &hits);
+  AttractorTerms t;
+  const double points = static_cast<double>(draws_.size() - kLanes * kBurnIn);
+  t.spill = spill / points / size_;
+  long hit = 0, both = 0;
+  for (std::uint8_t h : hits) hit += h;
+  for (int i : inside_) both += hits[static_cast<std::size_t>(i)];
+  const auto inside = static_cast<long>(inside_.size());
+  t.iou = static_cast<double>(both) / static_cast<double>(inside + hit - both);
+  // Coverage: how far L's pixels are from the nearest pixel A hits (zeros of `empty`).
+  cv::Mat empty(side_, side_, CV_8UC1), far;
+  for (std::size_t i = 0; i < hits.size(); ++i) empty.data[i] = hits[i] ? 0 : 255;
+  if (hit > 0) {
+    cv::distanceTransform(empty, far, cv::DIST_L2, cv::DIST_MASK_3);
+    double sum = 0;
+    for (int i : inside_) sum += far.ptr<float>()[i];
+    t.coverage = sum / static_cast<double>(inside) / size_;
+  } else {
+    t.coverage = 1;
+  }
+  double s = 0;
+  for (const AffineMap& m : maps) s = std::max(s, m.contraction());
+  t.contraction = s;
+  const double excess = std::max(0.0, s - options_.soft_factor);
+  t.value = (1 - t.iou) + options_.spill * t.spill + options_.coverage * t.coverage +
+            options_.contraction * excess * excess;
+  return t;
+}
+
+cv::Mat AttractorLoss::raster(std::span<const AffineMap> maps) const {
+  std::vector<std::uint8_t> hits(static_cast<std::size_t>(side_ * side_), 0);
+  play(maps, &hits);
+  cv::Mat out(size_, size_, CV_8UC1, cv::Scalar(0));
+  for (int r = 0; r < size_; ++r)
+    for (int c = 0; c < size_; ++c)
+      if (hits[static_cast<std::size_t>((r + pad_) * side_ + c + pad_)])
+        out.at<std::uint8_t>(r, c) = 255;
+  return out;
+}
+
+}  // namespace ifsfx::collage

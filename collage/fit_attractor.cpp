@@ -1,0 +1,198 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "collage/fit_attractor.h"
+
+#include <algorithm>
+
+#include "collage/attractor_fit.h"
+#include "collage/attractor_loss.h"
+#include "ifs/rng.h"
+
+namespace ifsfx::collage::detail {
+
+namespace {
+
+// Where each stage ends, as a share of what the collage stages left (evaluations and time alike).
+constexpr double kCoarseEnd = 0.2, kMiddleEnd = 0.35, kEscapeEnd = 0.5;
+// How many escapes share their stage, and how far each moves the maps (coordinates of
+// map_params.h: radians, logits, 0.1 plane units).
+constexpr int kEscapes = 4;
+constexpr double kEscapeScale = 0.05;
+
+// Evaluations are counted as collage evaluations of about the same time: one of the attractor
+// loss costs a unit per 5000 chaos-game points (4 per pixel: 3.3 units on 64², 13 on 128²).
+double unit_cost(int size) {
+  return 4.0 * size * size / 5000;
+}
+
+// The attractor's stages of one fit and what they share.
+class Stages {
+ public:
+  Stages(Fitting& fitting, int run)
+      : fitting_(fitting),
+        options_(fitting.options),
+        budget_(fitting.budget),
+        start_time_(Clock::now()),
+        end_time_(budget_.at(1.0, 2 * fitting.chooser.reserve())),
+        start_evaluations_(budget_.evaluations),
+        total_evaluations_(std::max(0L, budget_.evaluations_left())),
+        run_(run),
+        centre_(fitting.objective.centroid()) {
+    const int size = fitting.target.cols;
+    for (int level : {std::min(32, size), std::min(64, size), size})
+      levels_.emplace_back(
+          fitting.target,
+          AttractorLossOptions{.size = level, .seed = stream_seed(options_.seed, level)});
+  }
+
+  // CMA-ES at `level` from `start` with the evaluations left before `fraction` of the stages'
+  // share, divided among `ways` runs, and until that share of the time.
+  AttractorRefined refine(int level, const std::vector<AffineMap>& start, double sigma,
+                          double fraction, int ways) {
+    const AttractorLoss& loss = levels_[static_cast<std::size_t>(level)];
+    const double cost = unit_cost(loss.size());
+    const long units = evaluations_until(fraction) / std::max(1, ways);
+    AttractorRefineOptions o;
+    o.centre = centre_;
+    o.max_factor = options_.objective.max_factor;
+    o.sigma = sigma;
+    o.max_evaluations = std::max(2L, static_cast<long>(static_cast<double>(units) / cost));
+    o.seed = stream_seed(options_.seed ^ 0x61747472616374ULL, static_cast<std::uint64_t>(run_));
+    o.threads = options_.threads;
+    o.deadline = time_at(fraction, ways);
+    o.cancel = options_.cancel;
+    const long before = budget_.evaluations;
+    if (options_.progress)
+      o.progress = [&, before, cost](const CmaesProgress& p) {
+        options_.progress({FitPhase::attractor, run_, fitting_.runs,
+                           before + static_cast<long>(static_cast<double>(p.evaluations) * cost),
+                           p.best, p.best, std::max(fitting_.chooser.best_iou, 0.0),
+                           budget_.seconds()});
+      };
+    AttractorRefined found = refine_on_attractor(loss, start, o);
+    budget_.evaluations += static_cast<long>(static_cast<double>(found.evaluations) * cost);
+    if (found.deadline_reached) budget_.capped = true;
+    ++run_;
+    return found;
+  }
+
+  // Whether the stage that ends at `fraction` has time and evaluations left.
+  bool open(double fraction) const {
+    return evaluations_until(fraction) >= 2 && Clock::now() < time_at(fraction, 1);
+  }
+
+  // Of `a` and `b`, the one with the lower loss on the working raster (two evaluations).
+  const std::vector<AffineMap>& better_at_last_level(const std::vector<AffineMap>& a,
+                                                     const std::vector<AffineMap>& b) {
+    const AttractorLoss& last = levels_.back();
+    budget_.evaluations += static_cast<long>(2 * unit_cost(last.size()));
+    return last(b) < last(a) ? b : a;
+  }
+
+  Fitting& fitting() { return fitting_; }
+  Point centre() const { return centre_; }
+  int run() const { return run_; }
+
+ private:
+  long evaluations_until(double fraction) const {
+    return start_evaluations_ +
+           static_cast<long>(fraction * static_cast<double>(total_evaluations_)) -
+           budget_.evaluations;
+  }
+  // The time at `fraction` of the stages' share, or, for one of `ways` runs, its part of what
+  // is left until then.
+  Clock::time_point time_at(double fraction, int ways) const {
+    if (options_.max_seconds <= 0) return Clock::time_point::max();
+    const auto end = start_time_ + std::chrono::duration_cast<Clock::duration>(
+                                       fraction * (end_time_ - start_time_));
+    const auto now = Clock::now();
+    if (end <= now) return end;
+    return now + (end - now) / std::max(1, ways);
+  }
+
+  Fitting& fitting_;
+  const FitOptions& options_;
+  Budget& budget_;
+  Clock::time_point start_time_, end_time_;
+  long start_evaluations_, total_evaluations_;
+  int run_;
+  Point centre_;
+  std::vector<AttractorLoss> levels_;
+};
+
+// Perturb-and-accept from `current` (its loss at the middle level `value`) until the escapes'
+// share is spent: all maps moved at random, re-optimised, accepted by the Metropolis rule at a
+// temperature that falls to 0. Returns the best maps met, and their loss in `value`.
+std::vector<AffineMap> escape(Stages& stages, std::vector<AffineMap> current, double& value) {
+  const FitOptions& options = stages.fitting().options;
+  std::vector<AffineMap> best = current;
+  double best_value = value, current_value = value;
+  Rng rng(stream_seed(options.seed ^ 0x65736361706500ULL, 0));
+  for (int k = 0; k < kEscapes; ++k) {
+    const double end = kMiddleEnd + (kEscapeEnd - kMiddleEnd) * (k + 1) / kEscapes;
+    if (!stages.open(end)) break;
+    const auto start =
+        perturbed(current, stages.centre(), options.objective.max_factor, kEscapeScale, rng);
+    const AttractorRefined found = stages.refine(1, start, 0.03, end, 1);
+    // The temperature: a loss worse by 1% of the current one is taken with odds 1/e at first.
+    const double temperature = 0.01 * current_value * (1 - static_cast<double>(k) / kEscapes);
+    if (metropolis_accepts(found.value - current_value, temperature, rng.uniform())) {
+      current = found.maps;
+      current_value = found.value;
+    }
+    if (found.value < best_value) {
+      best = found.maps;
+      best_value = found.value;
+    }
+  }
+  value = best_value;
+  return best;
+}
+
+}  // namespace
+
+void optimise_attractor(Fitting& fitting, std::vector<std::vector<AffineMap>> starts, int run) {
+  if (starts.empty()) return;
+  Stages stages(fitting, run);
+  // starts.front() is kept for the last stage (see below).
+  const int count = static_cast<int>(starts.size());
+  // Coarse: every start on 32², as far as its share goes.
+  std::vector<AttractorRefined> coarse;
+  for (int k = 0; k < count; ++k) {
+    if (k > 0 && !stages.open(kCoarseEnd * (k + 1) / count)) break;
+    fitting.report(FitPhase::attractor, stages.run(), fitting.best_objective);
+    coarse.push_back(stages.refine(0, starts[static_cast<std::size_t>(k)], 0.05,
+                                   kCoarseEnd * (k + 1) / count, 1));
+  }
+  std::stable_sort(coarse.begin(), coarse.end(),
+                   [](const auto& a, const auto& b) { return a.value < b.value; });
+  // Middle: the best two on 64².
+  std::vector<AttractorRefined> middle;
+  for (std::size_t k = 0; k < std::min<std::size_t>(2, coarse.size()); ++k) {
+    if (k > 0 && !stages.open(kMiddleEnd)) break;
+    middle.push_back(stages.refine(1, coarse[k].maps, 0.03, kMiddleEnd, static_cast<int>(2 - k)));
+  }
+  std::stable_sort(middle.begin(), middle.end(),
+                   [](const auto& a, const auto& b) { return a.value < b.value; });
+  fitting.chooser.consider(middle.front().maps);
+  // Escapes on 64², then the best on the working raster.
+  double value = middle.front().value;
+  const std::vector<AffineMap> best = escape(stages, middle.front().maps, value);
+  if (best != middle.front().maps) fitting.chooser.consider(best);
+  // The coarse levels' optimum need not be the working raster's: the last stage starts from the
+  // best on it of the escapes' best and the best attractor before these stages.
+  std::vector<AffineMap> final_maps = stages.better_at_last_level(best, starts.front());
+  if (stages.open(1.0)) {
+    final_maps = stages.refine(2, final_maps, 0.01, 1.0, 1).maps;
+    fitting.chooser.consider(final_maps);
+  }
+  // ICP on the collage (refine.h) aligns the maps below a pixel where L is self-similar, as a
+  // fractal's own picture is (W(L) = L exactly); the chooser keeps it only if A is better.
+  if (fitting.options.refine_iterations > 0)
+    fitting.chooser.consider(
+        refine_icp(fitting.target, final_maps,
+                   {fitting.options.refine_iterations, fitting.options.objective.max_factor,
+                    fitting.budget.at(1.0, fitting.chooser.reserve()), fitting.options.cancel}));
+  fitting.chooser.result.runs = stages.run();
+}
+
+}  // namespace ifsfx::collage::detail

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: Apache-2.0
+#include "collage/attractor_loss.h"
+
+#include <gtest/gtest.h>
+
+#include "ifs/error.h"
+#include "tests/collage/test_shapes.h"
+
+namespace ifsfx::collage {
+namespace {
+
+TEST(attractor_loss, a_tiling_scores_its_own_square_at_every_level) {
+  // The quadrant maps' attractor is the framed square itself.
+  for (int size : {32, 64}) {
+    const AttractorLoss loss(testing::framed_square(), {.size = size});
+    const AttractorTerms t = loss.terms(testing::quadrant_maps());
+    EXPECT_GE(t.iou, 0.97) << size;
+    EXPECT_LT(t.spill, 0.5 / size) << "the points stay within half a pixel of L";
+    EXPECT_LT(t.coverage, 0.5 / size) << "every pixel of L is hit or next to a hit";
+    EXPECT_EQ(loss.target().cols, size);
+  }
+}
+
+TEST(attractor_loss, a_moved_map_costs_more_the_further_it_moves) {
+  const AttractorLoss loss(testing::framed_square(), {.size = 64});
+  double last = loss(testing::quadrant_maps());
+  for (double shift : {0.02, 0.05, 0.1}) {
+    auto maps = testing::quadrant_maps();
+    maps[3].e += shift;
+    maps[3].f += shift;
+    const double value = loss(maps);
+    EXPECT_GT(value, last) << "shift " << shift;
+    last = value;
+  }
+}
+
+TEST(attractor_loss, the_same_maps_get_the_same_value_every_time) {
+  // Common random numbers: the draws are fixed when the loss is built.
+  const AttractorLoss loss(testing::framed_square(), {.size = 32, .seed = 5});
+  auto maps = testing::quadrant_maps();
+  maps[0].a = 0.3;
+  EXPECT_EQ(loss(maps), loss(maps));
+  const AttractorLoss again(testing::framed_square(), {.size = 32, .seed = 5});
+  EXPECT_EQ(again(maps), loss(maps));
+}
+
+TEST(attractor_loss, spill_and_coverage_are_plane_distances) {
+  // One map that shrinks the plane to almost a point at (0.95, 0.95), outside the square
+  // [1/8, 7/8]²: L's nearest pixel centre is (55.5/64, 55.5/64), so the points spill
+  // (0.95 − 0.867)·√2 ≈ 0.117 away from L; and L's pixels lie on average far from that point.
+  const AttractorLoss loss(testing::framed_square(), {.size = 64});
+  const std::vector<AffineMap> maps = {{0.001, 0, 0, 0.001, 0.95, 0.95}};
+  const AttractorTerms t = loss.terms(maps);
+  EXPECT_EQ(t.iou, 0);
+  EXPECT_NEAR(t.spill, 0.117, 0.003);
+  EXPECT_GT(t.coverage, 0.3);
+  EXPECT_LT(t.coverage, 0.7);
+}
+
+TEST(attractor_loss, the_raster_is_what_the_points_hit) {
+  const AttractorLoss loss(testing::framed_square(), {.size = 32});
+  const cv::Mat a = loss.raster(testing::quadrant_maps());
+  EXPECT_EQ(a.size(), cv::Size(32, 32));
+  EXPECT_GE(cv::countNonZero(a & loss.target()), 0.97 * cv::countNonZero(loss.target()));
+}
+
+TEST(attractor_loss, a_level_outside_eight_to_the_target_side_is_refused) {
+  EXPECT_THROW(AttractorLoss(testing::framed_square(), {.size = 4}), Error);
+  EXPECT_THROW(AttractorLoss(testing::framed_square(), {.size = 128}), Error);
+  EXPECT_THROW(AttractorLoss(cv::Mat(64, 64, CV_8UC1, cv::Scalar(0)), {.size = 32}), Error);
+}
+
+}  // namespace
+}  // namespace ifsfx::collage
