@@ -19,9 +19,9 @@
 #include "cli/commands.h"
 #include "cli/progress_bar.h"
 #include "cli/stop_signals.h"
-#include "ifs/error.h"
 #include "fractaldb/dataset.h"
 #include "fractaldb/search.h"
+#include "ifs/error.h"
 #include "ifs/output_file.h"
 
 namespace ifsfx::app {

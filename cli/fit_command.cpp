@@ -18,7 +18,6 @@
 
 #include "cli/cli_options.h"
 #include "cli/commands.h"
-#include "run/fit_run.h"
 #include "cli/stop_signals.h"
 #include "collage/fit.h"
 #include "collage/preview.h"
@@ -29,6 +28,7 @@
 #include "ifs/preset.h"
 #include "ifs/utf8.h"
 #include "ifs/view.h"
+#include "run/fit_run.h"
 
 namespace ifsfx::app {
 namespace {

@@ -12,12 +12,12 @@
 #include <pybind11/stl.h>
 #include <opencv2/core.hpp>
 
+#include "engine/fractal_engine.h"
 #include "ifs/error.h"
 #include "python/arrays.h"
 #include "python/errors.h"
 #include "python/options.h"
 #include "python/presets.h"
-#include "engine/fractal_engine.h"
 
 namespace ifsfx::python {
 namespace {
@@ -178,10 +178,10 @@ must have that size (ValueError otherwise).
              return std::make_unique<Filter>(settings, optional_size(size, "size"),
                                              optional_size(frame_size, "frame_size"), fps, rgb);
            }),
-           py::arg("preset") = engine::kDefaultPreset, py::kw_only(), py::arg("colouring") = py::none(),
-           py::arg("view") = py::none(), py::arg("margin") = d.sampling.margin,
-           py::arg("quality") = d.sampling.quality, py::arg("mix") = d.mix,
-           py::arg("background") = "black", py::arg("exact") = d.exact,
+           py::arg("preset") = engine::kDefaultPreset, py::kw_only(),
+           py::arg("colouring") = py::none(), py::arg("view") = py::none(),
+           py::arg("margin") = d.sampling.margin, py::arg("quality") = d.sampling.quality,
+           py::arg("mix") = d.mix, py::arg("background") = "black", py::arg("exact") = d.exact,
            py::arg("seed") = d.sampling.seed, py::arg("threads") = d.sampling.threads,
            py::arg("interpolation") = "bilinear", py::arg("animate") = "none",
            py::arg("drift_amount") = d.drift_amount, py::arg("drift_speed") = d.drift_speed,

@@ -10,13 +10,13 @@
 #include <pybind11/stl.h>
 #include <opencv2/core.hpp>
 
-#include "run/fit_run.h"
 #include "collage/fit.h"
 #include "collage/target.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "python/arrays.h"
 #include "python/errors.h"
+#include "run/fit_run.h"
 
 namespace ifsfx::python {
 namespace {

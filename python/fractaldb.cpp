@@ -12,10 +12,10 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include "ifs/error.h"
-#include "ifs/fractaldb_csv.h"
 #include "fractaldb/render.h"
 #include "fractaldb/search.h"
+#include "ifs/error.h"
+#include "ifs/fractaldb_csv.h"
 #include "python/arrays.h"
 #include "python/errors.h"
 #include "python/options.h"

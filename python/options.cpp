@@ -93,21 +93,21 @@ engine::Animate animate_arg(const py::object& animate) {
 
 engine::FractalSettings fractal_settings(const FilterKeywords& k) {
   engine::FractalSettings s{.exact = k.exact,
-                           .sampling = {.view = view_arg(k.view),
-                                        .margin = k.margin,
-                                        .quality = k.quality,
-                                        .seed = k.seed,
-                                        .threads = k.threads},
-                           .mix = k.mix,
-                           .background = filter_background_arg(k.background),
-                           .interpolation = interpolation_arg(k.interpolation),
-                           .animate = animate_arg(k.animate),
-                           .drift_amount = k.drift_amount,
-                           .drift_speed = k.drift_speed,
-                           .keyframe_interval = k.keyframe_interval,
-                           .superifs = k.superifs,
-                           .buffers = k.buffers,
-                           .loop = k.loop};
+                            .sampling = {.view = view_arg(k.view),
+                                         .margin = k.margin,
+                                         .quality = k.quality,
+                                         .seed = k.seed,
+                                         .threads = k.threads},
+                            .mix = k.mix,
+                            .background = filter_background_arg(k.background),
+                            .interpolation = interpolation_arg(k.interpolation),
+                            .animate = animate_arg(k.animate),
+                            .drift_amount = k.drift_amount,
+                            .drift_speed = k.drift_speed,
+                            .keyframe_interval = k.keyframe_interval,
+                            .superifs = k.superifs,
+                            .buffers = k.buffers,
+                            .loop = k.loop};
   // The command's rule (check_filter_rules), in the keywords' words.
   if (s.loop > 0 && s.animate == engine::Animate::none)
     throw Error(ErrorKind::invalid_argument,

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "python/render.h"
 
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
+#include "flame/flame_file.h"
+#include "flame/render.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/preset.h"
@@ -13,15 +16,39 @@
 #include "ifs/steal_map.h"
 #include "ifs/steal_picture.h"
 #include "ifs/tops.h"
-#include "run/render_modes.h"
-#include "run/render_still.h"
 #include "python/arrays.h"
 #include "python/errors.h"
 #include "python/options.h"
 #include "python/presets.h"
+#include "run/render_modes.h"
+#include "run/render_still.h"
 
 namespace ifsfx::python {
 namespace {
+
+// A flame file's flame (flame/render.h) as an array: BGR, or BGRA with its cover as alpha.
+cv::Mat flame_picture(const std::string& spec, std::optional<cv::Size> size,
+                      std::optional<double> quality, std::uint64_t seed, int threads, bool alpha) {
+  const flame::Flame f = flame::read_flame(spec);
+  return run_released([&](const CancelToken& cancel) {
+    return flame::render_flame(f, {.size = size,
+                                   .quality = quality,
+                                   .seed = seed,
+                                   .threads = threads,
+                                   .cancel = cancel,
+                                   .channels = alpha ? 4 : 3});
+  });
+}
+
+py::array render_flame(const std::string& spec, const py::object& size, const py::object& quality,
+                       std::uint64_t seed, int threads, bool alpha, const py::object& dtype,
+                       bool rgb) {
+  const cv::Mat image =
+      flame_picture(spec, size.is_none() ? std::nullopt : std::optional(size_arg(size)),
+                    quality.is_none() ? std::nullopt : std::optional(quality.cast<double>()), seed,
+                    threads, alpha);
+  return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
+}
 
 py::array render(const py::object& preset, const std::string& mode_name, const py::object& size,
                  const py::object& view, double margin, double quality, int supersample,
@@ -31,6 +58,13 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
                  bool allow_expansive, bool rgb) {
   const app::RenderMode mode = app::parse_render_mode(mode_name);
   const cv::Size pixels = size_arg(size);
+  if (py::isinstance<py::str>(preset) && flame::is_flame_spec(preset.cast<std::string>())) {
+    // A flame draws as flam3 does, at `size` and `quality` (render_flame: its own by default).
+    app::check_flame_mode(mode, "mode");
+    const cv::Mat image =
+        flame_picture(preset.cast<std::string>(), pixels, quality, seed, threads, alpha);
+    return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
+  }
   const Keywords k =
       keywords(view, margin, quality, supersample, gamma, brightness, seed, threads, exact);
   app::check_mode_options(mode,
@@ -116,6 +150,18 @@ allow_expansive: accept maps of factor >= 1 when the IFS contracts on average, d
 
 Raises ValueError for bad input (with the library's message), FileNotFoundError/OSError for
 files.)doc");
+
+  m.def("render_flame", &render_flame, py::arg("spec"), py::kw_only(), py::arg("size") = py::none(),
+        py::arg("quality") = py::none(), py::arg("seed") = 1, py::arg("threads") = 0,
+        py::arg("alpha") = false, py::arg("dtype") = "uint8", py::arg("rgb") = false,
+        R"doc(A fractal flame of flam3, Apophysis, JWildfire or Fractorium ("art.flame",
+"art.flame:NAME" or "art.flame:INDEX") as `ifsfx render art.flame:NAME -o OUT.png` renders it,
+as flam3-render does: H×W×3 (BGR over the flame's background), or ×4 with alpha=True (its cover).
+size: (width, height) or "WxH", default None: the flame's own (the framing kept).
+quality: samples per pixel, default None: the flame's own.
+seed: default 1; the same seed gives the same array for any thread count. threads: 0 = all.
+dtype: "uint8" (default), "uint16" or "float32". rgb: True for RGB order.
+ifsfx.render(spec, mode="measure", ...) draws the same at its size and quality.)doc");
 
   m.def(
       "read_image",

@@ -3,8 +3,8 @@
 
 #include <map>
 
-#include "run/arguments.h"
 #include "ifs/error.h"
+#include "run/arguments.h"
 
 namespace ifsfx::app {
 

@@ -6,11 +6,10 @@
 #include <memory>
 #include <string>
 
-
-#include "run/fractal_filter_options.h"
-#include "ifs/steal_map.h"
-#include "video/file_sink.h"
 #include "engine/fractal_engine.h"
+#include "ifs/steal_map.h"
+#include "run/fractal_filter_options.h"
+#include "video/file_sink.h"
 
 namespace ifsfx::app {
 
@@ -34,7 +33,6 @@ struct FilterArgs {
   bool quiet = false;
   bool segment = false;  // a farm shard's segment: the source's clock, no audio
 };
-
 
 // The rules between options that their parsing does not check and that `ifsfx farm filter` checks
 // too before it submits anything: --loop repeats an animation, so it needs --animate.

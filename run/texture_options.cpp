@@ -5,9 +5,9 @@
 
 #include <fmt/format.h>
 
+#include "ifs/error.h"
 #include "run/arguments.h"
 #include "run/texture_movie.h"
-#include "ifs/error.h"
 
 namespace ifsfx::app {
 

@@ -38,7 +38,6 @@ struct TextureArgs {
   std::string codec;
 };
 
-
 // The rules between options that their parsing does not check (the size, the counts, the buffer
 // against V, steal mode's source, a movie's --fps and --codec), each failing with the option's
 // name; returns the size.

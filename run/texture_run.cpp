@@ -9,11 +9,11 @@
 
 #include <fmt/format.h>
 
+#include "ifs/error.h"
+#include "ifs/image_io.h"
 #include "run/arguments.h"
 #include "run/seamless_options.h"
 #include "run/texture_movie.h"
-#include "ifs/error.h"
-#include "ifs/image_io.h"
 #include "superifs/superifs_file.h"
 #include "superifs/texture.h"
 #include "video/image_sequence.h"

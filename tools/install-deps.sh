@@ -12,6 +12,9 @@ packages=(
   libopencv-dev libopenimageio-dev libpng-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  # fractal flames (flame/): the XML reader; flam3's programs and palettes (flam3-render is the
+  # reference renderer of the tests and bench, flam3-palettes.xml is read at run time)
+  libpugixml-dev flam3-utils flam3-palette
   # the Python module (python/): pybind11 and Python's headers; NumPy and pytest for its tests
   pybind11-dev python3-dev python3-numpy python3-pytest
   # bench/fractaldb_vs_reference.py runs the FractalDB reference generator, which draws with PIL
@@ -27,6 +30,10 @@ packages=(
   # frei0r wrapper in -bad, Matroska in -good, FFV1 in -libav)
   frei0r-plugins-dev melt gstreamer1.0-tools gstreamer1.0-plugins-base gstreamer1.0-plugins-good
   gstreamer1.0-plugins-bad gstreamer1.0-libav
+  # the OBS Studio filter (plugins/obs): libobs's headers; its tests start libobs headless on
+  # xvfb-run's display (xvfb, above) with Mesa's software GL (llvmpipe: EGL and the DRI driver)
+  # and open the display themselves (Xlib)
+  libobs-dev libegl-mesa0 libgl1-mesa-dri libx11-dev
   # `ifsfx farm` is tested against a real single-node Slurm (tests/farm/start-local-slurm.sh)
   slurmctld slurmd slurm-client munge
   # `ifsfx studio`: its HTTP server; its tests: curl, and the page in a real headless browser,

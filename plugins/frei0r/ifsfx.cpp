@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 #include <opencv2/core.hpp>
 
+#include "engine/fractal_engine.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "ifs/view.h"
@@ -25,7 +26,6 @@
 #include "plugins/frei0r/host_clock.h"
 #include "plugins/frei0r/params.h"
 #include "superifs/texture.h"
-#include "engine/fractal_engine.h"
 
 namespace ifsfx::frei0r {
 namespace {
@@ -206,7 +206,8 @@ class FilterInstance {
       if (next && !same_maps(prefetch_settings_, s)) next.reset();
     }
     try {
-      if (!next) next = std::make_unique<engine::FractalEngine>(s, size_, size_, nominal_frame_rate);
+      if (!next)
+        next = std::make_unique<engine::FractalEngine>(s, size_, size_, nominal_frame_rate);
       next->set_look(s.mix, s.background);
     } catch (const std::exception& e) {
       failed_.emplace(s, e.what());

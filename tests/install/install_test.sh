@@ -217,6 +217,19 @@ CPP
         grep -qx -- "$f" deb-files.txt || fail "$deb lacks $f"
       done
     fi
+    # The OBS filter (built where libobs-dev is installed) is a package of its own, in OBS's
+    # folders, depending on libobs0; the command's package does not.
+    if [ -f "$build/plugins/obs/ifsfx-obs.so" ]; then
+      obs_deb=obs-ifsfx_${version}_$arch.deb
+      [ -f "$obs_deb" ] || fail "packages: $(ls ./*.deb)"
+      multiarch=$(dpkg-architecture -qDEB_HOST_MULTIARCH)
+      for f in ./usr/lib/$multiarch/obs-plugins/ifsfx-obs.so \
+               ./usr/share/obs/obs-plugins/ifsfx-obs/locale/en-US.ini; do
+        dpkg-deb -c "$obs_deb" | awk '{ print $6 }' | grep -qx -- "$f" || fail "$obs_deb lacks $f"
+      done
+      dpkg-deb -f "$obs_deb" Depends | grep -q libobs0 || fail "$obs_deb does not depend on libobs0"
+      ! dpkg-deb -f "$deb" Depends | grep -q libobs || fail "$deb depends on libobs"
+    fi
     ! grep -E '^\./usr/(include|lib)/' deb-files.txt | grep -Ev '^\./usr/lib/(frei0r-1/.*)?$' ||
       fail "$deb holds development files"
     for f in ./usr/include/ifsfx/ifs/steal_map.h 'libifsfx_ifs\.a' 'cmake/ifsfx/ifsfxConfig\.cmake' \

@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: Apache-2.0
+// What the variations share: the paper's polar quantities and its random draws (Draves &
+// Reckase, appendix, "Catalog of Variations": r, θ, φ, Ω, Λ, Ψ).
+#pragma once
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "flame/variations.h"
+
+namespace ifsfx::flame::detail {
+
+inline constexpr double kPi = std::numbers::pi;
+// Keeps divisions by r, r² or a parameter finite at 0, as every flame renderer does; small
+// enough to change no visible point.
+inline constexpr double kEps = 1e-10;
+
+// The paper's polar quantities of a point (appendix: r = √(x² + y²), θ = arctan(x / y),
+// φ = arctan(y / x)). Note θ is measured from the y axis: sin θ = x / r, cos θ = y / r.
+struct Polar {
+  double x, y;
+  double r2() const { return x * x + y * y; }
+  double r() const { return std::sqrt(r2()); }
+  double theta() const { return std::atan2(x, y); }
+  double phi() const { return std::atan2(y, x); }
+  double sin_theta() const { return x / (r() + kEps); }
+  double cos_theta() const { return y / (r() + kEps); }
+};
+
+inline Polar polar(const VariationInput& in) {
+  return {in.p.x, in.p.y};
+}
+
+// Ψ: uniform in [0, 1).
+inline double psi(Rng& rng) {
+  return rng.uniform();
+}
+// Ω: 0 or π with equal odds.
+inline double omega(Rng& rng) {
+  return (rng.next() >> 63) ? kPi : 0.0;
+}
+// Λ: −1 or 1 with equal odds.
+inline double lambda(Rng& rng) {
+  return (rng.next() >> 63) ? 1.0 : -1.0;
+}
+// The paper's cheap Gaussian: Ψ1 + Ψ2 + Ψ3 + Ψ4 − 2 (gaussian_blur, radial_blur, pre_blur).
+inline double sum_of_four(Rng& rng) {
+  const double a = psi(rng), b = psi(rng), c = psi(rng), d = psi(rng);
+  return a + b + c + d - 2.0;
+}
+
+inline Point scaled(double w, double x, double y) {
+  return {w * x, w * y};
+}
+
+// The tables of each source file, appended to the registry (flame/variations.cpp).
+void add_paper_variations(std::vector<Variation>& out);
+void add_flam3_variations(std::vector<Variation>& out);
+void add_complex_variations(std::vector<Variation>& out);
+void add_more_variations(std::vector<Variation>& out);
+
+}  // namespace ifsfx::flame::detail

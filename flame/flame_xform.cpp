@@ -1,0 +1,192 @@
+// SPDX-License-Identifier: Apache-2.0
+// <xform> and <finalxform>: the affine maps, the colour, the xaos row and the variation terms.
+// A variation is an attribute NAME="weight" (pre_NAME, post_NAME for the lists before and after
+// the sum), its parameters NAME_PARAM (pre_NAME_PARAM, ...). Any other attribute that is not
+// listed below as known is an unknown variation: refused, never dropped.
+#include <algorithm>
+#include <set>
+
+#include <fmt/format.h>
+
+#include "flame/detail/flame_xml.h"
+#include "flame/variations.h"
+
+namespace ifsfx::flame::detail {
+namespace {
+
+// Attributes of an xform that are not variations: read below, or without effect on a still
+// picture (animation, editor state, Ember's and JWildfire's extras that need their renderers).
+bool known_attribute(std::string_view n) {
+  static constexpr std::string_view kKnown[] = {"weight",
+                                                "color",
+                                                "color_speed",
+                                                "symmetry",
+                                                "opacity",
+                                                "chaos",
+                                                "coefs",
+                                                "post",
+                                                "name",
+                                                "plotmode",
+                                                "animate",
+                                                "var_color",
+                                                "motion_frequency",
+                                                "motion_function",
+                                                "motion_offset",
+                                                "material",
+                                                "material_speed",
+                                                "mod_gamma",
+                                                "mod_gamma_speed",
+                                                "mod_contrast",
+                                                "mod_contrast_speed",
+                                                "mod_saturation",
+                                                "mod_saturation_speed",
+                                                "mod_hue",
+                                                "mod_hue_speed",
+                                                "color_type",
+                                                "mirror_pre_post_translations",
+                                                "yzCoefs",
+                                                "zxCoefs",
+                                                "yzPostCoefs",
+                                                "zxPostCoefs"};
+  return std::ranges::find(kKnown, n) != std::end(kKnown);
+}
+
+enum class List { pre, normal, post };
+
+struct Found {
+  const Variation* v;
+  List list;
+  std::string prefix;  // "", "pre_" or "post_": the prefix of its parameters' names too
+  double weight;
+};
+
+// The variation an attribute names, with its list, or nothing.
+std::optional<Found> variation_of(std::string_view n) {
+  if (const Variation* v = find_variation(n))
+    return Found{v, v->place == VariationPlace::pre_only ? List::pre : List::normal, "", 0};
+  for (const auto& [prefix, list] :
+       {std::pair{"pre_", List::pre}, std::pair{"post_", List::post}}) {
+    const std::string_view p = prefix;
+    if (n.starts_with(p)) {
+      const Variation* v = find_variation(n.substr(p.size()));
+      if (v && v->place == VariationPlace::any) return Found{v, list, std::string(p), 0};
+    }
+  }
+  return std::nullopt;
+}
+
+// True when `n` (less a pre_/post_ prefix) is a parameter of some variation: a parameter whose
+// variation is absent changes nothing, and some programs write them all.
+bool parameter_of_any(std::string_view n) {
+  for (std::string_view p : {"pre_", "post_"})
+    if (n.starts_with(p) && parameter_of_any(n.substr(p.size()))) return true;
+  for (const Variation& v : variations())
+    for (const VariationParameter& q : v.parameters)
+      if (q.name == n) return true;
+  return false;
+}
+
+AffineMap affine(const Where& at, const std::string& what, const pugi::xml_attribute& a) {
+  const std::vector<double> k = numbers(at, what + ": " + a.name(), a.value(), 6);
+  return from_flam3_coefs({k[0], k[1], k[2], k[3], k[4], k[5]});
+}
+
+void read_colour(const Where& at, const std::string& what, const pugi::xml_node& node,
+                 bool is_final, Xform& xf) {
+  // color="c" (older files: "c1 c2", the second for a second palette: the first is used)
+  if (const auto a = node.attribute("color")) {
+    const std::vector<double> c = numbers(at, what + ": color", a.value());
+    if (c.empty() || c.size() > 2) at.fail(what + ": color", "one number is needed", a.value());
+    xf.colour = c[0];
+  }
+  // The final xform leaves the colour alone unless it says otherwise.
+  xf.colour_speed = is_final ? 0.0 : 0.5;
+  if (const auto a = node.attribute("symmetry"))
+    xf.colour_speed = (1 - number(at, what + ": symmetry", a.value())) / 2;
+  if (const auto a = node.attribute("color_speed"))
+    xf.colour_speed = number(at, what + ": color_speed", a.value());
+  xf.opacity = number_or(at, node, "opacity", 1);
+  if (std::string_view(node.attribute("plotmode").value()) == "off") xf.opacity = 0;
+}
+
+// The message for attributes that are neither known, variations nor their parameters.
+[[noreturn]] void refuse_unknown(const Where& at, const std::string& what,
+                                 const std::vector<std::string>& unknown,
+                                 const std::vector<Found>& found) {
+  for (const std::string& u : unknown) {
+    for (const Found& f : found) {
+      const std::string var = f.prefix + std::string(f.v->name);
+      if (u.starts_with(var + "_"))
+        at.fail(what, fmt::format("unknown parameter \"{}\" of variation \"{}\"", u, var));
+    }
+  }
+  // The shortest unknown name is the variation; longer ones are likely its parameters.
+  const std::string& first =
+      *std::min_element(unknown.begin(), unknown.end(),
+                        [](const auto& a, const auto& b) { return a.size() < b.size(); });
+  at.fail(what, fmt::format("unknown variation \"{}\"", first));
+}
+
+void read_variations(const Where& at, const std::string& what, const pugi::xml_node& node,
+                     Xform& xf) {
+  std::vector<Found> found;
+  std::vector<std::string> rest;
+  for (const pugi::xml_attribute a : node.attributes()) {
+    const std::string_view n = a.name();
+    if (known_attribute(n)) continue;
+    if (std::optional<Found> f = variation_of(n)) {
+      for (const Found& g : found)
+        if (g.v == f->v && g.list == f->list)
+          at.fail(what + ": " + std::string(n), "a variation may be given once");
+      f->weight = number(at, what + ": " + std::string(n), a.value());
+      found.push_back(*f);
+    } else {
+      rest.emplace_back(n);
+    }
+  }
+  std::set<std::string> used;
+  for (const Found& f : found) {
+    VariationTerm t{.id = f.v->id, .weight = f.weight, .params = default_parameters(*f.v)};
+    for (std::size_t k = 0; k < f.v->parameters.size(); ++k) {
+      const std::string name = f.prefix + std::string(f.v->parameters[k].name);
+      if (const auto a = node.attribute(name.c_str())) {
+        t.params[k] = number(at, what + ": " + name, a.value());
+        used.insert(name);
+      }
+    }
+    (f.list == List::pre    ? xf.pre_variations
+     : f.list == List::post ? xf.post_variations
+                            : xf.variations)
+        .push_back(std::move(t));
+  }
+  std::vector<std::string> unknown;
+  for (const std::string& n : rest)
+    if (!used.contains(n) && !parameter_of_any(n)) unknown.push_back(n);
+  if (!unknown.empty()) refuse_unknown(at, what, unknown, found);
+}
+
+}  // namespace
+
+Xform parse_xform(const Where& at, const pugi::xml_node& node, const std::string& what,
+                  bool is_final) {
+  Xform xf;
+  xf.name = node.attribute("name").value();
+  const pugi::xml_attribute coefs = node.attribute("coefs");
+  if (!coefs) at.fail(what + ": coefs", "the affine map is needed");
+  xf.pre = affine(at, what, coefs);
+  if (const auto post = node.attribute("post")) xf.post = affine(at, what, post);
+  if (!is_final) {
+    xf.weight = number_or(at, node, "weight", 1);
+    if (xf.weight < 0) at.fail(what + ": weight", "must be >= 0", node.attribute("weight").value());
+  }
+  read_colour(at, what, node, is_final, xf);
+  if (const auto chaos = node.attribute("chaos")) {
+    xf.chaos = numbers(at, what + ": chaos", chaos.value());
+    for (double c : xf.chaos)
+      if (c < 0) at.fail(what + ": chaos", "xaos weights must be >= 0", chaos.value());
+  }
+  read_variations(at, what, node, xf);
+  return xf;
+}
+
+}  // namespace ifsfx::flame::detail

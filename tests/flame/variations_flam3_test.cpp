@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: Apache-2.0
+// flam3's variations after the paper's 49, the complex functions, and the ones beyond flam3, at
+// points where their published formulas are worked by hand (values of the complex functions from
+// the functions themselves: w·f(z) at z = 0.5 + 0.25i).
+#include <cmath>
+#include <numbers>
+
+#include "variation_check.h"
+
+namespace ifsfx::flame {
+namespace {
+
+using test::eval;
+constexpr double kPi = std::numbers::pi;
+
+TEST(variations_flam3, disc2_bipolar_butterfly_cell) {
+  // rot 0, twist 0 at (1, 0): r = w·θ/π = 1/2, t = 0: ((sin 0 + 0)·r, (cos 0 + 0)·r)
+  EXPECT_POINT_NEAR(eval("disc2", {1, 0}, 1, {0, 0}), 0, 0.5);
+  // (0, 0.5): u = ln(1.25/1.25)/4 = 0, v = atan2(1, −0.75)/2, both × 2/π
+  EXPECT_POINT_NEAR(eval("bipolar", {0, 0.5}, 1, {0}), 0, 0.7048327646991335);
+  // (1, 0.5): 4/√(3π)·√(|xy|/(x² + (2y)²))·(x, 2y)
+  EXPECT_POINT_NEAR(eval("butterfly", {1, 0.5}), 0.6514700158705599, 0.6514700158705599);
+  // size 1 at (0.25, 1.5): cell (0, 1) → (0, 2), offset (0.25, 0.5): (0.25, −2.5)
+  EXPECT_POINT_NEAR(eval("cell", {0.25, 1.5}, 1, {1}), 0.25, -2.5);
+}
+
+TEST(variations_flam3, cpow_escher_and_mobius_are_complex_maps) {
+  // cpow r = 2, i = 0, power 1: z², one branch
+  EXPECT_POINT_NEAR(eval("cpow", {0.5, 0.25}, 1, {2, 0, 1}), 0.1875, 0.25);
+  EXPECT_POINT_NEAR(eval("escher", {0.5, 0.25}, 1, {0}), 0.5, 0.25);  // β = 0: z
+  // ((1 + i)z + 1)/(z + 2)
+  EXPECT_POINT_NEAR(eval("mobius", {0.5, 0.25}, 1, {1, 1, 1, 0, 1, 0, 2, 0}), 0.5247524752475248,
+                    0.24752475247524752);
+  EXPECT_POINT_NEAR(eval("Mobius", {0.5, 0.25}, 1, {1, 1, 1, 0, 1, 0, 2, 0}), 0.5247524752475248,
+                    0.24752475247524752);
+}
+
+TEST(variations_flam3, curve_waves2_popcorn2_stripes) {
+  EXPECT_POINT_NEAR(eval("curve", {0.3, 0.4}, 1, {1, 0.5, 1, 2}), 1.1521437889662114,
+                    0.8888756185966682);
+  EXPECT_POINT_NEAR(eval("waves2", {0.1, 0.2}, 1, {0.5, 0.25, 2, 3}), 0.29470917115432527,
+                    0.2738800516653349);
+  EXPECT_POINT_NEAR(eval("popcorn2", {0.1, 0.2}, 1, {0.5, 0.25, 3}), 0.4160021519178251,
+                    0.2761066143780162);
+  EXPECT_POINT_NEAR(eval("stripes", {1.3, 0.2}, 1, {0.5, 2}), 1.15, 0.38);
+}
+
+TEST(variations_flam3, separation_splits_split_modulus_bent2) {
+  EXPECT_POINT_NEAR(eval("separation", {1, -1}, 1, {1, 0.5, 2, 0}), 0.9142135623730951,
+                    -2.23606797749979);
+  EXPECT_POINT_NEAR(eval("splits", {1, -1}, 1, {0.5, 0.25}), 1.5, -1.25);
+  // cos(0.75π) < 0 flips y; cos(0.25π) > 0 keeps x
+  EXPECT_POINT_NEAR(eval("split", {0.75, 0.25}, 1, {1, 1}), 0.75, -0.25);
+  EXPECT_POINT_NEAR(eval("modulus", {1.5, -0.25}, 1, {1, 1}), -0.5, -0.25);
+  EXPECT_POINT_NEAR(eval("bent2", {-1, -1}, 1, {2, 3}), -2, -3);
+}
+
+TEST(variations_flam3, wedge_whorl_scry_loonie_lazysusan) {
+  EXPECT_POINT_NEAR(eval("wedge", {3, 4}, 1, {0, 0.5, 1, 0}), 3.3, 4.4);  // (r + hole)·(cos, sin)
+  // inside the circle of radius w = 2: the angle turns by inside/(w − r) = 0.5
+  EXPECT_POINT_NEAR(eval("whorl", {0.6, 0.8}, 2, {0.5, 0}), 0.2860182125017223, 1.97944274534964);
+  EXPECT_POINT_NEAR(eval("scry", {3, 4}), 3.0 / 130, 4.0 / 130);  // 1/(r·(r² + 1/w))
+  EXPECT_POINT_NEAR(eval("loonie", {0.3, 0.4}), 0.3 * std::sqrt(3.0), 0.4 * std::sqrt(3.0));
+  EXPECT_POINT_NEAR(eval("loonie", {3, 4}, 0.5), 1.5, 2);  // outside: linear
+  EXPECT_POINT_NEAR(eval("lazysusan", {0.3, 0.4}, 1, {1, 0, 0, 0, 0}), -0.1744977021627167,
+                    0.4685622177896248);
+}
+
+TEST(variations_flam3, auger_flux_elliptic_foci_polar2_oscilloscope) {
+  EXPECT_POINT_NEAR(eval("auger", {0.5, 0.25}, 1, {1, 0.5, 1, 1}), 0.6237019796272615,
+                    0.4297845769765761);
+  EXPECT_POINT_NEAR(eval("flux", {0, 1}, 1, {0}), std::sqrt(2.0), std::sqrt(2.0));
+  EXPECT_POINT_NEAR(eval("elliptic", {0, 0.5}), 0, 0.24161510933030436);
+  EXPECT_POINT_NEAR(eval("foci", {1, 0}), 2.163953413738653, 0);
+  EXPECT_POINT_NEAR(eval("polar2", {0, 2}), 0, 0.2206356001526516);  // (θ/π, ln r²/2π)
+  // sep 1, freq 0.25, amp 1: under the trace at x = 0 (t = 2) y flips; at x = 2 (t = 0) not
+  EXPECT_POINT_NEAR(eval("oscilloscope", {0, 0.5}, 1, {1, 0.25, 1, 0}), 0, -0.5);
+  EXPECT_POINT_NEAR(eval("oscilloscope", {2, 0.5}, 1, {1, 0.25, 1, 0}), 2, 0.5);
+}
+
+TEST(variations_flam3, super_shape_with_unit_exponents) {
+  // rnd 0, m 0, n1 = n2 = n3 = 1: θ = π/4, (|cos| + |sin|)^−1 = 1/√2 scales the point
+  EXPECT_POINT_NEAR(eval("super_shape", {3, 4}, 1, {0, 0, 1, 1, 1, 0}), 2.1213203435596424,
+                    2.82842712474619);
+}
+
+TEST(variations_flam3, random_ones_stay_on_their_curves) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Point f = eval("flower", {3, 0}, 1, {2, 0}, {}, seed);  // (Ψ·cos 2φ / r)·(x, y)
+    EXPECT_NEAR(f.y, 0, 1e-12);
+    EXPECT_TRUE(f.x >= 0 && f.x < 1);
+    const Point p = eval("parabola", {kPi / 2, 0}, 1, {1, 1}, {}, seed);  // (Ψ sin² r, Ψ cos r)
+    EXPECT_NEAR(p.y, 0, 1e-12);
+    EXPECT_TRUE(p.x >= 0 && p.x < 1);
+    const Point c = eval("conic", {3, 4}, 1, {1, 0}, {}, seed);  // along (3, 4), ≤ 1/1.6
+    EXPECT_NEAR(c.x * 4, c.y * 3, 1e-12);
+    EXPECT_LE(std::hypot(c.x, c.y), 1 / 1.6 + 1e-12);
+    const Point b = eval("pre_blur", {9, 9}, 0.5, {}, {}, seed);  // a Gaussian offset, |.| ≤ 2w
+    EXPECT_LE(std::hypot(b.x, b.y), 1 + 1e-12);
+  }
+}
+
+TEST(variations_complex, are_w_times_the_complex_function) {
+  const Point z{0.5, 0.25};
+  EXPECT_POINT_NEAR(eval("exp", z), 1.5974665191199127, 0.4079001700783598);
+  EXPECT_POINT_NEAR(eval("log", z), -0.5815754049028404, 0.4636476090008061);
+  EXPECT_POINT_NEAR(eval("sin", z), 0.494485780933195, 0.22168816414957482);
+  EXPECT_POINT_NEAR(eval("cos", z), 0.9051501505596068, -0.12110879604381165);
+  EXPECT_POINT_NEAR(eval("tan", z), 0.504500702698564, 0.31242069250258875);
+  EXPECT_POINT_NEAR(eval("sec", z), 1.085358604751614, 0.14522062866143562);
+  EXPECT_POINT_NEAR(eval("csc", z), 1.6838612682157232, -0.7549097014050444);
+  EXPECT_POINT_NEAR(eval("cot", z), 1.432721075387994, -0.8872370407840957);
+  EXPECT_POINT_NEAR(eval("sinh", z), 0.504895714387995, 0.2789791283502615);
+  EXPECT_POINT_NEAR(eval("cosh", z), 1.0925708047319176, 0.12892104172809826);
+  EXPECT_POINT_NEAR(eval("tanh", z), 0.4854872810241353, 0.19805544995134958);
+  EXPECT_POINT_NEAR(eval("sech", z), 0.902703693945398, -0.10651712464877593);
+  EXPECT_POINT_NEAR(eval("csch", z), 1.51734688627714, -0.8384070208472441);
+  // flam3 draws the conjugate of coth z (tests/flame/variations_vs_flam3 shows it)
+  EXPECT_POINT_NEAR(eval("coth", z), 1.7658972151170622, 0.7204010922182281);
+  EXPECT_POINT_NEAR(eval("sin", z, 2), 2 * 0.494485780933195, 2 * 0.22168816414957482);
+}
+
+TEST(variations_more, three_d_ones_are_planar_no_ops_or_their_z0_slice) {
+  for (const char* name : {"flatten", "zscale", "ztranslate", "zcone", "zblur"}) {
+    EXPECT_EQ(find_variation(name)->kind, VariationKind::flat_3d) << name;
+    EXPECT_POINT_NEAR(eval(name, {3, 4}), 0, 0);
+  }
+  EXPECT_POINT_NEAR(eval("linear3D", {3, 4}, 0.5), 1.5, 2);
+  EXPECT_POINT_NEAR(eval("Spherical3D", {3, 4}), 0.12, 0.16);       // (x, y)/r²
+  EXPECT_POINT_NEAR(eval("hemisphere", {2, 2}), 2.0 / 3, 2.0 / 3);  // (x, y)/√(r² + 1)
+}
+
+TEST(variations_more, julia3D_epispiral_and_the_blurs) {
+  // power 2 at (0, 4): r^(1/2) = 2 at angle (π/2 + 2πk)/2, as julian
+  const Point j = eval("julia3D", {0, 4}, 1, {2});
+  EXPECT_NEAR(std::abs(j.x), std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(j.y, j.x, 1e-9);
+  // n 6, thickness 0, holes 1 at (1, 0): θ = 0, t = −1 + 1/cos 0 = 0
+  EXPECT_POINT_NEAR(eval("epispiral", {1, 0}, 1, {6, 0, 1}), 0, 0);
+  // n 1, holes 0 at (1, 1): θ = π/4, t = √2: (1, 1)
+  EXPECT_POINT_NEAR(eval("epispiral", {1, 1}, 1, {1, 0, 0}), 1, 1);
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Point s = eval("sineblur", {5, 5}, 1, {1}, {}, seed);  // radius acos(2Ψ − 1)/π ≤ 1
+    EXPECT_LE(std::hypot(s.x, s.y), 1 + 1e-12);
+    const Point c = eval("blur_circle", {5, 5}, 1, {}, {}, seed);
+    EXPECT_LE(std::hypot(c.x, c.y), 1 + 1e-12);
+    const Point l = eval("blur_linear", {1, 1}, 1, {2, kPi / 2}, {}, seed);  // up by [0, 2)
+    EXPECT_NEAR(l.x, 1, 1e-12);
+    EXPECT_TRUE(l.y >= 1 && l.y < 3);
+    const Point z = eval("blur_zoom", {1, 2}, 1, {1, 0, 0}, {}, seed);  // (1, 2)·[1, 2)
+    EXPECT_NEAR(z.y, 2 * z.x, 1e-12);
+    EXPECT_TRUE(z.x >= 1 && z.x < 2);
+  }
+}
+
+}  // namespace
+}  // namespace ifsfx::flame

@@ -1,0 +1,184 @@
+// SPDX-License-Identifier: Apache-2.0
+// The paper's variations (Draves & Reckase, appendix) at points where their formulas are worked
+// by hand: r = √(x² + y²), θ = atan2(x, y) (measured from the y axis), φ = atan2(y, x).
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <set>
+#include <sstream>
+
+#include "variation_check.h"
+
+namespace ifsfx::flame {
+namespace {
+
+using test::eval;
+constexpr double kPi = std::numbers::pi;
+
+TEST(variations, registry_names_are_unique_and_ids_are_positions) {
+  std::set<std::string_view> names;
+  for (std::size_t i = 0; i < variations().size(); ++i) {
+    const Variation& v = variations()[i];
+    EXPECT_EQ(v.id, i);
+    EXPECT_TRUE(names.insert(v.name).second) << v.name;
+    EXPECT_EQ(find_variation(v.name), &v);
+    EXPECT_NE(v.function, nullptr) << v.name;
+  }
+  EXPECT_EQ(find_variation("no_such_variation"), nullptr);
+}
+
+TEST(variations, docs_flames_md_lists_every_variation_of_the_registry) {
+  std::ifstream in(std::string(IFSFX_SOURCE_DIR) + "/docs/flames.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  for (const Variation& v : variations())
+    EXPECT_NE(text.str().find("| `" + std::string(v.name) + "` |"), std::string::npos) << v.name;
+}
+
+TEST(variations, linear_scales_by_the_weight) {
+  EXPECT_POINT_NEAR(eval("linear", {2, -3}, 0.5), 1, -1.5);
+}
+
+TEST(variations, sinusoidal_spherical_swirl_horseshoe) {
+  EXPECT_POINT_NEAR(eval("sinusoidal", {kPi / 2, kPi / 6}), 1, 0.5);
+  EXPECT_POINT_NEAR(eval("spherical", {1, 1}), 0.5, 0.5);  // (x, y) / r²
+  EXPECT_POINT_NEAR(eval("spherical", {2, 0}, 2), 1, 0);
+  // r² = 1: (x sin 1 − y cos 1, x cos 1 + y sin 1) at (1, 0)
+  EXPECT_POINT_NEAR(eval("swirl", {1, 0}), std::sin(1.0), std::cos(1.0));
+  // r = 5: ((x − y)(x + y), 2xy) / r
+  EXPECT_POINT_NEAR(eval("horseshoe", {3, 4}), -1.4, 4.8);
+}
+
+TEST(variations, polar_measures_theta_from_the_y_axis) {
+  EXPECT_POINT_NEAR(eval("polar", {1, 0}), 0.5, 0);  // θ = π/2, r − 1 = 0
+  EXPECT_POINT_NEAR(eval("polar", {0, 2}), 0, 1);    // θ = 0
+}
+
+TEST(variations, handkerchief_heart_disc_spiral) {
+  // (0, 1): r = 1, θ = 0
+  EXPECT_POINT_NEAR(eval("handkerchief", {0, 1}), std::sin(1.0), std::cos(-1.0));
+  EXPECT_POINT_NEAR(eval("heart", {1, 0}), 1, 0);    // θ = π/2: (sin π/2, −cos π/2)
+  EXPECT_POINT_NEAR(eval("disc", {1, 0}), 0, -0.5);  // θ/π = 1/2: (sin π, cos π)/2
+  EXPECT_POINT_NEAR(eval("spiral", {0, 1}), 1 + std::sin(1.0), -std::cos(1.0));
+}
+
+TEST(variations, hyperbolic_diamond_ex) {
+  // (3, 4): r = 5, sin θ = 3/5, cos θ = 4/5
+  EXPECT_POINT_NEAR(eval("hyperbolic", {3, 4}), 0.12, 4);
+  EXPECT_POINT_NEAR(eval("diamond", {3, 4}), 0.17019731127793575, -0.7671394197305108);
+  // (0, 1): p0 = sin 1, p1 = cos(−1); (p0³ + p1³, p0³ − p1³)
+  EXPECT_POINT_NEAR(eval("ex", {0, 1}), 0.7535518418419491, 0.4380946313399621);
+}
+
+TEST(variations, julia_takes_either_square_root) {
+  std::set<int> signs;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const Point q = eval("julia", {0, 4}, 1, {}, {}, seed);  // √r = 2, θ/2 = 0
+    EXPECT_NEAR(std::abs(q.x), 2, 1e-9);
+    EXPECT_NEAR(q.y, 0, 1e-9);
+    signs.insert(q.x > 0 ? 1 : -1);
+  }
+  EXPECT_EQ(signs.size(), 2u);
+}
+
+TEST(variations, bent_doubles_negative_x_and_halves_negative_y) {
+  EXPECT_POINT_NEAR(eval("bent", {-1, -2}), -2, -1);
+  EXPECT_POINT_NEAR(eval("bent", {1, 2}), 1, 2);
+}
+
+TEST(variations, waves_and_popcorn_read_the_affine_coefficients) {
+  // waves: (x + b sin(y / c²), y + e sin(x / f²)) in the paper's order; here b = 0.5,
+  // c (x translation) = 1, e (y's y coefficient) = 0.25, f (y translation) = 2.
+  const AffineMap pre{.a = 1, .b = 0.5, .c = 0, .d = 0.25, .e = 1, .f = 2};
+  EXPECT_POINT_NEAR(eval("waves", {2 * kPi, kPi / 2}, 1, {}, pre), 2 * kPi + 0.5, kPi / 2 + 0.25);
+  // popcorn: (x + c sin(tan 3y), y + f sin(tan 3x)), c = 0.5, f = 0.25
+  const AffineMap shift{.e = 0.5, .f = 0.25};
+  EXPECT_POINT_NEAR(eval("popcorn", {0, kPi / 12}, 1, {}, shift), 0.42073549240394825, kPi / 12);
+}
+
+TEST(variations, fisheye_swaps_and_eyefish_does_not) {
+  EXPECT_POINT_NEAR(eval("fisheye", {3, 4}), 4.0 / 3, 1);  // 2/(r + 1)·(y, x)
+  EXPECT_POINT_NEAR(eval("eyefish", {3, 4}), 1, 4.0 / 3);
+}
+
+TEST(variations, exponential_power_cosine) {
+  EXPECT_POINT_NEAR(eval("exponential", {1, 0.5}), 0, 1);  // e^0 (cos π/2, sin π/2)
+  // r^sin θ (cos θ, sin θ) at (3, 4): 5^0.6 (0.8, 0.6)
+  EXPECT_POINT_NEAR(eval("power", {3, 4}), 2.1012222435230137, 1.5759166826422601);
+  EXPECT_POINT_NEAR(eval("cosine", {0.5, 1}), 0, -std::sinh(1.0));
+}
+
+TEST(variations, rings_and_fan_use_the_translation) {
+  // rings, c = 1: ((r + 1) mod 2 − 1)(cos θ, sin θ) at (0, 0.5): 0.5·(1, 0)
+  EXPECT_POINT_NEAR(eval("rings", {0, 0.5}, 1, {}, AffineMap{.e = 1}), 0.5, 0);
+  // fan, c = 1: t = π; θ = 0 is in the first half: θ + π/2, r = 1
+  EXPECT_POINT_NEAR(eval("fan", {0, 1}, 1, {}, AffineMap{.e = 1}), 0, 1);
+}
+
+TEST(variations, parametric_blob_pdj_rectangles) {
+  // high 2, low 1, waves 1 at (1, 0): θ = π/2, r·(1 + (2 − 1)/2·(sin θ + 1)) = 2
+  EXPECT_POINT_NEAR(eval("blob", {1, 0}, 1, {2, 1, 1}), 2, 0);
+  EXPECT_POINT_NEAR(eval("blob", {0, 1}, 1, {2, 1, 1}), 0, 1.5);
+  EXPECT_POINT_NEAR(eval("pdj", {0.5, 0.25}, 1, {1, 2, 3, 4}), -0.2928983466136168,
+                    0.4571926807359147);
+  EXPECT_POINT_NEAR(eval("rectangles", {0.3, 1.7}, 1, {1, 1}), 0.7, 1.3);
+}
+
+TEST(variations, bubble_cylinder_perspective_curl_ngon) {
+  EXPECT_POINT_NEAR(eval("bubble", {2, 0}), 1, 0);          // 4/(r² + 4)
+  EXPECT_POINT_NEAR(eval("cylinder", {kPi / 2, 3}), 1, 3);  // (sin x, y)
+  // angle 1 quarter turn, dist 2 at (1, 1): 2/(2 − 1)·(x, y cos π/2)
+  EXPECT_POINT_NEAR(eval("perspective", {1, 1}, 1, {1, 2}), 2, 0);
+  EXPECT_POINT_NEAR(eval("curl", {1, 0}, 1, {1, 0}), 0.5, 0);  // z / (1 + z)
+  // 4 sides, power 2, circle 1, corners 0: (x, y) / r²
+  EXPECT_POINT_NEAR(eval("ngon", {2, 0}, 1, {4, 2, 1, 0}), 0.5, 0);
+}
+
+TEST(variations, tangent_cross_secant2) {
+  EXPECT_POINT_NEAR(eval("tangent", {0, kPi / 4}), 0, 1);
+  EXPECT_POINT_NEAR(eval("cross", {2, 1}), 2.0 / 3, 1.0 / 3);  // (x, y)/|x² − y²|
+  // r = 0.5: (x, 1/cos(0.5) − 1)
+  EXPECT_POINT_NEAR(eval("secant2", {0.5, 0}), 0.5, 0.13949392732454902);
+}
+
+TEST(variations, julian_lands_on_one_of_its_power_branches) {
+  // power 2, dist 1 at (0, 4): φ = π/2, r^(1/2) = 2, angle (π/2 + 2πk)/2
+  const double s = std::sqrt(2.0);
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Point q = eval("julian", {0, 4}, 1, {2, 1}, {}, seed);
+    EXPECT_NEAR(std::abs(q.x), s, 1e-9);
+    EXPECT_NEAR(q.y, q.x, 1e-9);
+  }
+}
+
+TEST(variations, juliascope_mirrors_phi_on_odd_branches) {
+  // power 2, dist 1 at (0, 4): branch 0 at φ/2 = π/4, branch 1 at (−φ + 2π)/2 = 3π/4; y > 0 on
+  // both (a random sign, as the paper's Λ, would put half the points below the axis).
+  const double s = std::sqrt(2.0);
+  std::set<int> branches;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Point q = eval("juliascope", {0, 4}, 1, {2, 1}, {}, seed);
+    EXPECT_NEAR(std::abs(q.x), s, 1e-9);
+    EXPECT_NEAR(q.y, s, 1e-9);
+    branches.insert(q.x > 0);
+  }
+  EXPECT_EQ(branches.size(), 2u);
+}
+
+TEST(variations, rays_points_along_cos_x_sin_y) {
+  // w² tan(Ψπw)/r² · (cos x, sin y), as flam3 draws it (the paper prints sin x)
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const Point q = eval("rays", {0, kPi / 2}, 1, {}, {}, seed);  // (cos 0, sin π/2) = (1, 1)
+    EXPECT_NEAR(q.x, q.y, 1e-9 * std::abs(q.x));
+  }
+}
+
+TEST(variations, blur_stays_within_the_weight) {
+  for (std::uint64_t seed = 1; seed <= 50; ++seed) {
+    const Point q = eval("blur", {5, 5}, 0.5, {}, {}, seed);
+    EXPECT_LE(std::hypot(q.x, q.y), 0.5 + 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace ifsfx::flame
