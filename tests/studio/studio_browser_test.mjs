@@ -10,7 +10,8 @@
 //   contract shows the server's error in the page; two tabs edit at once without disturbing each
 //   other; `--source IMAGE` (relative, found in --folder) is the source selected at start.
 //   Screenshots are kept in WORK (studio.png, studio-zoomed.png, studio-measure.png,
-//   studio-steal.png). The drag-to-pixels latency is bench/studio_latency.mjs's, not measured here.
+//   studio-steal.png, studio-source.png). The drag-to-pixels latency is bench/studio_latency.mjs's,
+//   not measured here.
 // Usage: node studio_browser_test.mjs IFSFX WORK NODE_MODULES
 import { spawn, execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, rmSync, readFileSync, writeFileSync } from 'node:fs';
@@ -316,6 +317,8 @@ try {
   await third.waitForFunction(() => document.getElementById('source-size').textContent.startsWith('100x80'),
                               null, { timeout: 30000 });
   check(true, 'steal mode shows the --source image (100x80), not the sample');
+  await settled(third);
+  await third.screenshot({ path: path.join(work, 'studio-source.png') });
   await third.close();
   given.server.kill('SIGINT');
 } finally {
