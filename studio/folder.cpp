@@ -102,6 +102,17 @@ std::vector<std::string> folder_files(const fs::path& folder,
   return names;
 }
 
+const std::vector<std::string>& movie_extensions() {
+  static const std::vector<std::string> extensions{".mp4", ".mkv", ".mov",  ".avi", ".webm",
+                                                   ".m4v", ".mpg", ".mpeg", ".ogv", ".wmv"};
+  return extensions;
+}
+
+bool is_movie_name(const fs::path& name) {
+  const auto& known = movie_extensions();
+  return std::find(known.begin(), known.end(), lower_extension(name)) != known.end();
+}
+
 bool is_image_name(std::string_view name) {
   for (const char* ext : {".png", ".jpg", ".jpeg", ".tif", ".tiff", ".exr", ".bmp", ".webp"})
     if (ends_with(name, ext)) return true;

@@ -37,6 +37,11 @@ std::filesystem::path folder_file(const std::filesystem::path& folder, const std
 // .tif, .tiff, .exr, .bmp, .webp; any case).
 bool is_image_name(std::string_view name);
 
+// The movie extensions the studio offers (lower case, with the dot: ".mp4", ".mkv", ...), and
+// whether `name` has one (any case).
+const std::vector<std::string>& movie_extensions();
+bool is_movie_name(const std::filesystem::path& name);
+
 // The extension of `name`, lower case, with its dot (".png").
 std::string lower_extension(const std::filesystem::path& name);
 

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-// How `ifsfx studio`'s handlers read requests and answer (docs/studio.md): every error as a JSON
-// object {"error": "what: rule (got X)"} with a 4xx (or 5xx) status, so that the page can show it
-// and the server keeps running; JSON bodies capped; the tab a request comes from. Shared by the
-// editor's routes (cli/studio_command.cpp) and those of the jobs, fit, video and superIFS
-// (studio/routes.cpp).
+// How `ifsfx studio`'s handlers read requests and answer (docs/studio.md), one way for every
+// route (studio/*_routes.cpp): JSON by send_json, every error by send_error as a JSON object
+// {"error": "what: rule (got X)"} with a 4xx (or 5xx) status, so that the page can show it and
+// the server keeps running (the status from the error's kind, as Jupyter's base handler writes
+// its errors); handlers wrapped by `guard`; JSON bodies capped; the tab a request comes from.
 #pragma once
 
 #include <cstddef>
@@ -11,6 +11,7 @@
 #include <regex>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include <fmt/format.h>
 #include <httplib.h>
@@ -30,17 +31,14 @@ struct RequestError : std::runtime_error {
   int status;
 };
 
-inline void send_error(httplib::Response& res, int status, const std::string& message) {
-  res.status = status;
-  res.set_content(nlohmann::json{{"error", message}}.dump(-1, ' ', false,
-                                                          nlohmann::json::error_handler_t::replace),
-                  "application/json");
-}
-
 inline void send_json(httplib::Response& res, const nlohmann::json& body, int status = 200) {
   res.status = status;
   res.set_content(body.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace),
                   "application/json");
+}
+
+inline void send_error(httplib::Response& res, int status, const std::string& message) {
+  send_json(res, {{"error", message}}, status);
 }
 
 inline int status_of(ErrorKind kind) {
@@ -73,6 +71,14 @@ void guarded(httplib::Response& res, Handler&& handler) {
   } catch (const std::exception& e) {
     send_error(res, 500, fmt::format("internal error: {}", e.what()));
   }
+}
+
+// A route's handler with `guarded` around it.
+template <typename Handle>
+httplib::Server::Handler guard(Handle handle) {
+  return [handle = std::move(handle)](const httplib::Request& req, httplib::Response& res) {
+    guarded(res, [&] { handle(req, res); });
+  };
 }
 
 // JSON bodies are read only up to kMaxBody (the server takes more for uploads).

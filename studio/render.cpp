@@ -52,8 +52,8 @@ IfsPreset preset_from_json(const json& body) {
   if (!body.contains("maps") || !body["maps"].is_array() || body["maps"].empty())
     bad_field("maps", "must be a non-empty list of [a, b, c, d, e, f]",
               body.contains("maps") ? body["maps"].dump() : "nothing");
-  if (body["maps"].size() > 64)
-    bad_field("maps", "at most 64", std::to_string(body["maps"].size()));
+  if (body["maps"].size() > kMaxMaps)
+    bad_field("maps", fmt::format("at most {}", kMaxMaps), std::to_string(body["maps"].size()));
   for (std::size_t i = 0; i < body["maps"].size(); ++i) {
     const json& m = body["maps"][i];
     const std::string field = fmt::format("maps[{}]", i);

@@ -15,6 +15,7 @@
 //    "format": "png" | "rgba"}   // the file's bytes (default), or raw pixels for the live view
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -30,6 +31,10 @@
 #include "run/render_modes.h"
 
 namespace ifsfx::app {
+
+// The most maps an IFS of the page may have (a preset, an IFS of a superIFS, the defaults asked
+// for): more than a hand edits, few enough that a request stays small.
+inline constexpr std::size_t kMaxMaps = 64;
 
 // The preset of a request: name, description, maps, probabilities and colours. Its text is the
 // TOML that `to_toml` writes, so a saved preset renders with the same metadata. Throws

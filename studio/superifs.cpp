@@ -10,6 +10,7 @@
 #include "ifs/image_io.h"
 #include "run/arguments.h"
 #include "studio/fields.h"
+#include "studio/render.h"
 
 namespace ifsfx::app {
 
@@ -35,7 +36,8 @@ Ifs ifs_from_json(const json& table, const std::string& field) {
   if (maps == table.end() || !maps->is_array() || maps->empty())
     bad_field(field + " maps", "must be a non-empty list of [a, b, c, d, e, f]",
               maps == table.end() ? json("nothing") : *maps);
-  if (maps->size() > 64) bad_field(field + " maps", "at most 64", json(maps->size()));
+  if (maps->size() > kMaxMaps)
+    bad_field(field + " maps", fmt::format("at most {}", kMaxMaps), json(maps->size()));
   for (std::size_t i = 0; i < maps->size(); ++i) {
     const auto k = numbers((*maps)[i], fmt::format("{} map {}", field, i + 1));
     if (k.size() != 6)
@@ -130,21 +132,7 @@ std::string TexturePreviews::frame_png(const json& body, const std::string& clie
   {
     std::lock_guard lock(mutex_);
     if (stopping_) throw Error(ErrorKind::interrupted, "texture: the server is stopping");
-    auto& slot = entries_[client];
-    if (!slot || slot->key != key) {
-      if (slot) slot->stop = true;  // a burn-in of the old settings stops (409)
-      slot = std::make_shared<Entry>();
-      slot->key = key;
-    }
-    slot->used = ++clock_;
-    entry = slot;
-    while (entries_.size() > kMaxTabs) {  // forget the tab used longest ago
-      auto oldest = entries_.begin();
-      for (auto it = entries_.begin(); it != entries_.end(); ++it)
-        if (it->second->used < oldest->second->used) oldest = it;
-      oldest->second->stop = true;
-      entries_.erase(oldest);
-    }
+    entry = entry_for(entries_, client, key);  // a burn-in of other settings stops (409)
   }
   cv::Mat image;
   {
@@ -170,7 +158,7 @@ std::string TexturePreviews::frame_png(const json& body, const std::string& clie
 void TexturePreviews::stop_all() {
   std::lock_guard lock(mutex_);
   stopping_ = true;
-  for (auto& [client, entry] : entries_) entry->stop = true;
+  entries_.for_each([](Entry& entry) { entry.stop = true; });
 }
 
 }  // namespace ifsfx::app

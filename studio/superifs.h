@@ -11,7 +11,6 @@
 
 #include <atomic>
 #include <cstdint>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -19,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include "studio/context.h"
+#include "studio/lru.h"
 #include "superifs/superifs_file.h"
 #include "superifs/texture.h"
 
@@ -51,13 +51,11 @@ class TexturePreviews {
     std::atomic<bool> stop{false};
     std::mutex build;  // one burn-in per entry
     std::unique_ptr<TextureSequence> sequence;
-    std::uint64_t used = 0;
   };
   static constexpr std::size_t kMaxTabs = 8;
 
   std::mutex mutex_;
-  std::map<std::string, std::shared_ptr<Entry>> entries_;  // by tab
-  std::uint64_t clock_ = 0;
+  LruSlots<Entry> entries_{kMaxTabs};  // by tab
   bool stopping_ = false;
 };
 

@@ -26,22 +26,53 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// Forgets the entry of `map` used longest ago while there are more than `most`.
-template <class Map>
-void forget_oldest(Map& map, std::size_t most) {
-  while (map.size() > most) {
-    auto oldest = map.begin();
-    for (auto it = map.begin(); it != map.end(); ++it)
-      if (it->second->used < oldest->second->used) oldest = it;
-    map.erase(oldest);
-  }
-}
-
 std::string encode_jpeg(const cv::Mat& image) {
   std::vector<unsigned char> bytes;
   if (!cv::imencode(".jpg", image, bytes, {cv::IMWRITE_JPEG_QUALITY, 90}))
     throw Error(ErrorKind::io, "preview: cannot encode the frame as JPEG");
   return {bytes.begin(), bytes.end()};
+}
+
+// The frame's size scaled to body["width"] (default 640) at most, the aspect kept.
+cv::Size preview_size(const json& body, const cv::Mat& frame) {
+  const int width = static_cast<int>(integer_field(body, "width", 640, 16, 1920));
+  if (frame.cols <= width) return frame.size();
+  return {width, std::max(1, static_cast<int>(std::lround(1.0 * frame.rows * width / frame.cols)))};
+}
+
+// The settings of `ifsfx filter` (run/fractal_filter_options.h) that the page sets, and what
+// tells one look from another (the texts of the presets and the view).
+struct FilterSettings {
+  engine::FractalSettings engine;
+  double mix = 0;
+  engine::Background background;
+  std::string preset_text, colouring_text, view_text;
+};
+
+FilterSettings filter_settings(const json& body) {
+  FilterSettings out;
+  const IfsPreset preset = preset_from_json(body);
+  // The editor's colouring IFS G, when it sends one (steal mode), fitted as `--colouring` is.
+  const std::optional<IfsPreset> colouring = colouring_preset(body, preset.ifs.name + "-colouring");
+  engine::FractalSettings& s = out.engine;
+  s.drawing = preset.ifs;
+  s.colouring = colouring_from_json(body, preset.ifs);  // the count checked
+  s.exact = bool_field(body, "exact", true);
+  out.view_text = text_field(body, "view", "");
+  s.sampling.view = view_option(out.view_text, "view");
+  s.animate = choice_field(body, "animate", "none", {"none", "drift"}) == "drift"
+                  ? engine::Animate::drift
+                  : engine::Animate::none;
+  s.drift_amount = number_field(body, "drift_amount", s.drift_amount, 0, engine::kMaxDriftAmount);
+  s.drift_speed = number_field(body, "drift_speed", s.drift_speed, 0, engine::kMaxDriftSpeed);
+  s.keyframe_interval = static_cast<int>(integer_field(
+      body, "keyframe_interval", s.keyframe_interval, 1, engine::kMaxKeyframeInterval));
+  s.sampling.seed = static_cast<std::uint64_t>(integer_field(body, "seed", 1, 0, 1LL << 53));
+  out.mix = number_field(body, "mix", 0, 0, 1);
+  out.background = engine::parse_background(text_field(body, "background", "black"), "background");
+  out.preset_text = preset.text;
+  if (colouring) out.colouring_text = colouring->text;
+  return out;
 }
 
 }  // namespace
@@ -66,18 +97,16 @@ cv::Mat MovieFrames::frame(const std::string& client, const fs::path& movie, std
   // Reading on costs a frame's decoding per frame skipped; a seek costs about a keyframe
   // interval's, which most movies keep under a few dozen frames.
   constexpr std::int64_t kReadOn = 48;
-  std::unique_ptr<Cursor> cursor;
+  std::shared_ptr<Cursor> cursor;
   {
     std::lock_guard lock(mutex_);
-    if (auto it = cursors_.find(client); it != cursors_.end()) {
-      Cursor& c = *it->second;
-      if (c.movie == movie && index >= c.next && index - c.next <= kReadOn)
-        cursor = std::move(it->second);
-      cursors_.erase(it);
-    }
+    cursor = cursors_.take(client);
+    if (cursor &&
+        !(cursor->movie == movie && index >= cursor->next && index - cursor->next <= kReadOn))
+      cursor.reset();
   }
   if (!cursor) {
-    cursor = std::make_unique<Cursor>();
+    cursor = std::make_shared<Cursor>();
     cursor->movie = movie;
     cursor->source = std::make_unique<video::FileSource>(movie, video::FileSourceOptions{});
     if (!cursor->source->seek(index)) throw beyond();
@@ -90,89 +119,35 @@ cv::Mat MovieFrames::frame(const std::string& client, const fs::path& movie, std
   cursor->next = index + 1;
   fps = cursor->source->frame_rate().value();
   std::lock_guard lock(mutex_);
-  cursor->used = ++clock_;
-  cursors_[client] = std::move(cursor);
-  forget_oldest(cursors_, kMaxTabs);
+  cursors_.put(client, std::move(cursor));  // a tab forgotten to make room closes its movie
   return std::move(frame->image);
 }
 
 std::string FilterPreviews::jpeg(const std::string& channel, const json& body, const cv::Mat& frame,
                                  std::int64_t index, double seconds, double fps) {
-  const int width = static_cast<int>(integer_field(body, "width", 640, 16, 1920));
-  cv::Size size = frame.size();
-  if (size.width > width)
-    size = {width,
-            std::max(1, static_cast<int>(std::lround(1.0 * frame.rows * width / frame.cols)))};
+  const cv::Size size = preview_size(body, frame);
   if (!bool_field(body, "filter", true)) {
     cv::Mat scaled;
     cv::resize(frame, scaled, size, 0, 0, cv::INTER_AREA);
     return encode_jpeg(scaled);
   }
-  // The settings of `ifsfx filter` (run/fractal_filter_options.h) that the page sets.
-  const IfsPreset preset = preset_from_json(body);
-  // The editor's colouring IFS G, when it sends one (steal mode), fitted as `--colouring` is.
-  const std::optional<IfsPreset> colouring = colouring_preset(body, preset.ifs.name + "-colouring");
-  engine::FractalSettings s;
-  s.drawing = preset.ifs;
-  s.colouring = colouring_from_json(body, preset.ifs);  // the count checked
-  s.exact = bool_field(body, "exact", true);
-  s.sampling.view = view_option(text_field(body, "view", ""), "view");
-  s.animate = choice_field(body, "animate", "none", {"none", "drift"}) == "drift"
-                  ? engine::Animate::drift
-                  : engine::Animate::none;
-  s.drift_amount = number_field(body, "drift_amount", s.drift_amount, 0, engine::kMaxDriftAmount);
-  s.drift_speed = number_field(body, "drift_speed", s.drift_speed, 0, engine::kMaxDriftSpeed);
-  s.keyframe_interval = static_cast<int>(integer_field(
-      body, "keyframe_interval", s.keyframe_interval, 1, engine::kMaxKeyframeInterval));
-  s.sampling.seed = static_cast<std::uint64_t>(integer_field(body, "seed", 1, 0, 1LL << 53));
-  const double mix = number_field(body, "mix", 0, 0, 1);
-  const engine::Background background =
-      engine::parse_background(text_field(body, "background", "black"), "background");
-  const std::string key = json{channel,
-                               preset.text,
-                               colouring ? colouring->text : std::string(),
-                               s.exact,
-                               text_field(body, "view", ""),
-                               static_cast<int>(s.animate),
-                               s.drift_amount,
-                               s.drift_speed,
-                               s.keyframe_interval,
-                               s.sampling.seed,
-                               frame.cols,
-                               frame.rows,
-                               size.width,
-                               size.height,
-                               fps}
+  FilterSettings s = filter_settings(body);
+  const engine::FractalSettings& e = s.engine;
+  const std::string key = json{channel,         s.preset_text, s.colouring_text,
+                               e.exact,         s.view_text,   static_cast<int>(e.animate),
+                               e.drift_amount,  e.drift_speed, e.keyframe_interval,
+                               e.sampling.seed, frame.cols,    frame.rows,
+                               size.width,      size.height,   fps}
                               .dump();
-
-  std::shared_ptr<Entry> entry;
-  {
-    std::lock_guard lock(mutex_);
-    if (stopping_) throw Error(ErrorKind::interrupted, "preview: the server is stopping");
-    auto& slot = entries_[channel];
-    if (!slot || slot->key != key) {
-      if (slot) slot->stop = true;  // its maps in flight stop (409)
-      slot = std::make_shared<Entry>();
-      slot->key = key;
-    }
-    slot->used = ++clock_;
-    entry = slot;
-    while (entries_.size() > kMaxEntries) {  // forget the one used longest ago
-      auto oldest = entries_.begin();
-      for (auto it = entries_.begin(); it != entries_.end(); ++it)
-        if (it->second->used < oldest->second->used) oldest = it;
-      oldest->second->stop = true;
-      entries_.erase(oldest);
-    }
-  }
+  const std::shared_ptr<Entry> entry = this->entry(channel, key);
   std::lock_guard use(entry->use);
   if (!entry->engine) {
-    s.sampling.cancel = CancelToken(&entry->stop);
-    auto engine = std::make_unique<engine::FractalEngine>(s);
+    s.engine.sampling.cancel = CancelToken(&entry->stop);
+    auto engine = std::make_unique<engine::FractalEngine>(s.engine);
     engine->prepare(frame.size(), size, fps > 0 ? fps : 25);
     entry->engine = std::move(engine);
   }
-  entry->engine->set_look(mix, background);
+  entry->engine->set_look(s.mix, s.background);
   cv::Mat out;
   if (seconds >= 0)
     entry->engine->filter_at(frame, seconds, out);
@@ -181,10 +156,17 @@ std::string FilterPreviews::jpeg(const std::string& channel, const json& body, c
   return encode_jpeg(out);
 }
 
+std::shared_ptr<FilterPreviews::Entry> FilterPreviews::entry(const std::string& channel,
+                                                             const std::string& key) {
+  std::lock_guard lock(mutex_);
+  if (stopping_) throw Error(ErrorKind::interrupted, "preview: the server is stopping");
+  return entry_for(entries_, channel, key);
+}
+
 void FilterPreviews::stop_all() {
   std::lock_guard lock(mutex_);
   stopping_ = true;
-  for (auto& [channel, entry] : entries_) entry->stop = true;
+  entries_.for_each([](Entry& entry) { entry.stop = true; });
 }
 
 cv::Mat CameraFeed::frame(double& seconds) {

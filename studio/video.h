@@ -15,7 +15,6 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
-#include <map>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -25,6 +24,7 @@
 
 #include "engine/fractal_engine.h"
 #include "studio/context.h"
+#include "studio/lru.h"
 #include "video/file_source.h"
 #include "video/v4l2_capture.h"
 
@@ -48,12 +48,10 @@ class MovieFrames {
     std::filesystem::path movie;
     std::int64_t next = 0;
     std::unique_ptr<video::FileSource> source;
-    std::uint64_t used = 0;
   };
   static constexpr std::size_t kMaxTabs = 8;
   std::mutex mutex_;
-  std::map<std::string, std::unique_ptr<Cursor>> cursors_;  // by tab; out while in use
-  std::uint64_t clock_ = 0;
+  LruSlots<Cursor> cursors_{kMaxTabs};  // by tab; out while in use
 };
 
 // The fractal filter for previews, per tab and channel (movie, camera): the engine of the
@@ -75,12 +73,13 @@ class FilterPreviews {
     std::atomic<bool> stop{false};
     std::mutex use;  // an engine serves one frame at a time
     std::unique_ptr<engine::FractalEngine> engine;
-    std::uint64_t used = 0;
   };
+  // The kept entry of `channel` for `key`, or a new one; Error{interrupted} once stopping.
+  std::shared_ptr<Entry> entry(const std::string& channel, const std::string& key);
+
   static constexpr std::size_t kMaxEntries = 8;
   std::mutex mutex_;
-  std::map<std::string, std::shared_ptr<Entry>> entries_;  // by channel and tab
-  std::uint64_t clock_ = 0;
+  LruSlots<Entry> entries_{kMaxEntries};  // by channel and tab
   bool stopping_ = false;
 };
 

@@ -9,6 +9,7 @@ import { $, getJson, postJson, status, token } from './api.js';
 import { listPresets, listSources, uploadImage } from './folder.js';
 import { defaultProbabilities, flipped, frameOf, middleMap, shifted } from './geometry.js';
 import { LiveRenderer } from './live.js';
+import { session } from './panels.js';
 import { canvasPoint, dragged, drawMaps, handleClientPoint, hitHandle } from './overlay.js';
 import { SourcePanel } from './source.js';
 import { renderColouringTable, renderMapsTable, updateRow } from './table.js';
@@ -445,8 +446,10 @@ function modeChanged() {
 
 async function start() {
   if (!token) { status('open the URL that `ifsfx studio` printed: it carries the token', true); return; }
-  const initial = await getJson('/api/preset');
-  await Promise.all([listPresets(initial.name), listSources()]);
+  const [initial, s] = await Promise.all([getJson('/api/preset'), session()]);
+  // An image given as --source is the source selected, not the sample.
+  const given = s.source && s.source.kind === 'image' ? s.source.name : undefined;
+  await Promise.all([listPresets(initial.name), listSources(given)]);
   $('preset').onchange = openSelected;
   $('mode').onchange = modeChanged;
   $('source').onchange = () => { showSource(); renderer.changed(); };

@@ -8,8 +8,10 @@
 //   reason); an image dropped on the page becomes the source; a piece of the colouring IFS dragged
 //   on the source changes the picture and is saved as NAME.colouring.toml; an IFS that does not
 //   contract shows the server's error in the page; two tabs edit at once without disturbing each
-//   other. Screenshots are kept in WORK (studio.png, studio-zoomed.png, studio-measure.png,
-//   studio-steal.png). The drag-to-pixels latency is bench/studio_latency.mjs's, not measured here.
+//   other; `--source IMAGE` (relative, found in --folder) is the source selected at start.
+//   Screenshots are kept in WORK (studio.png, studio-zoomed.png, studio-measure.png,
+//   studio-steal.png, studio-source.png). The drag-to-pixels latency is bench/studio_latency.mjs's,
+//   not measured here.
 // Usage: node studio_browser_test.mjs IFSFX WORK NODE_MODULES
 import { spawn, execFileSync } from 'node:child_process';
 import { existsSync, mkdirSync, rmSync, readFileSync, writeFileSync } from 'node:fs';
@@ -44,18 +46,23 @@ triangle {
 let failures = 0;
 const check = (ok, what) => { console.log(`${ok ? 'ok' : 'FAIL'}: ${what}`); if (!ok) failures++; };
 
-const server = spawn(ifsfx, ['studio', 'barnsley-fern', '--folder', folder],
-                     { stdio: ['ignore', 'pipe', 'inherit'], env: { ...process.env, TMPDIR: work } });
-const url = await new Promise((resolve, reject) => {
-  let out = '';
-  server.stdout.on('data', (d) => {
-    out += d;
-    const m = out.match(/^ifsfx studio: (\S+)$/m);
-    if (m) resolve(m[1]);
+// `ifsfx studio ARGS...` started in WORK, and the URL it prints.
+async function startStudio(args) {
+  const server = spawn(ifsfx, ['studio', ...args],
+                       { cwd: work, stdio: ['ignore', 'pipe', 'inherit'], env: { ...process.env, TMPDIR: work } });
+  const url = await new Promise((resolve, reject) => {
+    let out = '';
+    server.stdout.on('data', (d) => {
+      out += d;
+      const m = out.match(/^ifsfx studio: (\S+)$/m);
+      if (m) resolve(m[1]);
+    });
+    server.on('exit', (code) => reject(new Error(`ifsfx studio exited with ${code}`)));
+    setTimeout(() => reject(new Error('no URL in 10 s')), 10000);
   });
-  server.on('exit', (code) => reject(new Error(`ifsfx studio exited with ${code}`)));
-  setTimeout(() => reject(new Error('no URL in 10 s')), 10000);
-});
+  return { server, url };
+}
+const { server, url } = await startStudio(['barnsley-fern', '--folder', folder]);
 
 const browser = await launcher.launch({ executablePath: chromium, headless: true,
                                         args: ['--no-sandbox', '--disable-gpu'] });
@@ -295,6 +302,25 @@ try {
         `two tabs keep their own documents (map 3's e: ${s1.maps[2][4].toFixed(3)}, ${s2.maps[2][4].toFixed(3)})`);
   check(await other.evaluate(() => window.studio.errors === 0), 'the second tab saw no error');
   await other.close();
+
+  // `--source IMAGE`, a relative name found in --folder (not in the current folder): the page
+  // opens with it selected, and steal mode shows it, not the sample (issue 30).
+  execFileSync(ifsfx, ['render', 'barnsley-fern', '--size', '100x80', '-q', '-o', path.join(folder, 'butterfly.png')]);
+  const given = await startStudio(['barnsley-fern', '--source', 'butterfly.png', '--folder', folder]);
+  const third = await browser.newPage({ viewport: { width: 1400, height: 900 } });
+  third.on('pageerror', (e) => check(false, `--source tab: page error: ${e.message}`));
+  await third.goto(given.url);
+  await settled(third);
+  check(await third.evaluate(() => document.getElementById('source').value) === '@source',
+        '--source IMAGE is the source selected when the page opens');
+  await third.selectOption('#mode', 'steal');
+  await third.waitForFunction(() => document.getElementById('source-size').textContent.startsWith('100x80'),
+                              null, { timeout: 30000 });
+  check(true, 'steal mode shows the --source image (100x80), not the sample');
+  await settled(third);
+  await third.screenshot({ path: path.join(work, 'studio-source.png') });
+  await third.close();
+  given.server.kill('SIGINT');
 } finally {
   await browser.close();
   server.kill('SIGINT');

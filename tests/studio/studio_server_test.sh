@@ -7,7 +7,7 @@
 # Fractint entries (unusable ones with their reason), sources, uploads, a newer render cancelling
 # the one in flight of the same tab only, and SIGINT/SIGTERM stopping it within
 # IFSFX_STOP_BOUND_MS (default 500) with exit 130/143 and no temporary file left, also with a
-# connection held open (HTTP keep-alive).
+# connection held open (HTTP keep-alive); a relative --source found in --folder.
 # Usage: studio_server_test.sh IFSFX WORKDIR
 set -uo pipefail
 # shellcheck source=studio_start.sh
@@ -321,6 +321,20 @@ kill -INT "$pid"; wait "$pid"
 out=$("$ifsfx" studio --listen example.com --folder "$work/folder" 2>&1); rc=$?
 [[ $rc == 2 && $out == "ifsfx: --listen: must be an IPv4 or IPv6 address"* ]] && pass "--listen NAME: refused ($out)" ||
   fail "--listen NAME: exit $rc ($out)"
+
+# --source: a relative name not in the current folder is found in --folder, and is the session's
+# image (the page selects it); in neither place, the error names both places looked in
+start_studio barnsley-fern --source photo.png
+c=$(code GET /api/session "${auth[@]}")
+[[ $c == 200 && $(json "d['source']['kind'] + ' ' + d['source']['file']") == "image photo.png" ]] &&
+  pass "--source photo.png, in --folder: the session's image" || fail "--source in --folder: $c $(cat "$work/body")"
+c=$(code GET /api/sources "${auth[@]}"); [[ $(json "d[1]") == @source ]] && pass "--source: @source among the sources" || fail "--source sources: $(cat "$work/body")"
+kill -INT "$pid"; wait "$pid"
+here=$(pwd -P)
+out=$(TMPDIR="$work/tmp" "$ifsfx" studio --source nowhere.png --folder "$work/folder" 2>&1); rc=$?
+[[ $rc != 0 && $out == *"--source nowhere.png: no such file (looked for $here/nowhere.png and $here/folder/nowhere.png)"* ]] &&
+  pass "--source in neither place: exit $rc ($out)" || fail "--source nowhere: exit $rc ($out)"
+[[ -z $(ls -A "$work/tmp") ]] || fail "--source nowhere: left $(ls -A "$work/tmp")"
 
 ((failures == 0)) || { echo "$failures failure(s)"; exit 1; }
 echo "all passed"
