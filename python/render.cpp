@@ -13,12 +13,12 @@
 #include "ifs/steal_map.h"
 #include "ifs/steal_picture.h"
 #include "ifs/tops.h"
-#include "run/render_modes.h"
-#include "run/render_still.h"
 #include "python/arrays.h"
 #include "python/errors.h"
 #include "python/options.h"
 #include "python/presets.h"
+#include "run/render_modes.h"
+#include "run/render_still.h"
 
 namespace ifsfx::python {
 namespace {
@@ -76,16 +76,19 @@ cv::Mat source_arg(const py::handle& source, py::object& keep, const std::string
 void bind_render(py::module_& m) {
   const RenderOptions defaults;
   const Sampling sampled;
+  const app::StillJob job{};  // the still's defaults, as the command's
   m.def(
-      "render", &render, py::arg("preset"), py::kw_only(), py::arg("mode") = "measure",
-      py::arg("size") = py::make_tuple(1024, 1024), py::arg("view") = py::none(),
-      py::arg("margin") = sampled.margin, py::arg("quality") = sampled.quality,
-      py::arg("supersample") = defaults.supersample, py::arg("gamma") = defaults.gamma,
-      py::arg("brightness") = defaults.brightness, py::arg("seed") = sampled.seed,
-      py::arg("threads") = sampled.threads, py::arg("exact") = TopsOptions{}.exact,
-      py::arg("second_symbol") = false, py::arg("source") = py::none(),
-      py::arg("colouring") = py::none(), py::arg("background") = "black", py::arg("alpha") = true,
-      py::arg("dtype") = "uint8", py::arg("allow_expansive") = false, py::arg("rgb") = false,
+      "render", &render, py::arg("preset"), py::kw_only(),
+      py::arg("mode") = app::to_string(job.mode),
+      py::arg("size") = py::make_tuple(job.size.width, job.size.height),
+      py::arg("view") = py::none(), py::arg("margin") = sampled.margin,
+      py::arg("quality") = sampled.quality, py::arg("supersample") = defaults.supersample,
+      py::arg("gamma") = defaults.gamma, py::arg("brightness") = defaults.brightness,
+      py::arg("seed") = sampled.seed, py::arg("threads") = sampled.threads,
+      py::arg("exact") = job.exact, py::arg("second_symbol") = job.second_symbol,
+      py::arg("source") = py::none(), py::arg("colouring") = py::none(),
+      py::arg("background") = "black", py::arg("alpha") = job.alpha, py::arg("dtype") = "uint8",
+      py::arg("allow_expansive") = false, py::arg("rgb") = false,
       R"doc(An IFS rendered as `ifsfx render PRESET -o OUT.png` renders it, as an array equal to the PNG's
 pixels (BGR order, like cv2). The GIL is released while it works; Ctrl-C stops it
 (KeyboardInterrupt).

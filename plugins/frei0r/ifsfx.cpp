@@ -18,6 +18,7 @@
 #include <fmt/format.h>
 #include <opencv2/core.hpp>
 
+#include "engine/fractal_engine.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "ifs/view.h"
@@ -25,7 +26,6 @@
 #include "plugins/frei0r/host_clock.h"
 #include "plugins/frei0r/params.h"
 #include "superifs/texture.h"
-#include "engine/fractal_engine.h"
 
 namespace ifsfx::frei0r {
 namespace {
@@ -37,7 +37,7 @@ enum Param { preset, colouring, mix, background, exact, drift, speed, seed, view
 constexpr ParamInfo table[] = {
     {"preset", ParamType::text,
      "The drawing IFS F: a shipped name (see `ifsfx presets`), a .toml/.ifs path or FILE.ifs:NAME",
-     0, "barnsley-fern"},
+     0, engine::kDefaultPreset},
     {"colouring", ParamType::text,
      "The colouring IFS G on the frame, with as many maps as F (empty: a tiling of the frame)"},
     {"mix", ParamType::number, "Weight of the original frame blended over the fractal, 0..1", 0},
@@ -47,7 +47,8 @@ constexpr ParamInfo table[] = {
      "Tops by the exact per-pixel descent (default: faster, no noise); off: the chaos game", 1},
     {"drift", ParamType::number,
      "Animation: how far the map coefficients wander by fBm noise, 0..1 (0: one fixed map)", 0},
-    {"speed", ParamType::number, "Animation: cycles per second of the slowest drift", 0.2},
+    {"speed", ParamType::number, "Animation: cycles per second of the slowest drift",
+     engine::kDefaultDriftSpeed},
     {"seed", ParamType::number, "Random seed, a whole number: the same seed gives the same frames",
      1},
     {"view", ParamType::text,
@@ -206,7 +207,8 @@ class FilterInstance {
       if (next && !same_maps(prefetch_settings_, s)) next.reset();
     }
     try {
-      if (!next) next = std::make_unique<engine::FractalEngine>(s, size_, size_, nominal_frame_rate);
+      if (!next)
+        next = std::make_unique<engine::FractalEngine>(s, size_, size_, nominal_frame_rate);
       next->set_look(s.mix, s.background);
     } catch (const std::exception& e) {
       failed_.emplace(s, e.what());
