@@ -12,12 +12,12 @@
 
 #include <benchmark/benchmark.h>
 
+#include "engine/camera_drift.h"
+#include "engine/fractal_filter.h"
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"
-#include "engine/camera_drift.h"
 #include "video/camera_pipeline.h"
 #include "video/camera_synthetic.h"
-#include "engine/fractal_filter.h"
 
 namespace {
 

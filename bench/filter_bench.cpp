@@ -11,12 +11,12 @@
 #include <benchmark/benchmark.h>
 #include <opencv2/core.hpp>
 
-#include "ifs/preset.h"
-#include "ifs/steal_map.h"
-#include "ifs/view.h"
 #include "engine/drift.h"
 #include "engine/fractal_filter.h"
 #include "engine/map_schedule.h"
+#include "ifs/preset.h"
+#include "ifs/steal_map.h"
+#include "ifs/view.h"
 
 namespace {
 

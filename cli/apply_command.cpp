@@ -9,11 +9,11 @@
 
 #include "cli/cli_options.h"
 #include "cli/commands.h"
-#include "ifs/steal_picture.h"
-#include "run/picture_options.h"
 #include "cli/stop_signals.h"
 #include "ifs/image_io.h"
 #include "ifs/steal_map.h"
+#include "ifs/steal_picture.h"
+#include "run/picture_options.h"
 
 namespace ifsfx::app {
 namespace {

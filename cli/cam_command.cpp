@@ -16,11 +16,11 @@
 #include "cli/cam_recording.h"
 #include "cli/cam_window.h"
 #include "cli/cli_options.h"
-#include "cli/option_groups.h"
 #include "cli/commands.h"
-#include "run/fractal_filter_options.h"
+#include "cli/option_groups.h"
 #include "cli/stop_signals.h"
 #include "ifs/error.h"
+#include "run/fractal_filter_options.h"
 #include "video/camera_pipeline.h"
 #include "video/file_sink.h"
 #include "video/image_sequence.h"
@@ -112,7 +112,8 @@ std::string default_device() {
 std::string check_cam_args(const CamArgs& args, bool window) {
   video::check_output_name(args.record, "--record");
   if (!args.record.empty()) video::resolve_encoder(args.record, args.codec);
-  engine::check_filter_options({.mix = args.fractal.settings().mix});  // --view, --background, --mix
+  engine::check_filter_options(
+      {.mix = args.fractal.settings().mix});  // --view, --background, --mix
   try {
     video::sequence_path(args.snapshot, 1);
   } catch (const Error& e) {

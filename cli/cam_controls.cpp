@@ -48,9 +48,8 @@ CamControls::CamControls(const CamControlsSetup& setup, CamRecording& recording,
     : setup_(setup),
       recording_(recording),
       notice_(notice),
-      filter_(std::make_unique<LiveFilter>(*setup.fractal, setup.fade_frames,
-                                           setup.fractal->preset, setup.size, setup.animate,
-                                           setup.fps)),
+      filter_(std::make_unique<LiveFilter>(*setup.fractal, setup.fade_frames, setup.fractal->preset,
+                                           setup.size, setup.animate, setup.fps)),
       animate_(setup.animate),
       presets_(cycle_presets()) {
   for (std::size_t i = 0; i < presets_.size(); ++i) {

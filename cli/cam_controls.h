@@ -15,8 +15,8 @@
 #include <opencv2/core.hpp>
 
 #include "cli/cam_recording.h"
-#include "run/fractal_filter_options.h"
 #include "cli/live_filter.h"
+#include "run/fractal_filter_options.h"
 
 namespace ifsfx::app {
 

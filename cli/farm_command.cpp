@@ -13,11 +13,10 @@
 #include <fmt/format.h>
 
 #include "cli/cli_options.h"
-#include "cli/option_groups.h"
 #include "cli/commands.h"
-#include "run/filter_options.h"
+#include "cli/option_groups.h"
 #include "cli/stop_signals.h"
-#include "run/texture_options.h"
+#include "engine/fractal_engine.h"
 #include "farm/farm_job.h"
 #include "farm/segment_join.h"
 #include "farm/shard_plan.h"
@@ -25,10 +24,11 @@
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
+#include "run/filter_options.h"
+#include "run/texture_options.h"
 #include "superifs/superifs_file.h"
 #include "video/file_sink.h"
 #include "video/file_source.h"
-#include "engine/fractal_engine.h"
 #include "video/image_sequence.h"
 #include "video/pipeline.h"
 

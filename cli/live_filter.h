@@ -10,9 +10,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "run/fractal_filter_options.h"
 #include "engine/camera_drift.h"
 #include "engine/fractal_engine.h"
+#include "run/fractal_filter_options.h"
 #include "video/frame_io.h"
 
 namespace ifsfx::app {

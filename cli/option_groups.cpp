@@ -191,19 +191,4 @@ void add_texture_options(CLI::App& cmd, const std::shared_ptr<TextureArgs>& args
                  "VP9, .gif GIF, .webp animated WebP; ffv1 in .mkv is lossless)");
 }
 
-void add_seamless_options(CLI::App& cmd, SeamlessArgs& args) {
-  cmd.add_flag("--seamless", args.seamless,
-               "The picture is one period of a doubly periodic texture, which tiles with no "
-               "seam: the maps act on the torus of the tile (the view), each followed by the "
-               "wrap back into it");
-  cmd.add_option("--tiles", args.tiles,
-                 "With --seamless: show KxL periods (the picture is K·W x L·H, the tile "
-                 "repeated)")
-      ->default_str("1x1");
-  cmd.add_option("--tile-offset", args.offset,
-                 "With --seamless: where the picture starts in the period, X,Y as fractions of "
-                 "the tile (right, down), rounded to whole pixels; default: the preset's offset, "
-                 "else 0,0");
-}
-
 }  // namespace ifsfx::app

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "cli/commands.h"
+#include "flame/flame_file.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "superifs/superifs_file.h"
@@ -37,6 +38,24 @@ std::string preset_lines(const std::vector<PresetSummary>& presets) {
   return out;
 }
 
+// One line per flame of a flame file: how to pick it (FILE:NAME, or FILE:INDEX for a flame
+// without a name), its xforms, or why it cannot be rendered.
+std::string flame_lines(const std::string& file) {
+  const std::vector<flame::FlameEntry> flames = flame::list_flames(file);
+  const auto pick = [&](const flame::FlameEntry& f) {
+    return fmt::format("{}:{}", file, f.name.empty() ? std::to_string(f.index) : f.name);
+  };
+  std::size_t width = 0;
+  for (const auto& f : flames) width = std::max(width, pick(f).size());
+  std::string out;
+  for (const auto& f : flames)
+    out += f.problem.empty()
+               ? fmt::format("{:<{}}  {:>2} xforms{}\n", pick(f), width, f.xforms,
+                             f.name.empty() ? "" : fmt::format("  (or {}:{})", file, f.index))
+               : fmt::format("{:<{}}  not usable: {}\n", pick(f), width, f.problem);
+  return out;
+}
+
 }  // namespace
 
 void add_presets_command(CLI::App& app) {
@@ -52,13 +71,15 @@ void add_presets_command(CLI::App& app) {
                 "`ifsfx filter --animate superifs`) instead");
   cmd->add_option("file", *files,
                   "List the presets of these files instead: every entry of a Fractint .ifs file "
-                  "(render one as FILE.ifs:NAME), with why an entry cannot be used, or the "
-                  "preset of a .toml file");
+                  "(render one as FILE.ifs:NAME), every flame of a .flame file (FILE.flame:NAME "
+                  "or FILE.flame:INDEX), with why an entry cannot be used, or the preset of a "
+                  ".toml file");
   cmd->callback([super, files] {
     if (!files->empty()) {
       if (*super) throw Error(ErrorKind::invalid_argument, "--super: lists shipped presets only");
       std::string out;
-      for (const auto& file : *files) out += preset_lines(list_presets_in(file));
+      for (const auto& file : *files)
+        out += flame::is_flame_spec(file) ? flame_lines(file) : preset_lines(list_presets_in(file));
       std::fputs(out.c_str(), stdout);
       return;
     }

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // `ifsfx render PRESET -o OUT`: an IFS rendered to a still image by the chaos game.
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
@@ -11,6 +14,9 @@
 #include "cli/commands.h"
 #include "cli/option_groups.h"
 #include "cli/stop_signals.h"
+#include "flame/flame_file.h"
+#include "flame/flame_write.h"
+#include "flame/render.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
@@ -43,10 +49,17 @@ struct RenderArgs {
   bool map_method_given = false;  // either was on the command line
   bool second_symbol = false;
   std::string save_map;
+  std::string save_flame;  // also write the IFS as a flame file (flame/flame_write.h)
   std::string background;
   // --seamless, --tiles, --tile-offset (run/seamless_options.h)
   SeamlessArgs tiles;
   bool margin_given = false;  // --margin was on the command line
+  // The flags given on the command line that a flame takes from its file instead (a flame's
+  // size and quality are its own unless given).
+  std::vector<std::string> given;
+  bool was_given(const std::string& flag) const {
+    return std::find(given.begin(), given.end(), flag) != given.end();
+  }
 };
 
 // The tops/steal options are refused in the modes that would ignore them (run/render_modes.h).
@@ -69,13 +82,19 @@ OutputOptions checked_outputs(const RenderArgs& args) {
   add_preset_input(output.inputs, args.colouring);
   output.inputs.add(args.source);
   check_writable_image(args.output, output, args.bits);
-  if (!args.save_map.empty()) {
-    check_output(args.save_map, output);
-    if (same_output(args.save_map, args.output))
-      throw Error(
-          ErrorKind::invalid_argument,
-          fmt::format("--save-map {}: must differ from -o (got the same file)", args.save_map));
+  for (const auto& [flag, path] :
+       {std::pair{"--save-map", &args.save_map}, std::pair{"--save-flame", &args.save_flame}}) {
+    if (path->empty()) continue;
+    check_output(*path, output);
+    if (same_output(*path, args.output))
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("{} {}: must differ from -o (got the same file)", flag, *path));
   }
+  if (!args.save_map.empty() && !args.save_flame.empty() &&
+      same_output(args.save_map, args.save_flame))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--save-flame {}: must differ from --save-map (got the same file)",
+                            args.save_flame));
   return output;
 }
 
@@ -153,6 +172,16 @@ void run_render(const RenderArgs& args) {
 
   std::vector<OutputFile> staged;  // put in place together at the end (the image, the map)
   const StillResult still = render_picture(preset.ifs, size, args, options, layout, output, staged);
+  if (!args.save_flame.empty()) {
+    // The IFS as a flame drawing this measure, framed as this picture (flame_from_ifs).
+    OutputFile file(args.save_flame, output);
+    write_file(file,
+               flame::flame_xml(flame::flame_from_ifs(preset.ifs, {.size = size,
+                                                                   .sampling = options.sampling,
+                                                                   .brightness = options.brightness,
+                                                                   .gamma = options.gamma})));
+    staged.push_back(std::move(file));
+  }
   const cv::Mat& image = still.image;
   const RenderStats& stats = still.stats;
   auto metadata = render_metadata(preset, to_string(args.mode), options.sampling.seed, stats.view);
@@ -164,6 +193,55 @@ void run_render(const RenderArgs& args) {
   staged.push_back(std::move(image_file));
   commit_together(staged);
   if (!args.quiet) print_summary(preset.ifs.name, image.size(), args, stats);
+}
+
+// `ifsfx render FILE.flame[:NAME] -o OUT`: the flame as flam3 renders it (flame/render.h), at
+// its own size and quality unless --size and --quality are given.
+void run_flame_render(const RenderArgs& args) {
+  check_flame_mode(args.mode, "--mode");
+  for (const char* flag : {"--view", "--margin", "--supersample", "--gamma", "--brightness",
+                           "--seamless", "--tiles", "--tile-offset", "--allow-expansive"})
+    if (args.was_given(flag))
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("{}: a flame brings its own (got {})", flag, args.preset));
+  StopSignals signals;
+  const OutputOptions output = checked_outputs(args);
+  const flame::Flame f = flame::read_flame(args.preset);
+  flame::FlameRenderOptions options{.seed = args.options.sampling.seed,
+                                    .threads = args.options.sampling.threads,
+                                    .cancel = output.cancel,
+                                    .channels = format_has_alpha(args.output) ? 4 : 3};
+  if (args.was_given("--size")) options.size = size_option(args.size);
+  if (args.was_given("--quality")) options.quality = args.options.sampling.quality;
+  std::string ext = std::filesystem::path(args.output).extension().string();
+  for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  options.depth = ext == ".exr" ? CV_32F : args.bits == 16 ? CV_16U : CV_8U;
+  flame::FlameRenderStats stats;
+  const cv::Mat image = flame::render_flame(f, options, &stats);
+  std::vector<OutputFile> staged;
+  if (!args.save_flame.empty()) {
+    OutputFile file(args.save_flame, output);
+    write_file(file, flame::flame_xml(f));
+    staged.push_back(std::move(file));
+  }
+  OutputFile image_file(args.output, output);
+  write_image(image_file, image,
+              {.bits = args.bits,
+               .smallest = args.smallest,
+               .metadata = {{"ifsfx:flame", args.preset},
+                            {"ifsfx:mode", "measure"},
+                            {"ifsfx:seed", std::to_string(options.seed)},
+                            {"ImageDescription", fmt::format("ifsfx render {} --seed {}",
+                                                             args.preset, options.seed)}}});
+  staged.push_back(std::move(image_file));
+  commit_together(staged);
+  if (!args.quiet)
+    fmt::print(
+        "{} (flame, {}x{}): {:.1f} M points in {:.3f} s ({:.0f} Mpts/s), coverage {:.1f}% -> "
+        "{}\n",
+        f.name.empty() ? args.preset : f.name, image.cols, image.rows, stats.points / 1e6,
+        stats.seconds, stats.points / 1e6 / std::max(stats.seconds, 1e-9), 100 * stats.coverage,
+        args.output);
 }
 
 // --mode, its choices and one line of help for each, from the modes' table (run/render_modes.h).
@@ -180,8 +258,9 @@ void add_mode_option(CLI::App& cmd, RenderMode& mode) {
       ->option_text(choices_text(modes, "measure"));
 }
 
-// The options only some modes take (check_mode_options refuses them for the others); returns
-// --exact/--chaos, whose absence picks the mode's default.
+// The options only some modes take (check_mode_options refuses them for the others), and
+// --save-flame among them where the help has always listed it; returns --exact/--chaos, whose
+// absence picks the mode's default.
 CLI::Option* add_per_mode_options(CLI::App& cmd, RenderArgs& args) {
   cmd.add_option("--source", args.source,
                  "steal mode: image to steal colours from (any format OpenImageIO reads)");
@@ -198,6 +277,9 @@ CLI::Option* add_per_mode_options(CLI::App& cmd, RenderArgs& args) {
                "tops mode: mix in the colour of the second symbol of the top address");
   cmd.add_option("--save-map", args.save_map,
                  "steal mode: also save the steal map, for `ifsfx apply MAP IMAGE`");
+  cmd.add_option("--save-flame", args.save_flame,
+                 "Also write the IFS as a flame file (.flame) that flam3, Apophysis, JWildfire "
+                 "and Fractorium open, drawing its measure framed as this picture");
   cmd.add_option("--background", args.background,
                  "tops/steal modes: colour off the attractor in formats without alpha "
                  "(black, white, #rrggbb, R,G,B); PNG/TIFF/EXR get a transparent background")
@@ -212,7 +294,9 @@ void add_render_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("render", "Render an IFS preset to a still image");
   cmd->add_option(
          "preset", args->preset,
-         "Preset: a shipped name (see `ifsfx presets`), a .toml/.ifs path, or FILE.ifs:NAME")
+         "Preset: a shipped name (see `ifsfx presets`), a .toml/.ifs path, FILE.ifs:NAME, or a "
+         "flame: FILE.flame, FILE.flame:NAME or FILE.flame:INDEX (rendered as flam3 does, at "
+         "its own size and quality unless --size and --quality are given)")
       ->required();
   cmd->add_option("-o,--output", args->output,
                   "Output image; format by extension: .png (8/16-bit), .tif, .exr (float), .jpg")
@@ -256,10 +340,15 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("-q,--quiet", args->quiet, "Do not print the summary line");
   auto* map_method = add_per_mode_options(*cmd, *args);
   add_seamless_options(*cmd, args->tiles);
-  cmd->callback([args, map_method, margin] {
+  cmd->callback([args, cmd, map_method, margin] {
     args->map_method_given = map_method->count() > 0;
     args->margin_given = margin->count() > 0;
-    run_render(*args);
+    for (const CLI::Option* option : cmd->get_options())
+      if (option->count() > 0) args->given.push_back(option->get_name());
+    if (flame::is_flame_spec(args->preset))
+      run_flame_render(*args);
+    else
+      run_render(*args);
   });
 }
 

@@ -37,17 +37,17 @@
 #include "cli/cli_errors.h"
 #include "cli/commands.h"
 #include "cli/stop_signals.h"
-#include "studio/folder.h"
-#include "studio/hosts.h"
-#include "studio/http.h"
-#include "studio/render.h"
-#include "studio/routes.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
 #include "ifs/preset.h"
 #include "ifs/render.h"
 #include "ifs/steal_map.h"
+#include "studio/folder.h"
+#include "studio/hosts.h"
+#include "studio/http.h"
+#include "studio/render.h"
+#include "studio/routes.h"
 
 extern char** environ;
 

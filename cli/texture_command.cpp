@@ -10,14 +10,14 @@
 #include <fmt/format.h>
 
 #include "cli/cli_options.h"
-#include "cli/option_groups.h"
 #include "cli/commands.h"
+#include "cli/option_groups.h"
 #include "cli/stop_signals.h"
-#include "run/texture_options.h"
-#include "run/texture_run.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
+#include "run/texture_options.h"
+#include "run/texture_run.h"
 #include "superifs/superifs_file.h"
 #include "superifs/texture.h"
 #include "video/image_sequence.h"

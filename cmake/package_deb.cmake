@@ -4,6 +4,8 @@
 #   ifsfx-dev_<version>_amd64.deb  component dev: headers, static libraries, CMake package, ifsfx.pc
 #   python3-ifsfx_<version>_amd64.deb  component python: the Python module and its stubs in
 #                                  /usr/lib/python3/dist-packages (when built: IFSFX_BUILD_PYTHON)
+#   obs-ifsfx_<version>_amd64.deb  component obs: the OBS Studio filter in OBS's plugin folders
+#                                  (when built: libobs-dev installed)
 # Two packages, as Debian splits a tool from its development files: whoever wants the command
 # gets only the shared libraries it runs on (OpenCV, OpenImageIO, FFmpeg's, ...), its Depends read
 # from the binary by dpkg-shlibdeps; whoever builds against the libraries gets the -dev packages
@@ -65,6 +67,22 @@ The ifsfx engine on NumPy arrays: IFS rendering by the chaos game (attractor,
 invariant measure), fractal tops, colour stealing through steal maps and
 V-variable superfractal textures, with the results of the ifsfx command.
 Long computations release the GIL and stop on Ctrl-C.")
+endif()
+
+# The OBS Studio filter, named as Debian names OBS plugins (obs-shaderfilter, obs-move-transition):
+# its Depends (libobs0, ...) from the module by dpkg-shlibdeps, OBS itself recommended.
+if(TARGET ifsfx-obs)
+  list(APPEND CPACK_COMPONENTS_ALL obs)
+  set(CPACK_DEBIAN_OBS_PACKAGE_NAME obs-ifsfx)
+  set(CPACK_DEBIAN_OBS_PACKAGE_SECTION video)
+  set(CPACK_DEBIAN_OBS_PACKAGE_SHLIBDEPS ON)
+  set(CPACK_DEBIAN_OBS_PACKAGE_RECOMMENDS obs-studio)
+  set(CPACK_COMPONENT_OBS_DESCRIPTION
+      "fractal kaleidoscope filter for OBS Studio (ifsfx)
+The fractal filter of ifsfx inside OBS Studio: add the filter named
+ifsfx fractal to a webcam or media source and every frame is coloured
+through the steal map of an IFS (colour stealing), optionally drifting or
+stepping through a V-variable superfractal, computed off OBS's video thread.")
 endif()
 
 include(CPack)

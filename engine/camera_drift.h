@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
-// `--animate drift` for a live camera: the maps of a drifting IFS (engine/drift.h) built on a worker
-// thread that the live loop never waits for. A file filter may wait for each keyframe (its frames
-// are not going anywhere); a camera's frames are, so here the animation advances as fast as maps
-// can be built, and each new map is cross-faded in over a few frames. The frame rate stays the
+// `--animate drift` for a live camera: the maps of a drifting IFS (engine/drift.h) built on a
+// worker thread that the live loop never waits for. A file filter may wait for each keyframe (its
+// frames are not going anywhere); a camera's frames are, so here the animation advances as fast as
+// maps can be built, and each new map is cross-faded in over a few frames. The frame rate stays the
 // camera's; only the pace of the drift depends on the machine.
 #pragma once
 
@@ -10,10 +10,10 @@
 #include <future>
 #include <memory>
 
-#include "ifs/ifs.h"
-#include "ifs/steal_map.h"
 #include "engine/drift.h"
 #include "engine/fractal_filter.h"
+#include "ifs/ifs.h"
+#include "ifs/steal_map.h"
 
 namespace ifsfx::engine {
 

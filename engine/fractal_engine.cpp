@@ -7,16 +7,18 @@
 
 #include <fmt/format.h>
 
+#include "engine/drift.h"
+#include "engine/map_schedule.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "superifs/superifs_file.h"
 #include "superifs/texture.h"
-#include "engine/drift.h"
-#include "engine/map_schedule.h"
 
 namespace ifsfx::engine {
 
-Ifs default_drawing() { return load_ifs(kDefaultPreset).ifs; }
+Ifs default_drawing() {
+  return load_ifs(kDefaultPreset).ifs;
+}
 
 bool same_maps(const FractalSettings& a, const FractalSettings& b) {
   FractalSettings looks_like_b = a;

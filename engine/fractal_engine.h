@@ -23,6 +23,8 @@
 
 #include <opencv2/core.hpp>
 
+#include "engine/drift.h"
+#include "engine/fractal_filter.h"
 #include "ifs/cancel.h"
 #include "ifs/ifs.h"
 #include "ifs/sampling.h"
@@ -30,8 +32,6 @@
 #include "ifs/timeline.h"
 #include "ifs/view.h"
 #include "superifs/superifs.h"
-#include "engine/drift.h"
-#include "engine/fractal_filter.h"
 
 namespace ifsfx {
 class TextureSequence;
@@ -64,7 +64,7 @@ struct FractalSettings {
   // square (load_colouring fits a preset to it), by default a tiling (default_colouring).
   Ifs drawing = default_drawing();
   std::optional<Ifs> colouring;
-  bool exact = true;                     // per-pixel descent (faster); false: the chaos game
+  bool exact = true;  // per-pixel descent (faster); false: the chaos game
   // The plane rectangle of F shown (none: auto-framed; a superIFS brings its own), the margin,
   // the chaos game's points per pixel, the seed of the chaos game, the drift and the superIFS
   // steps, the threads (0 = all cores), and the stop flag, polled while maps are built (the steal
@@ -81,8 +81,8 @@ struct FractalSettings {
   // Animation: keyframe k shows the maps of time k · keyframe_interval / frame rate (the
   // stream's, see prepare()); the frames between two keyframes cross-fade from one to the next.
   Animate animate = Animate::none;
-  double drift_amount = kDefaultDriftAmount;     // drift: largest excursion of a coefficient
-  double drift_speed = kDefaultDriftSpeed;       // drift: cycles per second of the slowest octave
+  double drift_amount = kDefaultDriftAmount;  // drift: largest excursion of a coefficient
+  double drift_speed = kDefaultDriftSpeed;    // drift: cycles per second of the slowest octave
   int keyframe_interval = kDefaultKeyframeInterval;  // frames between rebuilt maps
   std::string superifs = "paper-fig4";  // superifs: the superIFS (its view and colouring
                                         // replace preset, colouring and view)

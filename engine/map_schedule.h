@@ -15,8 +15,8 @@
 #include <map>
 #include <memory>
 
-#include "ifs/timeline.h"
 #include "engine/fractal_filter.h"
+#include "ifs/timeline.h"
 
 namespace ifsfx::engine {
 

@@ -77,7 +77,7 @@ std::vector<Flame> parse_flames(std::string_view xml, const std::string& where,
 }
 
 FlameSpec split_flame_spec(const std::string& spec) {
-  for (std::string_view ext : {".flame:", ".flam3:", ".xml:"}) {
+  for (std::string_view ext : {".flame:", ".flam3:"}) {
     const std::size_t at = spec.rfind(ext);
     if (at != std::string::npos && at > 0)
       return {spec.substr(0, at + ext.size() - 1), spec.substr(at + ext.size())};

@@ -36,7 +36,7 @@ std::vector<Flame> parse_flames(std::string_view xml, const std::string& where,
                                 const FlameReadOptions& options = {});
 
 // "FILE.flame:NAME" split into the file and the selector (empty when there is none). Only a
-// colon after a flame file's extension (.flame, .flam3, .xml) splits.
+// colon after a flame file's extension (.flame, .flam3) splits.
 struct FlameSpec {
   std::string path;
   std::string selector;

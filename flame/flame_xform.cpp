@@ -133,7 +133,9 @@ void read_variations(const Where& at, const std::string& what, const pugi::xml_n
   std::vector<std::string> rest;
   for (const pugi::xml_attribute a : node.attributes()) {
     const std::string_view n = a.name();
-    if (known_attribute(n)) continue;
+    // JWildfire's per-variation ordering hint (NAME_fx_priority) only orders what the lists
+    // already order.
+    if (known_attribute(n) || n.ends_with("_fx_priority")) continue;
     if (std::optional<Found> f = variation_of(n)) {
       for (const Found& g : found)
         if (g.v == f->v && g.list == f->list)

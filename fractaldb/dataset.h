@@ -18,8 +18,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "ifs/cancel.h"
 #include "fractaldb/render.h"
+#include "ifs/cancel.h"
 #include "ifs/output_file.h"
 
 namespace ifsfx::fractaldb {

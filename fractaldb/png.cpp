@@ -12,8 +12,8 @@
 
 #include <fmt/format.h>
 
-#include "ifs/error.h"
 #include "fractaldb/dataset.h"
+#include "ifs/error.h"
 
 namespace ifsfx::fractaldb {
 namespace {

@@ -6,9 +6,9 @@
 
 #include <fmt/format.h>
 
+#include "fractaldb/render.h"
 #include "ifs/detail/numpy_random.h"
 #include "ifs/error.h"
-#include "fractaldb/render.h"
 
 namespace ifsfx::fractaldb {
 

@@ -67,6 +67,17 @@ def render(
     allow_expansive: bool = False,
     rgb: bool = False,
 ) -> _Image: ...
+def render_flame(
+    spec: str,
+    *,
+    size: _Size | None = None,
+    quality: float | None = None,
+    seed: int = 1,
+    threads: int = 0,
+    alpha: bool = False,
+    dtype: _DType = "uint8",
+    rgb: bool = False,
+) -> _Image: ...
 def read_image(path: str, *, rgb: bool = False) -> _Image: ...
 def write_image(path: str, image: _Image, bits: int = 8, *, rgb: bool = False) -> None: ...
 

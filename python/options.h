@@ -11,13 +11,13 @@
 #include <pybind11/pybind11.h>
 #include <opencv2/core.hpp>
 
+#include "engine/fractal_engine.h"
 #include "ifs/cancel.h"
 #include "ifs/ifs.h"
 #include "ifs/render.h"
 #include "ifs/steal_map.h"
 #include "ifs/tops.h"
 #include "ifs/view.h"
-#include "engine/fractal_engine.h"
 
 namespace ifsfx::python {
 

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "python/render.h"
 
+#include <optional>
 #include <string>
 
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
+#include "flame/flame_file.h"
+#include "flame/render.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/preset.h"
@@ -23,6 +26,30 @@
 namespace ifsfx::python {
 namespace {
 
+// A flame file's flame (flame/render.h) as an array: BGR, or BGRA with its cover as alpha.
+cv::Mat flame_picture(const std::string& spec, std::optional<cv::Size> size,
+                      std::optional<double> quality, std::uint64_t seed, int threads, bool alpha) {
+  const flame::Flame f = flame::read_flame(spec);
+  return run_released([&](const CancelToken& cancel) {
+    return flame::render_flame(f, {.size = size,
+                                   .quality = quality,
+                                   .seed = seed,
+                                   .threads = threads,
+                                   .cancel = cancel,
+                                   .channels = alpha ? 4 : 3});
+  });
+}
+
+py::array render_flame(const std::string& spec, const py::object& size, const py::object& quality,
+                       std::uint64_t seed, int threads, bool alpha, const py::object& dtype,
+                       bool rgb) {
+  const cv::Mat image =
+      flame_picture(spec, size.is_none() ? std::nullopt : std::optional(size_arg(size)),
+                    quality.is_none() ? std::nullopt : std::optional(quality.cast<double>()), seed,
+                    threads, alpha);
+  return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
+}
+
 py::array render(const py::object& preset, const std::string& mode_name, const py::object& size,
                  const py::object& view, double margin, double quality, int supersample,
                  double gamma, double brightness, std::uint64_t seed, int threads, bool exact,
@@ -31,6 +58,13 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
                  bool allow_expansive, bool rgb) {
   const app::RenderMode mode = app::parse_render_mode(mode_name);
   const cv::Size pixels = size_arg(size);
+  if (py::isinstance<py::str>(preset) && flame::is_flame_spec(preset.cast<std::string>())) {
+    // A flame draws as flam3 does, at `size` and `quality` (render_flame: its own by default).
+    app::check_flame_mode(mode, "mode");
+    const cv::Mat image =
+        flame_picture(preset.cast<std::string>(), pixels, quality, seed, threads, alpha);
+    return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
+  }
   const Keywords k =
       keywords(view, margin, quality, supersample, gamma, brightness, seed, threads, exact);
   app::check_mode_options(mode,
@@ -72,6 +106,37 @@ cv::Mat source_arg(const py::handle& source, py::object& keep, const std::string
   keep = view.owner;
   return swap_red_blue(view.mat, rgb);
 }
+
+namespace {
+
+// read_image and write_image: files as arrays, through the library's image I/O.
+void bind_image_files(py::module_& m) {
+  m.def(
+      "read_image",
+      [](const std::string& path, bool rgb) {
+        return to_array(swap_red_blue(
+            run_released([&](const CancelToken&) { return read_image(path).pixels; }), rgb));
+      },
+      py::arg("path"), py::kw_only(), py::arg("rgb") = false,
+      R"doc(Any image OpenImageIO reads, as stored (uint8, uint16 or float32; BGR, BGRA or grey), alpha
+straight; rgb=True gives RGB(A) order. Raises FileNotFoundError or OSError naming the path.)doc");
+  m.def(
+      "write_image",
+      [](const std::string& path, const py::object& image, int bits, bool rgb) {
+        const MatView view = to_mat(image, "image");
+        const cv::Mat pixels = swap_red_blue(view.mat, rgb);
+        run_released([&](const CancelToken& cancel) {
+          write_image(path, pixels, {.bits = bits, .output = {.cancel = cancel}});
+          return 0;
+        });
+      },
+      py::arg("path"), py::arg("image"), py::arg("bits") = 8, py::kw_only(), py::arg("rgb") = false,
+      R"doc(Writes an H×W×C array (BGR order, RGB with rgb=True) in the format of path's extension (.png, .tif, .exr, .jpg),
+`bits` 8 (default) or 16 per channel for PNG and TIFF, through a temporary file renamed into
+place when complete.)doc");
+}
+
+}  // namespace
 
 void bind_render(py::module_& m) {
   const RenderOptions defaults;
@@ -120,29 +185,18 @@ allow_expansive: accept maps of factor >= 1 when the IFS contracts on average, d
 Raises ValueError for bad input (with the library's message), FileNotFoundError/OSError for
 files.)doc");
 
-  m.def(
-      "read_image",
-      [](const std::string& path, bool rgb) {
-        return to_array(swap_red_blue(
-            run_released([&](const CancelToken&) { return read_image(path).pixels; }), rgb));
-      },
-      py::arg("path"), py::kw_only(), py::arg("rgb") = false,
-      R"doc(Any image OpenImageIO reads, as stored (uint8, uint16 or float32; BGR, BGRA or grey), alpha
-straight; rgb=True gives RGB(A) order. Raises FileNotFoundError or OSError naming the path.)doc");
-  m.def(
-      "write_image",
-      [](const std::string& path, const py::object& image, int bits, bool rgb) {
-        const MatView view = to_mat(image, "image");
-        const cv::Mat pixels = swap_red_blue(view.mat, rgb);
-        run_released([&](const CancelToken& cancel) {
-          write_image(path, pixels, {.bits = bits, .output = {.cancel = cancel}});
-          return 0;
-        });
-      },
-      py::arg("path"), py::arg("image"), py::arg("bits") = 8, py::kw_only(), py::arg("rgb") = false,
-      R"doc(Writes an H×W×C array (BGR order, RGB with rgb=True) in the format of path's extension (.png, .tif, .exr, .jpg),
-`bits` 8 (default) or 16 per channel for PNG and TIFF, through a temporary file renamed into
-place when complete.)doc");
+  m.def("render_flame", &render_flame, py::arg("spec"), py::kw_only(), py::arg("size") = py::none(),
+        py::arg("quality") = py::none(), py::arg("seed") = 1, py::arg("threads") = 0,
+        py::arg("alpha") = false, py::arg("dtype") = "uint8", py::arg("rgb") = false,
+        R"doc(A fractal flame of flam3, Apophysis, JWildfire or Fractorium ("art.flame",
+"art.flame:NAME" or "art.flame:INDEX") as `ifsfx render art.flame:NAME -o OUT.png` renders it,
+as flam3-render does: H×W×3 (BGR over the flame's background), or ×4 with alpha=True (its cover).
+size: (width, height) or "WxH", default None: the flame's own (the framing kept).
+quality: samples per pixel, default None: the flame's own.
+seed: default 1; the same seed gives the same array for any thread count. threads: 0 = all.
+dtype: "uint8" (default), "uint16" or "float32". rgb: True for RGB order.
+ifsfx.render(spec, mode="measure", ...) draws the same at its size and quality.)doc");
+  bind_image_files(m);
 }
 
 }  // namespace ifsfx::python

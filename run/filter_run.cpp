@@ -6,11 +6,11 @@
 
 #include <fmt/format.h>
 
-#include "run/arguments.h"
+#include "engine/fractal_engine.h"
 #include "ifs/error.h"
+#include "run/arguments.h"
 #include "video/file_sink.h"
 #include "video/file_source.h"
-#include "engine/fractal_engine.h"
 #include "video/image_sequence.h"
 #include "video/window_sink.h"
 

@@ -12,8 +12,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "run/filter_options.h"
 #include "ifs/output_file.h"
+#include "run/filter_options.h"
 #include "video/frame_io.h"
 #include "video/pipeline.h"
 #include "video/progress.h"
@@ -52,10 +52,11 @@ video::FrameRange check_filter_args(const FilterArgs& args);
 // `ifsfx filter INPUT -o OUTPUT` (or --preview) through `fractal` (F, G, the view and the look:
 // FractalFilterArgs::settings for the command's flags; args.fractal's presets only name inputs
 // no output may replace): cheap checks of the arguments and the output first, then the fractal,
-// then the frames. args' interpolation and animation are set on the fractal's settings. A stop (run.stop) returns with result.interrupted
-// and the frames done kept as a playable STEM.partial.EXT (result.partial), as the pipeline
-// does; a stop before the first frame throws Error{interrupted} with nothing written. Throws
-// ifsfx::Error for bad arguments, unreadable inputs and failed outputs, naming them.
+// then the frames. args' interpolation and animation are set on the fractal's settings. A stop
+// (run.stop) returns with result.interrupted and the frames done kept as a playable
+// STEM.partial.EXT (result.partial), as the pipeline does; a stop before the first frame throws
+// Error{interrupted} with nothing written. Throws ifsfx::Error for bad arguments, unreadable inputs
+// and failed outputs, naming them.
 FilterOutcome filter_movie(const FilterArgs& args, const engine::FractalSettings& fractal,
                            const FilterRun& run);
 

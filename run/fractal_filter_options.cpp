@@ -3,9 +3,9 @@
 
 #include <fmt/format.h>
 
-#include "run/arguments.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
+#include "run/arguments.h"
 #include "superifs/texture.h"
 
 namespace ifsfx::app {

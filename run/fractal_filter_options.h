@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-
 #include "engine/fractal_engine.h"
 
 namespace ifsfx::app {
@@ -19,7 +18,7 @@ struct FractalFilterArgs {
   // background are read by settings().
   engine::FractalSettings engine;
   std::string preset = engine::kDefaultPreset;  // F: a shipped name, a .toml/.ifs path, FILE:NAME
-  std::string colouring;                 // G: a preset fitted to the unit square; "" = a tiling
+  std::string colouring;  // G: a preset fitted to the unit square; "" = a tiling
   std::string view;
   std::string background = "black";
 
@@ -30,6 +29,5 @@ struct FractalFilterArgs {
   // The same with F and G given as data (a door that holds them: the studio), the presets unread.
   engine::FractalSettings settings_of(Ifs drawing, std::optional<Ifs> colouring) const;
 };
-
 
 }  // namespace ifsfx::app

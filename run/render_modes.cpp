@@ -15,7 +15,8 @@ constexpr std::array kModes{
     RenderModeInfo{.mode = RenderMode::attractor, .name = "attractor", .help = "the set"},
     RenderModeInfo{.mode = RenderMode::measure,
                    .name = "measure",
-                   .help = "log-density of the invariant measure, coloured by map"},
+                   .help = "log-density of the invariant measure, coloured by map",
+                   .flames = true},
     RenderModeInfo{.mode = RenderMode::tops,
                    .name = "tops",
                    .help = "each pixel coloured by the first symbol of its top address",
@@ -48,7 +49,9 @@ std::string modes_taking(bool RenderModeInfo::*takes) {
 
 }  // namespace
 
-std::span<const RenderModeInfo> render_modes() { return kModes; }
+std::span<const RenderModeInfo> render_modes() {
+  return kModes;
+}
 
 const RenderModeInfo& render_mode_info(RenderMode mode) {
   for (const RenderModeInfo& info : kModes)
@@ -72,6 +75,14 @@ RenderMode parse_render_mode(const std::string& text, const std::string& what) {
               fmt::format("{}: {} (got '{}')", what, render_mode_names(), text));
 }
 
+void check_flame_mode(RenderMode mode, const std::string& mode_word) {
+  if (!render_mode_info(mode).flames)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{} {}: a flame renders in mode {} (its attractor, tops and colour "
+                            "stealing through the chaos game are not built yet)",
+                            mode_word, to_string(mode), modes_taking(&RenderModeInfo::flames)));
+}
+
 void check_mode_options(RenderMode mode, const ModeOptions& options, const std::string& mode_word) {
   const RenderModeInfo& info = render_mode_info(mode);
   const auto refuse = [&](const ModeOption& option, bool RenderModeInfo::*takes) {
@@ -87,8 +98,9 @@ void check_mode_options(RenderMode mode, const ModeOptions& options, const std::
   refuse(options.map_method, &RenderModeInfo::map_method);
   refuse(options.background, &RenderModeInfo::background);
   if (info.source && !options.source.given)
-    throw Error(ErrorKind::invalid_argument, fmt::format("{}: {} {} needs a source image",
-                                                         options.source.name, mode_word, info.name));
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("{}: {} {} needs a source image", options.source.name, mode_word, info.name));
 }
 
 }  // namespace ifsfx::app

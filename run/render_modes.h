@@ -30,12 +30,15 @@ struct RenderModeInfo {
   bool map_method = false;     // top addresses by the exact descent or the chaos game
   bool second_symbol = false;  // the second symbol's colour mixed in
   bool background = false;     // a colour off the attractor; alpha where the format has it
+  bool flames = false;         // renders a fractal flame (flame/render.h), not only an affine IFS
 };
 
 // Every mode, in the order the help lists them.
 std::span<const RenderModeInfo> render_modes();
 const RenderModeInfo& render_mode_info(RenderMode mode);
-inline const char* to_string(RenderMode mode) { return render_mode_info(mode).name; }
+inline const char* to_string(RenderMode mode) {
+  return render_mode_info(mode).name;
+}
 
 // "attractor, measure, tops or steal".
 std::string render_mode_names();
@@ -59,5 +62,9 @@ struct ModeOptions {
 // "SOURCE: MODE_WORD steal needs a source image". `mode_word` is how the door names the mode's
 // own option ("--mode", "mode").
 void check_mode_options(RenderMode mode, const ModeOptions& options, const std::string& mode_word);
+
+// Refuses a mode that does not render flames: Error{invalid_argument} "MODE_WORD tops: a flame
+// renders in mode measure (...)".
+void check_flame_mode(RenderMode mode, const std::string& mode_word);
 
 }  // namespace ifsfx::app

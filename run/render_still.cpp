@@ -57,7 +57,8 @@ StillResult render_still(const Ifs& F, const StillJob& job) {
   StillResult result;
   switch (job.mode) {
     case RenderMode::attractor:
-      result.image = laid_out(render_attractor(F, job.size, job.options, &result.stats), job.layout);
+      result.image =
+          laid_out(render_attractor(F, job.size, job.options, &result.stats), job.layout);
       break;
     case RenderMode::measure:
       result.image = laid_out(render_measure(F, job.size, job.options, &result.stats), job.layout);

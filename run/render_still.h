@@ -26,11 +26,11 @@ struct StillJob {
   // The sampling (view, margin, quality, seed, threads, cancel, seamless) and the measure mode's
   // tone map; the library's defaults.
   RenderOptions options;
-  bool exact = true;            // tops, steal: the exact descent (true) or the chaos game
-  bool second_symbol = false;   // tops: mix in the second symbol's colour
-  Rgb background;               // tops, steal: off the attractor (black)
-  bool alpha = true;            // tops, steal: the coverage as a fourth channel
-  cv::Mat source;               // steal: the picture whose colours are stolen (required)
+  bool exact = true;             // tops, steal: the exact descent (true) or the chaos game
+  bool second_symbol = false;    // tops: mix in the second symbol's colour
+  Rgb background;                // tops, steal: off the attractor (black)
+  bool alpha = true;             // tops, steal: the coverage as a fourth channel
+  cv::Mat source;                // steal: the picture whose colours are stolen (required)
   std::optional<Ifs> colouring;  // steal: G on the source's unit square; none: default_colouring
   // With options.sampling.seamless: the periods and offset of the picture (one tile by default).
   TileLayout layout;

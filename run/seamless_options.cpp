@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "run/arguments.h"
 #include "ifs/error.h"
+#include "run/arguments.h"
 
 namespace ifsfx::app {
 

@@ -22,7 +22,6 @@ struct SeamlessArgs {
   std::string offset;  // "X,Y"; empty: the preset's [seamless] offset, else 0,0
 };
 
-
 // The picture's layout for a tile of `tile` pixels: --tiles and --tile-offset (the offset by
 // default the preset's), checked (check_tile_layout); both refused without --seamless.
 TileLayout tile_layout(const SeamlessArgs& args, const std::optional<SeamlessTile>& preset,

@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "run/seamless_options.h"
 #include "ifs/error.h"
+#include "run/seamless_options.h"
 #include "video/file_sink.h"
 #include "video/file_source.h"
 #include "video/image_sequence.h"

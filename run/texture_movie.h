@@ -9,9 +9,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "run/texture_options.h"
 #include "ifs/output_file.h"
 #include "ifs/tiles.h"
+#include "run/texture_options.h"
 #include "superifs/texture.h"
 
 namespace ifsfx::app {

@@ -11,9 +11,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "run/texture_options.h"
 #include "ifs/cancel.h"
 #include "ifs/output_file.h"
+#include "run/texture_options.h"
 #include "superifs/superifs_file.h"
 
 namespace ifsfx::app {

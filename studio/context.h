@@ -12,8 +12,8 @@
 
 #include <fmt/format.h>
 
-#include "studio/folder.h"
 #include "ifs/output_file.h"
+#include "studio/folder.h"
 
 namespace ifsfx::app {
 

@@ -9,15 +9,15 @@
 #include <fmt/format.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "run/fit_run.h"
-#include "studio/fields.h"
-#include "studio/http.h"
-#include "studio/render.h"
 #include "collage/fit.h"
 #include "collage/preview.h"
 #include "ifs/error.h"
 #include "ifs/output_file.h"
 #include "ifs/preset.h"
+#include "run/fit_run.h"
+#include "studio/fields.h"
+#include "studio/http.h"
+#include "studio/render.h"
 
 namespace ifsfx::app {
 

@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "studio/http.h"
 #include "ifs/error.h"
+#include "studio/http.h"
 
 namespace ifsfx::app {
 

@@ -9,15 +9,15 @@
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
-#include "run/arguments.h"
-#include "run/render_metadata.h"
-#include "run/render_still.h"
-#include "run/picture_options.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
 #include "ifs/parallel.h"
 #include "ifs/steal_map.h"
+#include "run/arguments.h"
+#include "run/picture_options.h"
+#include "run/render_metadata.h"
+#include "run/render_still.h"
 
 namespace ifsfx::app {
 namespace {

@@ -80,9 +80,9 @@ StudioRender studio_render_from_json(
     const std::function<std::filesystem::path(const std::string&)>& source_path);
 
 // The picture of a request as `ifsfx render ... -o OUTPUT` makes it (`alpha`: whether OUTPUT's
-// format keeps the coverage as alpha, run/picture_options.h's format_has_alpha) and the options that
-// write it with the same metadata. Throws Error{interrupted} when
-// `cancel` asks to stop, and what render throws.
+// format keeps the coverage as alpha, run/picture_options.h's format_has_alpha) and the options
+// that write it with the same metadata. Throws Error{interrupted} when `cancel` asks to stop, and
+// what render throws.
 struct StudioImage {
   cv::Mat image;
   WriteOptions write;  // the metadata `ifsfx render` stores

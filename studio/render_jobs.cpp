@@ -9,15 +9,15 @@
 
 #include <fmt/format.h>
 
-#include "run/arguments.h"
-#include "run/filter_run.h"
-#include "studio/fields.h"
-#include "studio/render.h"
-#include "studio/superifs.h"
-#include "run/texture_run.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
+#include "run/arguments.h"
+#include "run/filter_run.h"
+#include "run/texture_run.h"
+#include "studio/fields.h"
+#include "studio/render.h"
+#include "studio/superifs.h"
 #include "superifs/superifs_file.h"
 #include "video/image_sequence.h"
 
@@ -53,9 +53,11 @@ int submit_still(JobQueue& jobs, const json& body, StudioContext& context) {
   JobSpec spec{.kind = "still", .title = target.filename().string(), .writes = {target.string()}};
   if (!render.source.empty()) spec.reads.push_back(render.source.string());
   return jobs.submit(std::move(spec), [=](JobContext& job) {
-    job.progress(-1, "rendering",
-                 fmt::format("{} {}x{}", to_string(render.mode), render.size.width, render.size.height));
-    const StudioImage picture = studio_image(render, job.cancel(), format_has_alpha(target.string()));
+    job.progress(
+        -1, "rendering",
+        fmt::format("{} {}x{}", to_string(render.mode), render.size.width, render.size.height));
+    const StudioImage picture =
+        studio_image(render, job.cancel(), format_has_alpha(target.string()));
     job.progress(-1, "writing", target.filename().string());
     WriteOptions write = picture.write;
     write.bits = bits;
@@ -79,17 +81,18 @@ int submit_filter(JobQueue& jobs, const json& body, StudioContext& context) {
   args.fractal.view = text_field(body, "view", "");
   args.fractal.engine.mix = number_field(body, "mix", 0, 0, 1);
   args.fractal.background = text_field(body, "background", "black");
-  args.fractal.engine.drift_amount = number_field(body, "drift_amount", engine::kDefaultDriftAmount,
-                                                  0, engine::kMaxDriftAmount);
-  args.fractal.engine.drift_speed = number_field(body, "drift_speed", engine::kDefaultDriftSpeed, 0,
-                                                 engine::kMaxDriftSpeed);
+  args.fractal.engine.drift_amount =
+      number_field(body, "drift_amount", engine::kDefaultDriftAmount, 0, engine::kMaxDriftAmount);
+  args.fractal.engine.drift_speed =
+      number_field(body, "drift_speed", engine::kDefaultDriftSpeed, 0, engine::kMaxDriftSpeed);
   args.fractal.engine.sampling.seed =
       static_cast<std::uint64_t>(integer_field(body, "seed", 1, 0, 1LL << 53));
   args.animate = choice_field(body, "animate", "none", {"none", "drift"}) == "drift"
                      ? engine::Animate::drift
                      : engine::Animate::none;
-  args.keyframe_interval = static_cast<int>(integer_field(
-      body, "keyframe_interval", engine::kDefaultKeyframeInterval, 1, engine::kMaxKeyframeInterval));
+  args.keyframe_interval =
+      static_cast<int>(integer_field(body, "keyframe_interval", engine::kDefaultKeyframeInterval, 1,
+                                     engine::kMaxKeyframeInterval));
   args.frames = text_field(body, "frames", "");
   args.size = text_field(body, "size", "");
   // `ifsfx filter`'s own checks, then the output policy, before the job is queued.

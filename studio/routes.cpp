@@ -9,11 +9,11 @@
 
 #include <fmt/format.h>
 
+#include "ifs/error.h"
 #include "studio/fields.h"
 #include "studio/fit.h"
 #include "studio/http.h"
 #include "studio/render_jobs.h"
-#include "ifs/error.h"
 #include "superifs/superifs_file.h"
 
 namespace ifsfx::app {
@@ -226,8 +226,7 @@ void StudioExtras::add_routes(httplib::Server& server) {
       double fps = 25;
       const cv::Mat frame = movies_.frame(client, movie, index, fps);
       res.set_header("X-Ifsfx-Frame", std::to_string(index));
-      res.set_content(previews_.jpeg("movie/" + client, body, frame, index, -1, fps),
-                      "image/jpeg");
+      res.set_content(previews_.jpeg("movie/" + client, body, frame, index, -1, fps), "image/jpeg");
     });
   });
   server.Post("/api/camera/frame", [this](const httplib::Request& req, httplib::Response& res) {

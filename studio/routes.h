@@ -13,12 +13,12 @@
 
 #include <httplib.h>
 
+#include "ifs/output_file.h"
 #include "studio/context.h"
 #include "studio/folder.h"
 #include "studio/jobs.h"
 #include "studio/superifs.h"
 #include "studio/video.h"
-#include "ifs/output_file.h"
 
 namespace ifsfx::app {
 

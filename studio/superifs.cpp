@@ -6,10 +6,10 @@
 #include <fmt/format.h>
 #include <opencv2/imgcodecs.hpp>
 
-#include "run/arguments.h"
-#include "studio/fields.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
+#include "run/arguments.h"
+#include "studio/fields.h"
 
 namespace ifsfx::app {
 

@@ -10,14 +10,14 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "engine/drift.h"
+#include "engine/fractal_filter.h"
+#include "ifs/error.h"
+#include "ifs/output_file.h"
 #include "run/arguments.h"
 #include "studio/fields.h"
 #include "studio/http.h"
 #include "studio/render.h"
-#include "ifs/error.h"
-#include "ifs/output_file.h"
-#include "engine/drift.h"
-#include "engine/fractal_filter.h"
 
 namespace ifsfx::app {
 
@@ -120,11 +120,10 @@ std::string FilterPreviews::jpeg(const std::string& channel, const json& body, c
   s.animate = choice_field(body, "animate", "none", {"none", "drift"}) == "drift"
                   ? engine::Animate::drift
                   : engine::Animate::none;
-  s.drift_amount =
-      number_field(body, "drift_amount", s.drift_amount, 0, engine::kMaxDriftAmount);
+  s.drift_amount = number_field(body, "drift_amount", s.drift_amount, 0, engine::kMaxDriftAmount);
   s.drift_speed = number_field(body, "drift_speed", s.drift_speed, 0, engine::kMaxDriftSpeed);
-  s.keyframe_interval = static_cast<int>(
-      integer_field(body, "keyframe_interval", s.keyframe_interval, 1, engine::kMaxKeyframeInterval));
+  s.keyframe_interval = static_cast<int>(integer_field(
+      body, "keyframe_interval", s.keyframe_interval, 1, engine::kMaxKeyframeInterval));
   s.sampling.seed = static_cast<std::uint64_t>(integer_field(body, "seed", 1, 0, 1LL << 53));
   const double mix = number_field(body, "mix", 0, 0, 1);
   const engine::Background background =

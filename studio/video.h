@@ -23,9 +23,9 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 
+#include "engine/fractal_engine.h"
 #include "studio/context.h"
 #include "video/file_source.h"
-#include "engine/fractal_engine.h"
 #include "video/v4l2_capture.h"
 
 namespace ifsfx::app {

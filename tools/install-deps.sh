@@ -32,6 +32,10 @@ packages=(
   # frei0r wrapper in -bad, Matroska in -good, FFV1 in -libav)
   frei0r-plugins-dev melt gstreamer1.0-tools gstreamer1.0-plugins-base gstreamer1.0-plugins-good
   gstreamer1.0-plugins-bad gstreamer1.0-libav
+  # the OBS Studio filter (plugins/obs): libobs's headers; its tests start libobs headless on
+  # xvfb-run's display (xvfb, above) with Mesa's software GL (llvmpipe: EGL and the DRI driver)
+  # and open the display themselves (Xlib)
+  libobs-dev libegl-mesa0 libgl1-mesa-dri libx11-dev
   # `ifsfx farm` is tested against a real single-node Slurm (tests/farm/start-local-slurm.sh)
   slurmctld slurmd slurm-client munge
   # `ifsfx studio`: its HTTP server; its tests: curl, and the page in a real headless browser,

@@ -15,9 +15,9 @@ extern "C" {
 #include <libavutil/pixdesc.h>
 }
 
+#include "engine/palette.h"
 #include "video/audio_remux.h"
 #include "video/av_util.h"
-#include "engine/palette.h"
 
 namespace ifsfx::video {
 

@@ -6,17 +6,17 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/fractal_engine.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "same_bytes.h"
 #include "tests/video/test_frames.h"
-#include "engine/fractal_engine.h"
 
 namespace ifsfx::engine {
 namespace {
 
 using ifsfx::testing::same_bytes;
-using testing::test_frame;
+using video::testing::test_frame;
 
 double mean_difference(const cv::Mat& a, const cv::Mat& b) {
   cv::Mat d;

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -20,7 +21,7 @@ namespace ifsfx::engine {
 namespace {
 
 using ifsfx::testing::interrupted;
-using testing::test_frame;
+using video::testing::test_frame;
 
 FractalSettings drifting() {
   FractalSettings s;
@@ -110,7 +111,7 @@ TEST(fractal_engine, settings_default_to_the_library_sampling) {
 
 TEST(fractal_engine, bad_settings_fail_before_any_frame) {
   FractalSettings s;
-  s.drawing.maps[0].a = 2;  // a map that expands: the IFS does not contract on average
+  s.drawing.maps[1].e = std::nan("");  // a coefficient that is not a number
   EXPECT_THROW(FractalEngine{s}, Error);
   s.drawing = load_ifs("barnsley-fern").ifs;
   s.colouring = load_ifs("sierpinski-triangle").ifs;

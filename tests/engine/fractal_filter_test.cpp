@@ -10,8 +10,8 @@
 namespace ifsfx::engine {
 namespace {
 
-using testing::identity_map;
-using testing::test_frame;
+using video::testing::identity_map;
+using video::testing::test_frame;
 
 TEST(fractal_filter, identity_map_returns_the_frame) {
   const cv::Size size{97, 61};

@@ -15,7 +15,7 @@ namespace {
 
 // A table whose every pixel takes the source at column k: identifies keyframe k in a 1-row map.
 PreparedStealMap table_for(std::int64_t k) {
-  StealMap map = testing::identity_map({1, 1});
+  StealMap map = video::testing::identity_map({1, 1});
   map.source_uv.at<cv::Vec2f>(0, 0) = {(static_cast<float>(k) + 0.5f) / 64, 0.5f};
   return prepare_filter(map, {64, 2}, Interpolation::nearest);
 }

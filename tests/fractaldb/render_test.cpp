@@ -16,8 +16,8 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "ifs/error.h"
 #include "fractaldb/dataset.h"
+#include "ifs/error.h"
 #include "ifs/image_io.h"
 
 namespace ifsfx::fractaldb {

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The flame reader's fuzz check (see fuzz_checks.h): every flame it reads is one a renderer can
-// take (xforms, finite numbers, one value per parameter, a positive total weight), and what the
-// writer makes of it reads back to the same XML (write ∘ read is idempotent).
+// take (xforms, finite numbers, one value per parameter, a positive total weight), each xform can
+// be applied to a few points (the variations under the sanitizers with any parameters: a
+// non-finite result is allowed, undefined behaviour is not), and what the writer makes of it
+// reads back to the same XML (write ∘ read is idempotent).
 #pragma once
 
 #include <cmath>
@@ -11,6 +13,7 @@
 #include "flame/flame_file.h"
 #include "flame/flame_write.h"
 #include "flame/variations.h"
+#include "flame/xform_eval.h"
 #include "ifs/error.h"
 #include "tests/fuzz/fuzz_checks.h"
 
@@ -27,6 +30,11 @@ inline void check_renderable(const flame::Xform& xf) {
       check(t.params.size() == flame::variation(t.id).parameters.size(), "one value a parameter");
       check(std::isfinite(t.weight), "a finite variation weight");
     }
+  Rng rng(1);
+  for (const Point p : {Point{0, 0}, Point{0.3, -0.2}, Point{-2.5, 1e3}}) {
+    const Point q = flame::apply_xform(xf, p, rng);
+    (void)q;
+  }
 }
 
 inline void flame_xml(std::string_view text) {

@@ -20,9 +20,9 @@
 
 #include <opencv2/core.hpp>
 
-#include "ifs/error.h"
 #include "fractaldb/dataset.h"
 #include "fractaldb/render.h"
+#include "ifs/error.h"
 #include "ifs/ifs.h"
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"

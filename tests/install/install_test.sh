@@ -112,7 +112,8 @@ case "$check" in
     [ "$(complete_words ifsfx ren)" = render ] || fail "completion of 'ren': $(complete_words ifsfx ren)"
     [ "$(complete_words ifsfx render --mode '')" = "attractor measure steal tops" ] ||
       fail "completion of --mode: $(complete_words ifsfx render --mode '')"
-    [ "$(complete_words ifsfx render --save)" = --save-map ] || fail "completion of --save"
+    [ "$(complete_words ifsfx render --save-m)" = --save-map ] || fail "completion of --save-m"
+    [ "$(complete_words ifsfx render --save-f)" = --save-flame ] || fail "completion of --save-f"
     [ "$(complete_words ifsfx texture paper)" = paper-fig4 ] || fail "completion of a superpreset"
     [ "$(complete_words ifsfx filter --preset maple)" = maple-leaf ] || fail "completion of --preset"
     ;;
@@ -216,6 +217,19 @@ CPP
                ./usr/share/kdenlive/effects/frei0r_ifsfx.xml; do
         grep -qx -- "$f" deb-files.txt || fail "$deb lacks $f"
       done
+    fi
+    # The OBS filter (built where libobs-dev is installed) is a package of its own, in OBS's
+    # folders, depending on libobs0; the command's package does not.
+    if [ -f "$build/plugins/obs/ifsfx-obs.so" ]; then
+      obs_deb=obs-ifsfx_${version}_$arch.deb
+      [ -f "$obs_deb" ] || fail "packages: $(ls ./*.deb)"
+      multiarch=$(dpkg-architecture -qDEB_HOST_MULTIARCH)
+      for f in ./usr/lib/$multiarch/obs-plugins/ifsfx-obs.so \
+               ./usr/share/obs/obs-plugins/ifsfx-obs/locale/en-US.ini; do
+        dpkg-deb -c "$obs_deb" | awk '{ print $6 }' | grep -qx -- "$f" || fail "$obs_deb lacks $f"
+      done
+      dpkg-deb -f "$obs_deb" Depends | grep -q libobs0 || fail "$obs_deb does not depend on libobs0"
+      ! dpkg-deb -f "$deb" Depends | grep -q libobs || fail "$deb depends on libobs"
     fi
     ! grep -E '^\./usr/(include|lib)/' deb-files.txt | grep -Ev '^\./usr/lib/(frei0r-1/.*)?$' ||
       fail "$deb holds development files"

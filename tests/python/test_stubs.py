@@ -49,7 +49,7 @@ def test_each_function_has_the_stub_keywords_and_defaults():
         assert names == built_names, node.name
         assert defaults == built_defaults, node.name
         checked += 1
-    assert checked == 11  # presets, load_preset, render, ..., textures, fit
+    assert checked == 12  # presets, load_preset, render, render_flame, ..., textures, fit
 
 
 def check_function(node, built):

@@ -35,8 +35,7 @@ TEST(render_still, each_mode_is_its_library_picture) {
                        .background = white,
                        .alpha = false})
           .image,
-      tops_picture(F, kSize, {.sampling = options.sampling, .second_symbol = true}, white,
-                   false)));
+      tops_picture(F, kSize, {.sampling = options.sampling, .second_symbol = true}, white, false)));
 }
 
 TEST(render_still, steal_colours_the_source_through_the_map_it_returns) {

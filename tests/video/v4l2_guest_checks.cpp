@@ -31,10 +31,10 @@
 #include <opencv2/imgproc.hpp>
 #include <opencv2/videoio.hpp>
 
+#include "engine/fractal_filter.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "ifs/steal_map.h"
-#include "engine/fractal_filter.h"
 #include "video/v4l2_capture.h"
 #include "video/v4l2_convert.h"
 #include "video/v4l2_device.h"

@@ -1,0 +1,183 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
+"""ifsfx's flame renderer against flam3-render (issue 31 items 3 and 4).
+
+For each flame — `flam3-genome` random genomes made at run time, and every <flame> of the .flame
+files under the directories given (e.g. Fractorium's Data/examples, by path: other people's art
+is never copied into the repository) — at one size and quality:
+
+  flam3-render with seeds 1 and 2, and ifsfx (bench/flame_render) with seed 1,
+
+then prints per flame the similarity of the two flam3 pictures (flam3's own seed-to-seed
+spread: SSIM of the luminances and mean RGB distance, bench/flame_compare) and of ifsfx's to
+flam3's (the mean over the two flam3 pictures), the CPU seconds of each whole command (the
+child's getrusage) and the speed ratio flam3/ifsfx. A line passes when ifsfx is within flam3's
+spread: SSIM ≥ flam3's − 0.02 and colour distance ≤ flam3's + 1.0.
+
+  bench/flame_vs_flam3.py [--genomes 20] [--size 256] [--quality 50] [--threads 2]
+                          [--bin build/release/bench] [--keep DIR] [DIR_OR_FILE ...]
+"""
+import argparse
+import os
+import re
+import resource
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+SSIM_TOL, COLOUR_TOL = 0.02, 1.0
+Z_ONLY = ("flatten", "zscale", "ztranslate", "zcone", "zblur")
+EMBER_ONLY = ("var_color", "name", "animate", "motion_frequency", "motion_function")
+
+
+def cpu_run(cmd, env=None, stdin=None):
+    """Runs cmd; returns (returncode, stderr, CPU seconds of the child)."""
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    p = subprocess.run(cmd, env=env, stdin=stdin, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    return p.returncode, p.stderr + p.stdout, cpu
+
+
+def resized(flame, longest, quality):
+    """The <flame> element at `longest` pixels on its longer side (scale following the width,
+    as flam3-render's size scale does) and `quality` samples per pixel."""
+    w, h = (float(v) for v in flame.get("size", "100 100").split())
+    k = longest / max(w, h)
+    nw, nh = max(1, round(w * k)), max(1, round(h * k))
+    flame.set("size", f"{nw} {nh}")
+    flame.set("scale", repr(float(flame.get("scale", "1")) * nw / w))
+    flame.set("quality", str(quality))
+    for attr in ("temporal_samples", "passes"):
+        if attr in flame.attrib:
+            flame.set(attr, "1")
+    # Ember's per-xform attributes that do not change the picture (flam3-render would warn
+    # "unrecognized variation" about them, and ifsfx ignores them too).
+    for xf in list(flame.iter("xform")) + list(flame.iter("finalxform")):
+        for attr in EMBER_ONLY:
+            xf.attrib.pop(attr, None)
+        # Ember's 3-D variations that are 2-D ones in the plane, as flam3 knows them: linear3D
+        # is linear at z = 0; flatten and the z-only ones change nothing (docs/flames.md).
+        for prefix in ("", "pre_", "post_"):
+            if prefix + "linear3D" in xf.attrib:
+                w = float(xf.attrib.pop(prefix + "linear3D"))
+                xf.set(prefix + "linear", repr(float(xf.get(prefix + "linear", "0")) + w))
+            for name in Z_ONLY:
+                for attr in [a for a in xf.attrib if a == prefix + name or a.startswith(prefix + name + "_")]:
+                    xf.attrib.pop(attr)
+    return flame
+
+
+def genomes(count, work):
+    out = []
+    for seed in range(1, count + 1):
+        text = subprocess.run(["flam3-genome"], env=dict(os.environ, seed=str(seed), isaac_seed=str(seed)),
+                              stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True).stdout
+        for i, f in enumerate(ET.fromstring(text).iter("flame")):
+            out.append((f"genome-{seed}" + (f".{i}" if i else ""), f))
+    return out
+
+
+def pack_flames(paths):
+    out = []
+    files = []
+    for p in paths:
+        if os.path.isdir(p):
+            for root, _, names in os.walk(p):
+                files += [os.path.join(root, n) for n in sorted(names) if n.endswith(".flame")]
+        else:
+            files.append(p)
+    for path in sorted(files):
+        try:
+            root = ET.parse(path).getroot()
+        except ET.ParseError as e:
+            print(f"# {path}: not XML ({e})")
+            continue
+        flames = [root] if root.tag == "flame" else list(root.iter("flame"))
+        stem = os.path.splitext(os.path.basename(path))[0]
+        for i, f in enumerate(flames):
+            out.append((f"{stem}:{i}", f))
+    return out
+
+
+def compare(tool, a, b):
+    text = subprocess.run([tool, a, b], stdout=subprocess.PIPE, text=True).stdout
+    m = re.match(r"ssim (\S+) colour (\S+)", text)
+    return (float(m.group(1)), float(m.group(2))) if m else (float("nan"), float("nan"))
+
+
+def one(name, flame, args, work):
+    path = os.path.join(work, "f.flame")
+    ET.ElementTree(resized(flame, args.size, args.quality)).write(path)
+    pics = [os.path.join(work, n) for n in ("f3a.png", "f3b.png", "ifsfx.png")]
+    times = []
+    for seed, out in ((1, pics[0]), (2, pics[1])):
+        env = dict(os.environ, out=out, format="png", verbose="0", nthreads=str(args.threads),
+                   seed=str(seed), isaac_seed=str(seed), transparency="0")
+        with open(path) as f:
+            rc, err, cpu = cpu_run(["flam3-render"], env=env, stdin=f)
+        if rc != 0 or not os.path.exists(out):
+            return f"{name:34} flam3-render failed: {err.strip().splitlines()[-1] if err.strip() else rc}"
+        if re.search(r"unknown|not recogni|ignor", err, re.I):
+            return f"{name:34} flam3-render cannot: {err.strip().splitlines()[0][:60]}"
+        times.append(cpu)
+    rc, err, cpu_ifsfx = cpu_run([os.path.join(args.bin, "flame_render"), path, "-o", pics[2],
+                                  "--seed", "1", "--threads", str(args.threads)])
+    if rc != 0:
+        return f"{name:34} ifsfx refuses: {err.strip()[:90]}"
+    tool = os.path.join(args.bin, "flame_compare")
+    s_ff, c_ff = compare(tool, pics[0], pics[1])
+    s_a, c_a = compare(tool, pics[2], pics[0])
+    s_b, c_b = compare(tool, pics[2], pics[1])
+    s_if, c_if = (s_a + s_b) / 2, (c_a + c_b) / 2
+    ok = s_if >= s_ff - SSIM_TOL and c_if <= c_ff + COLOUR_TOL
+    if args.keep:
+        for p, tag in zip(pics, ("flam3-1", "flam3-2", "ifsfx")):
+            shutil.copy(p, os.path.join(args.keep, f"{name.replace(':', '_')}-{tag}.png"))
+    return dict(name=name, s_ff=s_ff, c_ff=c_ff, s_if=s_if, c_if=c_if, ok=ok, t_f=times[0], t_i=cpu_ifsfx)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("paths", nargs="*")
+    ap.add_argument("--genomes", type=int, default=20)
+    ap.add_argument("--size", type=int, default=256)
+    ap.add_argument("--quality", type=float, default=50)
+    ap.add_argument("--threads", type=int, default=2)
+    ap.add_argument("--bin", default="build/release/bench")
+    ap.add_argument("--keep")
+    args = ap.parse_args()
+    if not shutil.which("flam3-render"):
+        sys.exit("flame_vs_flam3: flam3-render is needed (apt-get install flam3-utils)")
+    if args.keep:
+        os.makedirs(args.keep, exist_ok=True)
+    print(f"# {args.size} px longest side, quality {args.quality:g}, {args.threads} thread(s) each; "
+          f"CPU seconds of each whole command; pass: SSIM >= flam3's - {SSIM_TOL}, colour <= flam3's + {COLOUR_TOL}")
+    print(f"{'flame':34} {'flam3 vs flam3':>16} {'ifsfx vs flam3':>16} {'flam3 s':>8} {'ifsfx s':>8} {'ratio':>6}")
+    rows, skipped = [], 0
+    with tempfile.TemporaryDirectory() as work:
+        for name, flame in genomes(args.genomes, work) + pack_flames(args.paths):
+            r = one(name, flame, args, work)
+            if isinstance(r, str):
+                print(r)
+                skipped += 1
+                continue
+            rows.append(r)
+            print(f"{name:34} {r['s_ff']:7.4f} {r['c_ff']:7.2f}  {r['s_if']:7.4f} {r['c_if']:7.2f}  "
+                  f"{r['t_f']:8.2f} {r['t_i']:8.2f} {r['t_f'] / max(r['t_i'], 1e-3):6.1f}  {'pass' if r['ok'] else 'FAIL'}",
+                  flush=True)
+    for label, sel in (("genomes", [r for r in rows if r["name"].startswith("genome-")]),
+                       ("packs", [r for r in rows if not r["name"].startswith("genome-")])):
+        if sel:
+            ratios = [r["t_f"] / max(r["t_i"], 1e-3) for r in sel]
+            print(f"# {label}: {sum(r['ok'] for r in sel)}/{len(sel)} within flam3's spread; speed ratio "
+                  f"median {statistics.median(ratios):.1f}, min {min(ratios):.1f}, max {max(ratios):.1f}; "
+                  f"total CPU flam3 {sum(r['t_f'] for r in sel):.1f} s, ifsfx {sum(r['t_i'] for r in sel):.1f} s")
+    print(f"# {skipped} flame(s) not compared (refused or not renderable by flam3-render)")
+
+
+if __name__ == "__main__":
+    main()

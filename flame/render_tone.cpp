@@ -1,0 +1,138 @@
+// SPDX-License-Identifier: Apache-2.0
+// Steps 1, 2 and 4 of flame/render_tone.h: the log density, density estimation and the display.
+#include "flame/render_tone.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "ifs/error.h"
+#include "ifs/parallel.h"
+
+namespace ifsfx::flame {
+namespace {
+
+// The disc of one density-estimation radius: offsets and Epanechnikov's weights 1 − d²/r²,
+// normalised to sum 1 (a radius below one bin keeps the bin to itself).
+struct DeKernel {
+  struct Tap {
+    int dy, dx;
+    double w;
+  };
+  std::vector<Tap> taps;
+  int reach = 0;
+};
+
+DeKernel de_kernel(double radius) {
+  DeKernel k;
+  const int reach = static_cast<int>(std::floor(radius));
+  double sum = 0;
+  for (int dy = -reach; dy <= reach; ++dy)
+    for (int dx = -reach; dx <= reach; ++dx) {
+      const double d2 = static_cast<double>(dx * dx + dy * dy) / (radius * radius);
+      if (d2 >= 1) continue;  // the centre, d = 0, is always in
+      const double w = 1 - d2;
+      k.taps.push_back({dy, dx, w});
+      sum += w;
+    }
+  for (auto& t : k.taps) t.w /= sum;
+  k.reach = reach;
+  return k;
+}
+
+// The hits a bin's radius is chosen by: with ss > 1 bins per pixel side the bin's own count
+// is ss² too small, so the counts of the surrounding pixel's worth of bins are summed.
+double de_density(const FlameHistogram& h, int row, int col, int ss) {
+  if (ss == 1) return h.at(row, col)[3];
+  const int half = ss / 2;
+  double sum = 0;
+  for (int r = std::max(0, row - half); r <= std::min(h.height - 1, row + half); ++r)
+    for (int c = std::max(0, col - half); c <= std::min(h.width - 1, col + half); ++c)
+      sum += h.at(r, c)[3];
+  const double side = 2 * half + 1;
+  return sum * (ss * ss) / (side * side);
+}
+
+// Kernels by radius, quantised to 1/16 bin: a picture uses a few dozen.
+class DeKernels {
+ public:
+  explicit DeKernels(double max_radius)
+      : kernels_(static_cast<std::size_t>(std::ceil(max_radius * 16)) + 1) {}
+  const DeKernel& operator()(double radius) {
+    const auto key =
+        std::min(static_cast<std::size_t>(std::lround(radius * 16)), kernels_.size() - 1);
+    if (!kernels_[key]) kernels_[key] = de_kernel(std::max(static_cast<double>(key) / 16, 1e-3));
+    return *kernels_[key];
+  }
+
+ private:
+  std::vector<std::optional<DeKernel>> kernels_;
+};
+
+constexpr int kDeBand = 64;  // source rows per density-estimation band
+
+// Spreads the log-scaled bins of rows [r0, r1) into `out`, whose row 0 is source row r0 − reach.
+void spread_band(const FlameHistogram& h, const Filtering& f, int ss, const LogScale& scale, int r0,
+                 int r1, int reach, FlameHistogram& out) {
+  const double max_r = f.estimator_radius * ss, min_r = f.estimator_minimum * ss;
+  DeKernels kernels(max_r);
+  for (int row = r0; row < r1; ++row)
+    for (int col = 0; col < h.width; ++col) {
+      const double* in = h.at(row, col);
+      if (!(in[3] > 0)) continue;
+      const double ls = scale(in[3]);
+      const double v[4] = {in[0] * ls, in[1] * ls, in[2] * ls, in[3] * ls};
+      const double d = de_density(h, row, col, ss);
+      const double radius = std::max(min_r, max_r / std::pow(d, f.estimator_curve));
+      for (const auto& t : kernels(std::min(radius, max_r)).taps) {
+        const int y = row + t.dy, x = col + t.dx;
+        if (y < 0 || y >= h.height || x < 0 || x >= h.width) continue;
+        double* o = out.at(y - (r0 - reach), x);
+        for (int k = 0; k < 4; ++k) o[k] += t.w * v[k];
+      }
+    }
+}
+
+}  // namespace
+
+double LogScale::operator()(double a) const {
+  return a > 0 ? k1 * std::log1p(k2 * a) / a : 0;
+}
+
+LogScale log_scale(const Flame& flame, int ss, double quality) {
+  const Camera& cam = flame.camera;
+  const double ppu = cam.scale * std::exp2(cam.zoom);
+  const double area = cam.width * static_cast<double>(cam.height) / (ppu * ppu);
+  const double q = quality * std::exp2(2 * cam.zoom);
+  const double contrast = flame.tone.contrast;
+  // 268/256: flam3's white, 268 of 256 levels before the gamma, kept for the same brightness.
+  return {contrast * flame.tone.brightness * 268.0 / 256.0, ss * ss / (contrast * area * q)};
+}
+
+FlameHistogram density_estimate(const FlameHistogram& h, const Filtering& f, int ss,
+                                const LogScale& scale, int threads, const CancelToken& cancel) {
+  const int reach = static_cast<int>(std::floor(f.estimator_radius * ss));
+  const int bands = (h.height + kDeBand - 1) / kDeBand;
+  // Each band spreads into a buffer of its own (its rows ± reach); the buffers are summed in
+  // band order, so the sums do not depend on the threads.
+  std::vector<FlameHistogram> parts(static_cast<std::size_t>(bands));
+  parallel_for(static_cast<std::size_t>(bands), threads, [&](std::size_t band, int) {
+    cancel.check("density estimation");
+    const int r0 = static_cast<int>(band) * kDeBand, r1 = std::min(h.height, r0 + kDeBand);
+    parts[band] = FlameHistogram(h.width, r1 - r0 + 2 * reach);
+    spread_band(h, f, ss, scale, r0, r1, reach, parts[band]);
+  });
+  FlameHistogram out(h.width, h.height);
+  for (int band = 0; band < bands; ++band) {
+    const FlameHistogram& p = parts[static_cast<std::size_t>(band)];
+    const int first = band * kDeBand - reach;
+    for (int r = std::max(0, first); r < std::min(h.height, first + p.height); ++r) {
+      const double* src = p.at(r - first, 0);
+      double* dst = out.at(r, 0);
+      for (int i = 0; i < 4 * h.width; ++i) dst[i] += src[i];
+    }
+  }
+  return out;
+}
+
+}  // namespace ifsfx::flame

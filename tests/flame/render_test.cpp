@@ -1,0 +1,232 @@
+// SPDX-License-Identifier: Apache-2.0
+// The flame renderer (flame/render.h, flame/render_tone.h, flame/render_camera.h): the same
+// bytes for any thread count, the display on hand-built densities, density estimation and the
+// spatial filter on known inputs, the camera on one-point flames, and the orientation against
+// flam3-render (skipped without it).
+#include "flame/render.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+
+#include <opencv2/imgproc.hpp>
+
+#include "flame/flame_file.h"
+#include "flame/render_camera.h"
+#include "flame/render_tone.h"
+#include "flame/variations.h"
+#include "ifs/error.h"
+#include "ifs/image_io.h"
+
+namespace ifsfx::flame {
+namespace {
+
+namespace fs = std::filesystem;
+
+VariationTerm term(const char* name, double weight) {
+  const Variation* v = find_variation(name);
+  return {v->id, weight, default_parameters(*v)};
+}
+
+// Two constant maps: every point lands on (0.5, −0.25) (palette entry 0, red) or on
+// (−0.3, 0.4) (entry 255, green). No density estimation, no spatial filter.
+Flame two_points() {
+  Flame f;
+  f.camera = {.width = 64, .height = 48, .center = {0.1, -0.05}, .scale = 40};
+  f.filtering = {.supersample = 1, .filter_radius = 0, .estimator_radius = 0};
+  f.tone.gamma = 1;
+  f.quality = 20;
+  for (int i = 0; i < 256; ++i) f.palette.colours[i] = i < 128 ? Rgba{1, 0, 0} : Rgba{0, 1, 0};
+  Xform red{.pre = {0, 0, 0, 0, 0.5, -0.25}, .colour = 0, .colour_speed = 1};
+  Xform green{.pre = {0, 0, 0, 0, -0.3, 0.4}, .colour = 1, .colour_speed = 1};
+  red.variations = {term("linear", 1)};
+  green.variations = {term("linear", 1)};
+  f.xforms = {red, green};
+  return f;
+}
+
+// The pixels that are not black, as (column, row).
+std::vector<cv::Point> lit(const cv::Mat& bgr) {
+  std::vector<cv::Point> out;
+  for (int r = 0; r < bgr.rows; ++r)
+    for (int c = 0; c < bgr.cols; ++c)
+      if (bgr.at<cv::Vec3b>(r, c) != cv::Vec3b(0, 0, 0)) out.emplace_back(c, r);
+  return out;
+}
+
+TEST(render_flame, a_point_lands_where_the_camera_formula_puts_it) {
+  // x_pix = (x − cx)·ppu + W/2: (0.5 − 0.1)·40 + 32 = 48, (−0.25 + 0.05)·40 + 24 = 16.
+  const cv::Mat img = render_flame(two_points(), {.seed = 3});
+  ASSERT_EQ(lit(img), (std::vector<cv::Point>{{48, 16}, {16, 42}}));
+  EXPECT_EQ(img.at<cv::Vec3b>(16, 48), cv::Vec3b(0, 0, 255));  // BGR: red, full density
+  EXPECT_EQ(img.at<cv::Vec3b>(42, 16), cv::Vec3b(0, 255, 0));
+}
+
+TEST(render_flame, gives_bgra_and_16_bit_and_float_pictures) {
+  // The red point at full density: display value 256·(α^1/α) = 256, clipped to white's 255.
+  const cv::Mat f = render_flame(two_points(), {.channels = 4, .depth = CV_32F});
+  ASSERT_EQ(f.type(), CV_32FC4);
+  EXPECT_EQ(f.at<cv::Vec4f>(16, 48), cv::Vec4f(0, 0, 1, 1));
+  EXPECT_EQ(f.at<cv::Vec4f>(0, 0), cv::Vec4f(0, 0, 0, 0));  // uncovered: transparent
+  const cv::Mat w = render_flame(two_points(), {.depth = CV_16U});
+  ASSERT_EQ(w.type(), CV_16UC3);
+  EXPECT_EQ(w.at<cv::Vec3w>(42, 16), cv::Vec3w(0, 65535, 0));
+  EXPECT_THROW(render_flame(two_points(), {.channels = 2}), Error);
+}
+
+TEST(render_flame, rotate_turns_the_plotted_points_clockwise_about_the_centre) {
+  // By 90°: (dx, dy) = (0.4, −0.2) from the centre ↦ (−dy, dx) = (0.2, 0.4) → (40, 40).
+  Flame f = two_points();
+  f.camera.rotate = 90;
+  EXPECT_EQ(lit(render_flame(f)), (std::vector<cv::Point>{{14, 8}, {40, 40}}));
+  // zoom 1 doubles the scale: (0.4·80 + 32, −0.2·80 + 24) = (64, 8) is just outside; the
+  // other point, (−0.4·80 + 32, 0.45·80 + 24) = (0, 60), too.
+  f.camera.rotate = 0;
+  f.camera.zoom = 1;
+  EXPECT_TRUE(lit(render_flame(f)).empty());
+}
+
+TEST(render_flame, the_same_seed_gives_the_same_bytes_for_any_thread_count) {
+  Flame f = two_points();
+  f.camera = {.width = 96, .height = 80, .center = {0, 0}, .scale = 30};
+  f.filtering = {.supersample = 2, .filter_radius = 0.6, .estimator_radius = 4};
+  f.xforms[0].pre = {0.5, 0.1, -0.2, 0.5, 0.3, 0.1};
+  f.xforms[0].variations = {term("julia", 0.6), term("spherical", 0.4)};
+  f.xforms[1].pre = {0.6, 0, 0, 0.6, -0.4, 0};
+  f.xforms[1].variations = {term("swirl", 1), term("blur", 0.05)};
+  f.xforms[1].chaos = {2, 1};
+  f.final_xform = Xform{.pre = {1, 0, 0, 1, 0, 0}, .colour = 0.5, .colour_speed = 0.2};
+  f.final_xform->variations = {term("sinusoidal", 1)};
+  const cv::Mat one = render_flame(f, {.seed = 9, .threads = 1});
+  for (int threads : {2, 3, 5}) {
+    const cv::Mat other = render_flame(f, {.seed = 9, .threads = threads});
+    EXPECT_EQ(cv::norm(one, other, cv::NORM_INF), 0) << threads << " threads";
+  }
+  EXPECT_GT(cv::norm(one, render_flame(f, {.seed = 10, .threads = 1}), cv::NORM_L1), 0)
+      << "another seed draws other points";
+}
+
+TEST(render_tone, the_display_scales_colour_by_the_gamma_of_the_density) {
+  ToneMapping tone;
+  tone.gamma = 2;
+  tone.gamma_threshold = 0;
+  // α = 0.25: α^(1/2) = 0.5, ls = 256·0.5/0.25 = 512.
+  const double px[4] = {0.25, 0.125, 0, 0.25};
+  DisplayPixel p = display_pixel(px, tone);
+  EXPECT_DOUBLE_EQ(p.r, 128);
+  EXPECT_DOUBLE_EQ(p.g, 64);
+  EXPECT_DOUBLE_EQ(p.alpha, 0.5);
+  // No vibrancy: each channel's own gamma, 256·√0.125.
+  tone.vibrancy = 0;
+  p = display_pixel(px, tone);
+  EXPECT_DOUBLE_EQ(p.r, 128);
+  EXPECT_DOUBLE_EQ(p.g, 256 * std::sqrt(0.125));
+}
+
+TEST(render_tone, below_gamma_threshold_the_curve_blends_into_a_line) {
+  ToneMapping tone;
+  tone.gamma = 2;
+  tone.gamma_threshold = 0.01;
+  // α = 0.005, half the threshold: ½·α·√0.01/0.01 + ½·√α.
+  const double px[4] = {0.005, 0.005, 0.005, 0.005};
+  const double expected = 0.5 * 0.005 * 0.1 / 0.01 + 0.5 * std::sqrt(0.005);
+  EXPECT_DOUBLE_EQ(display_pixel(px, tone).alpha, expected);
+  EXPECT_NEAR(display_pixel(px, tone).r, 256 * expected, 1e-12);
+}
+
+TEST(render_tone, highlight_power_keeps_the_hue_of_a_clipped_colour) {
+  ToneMapping tone;
+  tone.gamma = 1;
+  const double px[4] = {2, 1, 0, 1};  // ls = 256: (512, 256, 0) before clipping
+  tone.highlight_power = -1;
+  DisplayPixel p = display_pixel(px, tone);
+  EXPECT_DOUBLE_EQ(p.r, 512);
+  EXPECT_DOUBLE_EQ(p.g, 256);
+  tone.highlight_power = 0;  // scaled to a largest channel of 255, saturation kept
+  p = display_pixel(px, tone);
+  EXPECT_DOUBLE_EQ(p.r, 255);
+  EXPECT_DOUBLE_EQ(p.g, 127.5);
+  EXPECT_DOUBLE_EQ(p.b, 0);
+  tone.highlight_power = 1000;  // (127.5/256)^1000: no saturation left, white
+  p = display_pixel(px, tone);
+  EXPECT_NEAR(p.b, 255, 1e-9);
+}
+
+TEST(render_tone, log_scale_follows_brightness_area_and_quality) {
+  Flame f;
+  f.camera = {.width = 100, .height = 100, .scale = 10};  // area 100 units²
+  const LogScale s = log_scale(f, 1, 10);
+  EXPECT_DOUBLE_EQ(s.k1, 4 * 268.0 / 256);
+  EXPECT_DOUBLE_EQ(s.k2, 1.0 / (100 * 10));
+  EXPECT_DOUBLE_EQ(s(1000), s.k1 * std::log(2.0) / 1000);
+  EXPECT_DOUBLE_EQ(log_scale(f, 2, 10).k2, 4.0 / 1000);  // ss² bins per pixel
+}
+
+TEST(render_tone, density_estimation_spreads_a_lone_hit_over_its_disc) {
+  FlameHistogram h(9, 9);
+  h.at(4, 4)[3] = 1;
+  h.at(4, 4)[0] = 1;
+  const LogScale scale{1, 1};
+  const Filtering f{.estimator_radius = 2, .estimator_minimum = 0, .estimator_curve = 0.4};
+  const FlameHistogram out = density_estimate(h, f, 1, scale, 1);
+  // Radius 2 at one hit: offsets with d² < 4, weights 1 − d²/4: 1, four 0.75, four 0.5 (sum 6).
+  const double ls = std::log(2.0);
+  EXPECT_DOUBLE_EQ(out.at(4, 4)[3], ls / 6);
+  EXPECT_DOUBLE_EQ(out.at(4, 5)[3], ls * 0.75 / 6);
+  EXPECT_DOUBLE_EQ(out.at(5, 5)[0], ls * 0.5 / 6);
+  EXPECT_EQ(out.at(4, 6)[3], 0);
+  // A dense bin (10⁶ hits: radius 2/10^2.4 < 1) keeps its log density to itself.
+  h.at(4, 4)[3] = 1e6;
+  const FlameHistogram dense = density_estimate(h, f, 1, scale, 1);
+  EXPECT_DOUBLE_EQ(dense.at(4, 4)[3], std::log1p(1e6));
+  EXPECT_EQ(dense.at(4, 5)[3], 0);
+}
+
+TEST(render_tone, the_gaussian_filter_of_half_a_pixel_has_three_taps) {
+  // span 2·1.5·0.5 = 1.5 → 3 taps (odd, as ss), at x = −2, 0, 2: e^−8, 1, e^−8.
+  const SpatialKernel k = spatial_kernel("gaussian", 0.5, 1);
+  ASSERT_EQ(k.width, 3);
+  EXPECT_EQ(k.gutter, 1);
+  EXPECT_DOUBLE_EQ(k.taps[1], 1 / (1 + 2 * std::exp(-8.0)));
+  EXPECT_THROW(spatial_kernel("sharp", 0.5, 1), Error);
+}
+
+TEST(render_flame, draws_an_asymmetric_flame_as_flam3_render_does) {
+  if (std::system("command -v flam3-render > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
+  // An L of constant maps (colour speed 1: each point has its map's colour exactly, so the
+  // pictures agree to the byte) plus a rotation and an off-centre camera: a mirror, a transpose or
+  // a turn the wrong way moves the lit pixels.
+  const std::string xml = R"(<flame name="L" size="64 48" center="0.1 -0.05" scale="40"
+    rotate="30" quality="10" filter="0" oversample="1" estimator_radius="0" gamma="1">
+  <xform weight="1" color="0" color_speed="1" linear="1" coefs="0 0 0 0 0.5 -0.25"/>
+  <xform weight="1" color="0.5" color_speed="1" linear="1" coefs="0 0 0 0 -0.3 0.4"/>
+  <xform weight="1" color="1" color_speed="1" linear="1" coefs="0 0 0 0 -0.3 -0.2"/>
+  <color index="0" rgb="255 0 0"/>)";
+  std::string text = xml;
+  for (int i = 1; i < 256; ++i)
+    text += "<color index=\"" + std::to_string(i) + "\" rgb=\"" +
+            (i < 192 ? "0 255 0" : "0 0 255") + "\"/>";
+  text += "</flame>";
+  const fs::path dir = fs::temp_directory_path();
+  const fs::path in = dir / "ifsfx_render_L.flame", out = dir / "ifsfx_render_L.png";
+  std::FILE* file = std::fopen(in.c_str(), "w");
+  ASSERT_NE(file, nullptr);
+  std::fputs(text.c_str(), file);
+  std::fclose(file);
+  const std::string cmd = "env out=" + out.string() + " format=png verbose=0 flam3-render < " +
+                          in.string() + " > /dev/null 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  cv::Mat theirs = read_image(out).pixels;
+  if (theirs.channels() == 4) cv::cvtColor(theirs, theirs, cv::COLOR_BGRA2BGR);
+  cv::Mat theirs8;
+  theirs.convertTo(theirs8, CV_8U);
+  const cv::Mat ours = render_flame(read_flame(in.string()));
+  EXPECT_EQ(lit(ours), lit(theirs8));
+  EXPECT_EQ(cv::norm(ours, theirs8, cv::NORM_INF), 0);
+}
+
+}  // namespace
+}  // namespace ifsfx::flame

@@ -1,0 +1,49 @@
+# SPDX-License-Identifier: Apache-2.0
+# Fractal flames from Python (docs/flames.md): ifsfx.render_flame and ifsfx.render of a flame
+# file give the pixels `ifsfx render FILE.flame` writes.
+import numpy as np
+import pytest
+
+import ifsfx
+from conftest import cli_image
+
+EXPECTED_TESTS = 3
+
+PALETTE = "".join(f"{i:02X}00{255 - i:02X}" for i in range(256))
+FLAME = f"""<flame name="spiral" size="80 60" center="0 0" scale="20" quality="4" estimator_radius="0">
+  <xform weight="0.5" color="0" linear="0.8" swirl="0.2" coefs="0.6 0.2 -0.2 0.6 0.5 0"/>
+  <xform weight="0.5" color="1" spherical="1" coefs="0.5 0 0 0.5 -0.5 0.2"/>
+  <palette count="256" format="RGB">{PALETTE}</palette>
+</flame>
+"""
+
+
+@pytest.fixture
+def flame_file(tmp_path):
+    path = tmp_path / "spiral.flame"
+    path.write_text(FLAME)
+    return str(path)
+
+
+def test_render_flame_at_its_own_size_equals_the_cli(cli, tmp_path, flame_file):
+    a = ifsfx.render_flame(flame_file, seed=2, alpha=True)
+    b = cli_image(cli, tmp_path, "render", flame_file, "--seed", "2")
+    assert a.shape == (60, 80, 4)
+    np.testing.assert_array_equal(a, b)
+    assert a[:, :, :3].max() > 0
+    assert ifsfx.render_flame(flame_file, seed=2).shape == (60, 80, 3)
+
+
+def test_render_of_a_flame_is_the_measure_at_the_size_given(cli, tmp_path, flame_file):
+    a = ifsfx.render(flame_file, size=(64, 48), quality=3, seed=5, alpha=True)
+    b = cli_image(cli, tmp_path, "render", flame_file, "--size", "64x48", "--quality", "3",
+                  "--seed", "5")
+    assert a.shape == (48, 64, 4)
+    np.testing.assert_array_equal(a, b)
+    np.testing.assert_array_equal(ifsfx.render_flame(flame_file, size="64x48", quality=3, seed=5,
+                                                     alpha=True), a)
+
+
+def test_other_modes_of_a_flame_are_refused_with_the_reason(flame_file):
+    with pytest.raises(ValueError, match="mode tops: a flame renders in mode measure"):
+        ifsfx.render(flame_file, mode="tops")
