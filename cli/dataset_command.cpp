@@ -118,7 +118,8 @@ void run_render(const RenderArgs& args) {
     options.output.inputs.add(args.weights);
     spec.weights = db::read_weights(args.weights);
   } else {
-    spec.weights = db::weights_table(args.weight_step > 0 ? args.weight_step : 0.1);
+    spec.weights =
+        db::weights_table(args.weight_step > 0 ? args.weight_step : db::kDefaultWeightStep);
   }
   db::check(spec);
 

@@ -286,10 +286,10 @@ void add_fit_command(CLI::App& app) {
                   "Stop the search after this many seconds (0: no cap; then the same seed gives "
                   "the same maps on any machine)")
       ->capture_default_str()
-      ->check(number_in(0, 1e6));
+      ->check(number_in(0, kMaxFitSeconds));
   cmd->add_option("--max-evaluations", args->max_evaluations, "Objective evaluations over all runs")
       ->capture_default_str()
-      ->check(CLI::Range(2L, 100000000L));
+      ->check(CLI::Range(2L, kMaxFitEvaluations));
   cmd->add_option("--preview", args->preview,
                   "Write target, collage and attractor side by side to this image, each of the "
                   "N pieces in its own colour (missed pixels dark grey, spill dimmed)");

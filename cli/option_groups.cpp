@@ -145,7 +145,7 @@ void add_texture_options(CLI::App& cmd, const std::shared_ptr<TextureArgs>& args
   cmd.add_option("--size", args->size, "Output size WxH in pixels")->capture_default_str();
   cmd.add_option("-V,--buffers", args->count, "V, the number of buffers (V-variability)")
       ->capture_default_str()
-      ->check(CLI::Range(1, 1000));
+      ->check(CLI::Range(1, kMaxTextureBuffers));
   cmd.add_option("--steps", args->steps,
                  "Burn-in steps; 0 = enough that s^steps x size < 1/8 pixel for the largest "
                  "contraction factor s")

@@ -244,6 +244,49 @@ void run_flame_render(const RenderArgs& args) {
         args.output);
 }
 
+// --mode, its choices and one line of help for each, from the modes' table (run/render_modes.h).
+void add_mode_option(CLI::App& cmd, RenderMode& mode) {
+  std::map<std::string, RenderMode> modes;
+  std::string mode_help;
+  for (const RenderModeInfo& info : render_modes()) {
+    modes.emplace(info.name, info.mode);
+    mode_help += fmt::format("{}{}: {}", mode_help.empty() ? "" : "; ", info.name, info.help);
+  }
+  cmd.add_option("--mode", mode, mode_help)
+      ->transform(choice(modes))
+      ->default_str("measure")
+      ->option_text(choices_text(modes, "measure"));
+}
+
+// The options only some modes take (check_mode_options refuses them for the others), and
+// --save-flame among them where the help has always listed it; returns --exact/--chaos, whose
+// absence picks the mode's default.
+CLI::Option* add_per_mode_options(CLI::App& cmd, RenderArgs& args) {
+  cmd.add_option("--source", args.source,
+                 "steal mode: image to steal colours from (any format OpenImageIO reads)");
+  cmd.add_option("--colouring", args.colouring,
+                 "steal mode: colouring IFS preset with as many maps, fitted to the source "
+                 "(default: a tiling of the source for the number of maps)");
+  // The exact descent is the default: faster than the chaos game for every shipped preset at
+  // 720p and 1080p, and without noise (bench/README.md, steal_modes_bench).
+  auto* map_method = cmd.add_flag(
+      "--exact,!--chaos", args.exact,
+      "tops/steal modes: top addresses by exact per-pixel descent (default; no noise or holes), "
+      "or with --chaos by the chaos game, the paper's method (--quality points per pixel)");
+  cmd.add_flag("--second-symbol", args.second_symbol,
+               "tops mode: mix in the colour of the second symbol of the top address");
+  cmd.add_option("--save-map", args.save_map,
+                 "steal mode: also save the steal map, for `ifsfx apply MAP IMAGE`");
+  cmd.add_option("--save-flame", args.save_flame,
+                 "Also write the IFS as a flame file (.flame) that flam3, Apophysis, JWildfire "
+                 "and Fractorium open, drawing its measure framed as this picture");
+  cmd.add_option("--background", args.background,
+                 "tops/steal modes: colour off the attractor in formats without alpha "
+                 "(black, white, #rrggbb, R,G,B); PNG/TIFF/EXR get a transparent background")
+      ->default_str("black");
+  return map_method;
+}
+
 }  // namespace
 
 void add_render_command(CLI::App& app) {
@@ -259,16 +302,7 @@ void add_render_command(CLI::App& app) {
                   "Output image; format by extension: .png (8/16-bit), .tif, .exr (float), .jpg")
       ->required();
   cmd->add_option("--size", args->size, "Output size WxH in pixels")->capture_default_str();
-  std::map<std::string, RenderMode> modes;
-  std::string mode_help;
-  for (const RenderModeInfo& info : render_modes()) {
-    modes.emplace(info.name, info.mode);
-    mode_help += fmt::format("{}{}: {}", mode_help.empty() ? "" : "; ", info.name, info.help);
-  }
-  cmd->add_option("--mode", args->mode, mode_help)
-      ->transform(choice(modes))
-      ->default_str("measure")
-      ->option_text(choices_text(modes, "measure"));
+  add_mode_option(*cmd, args->mode);
   cmd->add_option("--view", args->view,
                   "Plane rectangle x0,y0,x1,y1 shown (default: the attractor, auto-framed)");
   auto* margin = cmd->add_option("--margin", args->options.sampling.margin,
@@ -304,28 +338,7 @@ void add_render_command(CLI::App& app) {
   cmd->add_flag("--allow-expansive", args->allow_expansive,
                 "Accept maps with factor >= 1 when the IFS contracts on average");
   cmd->add_flag("-q,--quiet", args->quiet, "Do not print the summary line");
-  cmd->add_option("--source", args->source,
-                  "steal mode: image to steal colours from (any format OpenImageIO reads)");
-  cmd->add_option("--colouring", args->colouring,
-                  "steal mode: colouring IFS preset with as many maps, fitted to the source "
-                  "(default: a tiling of the source for the number of maps)");
-  // The exact descent is the default: faster than the chaos game for every shipped preset at
-  // 720p and 1080p, and without noise (bench/README.md, steal_modes_bench).
-  auto* map_method = cmd->add_flag(
-      "--exact,!--chaos", args->exact,
-      "tops/steal modes: top addresses by exact per-pixel descent (default; no noise or holes), "
-      "or with --chaos by the chaos game, the paper's method (--quality points per pixel)");
-  cmd->add_flag("--second-symbol", args->second_symbol,
-                "tops mode: mix in the colour of the second symbol of the top address");
-  cmd->add_option("--save-map", args->save_map,
-                  "steal mode: also save the steal map, for `ifsfx apply MAP IMAGE`");
-  cmd->add_option("--save-flame", args->save_flame,
-                  "Also write the IFS as a flame file (.flame) that flam3, Apophysis, JWildfire "
-                  "and Fractorium open, drawing its measure framed as this picture");
-  cmd->add_option("--background", args->background,
-                  "tops/steal modes: colour off the attractor in formats without alpha "
-                  "(black, white, #rrggbb, R,G,B); PNG/TIFF/EXR get a transparent background")
-      ->default_str("black");
+  auto* map_method = add_per_mode_options(*cmd, *args);
   add_seamless_options(*cmd, args->tiles);
   cmd->callback([args, cmd, map_method, margin] {
     args->map_method_given = map_method->count() > 0;

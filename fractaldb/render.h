@@ -100,10 +100,14 @@ inline constexpr int kFlips = 4;
 // (allocated when it is not of that size and type).
 void to_image(const cv::Mat& canvas, int flip, DrawType draw, bool rgb, cv::Mat& out);
 
+// The reference's weight step K (its weights_0.1.csv): the weights of a dataset whose command,
+// Python call or studio request names none are weights_table(kDefaultWeightStep).
+inline constexpr double kDefaultWeightStep = 0.1;
+
 // A dataset: categories × weights × instances × flips (make_fractaldb.py's loops).
 struct DatasetSpec {
   std::vector<Category> categories;  // label = index; names must differ
-  std::vector<Weight> weights;       // e.g. weights_table(0.1), the reference's default
+  std::vector<Weight> weights;       // e.g. weights_table(kDefaultWeightStep)
   DrawSettings settings;
   int instances = 10;      // --instance: pictures per category and weight (patch types only; the
                            // point types draw one, as the reference does)

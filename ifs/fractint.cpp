@@ -135,41 +135,76 @@ class FractintReader {
     return note;
   }
 
+  // Keeps the first error found inside an entry (the entry's own; the file reads on).
+  static void defer(detail::FractintEntry& entry, Error error) {
+    if (!entry.error) entry.error = std::move(error);
+  }
+
   // Errors of the file's structure (a missing brace) throw at once; errors inside a well-formed
   // entry (a (3D) tag, a bad number, a count that does not fit) stay with that entry, so that
   // the other entries of the file can still be used.
   detail::FractintEntry entry() {
     const std::size_t begin = pos_;
-    const int name_line = line_;
     if (peek() == '{' || peek() == '}' || peek() == '(' || peek() == ',')
       fail(ErrorKind::parse, line_,
            fmt::format("an entry starts with its name, as in NAME {{ a b c d e f p ... }} "
                        "(got '{}')",
                        peek()));
     detail::FractintEntry out;
+    out.line = line_;
     out.name = std::string(token(true));
-    out.line = name_line;
     const std::string& name = out.name;
-    auto defer = [&](ErrorKind kind, int line, const std::string& what) {
-      if (!out.error) out.error = error_at(kind, line, what);
-    };
     skip(is_space);
-    if (!at_end() && peek() == '(') {
-      const std::size_t tag_begin = pos_;
-      while (!at_end() && peek() != ')' && peek() != '\n') ++pos_;
-      if (at_end() || peek() != ')')
-        fail(ErrorKind::parse, line_, fmt::format("entry '{}': missing ')' after its tag", name));
-      const std::string tag = lowercase(trim(text_.substr(tag_begin + 1, pos_ - tag_begin - 1)));
-      ++pos_;
-      if (tag == "3d")
-        defer(ErrorKind::unsupported, name_line,
-              fmt::format("entry '{}': only 2-D IFSs are supported (got a (3D) entry)", name));
-      else
-        defer(ErrorKind::parse, name_line,
-              fmt::format("entry '{}': unknown tag, Fractint knows only (3D) (got '{}')", name,
-                          text_.substr(tag_begin, pos_ - tag_begin)));
+    if (!at_end() && peek() == '(') read_tag(out);
+    skip(is_space);
+    const int brace_line = open_brace(name);
+
+    IfsPreset preset;
+    if (std::optional<std::string> note = brace_line_note())
+      preset.description = std::move(*note);
+    else
+      preset.description = skip(is_separator);
+    const std::vector<Number> numbers = read_numbers(out, brace_line);
+    ++pos_;  // the closing brace
+
+    if (out.error) return out;
+    try {
+      preset.ifs = to_ifs(name, out.line, numbers);
+    } catch (const Error& e) {
+      out.error = e;
+      return out;
     }
-    skip(is_space);
+    preset.ifs.name = name;
+    preset.origin = fmt::format("{}:{}", filename_, name);
+    preset.format = PresetFormat::fractint;
+    preset.text = std::string(text_.substr(begin, pos_ - begin)) + "\n";
+    out.preset = std::move(preset);
+    return out;
+  }
+
+  // The tag after an entry's name, "(3D)" or another: either makes the entry unusable.
+  void read_tag(detail::FractintEntry& entry) {
+    const std::size_t tag_begin = pos_;
+    while (!at_end() && peek() != ')' && peek() != '\n') ++pos_;
+    if (at_end() || peek() != ')')
+      fail(ErrorKind::parse, line_,
+           fmt::format("entry '{}': missing ')' after its tag", entry.name));
+    const std::string tag = lowercase(trim(text_.substr(tag_begin + 1, pos_ - tag_begin - 1)));
+    ++pos_;
+    if (tag == "3d")
+      defer(entry, error_at(ErrorKind::unsupported, entry.line,
+                            fmt::format("entry '{}': only 2-D IFSs are supported (got a (3D) "
+                                        "entry)",
+                                        entry.name)));
+    else
+      defer(entry, error_at(ErrorKind::parse, entry.line,
+                            fmt::format("entry '{}': unknown tag, Fractint knows only (3D) (got "
+                                        "'{}')",
+                                        entry.name, text_.substr(tag_begin, pos_ - tag_begin))));
+  }
+
+  // The '{' after the name (and tag), passed; returns its line.
+  int open_brace(const std::string& name) {
     if (at_end() || peek() != '{') {
       std::string got = "the end of the file";
       if (!at_end()) {
@@ -181,12 +216,13 @@ class FractintReader {
     }
     const int brace_line = line_;
     ++pos_;
+    return brace_line;
+  }
 
-    IfsPreset preset;
-    if (std::optional<std::string> note = brace_line_note())
-      preset.description = std::move(*note);
-    else
-      preset.description = skip(is_separator);
+  // The numbers up to the entry's closing '}' (left unread); a token that is not a number is the
+  // entry's error, unless it starts the next entry (then the '}' is missing).
+  std::vector<Number> read_numbers(detail::FractintEntry& entry, int brace_line) {
+    const std::string& name = entry.name;
     std::vector<Number> numbers;
     while (true) {
       skip(is_separator);
@@ -205,25 +241,12 @@ class FractintReader {
         if (!at_end() && (peek() == '{' || peek() == '('))  // the next entry's name
           fail(ErrorKind::parse, line,
                fmt::format("entry '{}': missing '}}' before the next entry '{}'", name, t));
-        defer(ErrorKind::parse, line, fmt::format("entry '{}': not a number (got '{}')", name, t));
+        defer(entry, error_at(ErrorKind::parse, line,
+                              fmt::format("entry '{}': not a number (got '{}')", name, t)));
       }
       numbers.push_back({x, line});
     }
-    ++pos_;  // the closing brace
-
-    if (out.error) return out;
-    try {
-      preset.ifs = to_ifs(name, name_line, numbers);
-    } catch (const Error& e) {
-      out.error = e;
-      return out;
-    }
-    preset.ifs.name = name;
-    preset.origin = fmt::format("{}:{}", filename_, name);
-    preset.format = PresetFormat::fractint;
-    preset.text = std::string(text_.substr(begin, pos_ - begin)) + "\n";
-    out.preset = std::move(preset);
-    return out;
+    return numbers;
   }
 
   // 7 numbers per map (a b c d e f p), or 6 (a b c d e f) with default probabilities. A count that

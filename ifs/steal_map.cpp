@@ -7,6 +7,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <optional>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -49,113 +52,160 @@ int levels_for(double contraction) {
                     128);
 }
 
-cv::Mat uv_from_keys(const AddressRaster& tops, const Ifs& F, const Ifs& G, int threads) {
-  // The pixel's winning point x is the one with the largest address in the pixel, so it sits at
-  // an extreme of the pixel (towards the higher maps' side): evaluating T at x itself would
-  // shift the whole picture by up to a pixel. Instead the address is cut after the first m
-  // symbols w = σ1 … σm, where the piece f_w(A) holding x has shrunk to about the pixel, and T at
-  // the pixel centre x_c is taken from T(x) = g_w(T(f_w⁻¹(x))) on that piece, with T inside
-  // approximated by Φ, the affine map of F's attractor box onto G's:
-  // T(x_c) ≈ g_w(Φ(f_w⁻¹(x_c))). The error is a fraction of the piece g_w(R), about a pixel, but
-  // without the bias of the winning point; it vanishes when Φ = T (F = G: the identity oracle,
-  // whatever the pixel grid). Where w holds a singular map (no f_w⁻¹), the centre of g_w(R) is
-  // used instead.
-  const int k_symbols = tops.symbols();
-  const std::uint32_t n = static_cast<std::uint32_t>(G.size());
-  // On the torus of the tile (docs/design.md §11) A lies in the tile: Φ maps the tile onto G's box.
-  const bool torus = tops.viewport.wrap;
-  const Box fb = torus ? tops.viewport.view : attractor_bounds(F);
-  const double extent = std::max(fb.width(), fb.height());
-  const double pixel = std::min(tops.viewport.view.width() / tops.viewport.size.width,
-                                tops.viewport.view.height() / tops.viewport.size.height);
-  // Per-map shrink factors of F (maps of factor ≥ 1 that contract in pairs count at F's word rate).
-  const double word = word_contraction(F);
-  std::vector<double> factor(F.size());
-  std::vector<bool> singular(F.size());
-  for (std::size_t i = 0; i < F.size(); ++i) {
-    const double s = F.maps[i].contraction();
-    factor[i] = s < 1 ? s : std::min(word, 0.999);
-    singular[i] = !F.maps[i].inverse().has_value();
-  }
-  const Box gb = attractor_bounds(G);
+namespace {
+
+// Φ: the affine map of F's attractor box `fb` onto G's `gb`, a degenerate side (a line
+// attractor) onto the middle of G's.
+AffineMap box_onto_box(const Box& fb, const Box& gb) {
   const Point centre{0.5 * (gb.x0 + gb.x1), 0.5 * (gb.y0 + gb.y1)};
-  // Φ: F's box onto G's, a degenerate side (a line attractor) onto the middle of G's.
   const auto scale = [](double from, double to) { return from > 0 ? to / from : 0.0; };
   const double phi_x = scale(fb.width(), gb.width()), phi_y = scale(fb.height(), gb.height());
-  const AffineMap phi{phi_x,
-                      0,
-                      0,
-                      phi_y,
-                      centre.x - phi_x * 0.5 * (fb.x0 + fb.x1),
-                      centre.y - phi_y * 0.5 * (fb.y0 + fb.y1)};
-  // The torus: f_w⁻¹ is taken one map at a time, x ← f_σ⁻¹(x + λ) for the first translate of x
-  // by the lattice whose preimage lies in the tile (in pixel coordinates, λ = (i·W, j·H)).
-  const Viewport& vp = tops.viewport;
-  const AffineMap to_pixel = vp.plane_to_pixel(), from_pixel = *to_pixel.inverse(0);
-  const double width = vp.size.width, height = vp.size.height;
-  std::vector<std::optional<AffineMap>> pixel_inverse;
-  std::vector<Box> piece;  // f_σ of the tile, in pixel coordinates
-  for (const AffineMap& f : F.maps) {
-    const AffineMap h = to_pixel.compose(f).compose(from_pixel);
-    const auto inv = h.inverse();
-    pixel_inverse.push_back(inv);
-    Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
-    for (const Point c : {Point{0, 0}, Point{width, 0}, Point{0, height}, Point{width, height}}) {
-      const Point p = h(c);
-      b = {std::min(b.x0, p.x), std::min(b.y0, p.y), std::max(b.x1, p.x), std::max(b.y1, p.y)};
+  return {phi_x,
+          0,
+          0,
+          phi_y,
+          centre.x - phi_x * 0.5 * (fb.x0 + fb.x1),
+          centre.y - phi_y * 0.5 * (fb.y0 + fb.y1)};
+}
+
+// f_σ⁻¹ on the torus of the tile (docs/design.md §11), in pixel coordinates: x ← f_σ⁻¹(x + λ)
+// for the first translate of x by the lattice, λ = (i·W, j·H), whose preimage lies in the tile
+// (else the one nearest to it).
+class TorusPreimage {
+ public:
+  explicit TorusPreimage(const Ifs& F, const Viewport& vp)
+      : width_(vp.size.width), height_(vp.size.height) {
+    const AffineMap to_pixel = vp.plane_to_pixel(), from_pixel = *to_pixel.inverse(0);
+    for (const AffineMap& f : F.maps) {
+      const AffineMap h = to_pixel.compose(f).compose(from_pixel);
+      inverse_.push_back(h.inverse());
+      Box b{INFINITY, INFINITY, -INFINITY, -INFINITY};
+      for (const Point c :
+           {Point{0, 0}, Point{width_, 0}, Point{0, height_}, Point{width_, height_}}) {
+        const Point p = h(c);
+        b = {std::min(b.x0, p.x), std::min(b.y0, p.y), std::max(b.x1, p.x), std::max(b.y1, p.y)};
+      }
+      piece_.push_back(b);
     }
-    piece.push_back(b);
   }
-  const auto torus_preimage = [&](std::uint32_t sigma, Point x) {
-    const AffineMap& inv = *pixel_inverse[sigma];
-    const Box& b = piece[sigma];
+
+  Point operator()(std::uint32_t sigma, Point x) const {
+    const AffineMap& inv = *inverse_[sigma];
+    const Box& b = piece_[sigma];
     Point best = inv(x);
     double best_d = INFINITY;
-    for (double i = std::ceil((b.x0 - x.x) / width); i <= std::floor((b.x1 - x.x) / width); ++i)
-      for (double j = std::ceil((b.y0 - x.y) / height); j <= std::floor((b.y1 - x.y) / height);
+    for (double i = std::ceil((b.x0 - x.x) / width_); i <= std::floor((b.x1 - x.x) / width_); ++i)
+      for (double j = std::ceil((b.y0 - x.y) / height_); j <= std::floor((b.y1 - x.y) / height_);
            ++j) {
-        const Point p = inv(Point{x.x + i * width, x.y + j * height});
-        const double dx = std::max({0.0, -p.x, p.x - width}),
-                     dy = std::max({0.0, -p.y, p.y - height});
+        const Point p = inv(Point{x.x + i * width_, x.y + j * height_});
+        const double dx = std::max({0.0, -p.x, p.x - width_}),
+                     dy = std::max({0.0, -p.y, p.y - height_});
         if (dx * dx + dy * dy < best_d) best_d = dx * dx + dy * dy, best = p;
         if (best_d == 0) return best;
       }
     return best;
-  };
+  }
+
+ private:
+  double width_, height_;
+  std::vector<std::optional<AffineMap>> inverse_;
+  std::vector<Box> piece_;  // f_σ of the tile, in pixel coordinates
+};
+
+// T at a pixel's centre from its top address. The pixel's winning point x is the one with the
+// largest address in the pixel, so it sits at an extreme of the pixel (towards the higher maps'
+// side): evaluating T at x itself would shift the whole picture by up to a pixel. Instead the
+// address is cut after the first m symbols w = σ1 … σm, where the piece f_w(A) holding x has
+// shrunk to about the pixel, and T at the pixel centre x_c is taken from T(x) = g_w(T(f_w⁻¹(x)))
+// on that piece, with T inside approximated by Φ, the affine map of F's attractor box onto G's:
+// T(x_c) ≈ g_w(Φ(f_w⁻¹(x_c))). The error is a fraction of the piece g_w(R), about a pixel, but
+// without the bias of the winning point; it vanishes when Φ = T (F = G: the identity oracle,
+// whatever the pixel grid). Where w holds a singular map (no f_w⁻¹), the centre of g_w(R) is
+// used instead.
+class AddressCut {
+ public:
+  AddressCut(const AddressRaster& tops, const Ifs& F, const Ifs& G)
+      : tops_(tops),
+        F_(F),
+        G_(G),
+        n_(static_cast<std::uint32_t>(G.size())),
+        // On the torus of the tile (docs/design.md §11) A lies in the tile: Φ maps the tile onto
+        // G's box.
+        torus_(tops.viewport.wrap),
+        pixel_(std::min(tops.viewport.view.width() / tops.viewport.size.width,
+                        tops.viewport.view.height() / tops.viewport.size.height)),
+        from_pixel_(*tops.viewport.plane_to_pixel().inverse(0)),
+        torus_preimage_(F, tops.viewport) {
+    const Box fb = torus_ ? tops.viewport.view : attractor_bounds(F);
+    extent_ = std::max(fb.width(), fb.height());
+    // Per-map shrink factors of F (maps of factor ≥ 1 that contract in pairs count at F's word
+    // rate).
+    const double word = word_contraction(F);
+    for (const AffineMap& f : F.maps) {
+      const double s = f.contraction();
+      factor_.push_back(s < 1 ? s : std::min(word, 0.999));
+      singular_.push_back(!f.inverse().has_value());
+    }
+    const Box gb = attractor_bounds(G);
+    centre_ = {0.5 * (gb.x0 + gb.x1), 0.5 * (gb.y0 + gb.y1)};
+    phi_ = box_onto_box(fb, gb);
+  }
+
+  // T(x_c) for pixel (col, row), whose top address is `key` (nonzero).
+  Point operator()(std::uint64_t key, int col, int row) const {
+    AffineMap f_w, g_w;  // identities, then f_σ1 ∘ … ∘ f_σm and g_σ1 ∘ … ∘ g_σm
+    bool invertible = true;
+    double size = extent_;
+    int symbols_used = 0;
+    for (int m = 0; m < tops_.symbols() && size > 1.01 * pixel_; ++m, ++symbols_used) {
+      const std::uint32_t sigma = symbol(key, m);
+      size *= factor_[sigma];
+      invertible = invertible && !singular_[sigma];
+      f_w = f_w.compose(F_.maps[sigma]);
+      g_w = g_w.compose(G_.maps[sigma]);
+    }
+    if (torus_) {
+      if (!invertible) return g_w(centre_);
+      Point x{col + 0.5, static_cast<double>(row) + 0.5};
+      for (int m = 0; m < symbols_used; ++m) x = torus_preimage_(symbol(key, m), x);
+      return g_w(phi_(from_pixel_(x)));
+    }
+    std::optional<AffineMap> f_inv;
+    if (invertible) f_inv = f_w.inverse(0);
+    return f_inv ? g_w(phi_((*f_inv)(tops_.viewport.pixel_centre(col, row)))) : g_w(centre_);
+  }
+
+ private:
+  std::uint32_t symbol(std::uint64_t key, int m) const {
+    return std::min(tops_.symbol(key, m), n_ - 1);
+  }
+
+  const AddressRaster& tops_;
+  const Ifs& F_;
+  const Ifs& G_;
+  std::uint32_t n_;
+  bool torus_;
+  double pixel_, extent_ = 0;
+  AffineMap from_pixel_, phi_;
+  TorusPreimage torus_preimage_;
+  std::vector<double> factor_;
+  std::vector<bool> singular_;
+  Point centre_;
+};
+
+}  // namespace
+
+cv::Mat uv_from_keys(const AddressRaster& tops, const Ifs& F, const Ifs& G, int threads) {
+  const AddressCut T(tops, F, G);
   cv::Mat uv(tops.viewport.size, CV_32FC2, cv::Scalar::all(0));
   const std::size_t rows = static_cast<std::size_t>(uv.rows);
   parallel_for(rows, threads, [&](std::size_t r, int) {
-    auto* out = uv.ptr<cv::Vec2f>(static_cast<int>(r));
+    const int row = static_cast<int>(r);
+    auto* out = uv.ptr<cv::Vec2f>(row);
     for (int col = 0; col < uv.cols; ++col) {
-      const std::uint64_t key = tops.at(col, static_cast<int>(r));
+      const std::uint64_t key = tops.at(col, row);
       if (key == 0) continue;
-      AffineMap f_w, g_w;  // identities, then f_σ1 ∘ … ∘ f_σm and g_σ1 ∘ … ∘ g_σm
-      bool invertible = true;
-      double size = extent;
-      int symbols_used = 0;
-      for (int m = 0; m < k_symbols && size > 1.01 * pixel; ++m, ++symbols_used) {
-        const std::uint32_t sigma = std::min(tops.symbol(key, m), n - 1);
-        size *= factor[sigma];
-        invertible = invertible && !singular[sigma];
-        f_w = f_w.compose(F.maps[sigma]);
-        g_w = g_w.compose(G.maps[sigma]);
-      }
-      if (torus) {
-        Point y = g_w(centre);
-        if (invertible) {
-          Point x{col + 0.5, static_cast<double>(r) + 0.5};
-          for (int m = 0; m < symbols_used; ++m)
-            x = torus_preimage(std::min(tops.symbol(key, m), n - 1), x);
-          y = g_w(phi(from_pixel(x)));
-        }
-        out[col] = cv::Vec2f(static_cast<float>(y.x), static_cast<float>(1 - y.y));
-        continue;
-      }
-      std::optional<AffineMap> f_inv;
-      if (invertible) f_inv = f_w.inverse(0);
-      const Point y = f_inv
-                          ? g_w(phi((*f_inv)(tops.viewport.pixel_centre(col, static_cast<int>(r)))))
-                          : g_w(centre);
+      const Point y = T(key, col, row);
       out[col] = cv::Vec2f(static_cast<float>(y.x), static_cast<float>(1 - y.y));
     }
   });

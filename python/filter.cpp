@@ -18,6 +18,7 @@
 #include "python/errors.h"
 #include "python/options.h"
 #include "python/presets.h"
+#include "run/filter_options.h"
 
 namespace ifsfx::python {
 namespace {
@@ -133,11 +134,7 @@ std::optional<cv::Size> optional_size(const py::object& size, const std::string&
   return size_arg(size, what);
 }
 
-}  // namespace
-
-void bind_filter(py::module_& m) {
-  const engine::FractalSettings d;
-  py::class_<Filter>(m, "Filter", R"doc(
+constexpr const char* kFilterDoc = R"doc(
 The video filter of `ifsfx filter`, frame by frame: each frame coloured through the fractal's
 steal map, for frames that come from cv2.VideoCapture, PyAV or a camera. A frame is a pure
 function of the settings, its size and its index, equal to the frame `ifsfx filter` writes:
@@ -148,37 +145,80 @@ function of the settings, its size and its index, equal to the frame `ifsfx filt
 
 The maps are prepared on the first frame's size (or on frame_size= at once); every later frame
 must have that size (ValueError otherwise).
-)doc")
-      .def(py::init([](const py::object& preset, const py::object& colouring,
-                       const py::object& view, double margin, double quality, double mix,
-                       const py::object& background, bool exact, std::uint64_t seed, int threads,
-                       const std::string& interpolation, const py::object& animate,
-                       double drift_amount, double drift_speed, int keyframe_interval,
-                       const py::object& superifs, int buffers, std::int64_t loop,
-                       const py::object& size, const py::object& frame_size, double fps, bool rgb) {
-             const engine::FractalSettings settings =
-                 fractal_settings({.preset = preset,
-                                   .colouring = colouring,
-                                   .view = view,
-                                   .background = background,
-                                   .animate = animate,
-                                   .interpolation = interpolation,
-                                   .margin = margin,
-                                   .quality = quality,
-                                   .mix = mix,
-                                   .drift_amount = drift_amount,
-                                   .drift_speed = drift_speed,
-                                   .exact = exact,
-                                   .seed = seed,
-                                   .threads = threads,
-                                   .keyframe_interval = keyframe_interval,
-                                   .buffers = buffers,
-                                   .superifs = spec_arg(superifs, "superifs"),
-                                   .loop = loop});
-             return std::make_unique<Filter>(settings, optional_size(size, "size"),
-                                             optional_size(frame_size, "frame_size"), fps, rgb);
-           }),
-           py::arg("preset") = engine::kDefaultPreset, py::kw_only(),
+)doc";
+
+// The keywords' docstring, its defaults the engine's (d) and the command's (fps).
+std::string filter_init_doc(const engine::FractalSettings& d, double fps) {
+  return fmt::format(
+      R"doc(The settings of `ifsfx filter`, keyword for flag, with its defaults:
+
+preset: the drawing IFS F: a shipped name, a .toml/.ifs path or "FILE.ifs:NAME", default
+    "{}".
+colouring: the colouring IFS G (as many maps as F), default None: a tiling of the frame.
+view: plane rectangle (x0, y0, x1, y1) or "x0,y0,x1,y1" shown on the frame, default None:
+    the attractor, auto-framed with `margin` (default {}).
+quality: exact=False: chaos-game points per pixel, default {}.
+mix: weight of the original frame blended over the fractal, 0..1, default {}.
+background: where the attractor does not reach: "black" (default), "white", "original",
+    "#rrggbb", "R,G,B" or (R, G, B).
+exact: the exact per-pixel descent (default True) or the chaos game (False).
+seed: default {}. threads: default 0 = all cores; the frames never depend on it.
+interpolation: "bilinear" (default) or "nearest".
+animate: "none" (default, or None: one fixed map), "drift" (the maps wander by fBm noise) or
+    "superifs" (a V-variable step of `superifs` per keyframe).
+drift_amount: default {}. drift_speed: cycles per second, default {}.
+keyframe_interval: frames between rebuilt maps, cross-faded between, default {}.
+superifs: default "{}". buffers: its V, default {}.
+loop: the animation repeats every `loop` frames, bit for bit, default 0: never.
+size: output (width, height) or "WxH", default None: the frame's (as --size).
+frame_size: prepare the maps now for frames of this size, default None: on the first frame.
+fps: frames per second, turning frame numbers into the animation's time, default {} (as the
+    command's --fps for an image sequence; give a movie's own rate).
+rgb: frames in and out in RGB(A) order, default False (BGR(A), like cv2).
+
+Raises ValueError for bad settings (with the command's messages), FileNotFoundError for a
+missing preset file. Preparing the maps releases the GIL and stops on Ctrl-C.)doc",
+      engine::kDefaultPreset, d.sampling.margin, d.sampling.quality, d.mix, d.sampling.seed,
+      d.drift_amount, d.drift_speed, d.keyframe_interval, d.superifs, d.buffers, fps);
+}
+
+// ifsfx.Filter(...): the keywords as the engine's settings, then the engine made.
+std::unique_ptr<Filter> make_filter(
+    const py::object& preset, const py::object& colouring, const py::object& view, double margin,
+    double quality, double mix, const py::object& background, bool exact, std::uint64_t seed,
+    int threads, const std::string& interpolation, const py::object& animate, double drift_amount,
+    double drift_speed, int keyframe_interval, const py::object& superifs, int buffers,
+    std::int64_t loop, const py::object& size, const py::object& frame_size, double fps, bool rgb) {
+  const engine::FractalSettings settings =
+      fractal_settings({.preset = preset,
+                        .colouring = colouring,
+                        .view = view,
+                        .background = background,
+                        .animate = animate,
+                        .interpolation = interpolation,
+                        .margin = margin,
+                        .quality = quality,
+                        .mix = mix,
+                        .drift_amount = drift_amount,
+                        .drift_speed = drift_speed,
+                        .exact = exact,
+                        .seed = seed,
+                        .threads = threads,
+                        .keyframe_interval = keyframe_interval,
+                        .buffers = buffers,
+                        .superifs = spec_arg(superifs, "superifs"),
+                        .loop = loop});
+  return std::make_unique<Filter>(settings, optional_size(size, "size"),
+                                  optional_size(frame_size, "frame_size"), fps, rgb);
+}
+
+}  // namespace
+
+void bind_filter(py::module_& m) {
+  const engine::FractalSettings d;
+  const double fps = app::FilterArgs{}.fps;
+  py::class_<Filter>(m, "Filter", kFilterDoc)
+      .def(py::init(&make_filter), py::arg("preset") = engine::kDefaultPreset, py::kw_only(),
            py::arg("colouring") = py::none(), py::arg("view") = py::none(),
            py::arg("margin") = d.sampling.margin, py::arg("quality") = d.sampling.quality,
            py::arg("mix") = d.mix, py::arg("background") = "black", py::arg("exact") = d.exact,
@@ -187,35 +227,8 @@ must have that size (ValueError otherwise).
            py::arg("drift_amount") = d.drift_amount, py::arg("drift_speed") = d.drift_speed,
            py::arg("keyframe_interval") = d.keyframe_interval, py::arg("superifs") = d.superifs,
            py::arg("buffers") = d.buffers, py::arg("loop") = d.loop, py::arg("size") = py::none(),
-           py::arg("frame_size") = py::none(), py::arg("fps") = 25.0, py::arg("rgb") = false,
-           R"doc(The settings of `ifsfx filter`, keyword for flag, with its defaults:
-
-preset: the drawing IFS F: a shipped name, a .toml/.ifs path or "FILE.ifs:NAME", default
-    "barnsley-fern".
-colouring: the colouring IFS G (as many maps as F), default None: a tiling of the frame.
-view: plane rectangle (x0, y0, x1, y1) or "x0,y0,x1,y1" shown on the frame, default None:
-    the attractor, auto-framed with `margin` (default 0.05).
-quality: exact=False: chaos-game points per pixel, default 64.
-mix: weight of the original frame blended over the fractal, 0..1, default 0.
-background: where the attractor does not reach: "black" (default), "white", "original",
-    "#rrggbb", "R,G,B" or (R, G, B).
-exact: the exact per-pixel descent (default True) or the chaos game (False).
-seed: default 1. threads: default 0 = all cores; the frames never depend on it.
-interpolation: "bilinear" (default) or "nearest".
-animate: "none" (default, or None: one fixed map), "drift" (the maps wander by fBm noise) or
-    "superifs" (a V-variable step of `superifs` per keyframe).
-drift_amount: default 0.05. drift_speed: cycles per second, default 0.2.
-keyframe_interval: frames between rebuilt maps, cross-faded between, default 12.
-superifs: default "paper-fig4". buffers: its V, default 3.
-loop: the animation repeats every `loop` frames, bit for bit, default 0: never.
-size: output (width, height) or "WxH", default None: the frame's (as --size).
-frame_size: prepare the maps now for frames of this size, default None: on the first frame.
-fps: frames per second, turning frame numbers into the animation's time, default 25 (as the
-    command's --fps for an image sequence; give a movie's own rate).
-rgb: frames in and out in RGB(A) order, default False (BGR(A), like cv2).
-
-Raises ValueError for bad settings (with the command's messages), FileNotFoundError for a
-missing preset file. Preparing the maps releases the GIL and stops on Ctrl-C.)doc")
+           py::arg("frame_size") = py::none(), py::arg("fps") = fps, py::arg("rgb") = false,
+           filter_init_doc(d, fps).c_str())
       .def("__call__", &Filter::apply, py::arg("frame"), py::arg("index") = py::none(),
            "f(frame, index=None): see apply().")
       .def("apply", &Filter::apply, py::arg("frame"), py::arg("index") = py::none(),

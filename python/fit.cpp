@@ -39,16 +39,6 @@ std::string working_size_arg(const py::object& size) {
                                        : std::to_string(size.cast<long long>());
 }
 
-// The ranges the command line checks its budgets against (--max-seconds, --max-evaluations).
-void check_budgets(double max_seconds, long max_evaluations) {
-  if (!(max_seconds >= 0 && max_seconds <= 1e6))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("max_seconds: must be in [0, 1000000] (got {})", max_seconds));
-  if (max_evaluations < 2 || max_evaluations > 100000000)
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("max_evaluations: must be in 2..100000000 (got {})", max_evaluations));
-}
-
 // An array target as the command reads a picture: its alpha, else its dark pixels; a bool array
 // is the mask itself (True: the shape), read as a black shape on white.
 cv::Mat array_shape(const py::object& target, const collage::TargetOptions& options, bool rgb) {
@@ -77,8 +67,9 @@ IfsPreset fit(const py::object& target, int maps, std::uint64_t seed, const std:
   args.max_seconds = max_seconds;
   args.max_evaluations = max_evaluations;
   args.threads = threads;
-  app::check_fit_maps(args.maps);
-  check_budgets(max_seconds, max_evaluations);
+  app::check_fit_maps(args.maps, "n");
+  app::check_fit_budgets(max_seconds, max_evaluations,
+                         {.seconds = "max_seconds", .evaluations = "max_evaluations"});
   cv::Mat shape;
   if (is_path) {
     args.target = py::isinstance<py::str>(target)

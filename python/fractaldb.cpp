@@ -357,22 +357,8 @@ instances: pictures per category and weight for the patch types, default 10 (the
     draw one). seed: default 1. rgb: False (default): H×W×3 uint8 in BGR order, like cv2;
     True: RGB, like PIL and torchvision.)doc";
 
-}  // namespace
-
-void bind_fractaldb(py::module_& m) {
-  py::module_ f = m.def_submodule(
-      "fractaldb",
-      R"doc(FractalDB (formula-driven supervised learning, Kataoka et al.): category and weight files,
-the category search, and datasets in memory, as the reference generator
-(hirokatsukataoka16/FractalDB-Pretrained-ResNet-PyTorch) makes them; `ifsfx dataset` writes
-the same pictures to files (docs/dataset.md).
-
-    from ifsfx import fractaldb
-    data = fractaldb.Dataset("csv_rate0.2_category1000", weights=0.4, size=(362, 362))
-    image, label = data[0]
-)doc");
-  py::module_::import("sys").attr("modules")["ifsfx.fractaldb"] = f;
-
+// The Category class: maps and probabilities, as a category CSV holds them.
+void bind_category(py::module_& f) {
   py::class_<db::Category>(f, "Category", R"doc(
 One FractalDB category: affine maps f(x, y) = (a x + b y + e, c x + d y + f) and the
 probability p of each, as a category CSV holds them (rows a,b,c,d,e,f,p).
@@ -417,7 +403,10 @@ and file names), default "". Raises ValueError as read_category does for its fil
             c.probabilities = t[2].cast<std::vector<double>>();
             return c;
           }));
+}
 
+// The file readers and the category search.
+void bind_readers(py::module_& f) {
   f.def(
       "read_category",
       [](const py::object& path) {
@@ -441,7 +430,7 @@ csv0/ csv1/ ... layout) or a list of these, sorted by name: their labels' order.
       R"doc(A weight CSV (rows wa,wb,wc,wd,we,wf: factors of a..f) as a (W, 6) float64 array.)doc");
   f.def(
       "weights_table", [](double step) { return weights_array(db::weights_table(step)); },
-      py::arg("step") = 0.1,
+      py::arg("step") = db::kDefaultWeightStep,
       R"doc(The reference's weights_K.csv for K = step (default 0.1) as a (25, 6) array: all ones, and
 each of a..f in turn times 1-2K, 1-K, 1+K, 1+2K.)doc");
   const db::SearchOptions d;
@@ -463,46 +452,11 @@ of 2 to 7 maps, kept when their 512×512 point picture of `points` points (defau
 lights at least `rate` (default 0.2) of its pixels; `categories` of them (default 1000),
 named "00000", ...; seed: numpy.random.seed, default 1 (the reference's: its
 csv_rate0.2_category1000 files). The GIL is released; Ctrl-C stops it.)doc");
+}
 
-  py::class_<Images>(f, "Images", "An iterator of (image, label) over a Dataset or a shard of it.")
-      .def("__iter__", [](Images& self) -> Images& { return self; })
-      .def("__next__", &Images::next)
-      .def("__len__", &Images::remaining, "the images still to come");
-
-  const db::DatasetSpec spec_defaults;
-  py::class_<Dataset>(f, "Dataset", kDatasetDoc)
-      .def(py::init(&make_dataset), py::arg("categories"), py::arg("weights") = 0.1, py::kw_only(),
-           py::arg("draw") = "patch_gray", py::arg("size") = py::make_tuple(512, 512),
-           py::arg("padding") = py::make_tuple(6, 6),
-           py::arg("iterations") = spec_defaults.settings.iterations,
-           py::arg("instances") = spec_defaults.instances, py::arg("seed") = spec_defaults.seed,
-           py::arg("rgb") = false)
-      .def("__len__", &Dataset::size)
-      .def("__getitem__", &Dataset::get, py::arg("index"),
-           "(image, label) of image `index`, in the order the command writes them: category, "
-           "weight, instance, flip (the last fastest)")
-      .def(
-          "__iter__", [](const Dataset& self) { return self.shard(0, 1); },
-          "every (image, label) in order")
-      .def("shard", &Dataset::shard, py::arg("index"), py::arg("count"),
-           "An iterator over worker `index`'s share of `count` (whole categories and weights "
-           "taken in turn): the shards of 0..count-1 together hold every image once.")
-      .def(
-          "path",
-          [](const Dataset& self, std::int64_t index) {
-            const auto& spec = self.state().spec;
-            return db::image_path(spec, db::image_key(spec, self.index_arg(index)));
-          },
-          py::arg("index"),
-          "image `index`'s file in the folder `ifsfx dataset render` writes: "
-          "NAME/NAME_WW_count_I_flipT.png")
-      .def(
-          "key",
-          [](const Dataset& self, std::int64_t index) {
-            const auto k = db::image_key(self.state().spec, self.index_arg(index));
-            return py::make_tuple(k.category, k.weight, k.instance, k.flip);
-          },
-          py::arg("index"), "(category, weight, instance, flip) of image `index`")
+// The settings a Dataset was made with, read-only, and its pickling.
+void add_dataset_settings(py::class_<Dataset>& dataset) {
+  dataset
       .def_property_readonly(
           "classes",
           [](const Dataset& self) {
@@ -550,6 +504,75 @@ csv_rate0.2_category1000 files). The GIL is released; Ctrl-C stops it.)doc");
             return make_dataset(t[0], t[1], t[2].cast<std::string>(), t[3], t[4], t[5].cast<int>(),
                                 t[6].cast<int>(), t[7].cast<std::uint64_t>(), t[8].cast<bool>());
           }));
+}
+
+// Dataset and the iterator over its shards.
+void bind_dataset(py::module_& f) {
+  py::class_<Images>(f, "Images", "An iterator of (image, label) over a Dataset or a shard of it.")
+      .def("__iter__", [](Images& self) -> Images& { return self; })
+      .def("__next__", &Images::next)
+      .def("__len__", &Images::remaining, "the images still to come");
+
+  const db::DatasetSpec spec_defaults;
+  const db::DrawSettings& settings = spec_defaults.settings;
+  py::class_<Dataset> dataset(f, "Dataset", kDatasetDoc);
+  dataset
+      .def(py::init(&make_dataset), py::arg("categories"),
+           py::arg("weights") = db::kDefaultWeightStep, py::kw_only(),
+           py::arg("draw") = db::to_string(settings.draw),
+           py::arg("size") = py::make_tuple(settings.size.width, settings.size.height),
+           py::arg("padding") = py::make_tuple(settings.padding.width, settings.padding.height),
+           py::arg("iterations") = settings.iterations,
+           py::arg("instances") = spec_defaults.instances, py::arg("seed") = spec_defaults.seed,
+           py::arg("rgb") = false)
+      .def("__len__", &Dataset::size)
+      .def("__getitem__", &Dataset::get, py::arg("index"),
+           "(image, label) of image `index`, in the order the command writes them: category, "
+           "weight, instance, flip (the last fastest)")
+      .def(
+          "__iter__", [](const Dataset& self) { return self.shard(0, 1); },
+          "every (image, label) in order")
+      .def("shard", &Dataset::shard, py::arg("index"), py::arg("count"),
+           "An iterator over worker `index`'s share of `count` (whole categories and weights "
+           "taken in turn): the shards of 0..count-1 together hold every image once.")
+      .def(
+          "path",
+          [](const Dataset& self, std::int64_t index) {
+            const auto& spec = self.state().spec;
+            return db::image_path(spec, db::image_key(spec, self.index_arg(index)));
+          },
+          py::arg("index"),
+          "image `index`'s file in the folder `ifsfx dataset render` writes: "
+          "NAME/NAME_WW_count_I_flipT.png")
+      .def(
+          "key",
+          [](const Dataset& self, std::int64_t index) {
+            const auto k = db::image_key(self.state().spec, self.index_arg(index));
+            return py::make_tuple(k.category, k.weight, k.instance, k.flip);
+          },
+          py::arg("index"), "(category, weight, instance, flip) of image `index`");
+  add_dataset_settings(dataset);
+}
+
+}  // namespace
+
+void bind_fractaldb(py::module_& m) {
+  py::module_ f = m.def_submodule(
+      "fractaldb",
+      R"doc(FractalDB (formula-driven supervised learning, Kataoka et al.): category and weight files,
+the category search, and datasets in memory, as the reference generator
+(hirokatsukataoka16/FractalDB-Pretrained-ResNet-PyTorch) makes them; `ifsfx dataset` writes
+the same pictures to files (docs/dataset.md).
+
+    from ifsfx import fractaldb
+    data = fractaldb.Dataset("csv_rate0.2_category1000", weights=0.4, size=(362, 362))
+    image, label = data[0]
+)doc");
+  py::module_::import("sys").attr("modules")["ifsfx.fractaldb"] = f;
+
+  bind_category(f);
+  bind_readers(f);
+  bind_dataset(f);
 }
 
 }  // namespace ifsfx::python

@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include "ifs/error.h"
+#include "run/filter_options.h"
+#include "run/picture_options.h"
 
 namespace ifsfx::python {
 
@@ -109,9 +111,9 @@ engine::FractalSettings fractal_settings(const FilterKeywords& k) {
                             .buffers = k.buffers,
                             .loop = k.loop};
   // The command's rule (check_filter_rules), in the keywords' words.
-  if (s.loop > 0 && s.animate == engine::Animate::none)
-    throw Error(ErrorKind::invalid_argument,
-                "loop: repeats an animation; add animate=\"drift\" or animate=\"superifs\"");
+  app::check_loop_rule(
+      s.loop, s.animate,
+      {.loop = "loop", .drift = "animate=\"drift\"", .superifs = "animate=\"superifs\""});
   // F and G as data, the preset read as render() reads it (an unknown name is a ValueError, a
   // Fractint entry that contracts only on average a UserWarning); a superIFS brings its own.
   if (s.animate != engine::Animate::superifs) {
@@ -152,39 +154,19 @@ std::optional<Box> view_arg(const py::object& view, const std::string& what) {
 }
 
 Rgb colour_arg(const py::object& colour, const std::string& what) {
-  const auto fail = [&] {
-    return Error(ErrorKind::invalid_argument,
-                 fmt::format("{}: a colour is black, white, #rrggbb or (R, G, B) with 0..255 "
-                             "(got {})",
-                             what, std::string(py::repr(colour))));
-  };
-  if (py::isinstance<py::str>(colour)) {
-    std::string t = colour.cast<std::string>();
-    for (auto& ch : t) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    if (t == "black") return {0, 0, 0};
-    if (t == "white") return {1, 1, 1};
-    if (t.size() != 7 || t[0] != '#') throw fail();
-    int v[3];
-    for (int i = 0; i < 3; ++i) {
-      const std::string hex = t.substr(1 + 2 * static_cast<std::size_t>(i), 2);
-      if (!std::isxdigit(static_cast<unsigned char>(hex[0])) ||
-          !std::isxdigit(static_cast<unsigned char>(hex[1])))
-        throw fail();
-      v[i] = std::stoi(hex, nullptr, 16);
-    }
-    return {v[0] / 255.0, v[1] / 255.0, v[2] / 255.0};
-  }
+  // Through the command's parser (run/picture_options.h), so that a bad one gets its message.
+  if (py::isinstance<py::str>(colour)) return app::colour_option(colour.cast<std::string>(), what);
   if (py::isinstance<py::sequence>(colour) && py::len(colour) == 3) {
     const py::sequence rgb = colour.cast<py::sequence>();
-    int v[3];
-    for (int i = 0; i < 3; ++i) {
-      if (!py::isinstance<py::int_>(rgb[i])) throw fail();
-      v[i] = rgb[i].cast<int>();
-      if (v[i] < 0 || v[i] > 255) throw fail();
-    }
-    return {v[0] / 255.0, v[1] / 255.0, v[2] / 255.0};
+    if (py::isinstance<py::int_>(rgb[0]) && py::isinstance<py::int_>(rgb[1]) &&
+        py::isinstance<py::int_>(rgb[2]))
+      return app::colour_option(fmt::format("{},{},{}", rgb[0].cast<long long>(),
+                                            rgb[1].cast<long long>(), rgb[2].cast<long long>()),
+                                what);
   }
-  throw fail();
+  throw Error(ErrorKind::invalid_argument,
+              fmt::format("{}: a colour is black, white, #rrggbb or (R, G, B) with 0..255 (got {})",
+                          what, std::string(py::repr(colour))));
 }
 
 }  // namespace ifsfx::python

@@ -107,19 +107,53 @@ cv::Mat source_arg(const py::handle& source, py::object& keep, const std::string
   return swap_red_blue(view.mat, rgb);
 }
 
+namespace {
+
+// read_image and write_image: files as arrays, through the library's image I/O.
+void bind_image_files(py::module_& m) {
+  m.def(
+      "read_image",
+      [](const std::string& path, bool rgb) {
+        return to_array(swap_red_blue(
+            run_released([&](const CancelToken&) { return read_image(path).pixels; }), rgb));
+      },
+      py::arg("path"), py::kw_only(), py::arg("rgb") = false,
+      R"doc(Any image OpenImageIO reads, as stored (uint8, uint16 or float32; BGR, BGRA or grey), alpha
+straight; rgb=True gives RGB(A) order. Raises FileNotFoundError or OSError naming the path.)doc");
+  m.def(
+      "write_image",
+      [](const std::string& path, const py::object& image, int bits, bool rgb) {
+        const MatView view = to_mat(image, "image");
+        const cv::Mat pixels = swap_red_blue(view.mat, rgb);
+        run_released([&](const CancelToken& cancel) {
+          write_image(path, pixels, {.bits = bits, .output = {.cancel = cancel}});
+          return 0;
+        });
+      },
+      py::arg("path"), py::arg("image"), py::arg("bits") = 8, py::kw_only(), py::arg("rgb") = false,
+      R"doc(Writes an H×W×C array (BGR order, RGB with rgb=True) in the format of path's extension (.png, .tif, .exr, .jpg),
+`bits` 8 (default) or 16 per channel for PNG and TIFF, through a temporary file renamed into
+place when complete.)doc");
+}
+
+}  // namespace
+
 void bind_render(py::module_& m) {
   const RenderOptions defaults;
   const Sampling sampled;
+  const app::StillJob job{};  // the still's defaults, as the command's
   m.def(
-      "render", &render, py::arg("preset"), py::kw_only(), py::arg("mode") = "measure",
-      py::arg("size") = py::make_tuple(1024, 1024), py::arg("view") = py::none(),
-      py::arg("margin") = sampled.margin, py::arg("quality") = sampled.quality,
-      py::arg("supersample") = defaults.supersample, py::arg("gamma") = defaults.gamma,
-      py::arg("brightness") = defaults.brightness, py::arg("seed") = sampled.seed,
-      py::arg("threads") = sampled.threads, py::arg("exact") = TopsOptions{}.exact,
-      py::arg("second_symbol") = false, py::arg("source") = py::none(),
-      py::arg("colouring") = py::none(), py::arg("background") = "black", py::arg("alpha") = true,
-      py::arg("dtype") = "uint8", py::arg("allow_expansive") = false, py::arg("rgb") = false,
+      "render", &render, py::arg("preset"), py::kw_only(),
+      py::arg("mode") = app::to_string(job.mode),
+      py::arg("size") = py::make_tuple(job.size.width, job.size.height),
+      py::arg("view") = py::none(), py::arg("margin") = sampled.margin,
+      py::arg("quality") = sampled.quality, py::arg("supersample") = defaults.supersample,
+      py::arg("gamma") = defaults.gamma, py::arg("brightness") = defaults.brightness,
+      py::arg("seed") = sampled.seed, py::arg("threads") = sampled.threads,
+      py::arg("exact") = job.exact, py::arg("second_symbol") = job.second_symbol,
+      py::arg("source") = py::none(), py::arg("colouring") = py::none(),
+      py::arg("background") = "black", py::arg("alpha") = job.alpha, py::arg("dtype") = "uint8",
+      py::arg("allow_expansive") = false, py::arg("rgb") = false,
       R"doc(An IFS rendered as `ifsfx render PRESET -o OUT.png` renders it, as an array equal to the PNG's
 pixels (BGR order, like cv2). The GIL is released while it works; Ctrl-C stops it
 (KeyboardInterrupt).
@@ -162,30 +196,7 @@ quality: samples per pixel, default None: the flame's own.
 seed: default 1; the same seed gives the same array for any thread count. threads: 0 = all.
 dtype: "uint8" (default), "uint16" or "float32". rgb: True for RGB order.
 ifsfx.render(spec, mode="measure", ...) draws the same at its size and quality.)doc");
-
-  m.def(
-      "read_image",
-      [](const std::string& path, bool rgb) {
-        return to_array(swap_red_blue(
-            run_released([&](const CancelToken&) { return read_image(path).pixels; }), rgb));
-      },
-      py::arg("path"), py::kw_only(), py::arg("rgb") = false,
-      R"doc(Any image OpenImageIO reads, as stored (uint8, uint16 or float32; BGR, BGRA or grey), alpha
-straight; rgb=True gives RGB(A) order. Raises FileNotFoundError or OSError naming the path.)doc");
-  m.def(
-      "write_image",
-      [](const std::string& path, const py::object& image, int bits, bool rgb) {
-        const MatView view = to_mat(image, "image");
-        const cv::Mat pixels = swap_red_blue(view.mat, rgb);
-        run_released([&](const CancelToken& cancel) {
-          write_image(path, pixels, {.bits = bits, .output = {.cancel = cancel}});
-          return 0;
-        });
-      },
-      py::arg("path"), py::arg("image"), py::arg("bits") = 8, py::kw_only(), py::arg("rgb") = false,
-      R"doc(Writes an H×W×C array (BGR order, RGB with rgb=True) in the format of path's extension (.png, .tif, .exr, .jpg),
-`bits` 8 (default) or 16 per channel for PNG and TIFF, through a temporary file renamed into
-place when complete.)doc");
+  bind_image_files(m);
 }
 
 }  // namespace ifsfx::python

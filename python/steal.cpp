@@ -111,7 +111,8 @@ it colours any number of images or frames by one remap each:
           "(width, height)")
       .def(
           "apply", &apply_map, py::arg("image"), py::kw_only(), py::arg("background") = "black",
-          py::arg("interpolation") = "bilinear", py::arg("threads") = 0, py::arg("rgb") = false,
+          py::arg("interpolation") = "bilinear", py::arg("threads") = ApplyOptions{}.threads,
+          py::arg("rgb") = false,
           R"doc(The map's pixels coloured from `image` (any size; H×W×C uint8, uint16 or float32, BGR like
 cv2): an array of the map's size and the image's dtype and channels, `background` ("black",
 "white", "#rrggbb" or (R, G, B)) off the attractor, as `ifsfx apply MAP IMAGE -o OUT.jpg`.
@@ -155,7 +156,7 @@ pixel). The GIL is released; Ctrl-C stops it.)doc");
 OSError/ValueError for a file that is not a steal map.)doc");
   m.def("apply", &apply_map, py::arg("map"), py::arg("image"), py::kw_only(),
         py::arg("background") = "black", py::arg("interpolation") = "bilinear",
-        py::arg("threads") = 0, py::arg("rgb") = false,
+        py::arg("threads") = ApplyOptions{}.threads, py::arg("rgb") = false,
         R"doc(map.apply(image, ...): see StealMap.apply.)doc");
 }
 

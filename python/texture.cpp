@@ -14,6 +14,8 @@
 #include "python/errors.h"
 #include "python/options.h"
 #include "python/render.h"
+#include "run/arguments.h"
+#include "run/texture_options.h"
 #include "superifs/superifs_file.h"
 #include "superifs/texture.h"
 
@@ -31,21 +33,23 @@ struct TextureFrames {
   bool rgb = false;  // frames in RGB order
 };
 
-// The settings `ifsfx texture` checks (run/texture_options.cpp), with the keywords' names.
+// The settings `ifsfx texture` checks (check_texture_rules), with the keywords' names. The rules
+// ask only whether there is a source, which here may be an array.
 void check_texture_args(int buffers, int buffer, int crossfade, TextureMode mode,
                         const py::object& source) {
-  if (buffers < 1 || buffers > 1000)
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("buffers: must be 1..1000 (got {})", buffers));
-  if (buffer < 1 || buffer > buffers)  // the library counts buffers from 0
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("buffer: must be 1..{} for V = {} (got {})", buffers, buffers, buffer));
-  if (crossfade < 1)
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("crossfade: must be ≥ 1 frame per step (got {})", crossfade));
-  if (mode == TextureMode::steal && source.is_none())
-    throw Error(ErrorKind::invalid_argument,
-                "source: steal mode needs a source image to steal colours from");
+  app::TextureArgs args;
+  args.count = buffers;
+  args.buffer = buffer;
+  args.crossfade = crossfade;
+  args.mode = mode;
+  if (!source.is_none()) args.source = "source";
+  app::check_texture_rules(args, {.count = "buffers",
+                                  .frames = "frames",
+                                  .crossfade = "crossfade",
+                                  .buffer = "buffer",
+                                  .source = "source",
+                                  .fps = "fps",
+                                  .codec = "codec"});
 }
 
 TextureFrames start(const std::string& superpreset, const py::object& size, int buffers, int steps,
@@ -95,6 +99,9 @@ py::array frame(TextureFrames& frames) {
 
 void bind_texture(py::module_& m) {
   const TextureOptions d;
+  // What the library leaves to its caller defaults as the command does (run/texture_options.h).
+  const app::TextureArgs command{};
+  const cv::Size default_size = app::size_option(command.size, "size");
   py::class_<TextureFrames>(m, "TextureFrames",
                             "An iterator over the frames of a texture sequence (textures()).")
       .def("__iter__", [](TextureFrames& self) -> TextureFrames& { return self; })
@@ -112,11 +119,12 @@ void bind_texture(py::module_& m) {
                                      threads, crossfade, dtype, frame_index, 1, rgb);
         return frame(frames);
       },
-      py::arg("superpreset"), py::kw_only(), py::arg("size") = py::make_tuple(1024, 1024),
-      py::arg("buffers") = d.count, py::arg("steps") = d.steps, py::arg("buffer") = 1,
-      py::arg("mode") = "attractor", py::arg("source") = py::none(),
+      py::arg("superpreset"), py::kw_only(),
+      py::arg("size") = py::make_tuple(default_size.width, default_size.height),
+      py::arg("buffers") = d.count, py::arg("steps") = d.steps, py::arg("buffer") = command.buffer,
+      py::arg("mode") = to_string(command.mode), py::arg("source") = py::none(),
       py::arg("seed") = d.sampling.seed, py::arg("threads") = d.sampling.threads,
-      py::arg("frame") = 0, py::arg("crossfade") = 1, py::arg("dtype") = "uint8",
+      py::arg("frame") = 0, py::arg("crossfade") = command.crossfade, py::arg("dtype") = "uint8",
       py::arg("rgb") = false,
       R"doc(A V-variable superfractal texture, as `ifsfx texture SUPERPRESET -o OUT.png` writes it (frame 0)
 or as frame `frame` + 1 of `--frames N --crossfade K -o tex_%04d.png`.
@@ -143,12 +151,13 @@ dtype: "uint8" (default), "uint16" or "float32". rgb: False (default): BGR like 
         return start(superpreset, size, buffers, steps, buffer, mode, source, seed, threads,
                      crossfade, dtype, first, frames, rgb);
       },
-      py::arg("superpreset"), py::kw_only(), py::arg("size") = py::make_tuple(1024, 1024),
-      py::arg("buffers") = d.count, py::arg("steps") = d.steps, py::arg("buffer") = 1,
-      py::arg("mode") = "attractor", py::arg("source") = py::none(),
+      py::arg("superpreset"), py::kw_only(),
+      py::arg("size") = py::make_tuple(default_size.width, default_size.height),
+      py::arg("buffers") = d.count, py::arg("steps") = d.steps, py::arg("buffer") = command.buffer,
+      py::arg("mode") = to_string(command.mode), py::arg("source") = py::none(),
       py::arg("seed") = d.sampling.seed, py::arg("threads") = d.sampling.threads,
-      py::arg("frames") = py::none(), py::arg("crossfade") = 1, py::arg("dtype") = "uint8",
-      py::arg("first") = 0, py::arg("rgb") = false,
+      py::arg("frames") = py::none(), py::arg("crossfade") = command.crossfade,
+      py::arg("dtype") = "uint8", py::arg("first") = 0, py::arg("rgb") = false,
       R"doc(An iterator over the frames of a texture sequence, one further V-variable step per
 `crossfade` frames, from frame `first` (default 0); `frames` of them, default None: endless.
 Frame j equals texture(..., frame=j). The burn-in runs here; each frame after it is one step.)doc");

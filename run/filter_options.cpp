@@ -3,6 +3,8 @@
 
 #include <map>
 
+#include <fmt/format.h>
+
 #include "ifs/error.h"
 #include "run/arguments.h"
 
@@ -11,9 +13,13 @@ namespace ifsfx::app {
 using engine::Animate;
 
 void check_filter_rules(const FilterArgs& args) {
-  if (args.fractal.engine.loop > 0 && args.animate == Animate::none)
-    throw Error(ErrorKind::invalid_argument,
-                "--loop: repeats an animation; add --animate drift or --animate superifs");
+  check_loop_rule(args.fractal.engine.loop, args.animate);
+}
+
+void check_loop_rule(std::int64_t loop, Animate animate, const LoopRuleNames& names) {
+  if (loop > 0 && animate == Animate::none)
+    throw Error(ErrorKind::invalid_argument, fmt::format("{}: repeats an animation; add {} or {}",
+                                                         names.loop, names.drift, names.superifs));
 }
 
 }  // namespace ifsfx::app

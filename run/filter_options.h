@@ -3,6 +3,7 @@
 // filter command and `ifsfx farm filter` (which hands them on, unchanged, to every shard).
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -37,5 +38,13 @@ struct FilterArgs {
 // The rules between options that their parsing does not check and that `ifsfx farm filter` checks
 // too before it submits anything: --loop repeats an animation, so it needs --animate.
 void check_filter_rules(const FilterArgs& args);
+
+// How a door names the loop and writes the animations (Python: "loop", "animate=\"drift\"").
+struct LoopRuleNames {
+  std::string loop = "--loop", drift = "--animate drift", superifs = "--animate superifs";
+};
+// A loop (loop > 0) repeats an animation: Error{invalid_argument} "LOOP: repeats an animation;
+// add DRIFT or SUPERIFS" without one.
+void check_loop_rule(std::int64_t loop, engine::Animate animate, const LoopRuleNames& names = {});
 
 }  // namespace ifsfx::app

@@ -35,10 +35,21 @@ int working_size(const std::string& text) {
   return size.width;
 }
 
-void check_fit_maps(int maps) {
+void check_fit_maps(int maps, const std::string& what) {
   if (maps < 1 || maps > 32)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("-n: the number of maps must be in 1..32 (got {})", maps));
+                fmt::format("{}: the number of maps must be in 1..32 (got {})", what, maps));
+}
+
+void check_fit_budgets(double max_seconds, long max_evaluations, const FitBudgetNames& names) {
+  if (!(max_seconds >= 0 && max_seconds <= kMaxFitSeconds))
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("{}: must be in [0, {}] (got {})", names.seconds, kMaxFitSeconds, max_seconds));
+  if (max_evaluations < 2 || max_evaluations > kMaxFitEvaluations)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: must be in 2..{} (got {})", names.evaluations, kMaxFitEvaluations,
+                            max_evaluations));
 }
 
 cv::Mat fit_raster(const FitArgs& args) {

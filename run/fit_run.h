@@ -36,8 +36,21 @@ struct FitArgs {
 // naming --size.
 int working_size(const std::string& text);
 
-// The number of maps checked (1..32); throws Error{invalid_argument} naming -n.
-void check_fit_maps(int maps);
+// The number of maps checked (1..32); throws Error{invalid_argument} naming `what` (the
+// command's -n, Python's n).
+void check_fit_maps(int maps, const std::string& what = "-n");
+
+// The budgets' ranges: seconds in [0, kMaxFitSeconds] (0: no cap), evaluations in
+// 2..kMaxFitEvaluations.
+inline constexpr double kMaxFitSeconds = 1e6;
+inline constexpr long kMaxFitEvaluations = 100000000;
+// How a door names the budgets (Python: max_seconds, max_evaluations).
+struct FitBudgetNames {
+  std::string seconds = "--max-seconds", evaluations = "--max-evaluations";
+};
+// Throws Error{invalid_argument} "NAME: must be in [0, 1000000] (got X)" for a budget out of its
+// range.
+void check_fit_budgets(double max_seconds, long max_evaluations, const FitBudgetNames& names = {});
 
 // The target's shape (args.target: its alpha, else its dark pixels; args.threshold, args.invert)
 // on the working raster of args.size. Throws what load_target and working_raster throw.

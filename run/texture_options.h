@@ -38,9 +38,23 @@ struct TextureArgs {
   std::string codec;
 };
 
-// The rules between options that their parsing does not check (the size, the counts, the buffer
-// against V, steal mode's source, a movie's --fps and --codec), each failing with the option's
-// name; returns the size.
+// V, the number of buffers a texture may have (the command's -V, Python's buffers=).
+inline constexpr int kMaxTextureBuffers = 1000;
+
+// How a door names the options the checks below report on: the command's flags by default;
+// Python passes its keywords' names ({.count = "buffers", .buffer = "buffer", ...}).
+struct TextureArgNames {
+  std::string count = "--buffers", frames = "--frames", crossfade = "--crossfade",
+              buffer = "--buffer", source = "--source", fps = "--fps", codec = "--codec";
+};
+
+// The rules between options that their parsing does not check (V, the counts, the buffer against
+// V, steal mode's source, a movie's fps and codec), each failing with Error{invalid_argument}
+// naming the option as `names` says ("--buffer: must be 1..3 for V = 3 (got 4)").
+void check_texture_rules(const TextureArgs& args, const TextureArgNames& names = {});
+
+// The size (args.size, "--size: ..."), then check_texture_rules with the command's names; returns
+// the size.
 cv::Size check_texture_args(const TextureArgs& args);
 
 }  // namespace ifsfx::app

@@ -20,56 +20,64 @@
 #include "video/pipeline.h"
 
 namespace ifsfx::app {
+namespace {
 
-TextureOutcome write_textures(const SuperIfsPreset& preset, const TextureArgs& args,
-                              const TextureRun& run) {
-  cv::Size size = check_texture_args(args);
-  // A numbered pattern (tex_%04d.png) numbers the frames from 1, also a single one; a movie
-  // (.mp4, .webm, .gif, .webp, ...) holds them all (run/texture_movie.h).
+// Where frame j goes: a numbered pattern (tex_%04d.png) numbers the frames from 1, also a single
+// one; a movie (.mp4, .webm, .gif, .webp, ...) holds them all (run/texture_movie.h).
+struct FrameFiles {
+  std::string output;
+  bool numbered = false, movie = false;
+  int first = 0, last = 0;  // the frames this run writes, from 0
+
+  std::filesystem::path path_of(int frame) const {
+    return numbered ? video::sequence_path(output, frame + 1) : std::filesystem::path(output);
+  }
+};
+
+FrameFiles frame_files(const TextureArgs& args) {
   video::check_output_name(args.output);
-  const bool numbered = video::is_sequence_pattern(args.output);
-  const bool movie = writes_texture_movie(args);
-  if (args.frames > 1 && !numbered && !movie)
+  FrameFiles files{.output = args.output,
+                   .numbered = video::is_sequence_pattern(args.output),
+                   .movie = writes_texture_movie(args),
+                   .last = args.frames - 1};
+  if (args.frames > 1 && !files.numbered && !files.movie)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("-o: --frames needs a numbered pattern like tex_%04d.png or a movie "
                             "(.mp4, .webm, .gif, .webp, ...) (got {})",
                             args.output));
-  // A loop of L frames shows ⌈L / K⌉ textures, each K frames or a little less (ifs/timeline.h).
-  const auto position_of = [&](std::int64_t frame) {
-    return args.loop > 0 ? position_in_loop(frame, args.crossfade, args.loop)
-                         : position_of_frame(frame, args.crossfade);
-  };
-  const auto path_of = [&](int frame) -> std::filesystem::path {
-    return numbered ? video::sequence_path(args.output, frame + 1)
-                    : std::filesystem::path(args.output);
-  };
   // A farm shard writes its own frames; each is a pure function of its index (map_at).
-  int first = 0, last = args.frames - 1;
   if (!args.frame_range.empty()) {
     const video::FrameRange range = video::parse_frame_range(args.frame_range, "--frame-range");
-    first = static_cast<int>(std::min<std::int64_t>(range.first, args.frames));
-    if (range.last >= 0) last = static_cast<int>(std::min<std::int64_t>(range.last, last));
+    files.first = static_cast<int>(std::min<std::int64_t>(range.first, args.frames));
+    if (range.last >= 0)
+      files.last = static_cast<int>(std::min<std::int64_t>(range.last, files.last));
   }
-  // The output policy: no frame replaces an input; every name is checked before the burn-in.
-  OutputOptions output{.inputs = run.inputs, .cancel = run.cancel};
+  return files;
+}
+
+// The output policy: no frame replaces an input; every name is checked before the burn-in.
+// Returns the size of the frames (a 4:2:0 movie encoder takes even sides: run/texture_movie.h).
+cv::Size check_frame_files(const TextureArgs& args, const FrameFiles& files, cv::Size size,
+                           OutputOptions& output) {
   add_preset_input(output.inputs, args.preset);
   output.inputs.add(args.source);
-  if (movie) {
-    size = check_texture_movie(args, size, output);
-  } else {
-    if (first <= last) check_writable_image(path_of(first), output, args.bits);
-    for (int frame = first + 1; frame <= last; ++frame) check_output(path_of(frame), output);
-  }
-  // --seamless: the buffers on the torus of the tile (the preset's [seamless] view, else its view,
-  // else the union attractor framed with no margin), laid out as --tiles and --tile-offset say.
-  const TileLayout layout = tile_layout(args.tiles, preset.seamless, size);
+  if (files.movie) return check_texture_movie(args, size, output);
+  if (files.first <= files.last)
+    check_writable_image(files.path_of(files.first), output, args.bits);
+  for (int frame = files.first + 1; frame <= files.last; ++frame)
+    check_output(files.path_of(frame), output);
+  return size;
+}
 
-  TextureOptions options{
-      .sampling = {.seed = args.seed, .threads = args.threads, .cancel = output.cancel},
-      .count = args.count,
-      .steps = args.steps,
-      .buffer = args.buffer - 1,
-      .mode = args.mode};
+// The library's options of the arguments. --seamless: the buffers on the torus of the tile (the
+// preset's [seamless] view, else its view, else the union attractor framed with no margin).
+TextureOptions texture_options(const SuperIfsPreset& preset, const TextureArgs& args,
+                               const CancelToken& cancel) {
+  TextureOptions options{.sampling = {.seed = args.seed, .threads = args.threads, .cancel = cancel},
+                         .count = args.count,
+                         .steps = args.steps,
+                         .buffer = args.buffer - 1,
+                         .mode = args.mode};
   if (args.tiles.seamless) {
     options.sampling.seamless = true;
     options.sampling.margin = 0;
@@ -77,62 +85,97 @@ TextureOutcome write_textures(const SuperIfsPreset& preset, const TextureArgs& a
   }
   options.loop = args.loop > 0 ? steps_in_loop(args.loop, args.crossfade) : 0;
   if (!args.source.empty()) options.source = read_image(args.source).pixels;
+  return options;
+}
+
+// The metadata of the frame that shows step `step` of the sequence: the superpreset, the
+// settings and the command that makes it again.
+WriteOptions frame_metadata(const SuperIfsPreset& preset, const std::string& name,
+                            const TextureArgs& args, int step,
+                            const std::vector<std::pair<std::string, std::string>>& seamless) {
+  WriteOptions write;
+  write.bits = args.bits;
+  write.metadata = {
+      {"ifsfx:superpreset", preset.text},
+      {"ifsfx:superpreset_name", name},
+      {"ifsfx:mode", to_string(args.mode)},
+      {"ifsfx:V", std::to_string(args.count)},
+      {"ifsfx:buffer", std::to_string(args.buffer)},
+      {"ifsfx:seed", std::to_string(args.seed)},
+      {"ifsfx:steps", std::to_string(step)},
+      {"ImageDescription", fmt::format("ifsfx texture {} -V {} --mode {} --seed {} --steps {}",
+                                       name, args.count, to_string(args.mode), args.seed, step)},
+  };
+  if (args.loop > 0) {  // the loop's burn-in is its own: --steps does not say which texture
+    write.metadata.back().second =
+        fmt::format("ifsfx texture {} -V {} --mode {} --seed {} --loop {} --crossfade {}", name,
+                    args.count, to_string(args.mode), args.seed, args.loop, args.crossfade);
+    write.metadata.emplace_back("ifsfx:loop", std::to_string(args.loop));
+  }
+  for (const auto& entry : seamless) write.metadata.push_back(entry);
+  return write;
+}
+
+// Frame j shows step s = j / K of the sequence crossfaded towards step s + 1 by (j mod K) / K.
+// The frames are written to temporary files and put in place together at the end: a run that
+// fails or is stopped leaves every existing frame file as it was. Returns the files written.
+std::vector<std::filesystem::path> write_frame_files(
+    const SuperIfsPreset& preset, const std::string& name, const TextureArgs& args,
+    const FrameFiles& files, TextureSequence& textures, const TileLayout& layout,
+    const OutputOptions& output, const TextureRun& run) {
+  // A loop of L frames shows ⌈L / K⌉ textures, each K frames or a little less (ifs/timeline.h).
+  const auto position_of = [&](std::int64_t frame) {
+    return args.loop > 0 ? position_in_loop(frame, args.crossfade, args.loop)
+                         : position_of_frame(frame, args.crossfade);
+  };
+  std::vector<OutputFile> written;
+  for (int frame = files.first; frame <= files.last; ++frame) {
+    const StepPosition position = position_of(frame);
+    OutputFile file(files.path_of(frame), output);
+    const int step = textures.burn_in() + static_cast<int>(position.step);
+    std::vector<std::pair<std::string, std::string>> seamless;
+    if (args.tiles.seamless)
+      seamless = seamless_metadata(textures.buffers().viewport().view, layout);
+    write_image(file, laid_out(textures.frame_at(position), layout),
+                frame_metadata(preset, name, args, step, seamless));
+    written.push_back(std::move(file));
+    if (run.progress) run.progress(frame - files.first + 1, files.last - files.first + 1);
+  }
+  commit_together(written);
+  std::vector<std::filesystem::path> paths;
+  for (const OutputFile& file : written) paths.push_back(file.target());
+  return paths;
+}
+
+}  // namespace
+
+TextureOutcome write_textures(const SuperIfsPreset& preset, const TextureArgs& args,
+                              const TextureRun& run) {
+  cv::Size size = check_texture_args(args);
+  const FrameFiles files = frame_files(args);
+  OutputOptions output{.inputs = run.inputs, .cancel = run.cancel};
+  size = check_frame_files(args, files, size, output);
+  // --seamless: laid out as --tiles and --tile-offset say.
+  const TileLayout layout = tile_layout(args.tiles, preset.seamless, size);
+  const TextureOptions options = texture_options(preset, args, output.cancel);
 
   const auto start = std::chrono::steady_clock::now();
   TextureSequence textures(preset.super, size, options);
-  const std::string name = preset.super.name.empty() ? args.preset : preset.super.name;
-  const auto metadata = [&](int step) {
-    WriteOptions write;
-    write.bits = args.bits;
-    write.metadata = {
-        {"ifsfx:superpreset", preset.text},
-        {"ifsfx:superpreset_name", name},
-        {"ifsfx:mode", to_string(args.mode)},
-        {"ifsfx:V", std::to_string(args.count)},
-        {"ifsfx:buffer", std::to_string(args.buffer)},
-        {"ifsfx:seed", std::to_string(args.seed)},
-        {"ifsfx:steps", std::to_string(step)},
-        {"ImageDescription", fmt::format("ifsfx texture {} -V {} --mode {} --seed {} --steps {}",
-                                         name, args.count, to_string(args.mode), args.seed, step)},
-    };
-    if (args.loop > 0) {  // the loop's burn-in is its own: --steps does not say which texture
-      write.metadata.back().second =
-          fmt::format("ifsfx texture {} -V {} --mode {} --seed {} --loop {} --crossfade {}", name,
-                      args.count, to_string(args.mode), args.seed, args.loop, args.crossfade);
-      write.metadata.emplace_back("ifsfx:loop", std::to_string(args.loop));
-    }
-    if (args.tiles.seamless)
-      for (auto& entry : seamless_metadata(textures.buffers().viewport().view, layout))
-        write.metadata.push_back(entry);
-    return write;
-  };
-
-  // Frame j shows step s = j / K of the sequence crossfaded towards step s + 1 by (j mod K) / K.
-  // The frames are written to temporary files and put in place together at the end: a run that
-  // fails or is stopped leaves every existing frame file as it was.
   TextureOutcome out;
-  out.name = name;
+  out.name = preset.super.name.empty() ? args.preset : preset.super.name;
   out.burn_in = textures.burn_in();
   out.loop_closed = args.loop == 0 || textures.loop_closed();
-  if (movie) {
-    out.frames = static_cast<int>(write_texture_movie(args, textures, layout, output, first, last));
+  if (files.movie) {
+    out.frames = static_cast<int>(
+        write_texture_movie(args, textures, layout, output, files.first, files.last));
     out.files.emplace_back(args.output);
+  } else {
+    out.files = write_frame_files(preset, out.name, args, files, textures, layout, output, run);
+    out.frames = static_cast<int>(out.files.size());
   }
-  std::vector<OutputFile> written;
-  for (int frame = first; frame <= last && !movie; ++frame) {
-    const StepPosition position = position_of(frame);
-    OutputFile file(path_of(frame), output);
-    write_image(file, laid_out(textures.frame_at(position), layout),
-                metadata(textures.burn_in() + static_cast<int>(position.step)));
-    written.push_back(std::move(file));
-    if (run.progress) run.progress(frame - first + 1, last - first + 1);
-  }
-  commit_together(written);
   out.size = size;
   out.steps_done = textures.steps_done();
-  if (!movie) out.frames = static_cast<int>(written.size());
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  for (const OutputFile& file : written) out.files.push_back(file.target());
   return out;
 }
 

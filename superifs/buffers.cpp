@@ -149,6 +149,25 @@ struct LatticeRange {
   int i0 = 0, i1 = 0, j0 = 0, j1 = 0;
 };
 
+// The translates by the lattice of the tile that can put row py (and column px, when given) in
+// a piece's box `b` (pixel coordinates): i·W and j·H for i in [i0, i1], j in [j0, j1]; only
+// (0, 0) off the torus.
+LatticeRange lattice_translates(const Viewport& vp, const Box& b, double py, double px = NAN) {
+  if (!vp.wrap) return LatticeRange{};
+  const double w = vp.size.width, h = vp.size.height;
+  LatticeRange r;
+  r.j0 = static_cast<int>(std::ceil((b.y0 - py) / h));
+  r.j1 = static_cast<int>(std::floor((b.y1 - py) / h));
+  if (std::isnan(px)) {
+    r.i0 = static_cast<int>(std::floor(b.x0 / w));
+    r.i1 = static_cast<int>(std::floor(b.x1 / w));
+  } else {
+    r.i0 = static_cast<int>(std::ceil((b.x0 - px) / w));
+    r.i1 = static_cast<int>(std::floor((b.x1 - px) / w));
+  }
+  return r;
+}
+
 }  // namespace
 
 BitMask::BitMask(const cv::Mat& mask) {
@@ -329,105 +348,97 @@ void Buffers::smooth_densities(Next& next) const {
 
 // K'_v (and μ'_v with the colour masses) from the buffers the choices draw on, by bands of rows.
 void Buffers::paint_next(const StepChoices& choices, Next& buffers) const {
-  const std::size_t v_count = masks_.size(), m_count = super_.maps();
-  const cv::Size size = viewport_.size;
-  std::vector<cv::Mat>& next = buffers.masks;
-  const std::vector<cv::Mat>& smooth = buffers.smooth;
-  const std::vector<cv::Mat>& smooth_colour = buffers.smooth_colour;
-  std::vector<cv::Mat>& next_density = buffers.density;
-  std::vector<cv::Mat>& next_colour = buffers.colour;
+  const std::size_t m_count = super_.maps();
   // c_m of map m: its place on the palette.
   std::vector<double> map_coordinate(m_count, 0.0);
   for (std::size_t m = 0; m < m_count && m_count > 1; ++m)
     map_coordinate[m] = static_cast<double>(m) / static_cast<double>(m_count - 1);
-  // The translates by the lattice of the tile that can put row py (and column px, when given) in
-  // a piece's box: i·W and j·H for i in [i0, i1], j in [j0, j1]; only (0, 0) off the torus.
-  const auto translates = [&](const Box& b, double py, double px = NAN) {
-    if (!viewport_.wrap) return LatticeRange{};
-    const double w = size.width, h = size.height;
-    LatticeRange r;
-    r.j0 = static_cast<int>(std::ceil((b.y0 - py) / h));
-    r.j1 = static_cast<int>(std::floor((b.y1 - py) / h));
-    if (std::isnan(px)) {
-      r.i0 = static_cast<int>(std::floor(b.x0 / w));
-      r.i1 = static_cast<int>(std::floor(b.x1 / w));
-    } else {
-      r.i0 = static_cast<int>(std::ceil((b.x0 - px) / w));
-      r.i1 = static_cast<int>(std::floor((b.x1 - px) / w));
-    }
-    return r;
-  };
-  parallel_rows(
-      v_count, size.height, band_rows, options_.sampling.threads, options_.sampling.cancel,
-      "superIFS step", [&](std::size_t v, cv::Range rows) {
-        const int row0 = rows.start, row1 = rows.end;
-        const std::uint32_t n = choices.ifs[v];
-        const std::uint32_t* source = &choices.source[v * m_count];
-        for (int row = row0; row < row1; ++row) {
-          std::uint8_t* out = next[v].ptr<std::uint8_t>(row);
-          std::fill(out, out + size.width, std::uint8_t{0});
-          const double py = row + 0.5;
-          // K'_v = ∪_m f_m(K_{v_m}) (eq. 14). For the set the painting order does not matter
-          // (the descent applies the tops rule); each map is tried only on the columns whose
-          // preimage can fall inside the raster.
-          for (std::size_t m = 0; m < m_count; ++m) {
-            const AffineMap& a = pixel_inverse_[n * m_count + m];
-            const BitMask& from = dilated_[source[m]];
-            // On the torus, every translate x + λ of the row by the lattice, λ = (i·W, j·H), that
-            // can lie in the piece f_m(tile) (docs/design.md §11); else λ = 0 alone.
-            const LatticeRange range = translates(piece_bounds_[n * m_count + m], py);
-            for (int j = range.j0; j <= range.j1; ++j)
-              for (int i = range.i0; i <= range.i1; ++i) {
-                const double ty = py + j * static_cast<double>(size.height);
-                const double tx = i * static_cast<double>(size.width);
-                // The preimage of (px + tx, ty): a.a·px + (a.a·tx + a.b·ty + a.e), likewise y.
-                const double ox = a.a * tx + a.b * ty + a.e, oy = a.c * tx + a.d * ty + a.f;
-                double lo = 0.5, hi = size.width - 0.5;
-                narrow(a.a, ox, size.width, lo, hi);
-                narrow(a.c, oy, size.height, lo, hi);
-                if (hi < lo) continue;
-                const int c0 = std::max(0, static_cast<int>(std::floor(lo - 0.5)));
-                const int c1 = std::min(size.width - 1, static_cast<int>(std::ceil(hi - 0.5)));
-                for (int col = c0; col <= c1; ++col) {
-                  // (px + tx, ty): the pixel centre itself off the torus (tx = 0, ty = py).
-                  const double qx = col + 0.5 + tx;
-                  if (!out[col] && from.test(a.a * qx + a.b * ty + a.e, a.c * qx + a.d * ty + a.f))
-                    out[col] = 255;
-                }
-              }
-          }
-          if (!options_.density) continue;
-          // μ'_v = Σ_m p^{n}_m f_m#(μ_{v_m}): the mass of pixel x is the mass of its preimage,
-          // |det f_m⁻¹| pixels of the smoothed density around f_m⁻¹(x).
-          // The palette coordinate rides along: (c + c_m) / 2 on what map m carries.
-          float* mass = next_density[v].ptr<float>(row);
-          float* colour = next_colour[v].ptr<float>(row);
-          for (int col = 0; col < size.width; ++col) {
-            const double px = col + 0.5;
-            double sum = 0, colour_sum = 0;
-            for (std::size_t m = 0; m < m_count; ++m) {
-              const AffineMap& a = pixel_inverse_[n * m_count + m];
-              const double weight = map_probabilities_[n][m] * std::abs(a.det());
-              // On the torus the mass of every translate's preimage in the tile.
-              const LatticeRange range = translates(piece_bounds_[n * m_count + m], py, px);
-              for (int j = range.j0; j <= range.j1; ++j)
-                for (int i = range.i0; i <= range.i1; ++i) {
-                  const double tx = px + i * static_cast<double>(size.width);
-                  const double ty = py + j * static_cast<double>(size.height);
-                  const double x = a.a * tx + a.b * ty + a.e, y = a.c * tx + a.d * ty + a.f;
-                  if (!(x >= 0 && y >= 0 && x < size.width && y < size.height)) continue;
-                  const int ix = static_cast<int>(x), iy = static_cast<int>(y);
-                  const float rho = smooth[source[m]].at<float>(iy, ix);
-                  const float rho_c = smooth_colour[source[m]].at<float>(iy, ix);
-                  sum += weight * rho;
-                  colour_sum += weight * 0.5 * (rho_c + map_coordinate[m] * rho);
-                }
-            }
-            mass[col] = static_cast<float>(sum);
-            colour[col] = static_cast<float>(colour_sum);
-          }
+  parallel_rows(masks_.size(), viewport_.size.height, band_rows, options_.sampling.threads,
+                options_.sampling.cancel, "superIFS step", [&](std::size_t v, cv::Range rows) {
+                  for (int row = rows.start; row < rows.end; ++row) {
+                    paint_mask_row(choices, v, row, buffers);
+                    if (options_.density) paint_mass_row(choices, map_coordinate, v, row, buffers);
+                  }
+                });
+}
+
+// Row `row` of K'_v = ∪_m f_m(K_{v_m}) (eq. 14). For the set the painting order does not matter
+// (the descent applies the tops rule); each map is tried only on the columns whose preimage can
+// fall inside the raster.
+void Buffers::paint_mask_row(const StepChoices& choices, std::size_t v, int row,
+                             Next& buffers) const {
+  const std::size_t m_count = super_.maps();
+  const cv::Size size = viewport_.size;
+  const std::uint32_t n = choices.ifs[v];
+  const std::uint32_t* source = &choices.source[v * m_count];
+  std::uint8_t* out = buffers.masks[v].ptr<std::uint8_t>(row);
+  std::fill(out, out + size.width, std::uint8_t{0});
+  const double py = row + 0.5;
+  for (std::size_t m = 0; m < m_count; ++m) {
+    const AffineMap& a = pixel_inverse_[n * m_count + m];
+    const BitMask& from = dilated_[source[m]];
+    // On the torus, every translate x + λ of the row by the lattice, λ = (i·W, j·H), that can lie
+    // in the piece f_m(tile) (docs/design.md §11); else λ = 0 alone.
+    const LatticeRange range = lattice_translates(viewport_, piece_bounds_[n * m_count + m], py);
+    for (int j = range.j0; j <= range.j1; ++j)
+      for (int i = range.i0; i <= range.i1; ++i) {
+        const double ty = py + j * static_cast<double>(size.height);
+        const double tx = i * static_cast<double>(size.width);
+        // The preimage of (px + tx, ty): a.a·px + (a.a·tx + a.b·ty + a.e), likewise y.
+        const double ox = a.a * tx + a.b * ty + a.e, oy = a.c * tx + a.d * ty + a.f;
+        double lo = 0.5, hi = size.width - 0.5;
+        narrow(a.a, ox, size.width, lo, hi);
+        narrow(a.c, oy, size.height, lo, hi);
+        if (hi < lo) continue;
+        const int c0 = std::max(0, static_cast<int>(std::floor(lo - 0.5)));
+        const int c1 = std::min(size.width - 1, static_cast<int>(std::ceil(hi - 0.5)));
+        for (int col = c0; col <= c1; ++col) {
+          // (px + tx, ty): the pixel centre itself off the torus (tx = 0, ty = py).
+          const double qx = col + 0.5 + tx;
+          if (!out[col] && from.test(a.a * qx + a.b * ty + a.e, a.c * qx + a.d * ty + a.f))
+            out[col] = 255;
         }
-      });
+      }
+  }
+}
+
+// Row `row` of μ'_v = Σ_m p^{n}_m f_m#(μ_{v_m}): the mass of pixel x is the mass of its
+// preimage, |det f_m⁻¹| pixels of the smoothed density around f_m⁻¹(x). The palette coordinate
+// rides along: (c + c_m) / 2 on what map m carries.
+void Buffers::paint_mass_row(const StepChoices& choices, const std::vector<double>& map_coordinate,
+                             std::size_t v, int row, Next& buffers) const {
+  const std::size_t m_count = super_.maps();
+  const cv::Size size = viewport_.size;
+  const std::uint32_t n = choices.ifs[v];
+  const std::uint32_t* source = &choices.source[v * m_count];
+  const double py = row + 0.5;
+  float* mass = buffers.density[v].ptr<float>(row);
+  float* colour = buffers.colour[v].ptr<float>(row);
+  for (int col = 0; col < size.width; ++col) {
+    const double px = col + 0.5;
+    double sum = 0, colour_sum = 0;
+    for (std::size_t m = 0; m < m_count; ++m) {
+      const AffineMap& a = pixel_inverse_[n * m_count + m];
+      const double weight = map_probabilities_[n][m] * std::abs(a.det());
+      // On the torus the mass of every translate's preimage in the tile.
+      const LatticeRange range =
+          lattice_translates(viewport_, piece_bounds_[n * m_count + m], py, px);
+      for (int j = range.j0; j <= range.j1; ++j)
+        for (int i = range.i0; i <= range.i1; ++i) {
+          const double tx = px + i * static_cast<double>(size.width);
+          const double ty = py + j * static_cast<double>(size.height);
+          const double x = a.a * tx + a.b * ty + a.e, y = a.c * tx + a.d * ty + a.f;
+          if (!(x >= 0 && y >= 0 && x < size.width && y < size.height)) continue;
+          const int ix = static_cast<int>(x), iy = static_cast<int>(y);
+          const float rho = buffers.smooth[source[m]].at<float>(iy, ix);
+          const float rho_c = buffers.smooth_colour[source[m]].at<float>(iy, ix);
+          sum += weight * rho;
+          colour_sum += weight * 0.5 * (rho_c + map_coordinate[m] * rho);
+        }
+    }
+    mass[col] = static_cast<float>(sum);
+    colour[col] = static_cast<float>(colour_sum);
+  }
 }
 
 // The new buffers become the current ones; the step is counted (and kept in the history).

@@ -160,6 +160,9 @@ class Buffers {
   void dilate_current();
   void smooth_densities(Next& next) const;
   void paint_next(const StepChoices& choices, Next& next) const;
+  void paint_mask_row(const StepChoices& choices, std::size_t v, int row, Next& next) const;
+  void paint_mass_row(const StepChoices& choices, const std::vector<double>& map_coordinate,
+                      std::size_t v, int row, Next& next) const;
   void take_next(const StepChoices& choices, Next& next);
 
   SuperIfs super_;

@@ -8,6 +8,8 @@ packages=(
   # toolchain; dpkg-dev (dpkg-shlibdeps) and file: the Debian packages' Depends, made by cpack;
   # clang and its runtime libraries (libFuzzer, sanitizers) for tools/run-fuzz.sh
   g++ cmake ninja-build pkg-config ccache clang-format dpkg-dev file clang libclang-rt-14-dev
+  # the function-length check (CTest style.function_length) reads Universal Ctags' end lines
+  universal-ctags
   # libraries
   libopencv-dev libopenimageio-dev libpng-dev libfmt-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libavformat-dev libavcodec-dev libavutil-dev libswscale-dev

@@ -37,7 +37,7 @@ enum Param { preset, colouring, mix, background, exact, drift, speed, seed, view
 constexpr ParamInfo table[] = {
     {"preset", ParamType::text,
      "The drawing IFS F: a shipped name (see `ifsfx presets`), a .toml/.ifs path or FILE.ifs:NAME",
-     0, "barnsley-fern"},
+     0, engine::kDefaultPreset},
     {"colouring", ParamType::text,
      "The colouring IFS G on the frame, with as many maps as F (empty: a tiling of the frame)"},
     {"mix", ParamType::number, "Weight of the original frame blended over the fractal, 0..1", 0},
@@ -47,7 +47,8 @@ constexpr ParamInfo table[] = {
      "Tops by the exact per-pixel descent (default: faster, no noise); off: the chaos game", 1},
     {"drift", ParamType::number,
      "Animation: how far the map coefficients wander by fBm noise, 0..1 (0: one fixed map)", 0},
-    {"speed", ParamType::number, "Animation: cycles per second of the slowest drift", 0.2},
+    {"speed", ParamType::number, "Animation: cycles per second of the slowest drift",
+     engine::kDefaultDriftSpeed},
     {"seed", ParamType::number, "Random seed, a whole number: the same seed gives the same frames",
      1},
     {"view", ParamType::text,

@@ -75,8 +75,8 @@ def test_the_threshold_keyword_is_the_command_flag(cli, tmp_path, shape):
 
 
 @pytest.mark.parametrize("kwargs, message", [
-    (dict(n=0), "-n: the number of maps must be in 1..32 (got 0)"),
-    (dict(n=33), "-n: the number of maps must be in 1..32 (got 33)"),
+    (dict(n=0), "n: the number of maps must be in 1..32 (got 0)"),
+    (dict(n=33), "n: the number of maps must be in 1..32 (got 33)"),
     (dict(init="grow"), "init: search or moments (got 'grow')"),
     (dict(size="40x50"), "--size: the working raster is square (got 40x50)"),
     (dict(size="big"), "--size: expected S or SxS (got 'big')"),
