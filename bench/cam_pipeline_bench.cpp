@@ -23,6 +23,7 @@ namespace {
 
 using namespace ifsfx;
 using namespace ifsfx::video;
+using namespace ifsfx::engine;
 
 constexpr double kFps = 30;
 constexpr int kSeconds = 10;

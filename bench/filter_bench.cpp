@@ -21,7 +21,7 @@
 namespace {
 
 using namespace ifsfx;
-using namespace ifsfx::video;
+using namespace ifsfx::engine;
 
 // A frame with real structure (a smooth field plus noise), so caches see a natural image.
 cv::Mat test_frame(cv::Size size) {

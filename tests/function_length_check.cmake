@@ -12,9 +12,6 @@ set(folders ifs superifs collage fractaldb flame engine video farm run studio cl
 # (one published algorithm, Hansen's, kept in the order of its pseudocode).
 set(exempt_files "_avx2\\.cpp$" "_avx512\\.cpp$")
 set(exempt "ifs/detail/walk_quads.inl:walk_quads" "collage/optimise.cpp:minimise_cmaes")
-# TEMPORARY, until the studio's restructuring (issue 30 item 5) is merged; the lead empties it then.
-set(temporary_allowance "cli/studio_command.cpp:routes" "studio/routes.cpp:add_routes"
-                        "studio/video.cpp:jpeg")
 
 find_program(CTAGS NAMES ctags-universal universal-ctags ctags)
 if(CTAGS)
@@ -58,8 +55,7 @@ foreach(tag IN LISTS tags)
   if(length GREATER longest)
     set(longest ${length})
   endif()
-  if(NOT length GREATER limit OR "${file}:${name}" IN_LIST exempt
-     OR "${file}:${name}" IN_LIST temporary_allowance)
+  if(NOT length GREATER limit OR "${file}:${name}" IN_LIST exempt)
     continue()
   endif()
   set(skip OFF)

@@ -4,10 +4,10 @@
 #include <climits>
 #include <exception>
 
+#include "engine/drift.h"
 #include "ifs/preset.h"
 #include "superifs/superifs_file.h"
 #include "superifs/texture.h"
-#include "engine/drift.h"
 
 namespace ifsfx::obs {
 namespace {
@@ -56,7 +56,8 @@ void add_animation(obs_properties_t* p) {
   obs_property_list_add_string(animate, text("Animate.None"), "none");
   obs_property_list_add_string(animate, text("Animate.Drift"), "drift");
   obs_property_list_add_string(animate, text("Animate.SuperIfs"), "superifs");
-  obs_properties_add_float(p, "drift_amount", text("DriftAmount"), 0, engine::kMaxDriftAmount, 0.01);
+  obs_properties_add_float(p, "drift_amount", text("DriftAmount"), 0, engine::kMaxDriftAmount,
+                           0.01);
   obs_properties_add_float(p, "drift_speed", text("DriftSpeed"), 0, engine::kMaxDriftSpeed, 0.01);
   obs_property_t* superifs = obs_properties_add_list(
       p, "superifs", text("SuperIfs"), OBS_COMBO_TYPE_EDITABLE, OBS_COMBO_FORMAT_STRING);

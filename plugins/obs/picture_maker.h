@@ -12,8 +12,8 @@
 
 #include <opencv2/core.hpp>
 
-#include "plugins/obs/settings.h"
 #include "engine/fractal_engine.h"
+#include "plugins/obs/settings.h"
 
 namespace ifsfx::obs {
 

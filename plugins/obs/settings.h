@@ -18,22 +18,22 @@ enum class Mode { steal, tops };
 
 // The dialog's values, one per property, under the property's name.
 struct PropertyValues {
-  std::string preset = "sierpinski-triangle";  // a shipped name ...
-  std::string preset_file;                     // ... unless a .toml/.ifs/.csv file is picked
-  std::string mode = "steal";                  // steal | tops
-  std::string colouring;                       // --colouring ("" = a tiling of the frame)
-  std::string view;                            // --view x0,y0,x1,y1 ("" = auto-framed)
-  double mix = 0;                              // --mix
-  std::string background = "black";            // --background
-  std::string animate = "none";                // --animate none | drift | superifs
+  std::string preset = "sierpinski-triangle";         // a shipped name ...
+  std::string preset_file;                            // ... unless a .toml/.ifs/.csv file is picked
+  std::string mode = "steal";                         // steal | tops
+  std::string colouring;                              // --colouring ("" = a tiling of the frame)
+  std::string view;                                   // --view x0,y0,x1,y1 ("" = auto-framed)
+  double mix = 0;                                     // --mix
+  std::string background = "black";                   // --background
+  std::string animate = "none";                       // --animate none | drift | superifs
   double drift_amount = engine::kDefaultDriftAmount;  // --drift-amount
   double drift_speed = engine::kDefaultDriftSpeed;    // --drift-speed
-  std::string superifs = "paper-fig4";         // --superifs
-  std::int64_t buffers = 3;                    // --buffers (V)
+  std::string superifs = "paper-fig4";                // --superifs
+  std::int64_t buffers = 3;                           // --buffers (V)
   std::int64_t keyframe_interval = engine::kDefaultKeyframeInterval;  // --keyframe-interval
-  std::int64_t loop = 0;                       // --loop, in frames of OBS's frame rate
-  std::int64_t seed = 1;                       // --seed
-  bool exact = true;                           // --exact / --chaos
+  std::int64_t loop = 0;  // --loop, in frames of OBS's frame rate
+  std::int64_t seed = 1;  // --seed
+  bool exact = true;      // --exact / --chaos
 };
 
 struct PluginSettings {

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/fractal_engine.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
-#include "engine/fractal_engine.h"
 
 namespace ifsfx::obs {
 namespace {

@@ -47,6 +47,8 @@ namespace {
 
 using namespace std::chrono_literals;
 using Clock = std::chrono::steady_clock;
+using engine::filter_frame;
+using engine::prepare_filter;
 
 std::string env(const char* name) {
   const char* v = std::getenv(name);
