@@ -31,7 +31,7 @@
 #include "collage/preview.h"
 #include "collage/target.h"
 #include "ifs/error.h"
-#include "ifs/fractaldb_search.h"
+#include "fractaldb/search.h"
 #include "ifs/image_io.h"
 #include "ifs/preset.h"
 #include "ifs/render.h"
