@@ -28,8 +28,10 @@ namespace {
 
 void run_texture(const TextureArgs& args) {
   StopSignals signals;
-  const TextureOutcome out =
-      write_textures(load_superifs(args.preset), args, {.cancel = StopSignals::token()});
+  const TextureOutcome out = write_textures(
+      load_superifs(args.preset), args,
+      {.cancel = StopSignals::token(),
+       .note = [](const std::string& line) { fmt::print(stderr, "ifsfx: {}\n", line); }});
   if (!out.loop_closed && !args.quiet)
     fmt::print(stderr,
                "ifsfx: note: the buffers did not come back to themselves within {} steps: the "

@@ -22,7 +22,8 @@ bool writes_texture_movie(const TextureArgs& args) {
   return !(also_an_image && args.frames == 1 && args.loop == 0);
 }
 
-cv::Size check_texture_movie(const TextureArgs& args, cv::Size size, const OutputOptions& output) {
+cv::Size check_texture_movie(const TextureArgs& args, cv::Size size, const OutputOptions& output,
+                             const std::function<void(const std::string&)>& note) {
   video::silence_libav_log();  // errors come as one line each, the encoders' chatter not at all
   if (args.bits != 8)
     throw Error(ErrorKind::invalid_argument,
@@ -30,12 +31,12 @@ cv::Size check_texture_movie(const TextureArgs& args, cv::Size size, const Outpu
                             args.output));
   check_output(args.output, output);
   const cv::Size fit = video::encodable_size(args.output, args.codec, size);
-  if (fit != size)
-    fmt::print(stderr,
-               "ifsfx: note: {}: writing {}x{}, not {}x{}: {} codes colour at half resolution and "
-               "needs even sides\n",
-               args.output, fit.width, fit.height, size.width, size.height,
-               video::resolve_encoder(args.output, args.codec));
+  if (fit != size && note)
+    note(fmt::format(
+        "note: {}: writing {}x{}, not {}x{}: {} codes colour at half resolution and needs even "
+        "sides",
+        args.output, fit.width, fit.height, size.width, size.height,
+        video::resolve_encoder(args.output, args.codec)));
   return fit;
 }
 

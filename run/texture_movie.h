@@ -5,6 +5,9 @@
 // OUTPUT-STEM.partial.EXT of the frames done after Ctrl-C, GIF and WebP looping for ever.
 #pragma once
 
+#include <functional>
+#include <string>
+
 #include <cstdint>
 
 #include <opencv2/core.hpp>
@@ -22,8 +25,9 @@ bool writes_texture_movie(const TextureArgs& args);
 
 // Checks a movie output before any work — its encoder, 8 bits, the output policy — and returns the
 // frame size the encoder takes: even sides for 4:2:0 encoders (H.264, VP9), one pixel smaller
-// than --size with a note on stderr where a side is odd.
-cv::Size check_texture_movie(const TextureArgs& args, cv::Size size, const OutputOptions& output);
+// than --size where a side is odd, said to `note` (one line, "note: ...").
+cv::Size check_texture_movie(const TextureArgs& args, cv::Size size, const OutputOptions& output,
+                             const std::function<void(const std::string&)>& note = {});
 
 // Writes frames first..last of `textures` (crossfaded, or placed in the loop), each laid out as
 // `layout` says (--seamless --tiles), into the movie and returns how many. A stop or an error keeps

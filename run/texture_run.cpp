@@ -58,10 +58,10 @@ FrameFiles frame_files(const TextureArgs& args) {
 // The output policy: no frame replaces an input; every name is checked before the burn-in.
 // Returns the size of the frames (a 4:2:0 movie encoder takes even sides: run/texture_movie.h).
 cv::Size check_frame_files(const TextureArgs& args, const FrameFiles& files, cv::Size size,
-                           OutputOptions& output) {
+                           OutputOptions& output, const TextureRun& run) {
   add_preset_input(output.inputs, args.preset);
   output.inputs.add(args.source);
-  if (files.movie) return check_texture_movie(args, size, output);
+  if (files.movie) return check_texture_movie(args, size, output, run.note);
   if (files.first <= files.last)
     check_writable_image(files.path_of(files.first), output, args.bits);
   for (int frame = files.first + 1; frame <= files.last; ++frame)
@@ -154,7 +154,7 @@ TextureOutcome write_textures(const SuperIfsPreset& preset, const TextureArgs& a
   cv::Size size = check_texture_args(args);
   const FrameFiles files = frame_files(args);
   OutputOptions output{.inputs = run.inputs, .cancel = run.cancel};
-  size = check_frame_files(args, files, size, output);
+  size = check_frame_files(args, files, size, output, run);
   // --seamless: laid out as --tiles and --tile-offset say.
   const TileLayout layout = tile_layout(args.tiles, preset.seamless, size);
   const TextureOptions options = texture_options(preset, args, output.cancel);

@@ -24,6 +24,9 @@ struct TextureRun {
   InputFiles inputs;   // files no frame may replace, besides the command's own
   // After each frame is rendered (done of total), on the calling thread.
   std::function<void(int done, int total)> progress;
+  // What the user should be told before the frames come (a movie's size made even): one line,
+  // "note: ...".
+  std::function<void(const std::string&)> note;
 };
 
 struct TextureOutcome {
