@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "run/filter_run.h"
 
+#include "run/movie_size.h"
+
 #include <memory>
 #include <string>
 
@@ -38,14 +40,7 @@ cv::Size output_size(const FilterArgs& args, cv::Size frame_size,
                      const std::function<void(const std::string&)>& note) {
   const cv::Size size = args.size.empty() ? frame_size : size_option(args.size);
   if (!writes_movie(args)) return size;
-  const cv::Size fit = video::encodable_size(args.output, args.codec, size);
-  if (fit != size && note)
-    note(fmt::format(
-        "note: {}: writing {}x{}, not {}x{}: {} codes colour at half resolution and needs even "
-        "sides",
-        args.output, fit.width, fit.height, size.width, size.height,
-        video::resolve_encoder(args.output, args.codec)));
-  return fit;
+  return encodable_movie_size(args.output, args.codec, size, note);
 }
 
 // The output policy: no output file replaces an input (the movie, every file of an image

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "run/texture_movie.h"
 
+#include "run/movie_size.h"
+
 #include <string>
 
 #include <fmt/format.h>
@@ -30,14 +32,7 @@ cv::Size check_texture_movie(const TextureArgs& args, cv::Size size, const Outpu
                 fmt::format("--bits: a movie has 8 bits per channel (got {} for {})", args.bits,
                             args.output));
   check_output(args.output, output);
-  const cv::Size fit = video::encodable_size(args.output, args.codec, size);
-  if (fit != size && note)
-    note(fmt::format(
-        "note: {}: writing {}x{}, not {}x{}: {} codes colour at half resolution and needs even "
-        "sides",
-        args.output, fit.width, fit.height, size.width, size.height,
-        video::resolve_encoder(args.output, args.codec)));
-  return fit;
+  return encodable_movie_size(args.output, args.codec, size, note);
 }
 
 std::int64_t write_texture_movie(const TextureArgs& args, TextureSequence& textures,
