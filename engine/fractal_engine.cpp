@@ -17,7 +17,9 @@
 namespace ifsfx::engine {
 
 Ifs default_drawing() {
-  return load_ifs(kDefaultPreset).ifs;
+  // Parsed once: every FractalSettings starts from it (a plugin makes one per frame). Immutable.
+  static const Ifs fern = load_ifs(kDefaultPreset).ifs;
+  return fern;
 }
 
 bool same_maps(const FractalSettings& a, const FractalSettings& b) {
