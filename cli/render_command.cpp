@@ -123,7 +123,7 @@ StillResult render_picture(const Ifs& ifs, cv::Size size, const RenderArgs& args
                .background = colour_option(args.background.empty() ? "black" : args.background),
                .alpha = format_has_alpha(args.output),
                .layout = layout};
-  if (args.mode == RenderMode::steal) {
+  if (render_mode_info(args.mode).source) {
     // Read first: a missing or unreadable source fails before any long work.
     job.source = read_image(args.source).pixels;
     job.colouring = colouring_option(args.colouring, ifs);
