@@ -382,12 +382,7 @@ constexpr VariationParameter kMobius[] = {
     {"mobius_re_a", 1}, {"mobius_im_a", 0}, {"mobius_re_b", 0}, {"mobius_im_b", 0},
     {"mobius_re_c", 0}, {"mobius_im_c", 0}, {"mobius_re_d", 1}, {"mobius_im_d", 0}};
 Point mobius(const VariationInput& in, Rng&) {
-  const auto [x, y] = in.p;
-  const auto& k = in.params;
-  const double ur = k[0] * x - k[1] * y + k[2], ui = k[0] * y + k[1] * x + k[3];
-  const double vr = k[4] * x - k[5] * y + k[6], vi = k[4] * y + k[5] * x + k[7];
-  const double s = in.w / (vr * vr + vi * vi + kEps);
-  return {s * (ur * vr + ui * vi), s * (ui * vr - ur * vi)};
+  return mobius_map(in);
 }
 
 }  // namespace

@@ -99,12 +99,7 @@ constexpr VariationParameter kMobiusPlugin[] = {
     {"Mobius_Re_A", 1}, {"Mobius_Im_A", 0}, {"Mobius_Re_B", 0}, {"Mobius_Im_B", 0},
     {"Mobius_Re_C", 0}, {"Mobius_Im_C", 0}, {"Mobius_Re_D", 1}, {"Mobius_Im_D", 0}};
 Point mobius_plugin(const VariationInput& in, Rng&) {
-  const auto [x, y] = in.p;
-  const auto& k = in.params;
-  const double ur = k[0] * x - k[1] * y + k[2], ui = k[0] * y + k[1] * x + k[3];
-  const double vr = k[4] * x - k[5] * y + k[6], vi = k[4] * y + k[5] * x + k[7];
-  const double s = in.w / (vr * vr + vi * vi + kEps);
-  return {s * (ur * vr + ui * vi), s * (ui * vr - ur * vi)};
+  return mobius_map(in);
 }
 
 }  // namespace

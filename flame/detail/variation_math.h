@@ -60,4 +60,15 @@ void add_flam3_variations(std::vector<Variation>& out);
 void add_complex_variations(std::vector<Variation>& out);
 void add_more_variations(std::vector<Variation>& out);
 
+// The Möbius map w·(a·z + b)/(c·z + d) of complex a, b, c, d given as params[0..7] (re a, im a,
+// re b, ..., im d): flam3's mobius and Apophysis' Mobius plugin, under different parameter names.
+inline Point mobius_map(const VariationInput& in) {
+  const auto [x, y] = in.p;
+  const auto& k = in.params;
+  const double ur = k[0] * x - k[1] * y + k[2], ui = k[0] * y + k[1] * x + k[3];
+  const double vr = k[4] * x - k[5] * y + k[6], vi = k[4] * y + k[5] * x + k[7];
+  const double s = in.w / (vr * vr + vi * vi + kEps);
+  return {s * (ur * vr + ui * vi), s * (ui * vr - ur * vi)};
+}
+
 }  // namespace ifsfx::flame::detail
