@@ -35,6 +35,17 @@ std::string escaped(std::string_view s) {
       case '"':
         out += "&quot;";
         break;
+      // A literal tab or line break in an attribute reads back as a space (XML's attribute-value
+      // normalisation); a character reference survives it.
+      case '\t':
+        out += "&#9;";
+        break;
+      case '\n':
+        out += "&#10;";
+        break;
+      case '\r':
+        out += "&#13;";
+        break;
       default:
         out += c;
     }

@@ -21,5 +21,8 @@ esac
 [[ $kind == native ]] || flags+=(-DIFSFX_NATIVE=OFF)
 launcher=()
 command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+# ccache compiles a file that uses a precompiled header again unless told that the header's
+# macros and __TIME__ may be ignored (cmake/build_speed.cmake).
+export CCACHE_SLOPPINESS=${CCACHE_SLOPPINESS:-pch_defines,time_macros}
 cmake -S . -B "build/$kind" -G Ninja -DIFSFX_WERROR=ON "${flags[@]}" "${launcher[@]}" >/dev/null
 cmake --build "build/$kind" -j"$(nproc)"

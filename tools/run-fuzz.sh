@@ -6,10 +6,10 @@
 # <reader>, the shipped presets it reads, and tests/fuzz/regressions/<reader> (inputs that once
 # broke it). Any crash, sanitizer report, uncaught non-ifsfx exception, broken property or hang
 # (over 10 s on one input) fails the run; the input is kept in build/fuzz/run/<reader>/.
-#   tools/run-fuzz.sh [SECONDS]   per harness; default 45 (IFSFX_FUZZ_SECONDS), 6 harnesses
+#   tools/run-fuzz.sh [SECONDS]   per harness; default 30 (IFSFX_FUZZ_SECONDS), 6 harnesses
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds=${1:-${IFSFX_FUZZ_SECONDS:-45}}
+seconds=${1:-${IFSFX_FUZZ_SECONDS:-30}}
 readers=(preset_toml fractint superifs steal_map fractaldb_csv flame)
 
 launcher=()

@@ -5,7 +5,7 @@
 # kernel in a software-emulated VM (label `vm`, minutes each), and the install tests install the
 # build, build against it and package it (label `install`): they run in the Release pass only.
 # Last, the file readers are fuzzed for a fixed budget (tools/run-fuzz.sh: clang, libFuzzer,
-# ASan+UBSan, 45 s per reader, about 5 minutes with its build).
+# ASan+UBSan, 30 s per reader, about 5 minutes with its build).
 #
 # The passes are independent: a failure in one (a build or a test) does not stop the others, so one
 # broken case never hides what the others would find. The script ends with one line per pass and

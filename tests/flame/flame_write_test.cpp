@@ -36,7 +36,7 @@ VariationTerm term(const char* name, double weight, std::vector<double> params =
 // A flame using every part of the model a file can hold.
 Flame full_flame() {
   Flame f;
-  f.name = "all <parts> & \"quotes\"";
+  f.name = "all <parts> & \"quotes\",\ta line\r\nbreak";
   f.camera = {.width = 320,
               .height = 200,
               .center = {0.1, -0.7},
