@@ -28,9 +28,11 @@ inline V draw(const BatchTerm& t, int j, std::size_t i) {
   return load(t.u + static_cast<std::size_t>(j) * kBatchStride + i);
 }
 
-inline V r_of(V x, V y) { return vsqrt(x * x + y * y); }
+inline V r_of(V x, V y) {
+  return vsqrt(x * x + y * y);
+}
 
-#define IFSFX_BATCH(name) \
+#define IFSFX_BATCH(name)                                                                        \
   void b_##name(const BatchTerm& t, std::size_t n, const double* X, const double* Y, double* OX, \
                 double* OY)
 
@@ -223,6 +225,218 @@ IFSFX_BATCH(cross) {
   });
 }
 
+// The complex functions (flame/variations_complex.cpp).
+IFSFX_BATCH(exp) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V e = t.w * vexp(x);
+    const VSinCos sc = vsincos(y);
+    return VP{e * sc.c, e * sc.s};
+  });
+}
+IFSFX_BATCH(log) {
+  const double base = std::log(t.params[0]);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * (0.5 * vlog(x * x + y * y) / base), t.w * vatan2(y, x)};
+  });
+}
+IFSFX_BATCH(sin) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(x);
+    return VP{t.w * (sc.s * vcosh(y)), t.w * (sc.c * vsinh(y))};
+  });
+}
+IFSFX_BATCH(cos) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(x);
+    return VP{t.w * (sc.c * vcosh(y)), t.w * (-sc.s * vsinh(y))};
+  });
+}
+IFSFX_BATCH(tan) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(2.0 * x);
+    const V d = t.w * (1.0 / (sc.c + vcosh(2.0 * y)));
+    return VP{d * sc.s, d * vsinh(2.0 * y)};
+  });
+}
+IFSFX_BATCH(sec) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(x);
+    const V d = t.w * (2.0 / (vcos(2.0 * x) + vcosh(2.0 * y)));
+    return VP{d * (sc.c * vcosh(y)), d * (sc.s * vsinh(y))};
+  });
+}
+IFSFX_BATCH(csc) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(x);
+    const V d = t.w * (2.0 / (vcosh(2.0 * y) - vcos(2.0 * x)));
+    return VP{d * (sc.s * vcosh(y)), d * (-sc.c * vsinh(y))};
+  });
+}
+IFSFX_BATCH(cot) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(2.0 * x);
+    const V d = t.w * (1.0 / (vcosh(2.0 * y) - sc.c));
+    return VP{d * sc.s, d * -vsinh(2.0 * y)};
+  });
+}
+IFSFX_BATCH(sinh) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(y);
+    return VP{t.w * (vsinh(x) * sc.c), t.w * (vcosh(x) * sc.s)};
+  });
+}
+IFSFX_BATCH(cosh) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(y);
+    return VP{t.w * (vcosh(x) * sc.c), t.w * (vsinh(x) * sc.s)};
+  });
+}
+IFSFX_BATCH(tanh) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(2.0 * y);
+    const V d = t.w * (1.0 / (sc.c + vcosh(2.0 * x)));
+    return VP{d * vsinh(2.0 * x), d * sc.s};
+  });
+}
+IFSFX_BATCH(sech) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(y);
+    const V d = t.w * (2.0 / (vcos(2.0 * y) + vcosh(2.0 * x)));
+    return VP{d * (sc.c * vcosh(x)), d * (-sc.s * vsinh(x))};
+  });
+}
+IFSFX_BATCH(csch) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(y);
+    const V d = t.w * (2.0 / (vcosh(2.0 * x) - vcos(2.0 * y)));
+    return VP{d * (vsinh(x) * sc.c), d * (-vcosh(x) * sc.s)};
+  });
+}
+IFSFX_BATCH(coth) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(2.0 * y);
+    const V d = t.w * (1.0 / (vcosh(2.0 * x) - sc.c));
+    return VP{d * vsinh(2.0 * x), d * sc.s};
+  });
+}
+
+// flam3's later variations (flame/variations_flam3.cpp).
+IFSFX_BATCH(popcorn2) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos a = vsincos(y * k[2]), b = vsincos(x * k[2]);
+    return VP{t.w * (x + k[0] * vsin(a.s / a.c)), t.w * (y + k[1] * vsin(b.s / b.c))};
+  });
+}
+IFSFX_BATCH(pie) {
+  const double slices = t.params[0], rotation = t.params[1], thickness = t.params[2];
+  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
+    const V t1 = vtrunc(draw(t, 0, i) * slices + 0.5);
+    const V t2 = rotation + 2.0 * kVPi / slices * (t1 + draw(t, 1, i) * thickness);
+    const VSinCos sc = vsincos(t2);
+    const V k = t.w * draw(t, 2, i);
+    return VP{k * sc.c, k * sc.s};
+  });
+}
+IFSFX_BATCH(boarders) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V rx = vround(x), ry = vround(y), ox = x - rx, oy = y - ry;
+    const V hx = ox * 0.5 + rx, hy = oy * 0.5 + ry;
+    const V sx = sel(ox >= 0.0, splat(0.25), splat(-0.25));
+    const V sy = sel(oy >= 0.0, splat(0.25), splat(-0.25));
+    const M along_x = vabs(ox) >= vabs(oy), keep = draw(t, 0, i) >= 0.75;
+    V px = sel(along_x, hx + sx, hx + sy * ox / oy);
+    V py = sel(along_x, hy + sx * oy / ox, hy + sy);
+    px = sel(keep, hx, px);
+    py = sel(keep, hy, py);
+    return VP{t.w * px, t.w * py};
+  });
+}
+IFSFX_BATCH(super_shape) {
+  const double* k = t.params;
+  const double rnd = k[0], m = k[1], n1 = k[2], n2 = k[3], n3 = k[4], holes = k[5];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const VSinCos sc = vsincos(m / 4 * vatan2(y, x) + kVPi / 4);
+    const V t1 = vpow(vabs(sc.c), splat(n2)), t2 = vpow(vabs(sc.s), splat(n3));
+    const V r = r_of(x, y);
+    const V rr = (rnd * draw(t, 0, i) + (1 - rnd) * r - holes) * vpow(t1 + t2, splat(-1 / n1));
+    const V f = t.w * rr / (r + kBEps);
+    return VP{f * x, f * y};
+  });
+}
+IFSFX_BATCH(loonie) {
+  const double w2 = t.w * t.w;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r2 = x * x + y * y;
+    const V k = sel((r2 < w2) & (r2 != 0.0), t.w * vsqrt(w2 / r2 - 1.0), splat(t.w));
+    return VP{k * x, k * y};
+  });
+}
+IFSFX_BATCH(conic) {
+  const double e = t.params[0], holes = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V r = r_of(x, y) + kBEps, ct = x / r;
+    const V k = t.w * (draw(t, 0, i) - holes) * e / (1.0 + e * ct) / r;
+    return VP{k * x, k * y};
+  });
+}
+IFSFX_BATCH(curve) {
+  const double* k = t.params;
+  const double xl = std::max(k[2] * k[2], 1e-20), yl = std::max(k[3] * k[3], 1e-20);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * (x + k[0] * vexp(-y * y / xl)), t.w * (y + k[1] * vexp(-x * x / yl))};
+  });
+}
+IFSFX_BATCH(flower) {
+  const double petals = t.params[0], holes = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V r = t.w * (draw(t, 0, i) - holes) * vcos(petals * vatan2(y, x));
+    const V k = r / (r_of(x, y) + kBEps);
+    return VP{k * x, k * y};
+  });
+}
+IFSFX_BATCH(whorl) {
+  const double inside = t.params[0], outside = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = r_of(x, y);
+    const V turn = sel(r < t.w, splat(inside), splat(outside)) / (t.w - r);
+    const VSinCos sc = vsincos(vatan2(y, x) + turn);
+    return VP{t.w * r * sc.c, t.w * r * sc.s};
+  });
+}
+IFSFX_BATCH(foci) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V ex = 0.5 * vexp(x), enx = 0.25 / ex;
+    const VSinCos sc = vsincos(y);
+    const V k = t.w / (ex + enx - sc.c);
+    return VP{k * (ex - enx), k * sc.s};
+  });
+}
+IFSFX_BATCH(bent2) {
+  const double px = t.params[0], py = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * sel(x < 0.0, x * px, x), t.w * sel(y < 0.0, y * py, y)};
+  });
+}
+IFSFX_BATCH(polar2) {
+  const double k = t.w / kVPi;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{k * vatan2(x, y), k / 2 * vlog(x * x + y * y)};
+  });
+}
+IFSFX_BATCH(waves2) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * (x + k[0] * vsin(y * k[2])), t.w * (y + k[1] * vsin(x * k[3]))};
+  });
+}
+IFSFX_BATCH(splits) {
+  const double px = t.params[0], py = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * sel(x >= 0.0, x + px, x - px), t.w * sel(y >= 0.0, y + py, y - py)};
+  });
+}
+
 #undef IFSFX_BATCH
 
 constexpr BatchVariation kTable[] = {
@@ -256,4 +470,32 @@ constexpr BatchVariation kTable[] = {
     {"tangent", b_tangent},
     {"square", b_square, 2},
     {"cross", b_cross},
+    {"exp", b_exp},
+    {"log", b_log},
+    {"sin", b_sin},
+    {"cos", b_cos},
+    {"tan", b_tan},
+    {"sec", b_sec},
+    {"csc", b_csc},
+    {"cot", b_cot},
+    {"sinh", b_sinh},
+    {"cosh", b_cosh},
+    {"tanh", b_tanh},
+    {"sech", b_sech},
+    {"csch", b_csch},
+    {"coth", b_coth},
+    {"popcorn2", b_popcorn2},
+    {"pie", b_pie, 3},
+    {"boarders", b_boarders, 1},
+    {"super_shape", b_super_shape, 1},
+    {"loonie", b_loonie},
+    {"conic", b_conic, 1},
+    {"curve", b_curve},
+    {"flower", b_flower, 1},
+    {"whorl", b_whorl},
+    {"foci", b_foci},
+    {"bent2", b_bent2},
+    {"polar2", b_polar2},
+    {"waves2", b_waves2},
+    {"splits", b_splits},
 };

@@ -12,7 +12,9 @@ constexpr double kVPi = 3.14159265358979323846;
 constexpr double kVMagic = 0x1.8p52;  // x + 1.5·2^52 − 1.5·2^52 rounds |x| < 2^51 to an integer
 constexpr double kLn2Hi = 6.93147180369123816490e-01, kLn2Lo = 1.90821492927058770002e-10;
 
-inline V vabs(V x) { return sel(x < 0.0, -x, x); }
+inline V vabs(V x) {
+  return sel(x < 0.0, -x, x);
+}
 
 // The nearest integer (ties to even), for |x| < 2^51; larger |x| are integers already.
 inline V vround(V x) {
@@ -32,11 +34,15 @@ inline V vtrunc(V x) {
 
 // fmod(x, y) as libm: x − trunc(x/y)·y, the dividend's sign (exact for the flames' small
 // quotients).
-inline V vfmod(V x, V y) { return x - vtrunc(x / y) * y; }
+inline V vfmod(V x, V y) {
+  return x - vtrunc(x / y) * y;
+}
 
 // 2^k for an integer-valued k in [−1022, 1023]: k's low bits from the rounding constant, moved
 // into the exponent field.
-inline V pow2i(V k) { return from_bits((as_bits(k + kVMagic) + 1023) << 52); }
+inline V pow2i(V k) {
+  return from_bits((as_bits(k + kVMagic) + 1023) << 52);
+}
 
 struct VSinCos {
   V s, c;
@@ -79,8 +85,12 @@ inline VSinCos vsincos(V x) {
   return {sn, cs};
 }
 
-inline V vsin(V x) { return vsincos(x).s; }
-inline V vcos(V x) { return vsincos(x).c; }
+inline V vsin(V x) {
+  return vsincos(x).s;
+}
+inline V vcos(V x) {
+  return vsincos(x).c;
+}
 
 // e^x: x − k·ln 2 (fdlibm's two-part ln 2), Taylor to degree 13 on |r| ≤ ln 2 / 2, times 2^k;
 // 0 below −708.39, ∞ above 709.78 (where 2^k leaves the normal numbers).
@@ -136,7 +146,9 @@ inline V vlog(V x) {
 }
 
 // x^y for x > 0 (and 0^y = 0 for y > 0), as e^(y·ln x).
-inline V vpow(V x, V y) { return vexp(y * vlog(x)); }
+inline V vpow(V x, V y) {
+  return vexp(y * vlog(x));
+}
 
 // atan on [−0.2, 0.66] (Cephes' rational form).
 inline V atan_core(V t) {
@@ -168,7 +180,9 @@ inline V vatan2(V y, V x) {
   return sel((x != x) | (y != y), splat(NAN), ang);
 }
 
-inline V vatan(V x) { return vatan2(x, splat(1.0)); }
+inline V vatan(V x) {
+  return vatan2(x, splat(1.0));
+}
 
 // sinh, cosh, tanh from e^|x|; sinh by its Taylor series below 0.5, where e^x − e^−x cancels.
 inline V vsinh(V x) {
