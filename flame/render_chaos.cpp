@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 
@@ -79,9 +80,10 @@ struct Step {
   // (x, y) ← each term of `terms` in order, over points [0, n).
   void chain(const std::vector<Term>& terms, std::size_t n, double* x, double* y, Scratch& w,
              Rng& rng) const {
+    const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
     for (const Term& t : terms) {
-      w.tx.fill(0);
-      w.ty.fill(0);
+      std::fill_n(w.tx.begin(), padded, 0.0);
+      std::fill_n(w.ty.begin(), padded, 0.0);
       run_term(t, pre, n, x, y, w.tx.data(), w.ty.data(), w, rng);
       for (std::size_t i = 0; i < n; ++i) {
         x[i] = t.adds ? x[i] + w.tx[i] : w.tx[i];
@@ -93,15 +95,18 @@ struct Step {
   void operator()(std::size_t n, double* x, double* y, Scratch& w, Rng& rng) const {
     std::copy_n(x, n, w.qx.begin());
     std::copy_n(y, n, w.qy.begin());
-    std::fill(w.qx.begin() + static_cast<std::ptrdiff_t>(n), w.qx.end(), 0.0);
-    std::fill(w.qy.begin() + static_cast<std::ptrdiff_t>(n), w.qy.end(), 0.0);
+    const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
+    std::fill(w.qx.begin() + static_cast<std::ptrdiff_t>(n),
+              w.qx.begin() + static_cast<std::ptrdiff_t>(padded), 0.0);
+    std::fill(w.qy.begin() + static_cast<std::ptrdiff_t>(n),
+              w.qy.begin() + static_cast<std::ptrdiff_t>(padded), 0.0);
     affine(pre, n, w.qx.data(), w.qy.data());
     chain(pre_terms, n, w.qx.data(), w.qy.data(), w, rng);
     double* sx = w.qx.data();
     double* sy = w.qy.data();
     if (has_sum) {
-      w.sx.fill(0);
-      w.sy.fill(0);
+      std::fill_n(w.sx.begin(), padded, 0.0);
+      std::fill_n(w.sy.begin(), padded, 0.0);
       for (const Term& t : sum_terms)
         run_term(t, pre, n, w.qx.data(), w.qy.data(), w.sx.data(), w.sy.data(), w, rng);
       sx = w.sx.data();
@@ -187,12 +192,16 @@ struct Bins {
   explicit Bins(const FlameRaster& r) : sums(4 * static_cast<std::size_t>(r.bins_x) * r.bins_y) {}
 };
 
-void plot(const Plan& plan, const Step& from, Point p, double c, Bins& bins) {
-  const FlameRaster& r = plan.raster;
+constexpr std::size_t kOff = SIZE_MAX;  // a point off the raster
+
+// The first of the four sums of p's bin, or kOff.
+std::size_t bin_of(const FlameRaster& r, Point p) {
   const Point b = r.to_bins(p);
-  if (!(b.x >= 0 && b.x < r.bins_x && b.y >= 0 && b.y < r.bins_y)) return;
-  std::uint64_t* bin =
-      &bins.sums[4 * (static_cast<std::size_t>(b.y) * r.bins_x + static_cast<std::size_t>(b.x))];
+  if (!(b.x >= 0 && b.x < r.bins_x && b.y >= 0 && b.y < r.bins_y)) return kOff;
+  return 4 * (static_cast<std::size_t>(b.y) * r.bins_x + static_cast<std::size_t>(b.x));
+}
+
+void plot(const Plan& plan, const Step& from, double c, std::uint64_t* bin) {
   c = std::clamp(c, 0.0, 1.0);
   if (!plan.linear_palette) {
     // Step palette: entry ⌊256·c⌋, the last one for c = 1.
@@ -209,6 +218,17 @@ void plot(const Plan& plan, const Step& from, Point p, double c, Bins& bins) {
   const auto& e0 = from.colours[i];
   const auto& e1 = from.colours[i + 1];
   for (std::size_t k = 0; k < 4; ++k) bin[k] += (e0[k] * (256 - w) + e1[k] * w) >> 8;
+}
+
+// Plots the points whose `at` is not kOff, their bins fetched ahead: a step's 64 random
+// writes overlap their cache misses.
+void plot_all(const Plan& plan, const std::array<std::size_t, kN>& at,
+              const std::array<std::uint32_t, kN>& k, const std::array<double, kN>& c,
+              std::size_t m, Bins& bins) {
+  for (std::size_t i = 0; i < m; ++i)
+    if (at[i] != kOff) __builtin_prefetch(&bins.sums[at[i]], 1);
+  for (std::size_t i = 0; i < m; ++i)
+    if (at[i] != kOff) plot(plan, plan.steps[k[i]], c[i], &bins.sums[at[i]]);
 }
 
 // The walkers of one chunk, grouped by the xform each goes through next.
@@ -228,7 +248,7 @@ void start(Lanes& a, std::size_t i, Rng& rng) {
 // `to` ← the m walkers of `from`, each having picked its next xform, grouped by it (stable);
 // first[j] is where group j starts, first[steps] = m.
 void pick_and_group(const Plan& plan, const Lanes& from, std::size_t m, Lanes& to,
-                    std::vector<std::size_t>& first, Rng& rng) {
+                    std::vector<std::size_t>& first, std::vector<std::size_t>& next, Rng& rng) {
   std::array<std::uint32_t, kN> pick{};
   std::fill(first.begin(), first.end(), 0);
   const bool xaos = plan.pickers.size() > 1;
@@ -237,7 +257,7 @@ void pick_and_group(const Plan& plan, const Lanes& from, std::size_t m, Lanes& t
     ++first[pick[i] + 1];
   }
   for (std::size_t j = 1; j < first.size(); ++j) first[j] += first[j - 1];
-  std::vector<std::size_t> next(first.begin(), first.end() - 1);
+  std::copy(first.begin(), first.end(), next.begin());
   for (std::size_t i = 0; i < m; ++i) {
     const std::size_t to_i = next[pick[i]]++;
     to.x[to_i] = from.x[i];
@@ -265,17 +285,22 @@ std::uint64_t plot_lanes(const Plan& plan, Lanes& a, std::size_t m, std::uint64_
     ++reseeded;
   }
   if (s < burn_in) return reseeded;
+  std::array<std::size_t, kN> at{};
   if (!plan.final_step) {
     for (std::size_t i = 0; i < m; ++i)
-      if (!out[i] && s < a.limit[i]) plot(plan, plan.steps[a.k[i]], {a.x[i], a.y[i]}, a.c[i], bins);
+      at[i] = out[i] || s >= a.limit[i] ? kOff : bin_of(plan.raster, {a.x[i], a.y[i]});
+    plot_all(plan, at, a.k, a.c, m, bins);
     return reseeded;
   }
-  std::array<double, kN> fx = a.x, fy = a.y;
+  std::array<double, kN> fx = a.x, fy = a.y, fc{};
   (*plan.final_step)(m, fx.data(), fy.data(), w, rng);
   const Step& f = *plan.final_step;
-  for (std::size_t i = 0; i < m; ++i)
-    if (!out[i] && s < a.limit[i] && !escaped(fx[i], fy[i]))
-      plot(plan, plan.steps[a.k[i]], {fx[i], fy[i]}, f.keep * a.c[i] + f.shift, bins);
+  for (std::size_t i = 0; i < m; ++i) {
+    const bool off = out[i] || s >= a.limit[i] || escaped(fx[i], fy[i]);
+    at[i] = off ? kOff : bin_of(plan.raster, {fx[i], fy[i]});
+    fc[i] = f.keep * a.c[i] + f.shift;
+  }
+  plot_all(plan, at, a.k, fc, m, bins);
   return reseeded;
 }
 
@@ -294,10 +319,10 @@ std::uint64_t walk_chunk(const Plan& plan, std::uint64_t seed, std::uint64_t chu
     a->limit[i] = burn + std::min(kWalkerPoints, n - i * kWalkerPoints);
   }
   Scratch w;
-  std::vector<std::size_t> first(plan.steps.size() + 1);
+  std::vector<std::size_t> first(plan.steps.size() + 1), next(first.size());
   std::uint64_t reseeded = 0;
   for (std::uint64_t s = 0; s < burn + kWalkerPoints; ++s) {
-    pick_and_group(plan, *a, m, *b, first, rng);
+    pick_and_group(plan, *a, m, *b, first, next, rng);
     std::swap(a, b);
     for (std::size_t j = 0; j + 1 < first.size(); ++j) {
       const std::size_t lo = first[j], count = first[j + 1] - lo;

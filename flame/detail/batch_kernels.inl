@@ -437,6 +437,250 @@ IFSFX_BATCH(splits) {
   });
 }
 
+// More of the paper's catalogue (flame/variations_paper.cpp).
+IFSFX_BATCH(popcorn) {
+  const AffineMap& m = *t.pre;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos a = vsincos(3.0 * y), b = vsincos(3.0 * x);
+    return VP{t.w * (x + m.e * vsin(a.s / a.c)), t.w * (y + m.f * vsin(b.s / b.c))};
+  });
+}
+IFSFX_BATCH(rings) {
+  const double c2 = t.pre->e * t.pre->e + kBEps;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = r_of(x, y);
+    const V k = t.w * (vfmod(r + c2, splat(2 * c2)) - c2 + r * (1 - c2));
+    return VP{k * (y / (r + kBEps)), k * (x / (r + kBEps))};
+  });
+}
+IFSFX_BATCH(fan) {
+  const double tt = kVPi * (t.pre->e * t.pre->e + kBEps), f = t.pre->f;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V theta = vatan2(x, y);
+    const V a = sel(vfmod(theta + f, splat(tt)) > tt / 2, theta - tt / 2, theta + tt / 2);
+    const VSinCos sc = vsincos(a);
+    const V k = t.w * r_of(x, y);
+    return VP{k * sc.c, k * sc.s};
+  });
+}
+IFSFX_BATCH(blob) {
+  const double high = t.params[0], low = t.params[1], waves_n = t.params[2];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r0 = r_of(x, y);
+    const V r = r0 * (low + (high - low) / 2 * (vsin(waves_n * vatan2(x, y)) + 1.0));
+    return VP{t.w * r * (x / (r0 + kBEps)), t.w * r * (y / (r0 + kBEps))};
+  });
+}
+IFSFX_BATCH(pdj) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * (vsin(k[0] * y) - vcos(k[1] * x)), t.w * (vsin(k[2] * x) - vcos(k[3] * y))};
+  });
+}
+IFSFX_BATCH(fan2) {
+  const double p1 = kVPi * (t.params[0] * t.params[0] + kBEps), p2 = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V theta = vatan2(x, y);
+    const V tt = theta + p2 - p1 * vtrunc((theta + p2) / p1);
+    const VSinCos sc = vsincos(sel(tt > p1 / 2, theta - p1 / 2, theta + p1 / 2));
+    const V k = t.w * r_of(x, y);
+    return VP{k * sc.s, k * sc.c};
+  });
+}
+IFSFX_BATCH(rings2) {
+  const double p = t.params[0] * t.params[0] + kBEps;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = r_of(x, y);
+    const V k = t.w * (r - 2 * p * vtrunc((r + p) / (2 * p)) + r * (1 - p));
+    return VP{k * (x / (r + kBEps)), k * (y / (r + kBEps))};
+  });
+}
+IFSFX_BATCH(perspective) {
+  const double a = t.params[0] * kVPi / 2, d = t.params[1];
+  const double sa = std::sin(a), ca = std::cos(a);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V k = t.w * (d / (d - y * sa + kBEps));
+    return VP{k * x, k * (y * ca)};
+  });
+}
+IFSFX_BATCH(noise) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V k = t.w * draw(t, 0, i);
+    const VSinCos sc = vsincos(2 * kVPi * draw(t, 1, i));
+    return VP{k * (x * sc.c), k * (y * sc.s)};
+  });
+}
+IFSFX_BATCH(juliascope) {
+  const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V p3 = vtrunc(ap * draw(t, 0, i));
+    const V sign = sel(vfmod(p3, splat(2.0)) == 0.0, splat(1.0), splat(-1.0));
+    const VSinCos sc = vsincos((sign * vatan2(y, x) + 2.0 * kVPi * p3) / p);
+    const V k = t.w * vpow(x * x + y * y, splat(e));
+    return VP{k * sc.c, k * sc.s};
+  });
+}
+IFSFX_BATCH(radial_blur) {
+  const double p1 = t.params[0] * kVPi / 2, s1 = std::sin(p1), c1 = std::cos(p1);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V g = draw(t, 0, i) + draw(t, 1, i) + draw(t, 2, i) + draw(t, 3, i) - 2.0;
+    const V t1 = t.w * g, t2 = vatan2(y, x) + t1 * s1, t3 = t1 * c1 - 1.0;
+    const VSinCos sc = vsincos(t2);
+    const V r = r_of(x, y);
+    return VP{r * sc.c + t3 * x, r * sc.s + t3 * y};
+  });
+}
+IFSFX_BATCH(ngon) {
+  const double sides = t.params[0], pw = t.params[1], circle = t.params[2];
+  const double corners = t.params[3], p2 = 2 * kVPi / sides;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V phi = vatan2(y, x);
+    V t3 = phi - p2 * vfloor(phi / p2);
+    t3 = sel(t3 > p2 / 2, t3 - p2, t3);
+    const V k = (corners * (1.0 / (vcos(t3) + kBEps) - 1.0) + circle) /
+                (vpow(x * x + y * y, splat(pw / 2)) + kBEps);
+    return VP{t.w * k * x, t.w * k * y};
+  });
+}
+IFSFX_BATCH(rectangles) {
+  const double px = t.params[0], py = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V nx = px == 0 ? x : (2.0 * vfloor(x / px) + 1.0) * px - x;
+    const V ny = py == 0 ? y : (2.0 * vfloor(y / py) + 1.0) * py - y;
+    return VP{t.w * nx, t.w * ny};
+  });
+}
+IFSFX_BATCH(arch) {
+  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
+    const VSinCos sc = vsincos(draw(t, 0, i) * kVPi * t.w);
+    return VP{t.w * sc.s, t.w * (sc.s * sc.s / sc.c)};
+  });
+}
+IFSFX_BATCH(rays) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const VSinCos a = vsincos(draw(t, 0, i) * kVPi * t.w);
+    const V k = t.w * (t.w * (a.s / a.c) / (x * x + y * y + kBEps));
+    return VP{k * vcos(x), k * vsin(y)};
+  });
+}
+IFSFX_BATCH(blade) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const VSinCos sc = vsincos(draw(t, 0, i) * r_of(x, y) * t.w);
+    return VP{t.w * x * (sc.c + sc.s), t.w * x * (sc.c - sc.s)};
+  });
+}
+IFSFX_BATCH(secant2) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V c = vcos(t.w * r_of(x, y)), ic = 1.0 / c;
+    return VP{t.w * x, t.w * sel(c < 0.0, ic + 1.0, ic - 1.0)};
+  });
+}
+
+// More of flam3's (flame/variations_flam3.cpp, flame/variations_more.cpp).
+IFSFX_BATCH(flux) {
+  const double spread = 2 + t.params[0];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V xpw = x + t.w, xmw = x - t.w;
+    const V ratio = vsqrt(y * y + xpw * xpw) / (vsqrt(y * y + xmw * xmw) + kBEps);
+    const V r = t.w * spread * vsqrt(ratio);
+    const VSinCos sc = vsincos((vatan2(y, xmw) - vatan2(y, xpw)) * 0.5);
+    return VP{r * sc.c, r * sc.s};
+  });
+}
+IFSFX_BATCH(disc2) {
+  const double rot = t.params[0], twist = t.params[1];
+  double sin_add = std::sin(twist), cos_add = std::cos(twist) - 1, k = 1;
+  if (twist > 2 * kVPi) k = 1 + twist - 2 * kVPi;
+  if (twist < -2 * kVPi) k = 1 + twist + 2 * kVPi;
+  sin_add *= k;
+  cos_add *= k;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(rot * kVPi * (x + y));
+    const V r = t.w * vatan2(x, y) / kVPi;
+    return VP{(sc.s + cos_add) * r, (sc.c + sin_add) * r};
+  });
+}
+IFSFX_BATCH(oscilloscope) {
+  const double sep = t.params[0], freq = t.params[1], amp = t.params[2], damp = t.params[3];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V wave = amp * vcos(2 * kVPi * freq * x);
+    const V tt = (damp == 0 ? wave : vexp(-vabs(x) * damp) * wave) + sep;
+    return VP{t.w * x, t.w * sel(vabs(y) <= tt, -y, y)};
+  });
+}
+IFSFX_BATCH(stripes) {
+  const double space = t.params[0], warp = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V rx = vfloor(x + 0.5), ox = x - rx;
+    return VP{t.w * (ox * (1 - space) + rx), t.w * (y + ox * ox * warp)};
+  });
+}
+IFSFX_BATCH(hemisphere) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V k = t.w / vsqrt(x * x + y * y + 1.0);
+    return VP{k * x, k * y};
+  });
+}
+IFSFX_BATCH(parabola) {
+  const double h = t.params[0], wd = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const VSinCos sc = vsincos(r_of(x, y));
+    return VP{t.w * (h * sc.s * sc.s * draw(t, 0, i)), t.w * (wd * sc.c * draw(t, 1, i))};
+  });
+}
+IFSFX_BATCH(butterfly) {
+  const double c = 4 / std::sqrt(3 * kVPi);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V y2 = 2.0 * y;
+    const V k = t.w * (c * vsqrt(vabs(x * y) / (x * x + y2 * y2 + kBEps)));
+    return VP{k * x, k * y2};
+  });
+}
+IFSFX_BATCH(scry) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r2 = x * x + y * y;
+    const V k = 1.0 / (vsqrt(r2) * (r2 + 1 / (t.w + kBEps)) + kBEps);
+    return VP{k * x, k * y};
+  });
+}
+IFSFX_BATCH(split) {
+  const double px = t.params[0], py = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V ny = sel(vcos(x * px * kVPi) >= 0.0, y, -y);
+    const V nx = sel(vcos(y * py * kVPi) >= 0.0, x, -x);
+    return VP{t.w * nx, t.w * ny};
+  });
+}
+IFSFX_BATCH(escher) {
+  const double vc = 0.5 * (1 + std::cos(t.params[0])), vd = 0.5 * std::sin(t.params[0]);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V a = vatan2(y, x), lnr = 0.5 * vlog(x * x + y * y);
+    const V m = t.w * vexp(vc * lnr - vd * a);
+    const VSinCos sc = vsincos(vc * a + vd * lnr);
+    return VP{m * sc.c, m * sc.s};
+  });
+}
+IFSFX_BATCH(cell) {
+  const double size = t.params[0], inv = 1 / (size + kBEps);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    V cx = vfloor(x * inv), cy = vfloor(y * inv);
+    const V dx = x - cx * size, dy = y - cy * size;
+    cx = sel(cx >= 0.0, 2.0 * cx, -(2.0 * cx + 1.0));
+    cy = sel(cy >= 0.0, 2.0 * cy, -(2.0 * cy + 1.0));
+    return VP{t.w * (dx + cx * size), t.w * -(dy + cy * size)};
+  });
+}
+// flam3's mobius and Apophysis' Mobius: w·(a·z + b)/(c·z + d), parameters re a, im a, … im d.
+IFSFX_BATCH(mobius) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V ur = k[0] * x - k[1] * y + k[2], ui = k[0] * y + k[1] * x + k[3];
+    const V vr = k[4] * x - k[5] * y + k[6], vi = k[4] * y + k[5] * x + k[7];
+    const V s = t.w / (vr * vr + vi * vi + kBEps);
+    return VP{s * (ur * vr + ui * vi), s * (ui * vr - ur * vi)};
+  });
+}
+
 #undef IFSFX_BATCH
 
 constexpr BatchVariation kTable[] = {
@@ -498,4 +742,35 @@ constexpr BatchVariation kTable[] = {
     {"polar2", b_polar2},
     {"waves2", b_waves2},
     {"splits", b_splits},
+    {"popcorn", b_popcorn},
+    {"rings", b_rings},
+    {"fan", b_fan},
+    {"blob", b_blob},
+    {"pdj", b_pdj},
+    {"fan2", b_fan2},
+    {"rings2", b_rings2},
+    {"perspective", b_perspective},
+    {"noise", b_noise, 2},
+    {"juliascope", b_juliascope, 1},
+    {"radial_blur", b_radial_blur, 4},
+    {"ngon", b_ngon},
+    {"rectangles", b_rectangles},
+    {"arch", b_arch, 1},
+    {"rays", b_rays, 1},
+    {"blade", b_blade, 1},
+    {"secant2", b_secant2},
+    {"flux", b_flux},
+    {"disc2", b_disc2},
+    {"oscilloscope", b_oscilloscope},
+    {"stripes", b_stripes},
+    {"hemisphere", b_hemisphere},
+    {"parabola", b_parabola, 2},
+    {"butterfly", b_butterfly},
+    {"scry", b_scry},
+    {"split", b_split},
+    {"escher", b_escher},
+    {"cell", b_cell},
+    {"mobius", b_mobius},
+    {"Mobius", b_mobius},
+    {"linear3D", b_linear},
 };
