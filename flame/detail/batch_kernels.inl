@@ -681,6 +681,106 @@ IFSFX_BATCH(mobius) {
   });
 }
 
+// The wedges' angle: a·(1 − angle·count/2π) + ⌊(count·a + π)/2π⌋·angle.
+inline V wedge_angle(V a, double angle, double count) {
+  const V c = vfloor((count * a + kVPi) / (2 * kVPi));
+  return a * (1 - angle * count / (2 * kVPi)) + c * angle;
+}
+IFSFX_BATCH(wedge) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = r_of(x, y);
+    const VSinCos sc = vsincos(wedge_angle(vatan2(y, x) + k[3] * r, k[0], k[2]));
+    const V f = t.w * (r + k[1]);
+    return VP{f * sc.c, f * sc.s};
+  });
+}
+IFSFX_BATCH(wedge_julia) {
+  const double angle = t.params[0], count = t.params[1], pw = t.params[2], dist = t.params[3];
+  const double ap = std::abs(pw), e = dist / pw / 2;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V r = t.w * vpow(x * x + y * y, splat(e));
+    const V branch = vtrunc(ap * draw(t, 0, i));
+    const VSinCos sc = vsincos(wedge_angle((vatan2(y, x) + 2 * kVPi * branch) / pw, angle, count));
+    return VP{r * sc.c, r * sc.s};
+  });
+}
+IFSFX_BATCH(wedge_sph) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = 1.0 / (r_of(x, y) + kBEps);
+    const VSinCos sc = vsincos(wedge_angle(vatan2(y, x) + k[3] * r, k[0], k[1]));
+    const V f = t.w * (r + k[2]);
+    return VP{f * sc.c, f * sc.s};
+  });
+}
+inline V wrap_into(V v, double m) {
+  const V above = -m + vfmod(v + m, splat(2 * m)), below = m - vfmod(m - v, splat(2 * m));
+  return sel(v > m, above, sel(v < -m, below, v));
+}
+IFSFX_BATCH(modulus) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * wrap_into(x, t.params[0]), t.w * wrap_into(y, t.params[1])};
+  });
+}
+inline V separate(V v, double s, double inside) {
+  const V h = vsqrt(v * v + s * s);
+  return sel(v > 0.0, h - v * inside, -(h + v * inside));
+}
+IFSFX_BATCH(separation) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * separate(x, k[0], k[1]), t.w * separate(y, k[2], k[3])};
+  });
+}
+IFSFX_BATCH(bipolar) {
+  const double half = kVPi / 2, shift = half * t.params[0];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r2 = x * x + y * y, tt = r2 + 1.0, x2 = 2.0 * x;
+    V v = 0.5 * vatan2(2.0 * y, r2 - 1.0) - shift;
+    v = sel(v > half, -half + vfmod(v + half, splat(kVPi)),
+            sel(v < -half, half - vfmod(half - v, splat(kVPi)), v));
+    const V u = 0.25 * vlog((tt + x2) / (tt - x2));
+    return VP{t.w * 2 / kVPi * u, t.w * 2 / kVPi * v};
+  });
+}
+IFSFX_BATCH(elliptic) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V tt = x * x + y * y + 1.0, x2 = 2.0 * x;
+    const V xmax = 0.5 * (vsqrt(tt + x2) + vsqrt(tt - x2));
+    const V a = x / xmax, one = 1.0 - a * a, xm = xmax - 1.0;
+    const V b = vsqrt(sel(one > 0.0, one, splat(0.0)));
+    const V ssx = vsqrt(sel(xm > 0.0, xm, splat(0.0)));
+    const double w = t.w / (kVPi / 2);
+    const V v = vlog(xmax + ssx);
+    return VP{w * vatan2(a, b), sel(y > 0.0, w * v, -w * v)};
+  });
+}
+IFSFX_BATCH(sineblur) {
+  const double pw = std::max(t.params[0], 0.0);
+  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
+    const VSinCos sc = vsincos(2 * kVPi * draw(t, 0, i));
+    const V u = pw == 1 ? draw(t, 1, i) : vpow(draw(t, 1, i), splat(pw));
+    const V c = 2.0 * u - 1.0;  // acos c = atan2(√(1 − c²), c)
+    const V r = t.w * vatan2(vsqrt(1.0 - c * c), c) / kVPi;
+    return VP{r * sc.c, r * sc.s};
+  });
+}
+IFSFX_BATCH(blur_linear) {
+  const double a = t.params[1], ca = std::cos(a), sa = std::sin(a);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V r = t.params[0] * draw(t, 0, i);
+    return VP{t.w * (x + r * ca), t.w * (y + r * sa)};
+  });
+}
+IFSFX_BATCH(blur_zoom) {
+  const double cx = t.params[1], cy = t.params[2];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V z = 1.0 + t.params[0] * draw(t, 0, i);
+    return VP{t.w * ((x - cx) * z + cx), t.w * ((y - cy) * z + cy)};
+  });
+}
+
 #undef IFSFX_BATCH
 
 constexpr BatchVariation kTable[] = {
@@ -773,4 +873,14 @@ constexpr BatchVariation kTable[] = {
     {"mobius", b_mobius},
     {"Mobius", b_mobius},
     {"linear3D", b_linear},
+    {"wedge", b_wedge},
+    {"wedge_julia", b_wedge_julia, 1},
+    {"wedge_sph", b_wedge_sph},
+    {"modulus", b_modulus},
+    {"separation", b_separation},
+    {"bipolar", b_bipolar},
+    {"elliptic", b_elliptic},
+    {"sineblur", b_sineblur, 2},
+    {"blur_linear", b_blur_linear, 1},
+    {"blur_zoom", b_blur_zoom, 1},
 };
