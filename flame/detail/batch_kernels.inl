@@ -157,7 +157,8 @@ IFSFX_BATCH(power) {
 IFSFX_BATCH(cosine) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(kVPi * x);
-    return VP{t.w * (sc.c * vcosh(y)), t.w * (-sc.s * vsinh(y))};
+    const VSinhCosh h = vsinhcosh(y);
+    return VP{t.w * (sc.c * h.c), t.w * (-sc.s * h.s)};
   });
 }
 IFSFX_BATCH(eyefish) {
@@ -242,81 +243,93 @@ IFSFX_BATCH(log) {
 IFSFX_BATCH(sin) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(x);
-    return VP{t.w * (sc.s * vcosh(y)), t.w * (sc.c * vsinh(y))};
+    const VSinhCosh h = vsinhcosh(y);
+    return VP{t.w * (sc.s * h.c), t.w * (sc.c * h.s)};
   });
 }
 IFSFX_BATCH(cos) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(x);
-    return VP{t.w * (sc.c * vcosh(y)), t.w * (-sc.s * vsinh(y))};
+    const VSinhCosh h = vsinhcosh(y);
+    return VP{t.w * (sc.c * h.c), t.w * (-sc.s * h.s)};
   });
 }
 IFSFX_BATCH(tan) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(2.0 * x);
-    const V d = t.w * (1.0 / (sc.c + vcosh(2.0 * y)));
-    return VP{d * sc.s, d * vsinh(2.0 * y)};
+    const VSinhCosh h = vsinhcosh(2.0 * y);
+    const V d = t.w * (1.0 / (sc.c + h.c));
+    return VP{d * sc.s, d * h.s};
   });
 }
 IFSFX_BATCH(sec) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(x);
+    const VSinhCosh h = vsinhcosh(y);
     const V d = t.w * (2.0 / (vcos(2.0 * x) + vcosh(2.0 * y)));
-    return VP{d * (sc.c * vcosh(y)), d * (sc.s * vsinh(y))};
+    return VP{d * (sc.c * h.c), d * (sc.s * h.s)};
   });
 }
 IFSFX_BATCH(csc) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(x);
+    const VSinhCosh h = vsinhcosh(y);
     const V d = t.w * (2.0 / (vcosh(2.0 * y) - vcos(2.0 * x)));
-    return VP{d * (sc.s * vcosh(y)), d * (-sc.c * vsinh(y))};
+    return VP{d * (sc.s * h.c), d * (-sc.c * h.s)};
   });
 }
 IFSFX_BATCH(cot) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(2.0 * x);
-    const V d = t.w * (1.0 / (vcosh(2.0 * y) - sc.c));
-    return VP{d * sc.s, d * -vsinh(2.0 * y)};
+    const VSinhCosh h = vsinhcosh(2.0 * y);
+    const V d = t.w * (1.0 / (h.c - sc.c));
+    return VP{d * sc.s, d * -h.s};
   });
 }
 IFSFX_BATCH(sinh) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(y);
-    return VP{t.w * (vsinh(x) * sc.c), t.w * (vcosh(x) * sc.s)};
+    const VSinhCosh h = vsinhcosh(x);
+    return VP{t.w * (h.s * sc.c), t.w * (h.c * sc.s)};
   });
 }
 IFSFX_BATCH(cosh) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(y);
-    return VP{t.w * (vcosh(x) * sc.c), t.w * (vsinh(x) * sc.s)};
+    const VSinhCosh h = vsinhcosh(x);
+    return VP{t.w * (h.c * sc.c), t.w * (h.s * sc.s)};
   });
 }
 IFSFX_BATCH(tanh) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(2.0 * y);
-    const V d = t.w * (1.0 / (sc.c + vcosh(2.0 * x)));
-    return VP{d * vsinh(2.0 * x), d * sc.s};
+    const VSinhCosh h = vsinhcosh(2.0 * x);
+    const V d = t.w * (1.0 / (sc.c + h.c));
+    return VP{d * h.s, d * sc.s};
   });
 }
 IFSFX_BATCH(sech) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(y);
+    const VSinhCosh h = vsinhcosh(x);
     const V d = t.w * (2.0 / (vcos(2.0 * y) + vcosh(2.0 * x)));
-    return VP{d * (sc.c * vcosh(x)), d * (-sc.s * vsinh(x))};
+    return VP{d * (sc.c * h.c), d * (-sc.s * h.s)};
   });
 }
 IFSFX_BATCH(csch) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(y);
+    const VSinhCosh h = vsinhcosh(x);
     const V d = t.w * (2.0 / (vcosh(2.0 * x) - vcos(2.0 * y)));
-    return VP{d * (vsinh(x) * sc.c), d * (-vcosh(x) * sc.s)};
+    return VP{d * (h.s * sc.c), d * (-h.c * sc.s)};
   });
 }
 IFSFX_BATCH(coth) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(2.0 * y);
-    const V d = t.w * (1.0 / (vcosh(2.0 * x) - sc.c));
-    return VP{d * vsinh(2.0 * x), d * sc.s};
+    const VSinhCosh h = vsinhcosh(2.0 * x);
+    const V d = t.w * (1.0 / (h.c - sc.c));
+    return VP{d * h.s, d * sc.s};
   });
 }
 

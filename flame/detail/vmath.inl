@@ -184,10 +184,14 @@ inline V vatan(V x) {
   return vatan2(x, splat(1.0));
 }
 
-// sinh, cosh, tanh from e^|x|; sinh by its Taylor series below 0.5, where e^x − e^−x cancels.
-inline V vsinh(V x) {
-  const V ax = vabs(x), e = vexp(ax);
-  const V big = 0.5 * (e - 1.0 / e);
+// sinh and cosh from one e^|x|; sinh by its Taylor series below 0.5, where e^x − e^−x cancels.
+struct VSinhCosh {
+  V s, c;
+};
+
+inline VSinhCosh vsinhcosh(V x) {
+  const V ax = vabs(x), e = vexp(ax), ie = 1.0 / e;
+  const V big = 0.5 * (e - ie);
   const V z = x * x;
   V p = z * (1.0 / 6227020800.0) + 1.0 / 39916800.0;
   p = p * z + 1.0 / 362880.0;
@@ -196,15 +200,18 @@ inline V vsinh(V x) {
   p = p * z + 1.0 / 6.0;
   const V small = ax + ax * z * p;
   const V s = sel(ax < 0.5, small, big);
-  return sel(x < 0.0, -s, s);
+  return {sel(x < 0.0, -s, s), 0.5 * (e + ie)};
+}
+
+inline V vsinh(V x) {
+  return vsinhcosh(x).s;
 }
 
 inline V vcosh(V x) {
-  const V e = vexp(vabs(x));
-  return 0.5 * (e + 1.0 / e);
+  return vsinhcosh(x).c;
 }
 
 inline V vtanh(V x) {
-  const V t = vsinh(x) / vcosh(x);
-  return sel(vabs(x) > 20.0, sel(x < 0.0, splat(-1.0), splat(1.0)), t);
+  const VSinhCosh h = vsinhcosh(x);
+  return sel(vabs(x) > 20.0, sel(x < 0.0, splat(-1.0), splat(1.0)), h.s / h.c);
 }
