@@ -2,8 +2,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 #include <mutex>
 
+#include "flame/detail/batch_variations.h"
 #include "flame/detail/render_chaos.h"
 #include "flame/variations.h"
 #include "ifs/parallel.h"
@@ -13,21 +16,60 @@ namespace ifsfx::flame::detail {
 namespace {
 
 // flam3's sub-batch: each walker plots this many points from its own random start. Flames
-// whose maps do not contract (a pure rotation draws one circle per start) show the count.
-constexpr std::uint64_t kChunkPoints = 10000;
+// whose maps do not contract (a pure rotation draws one circle per start) show the count. A
+// chunk is kBatchLanes walkers in lockstep, so that the walkers that picked one xform go through
+// its variations together (flame/detail/batch_variations.h).
+constexpr std::uint64_t kWalkerPoints = 10000;
+constexpr std::uint64_t kChunkPoints = kWalkerPoints * kBatchLanes;
 constexpr double kUnit = 65536;   // one hit of full colour, in the integer sums
 constexpr double kEscape = 1e10;  // a point beyond this (or not a number) is re-seeded
+constexpr std::size_t kN = kBatchStride;
 
 // One variation term with everything the inner loop needs resolved once.
 struct Term {
   VariationFunction f;
+  const BatchVariation* batch;  // null: point by point through f
   double w;
   std::span<const double> params;
   bool adds;  // pre_/post_ lists: p + w·V(p) rather than w·V(p)
 };
 
+// The arrays one xform's batch works in: the affine point q, a term's result t, the sum s and
+// the random draws u.
+struct Scratch {
+  std::array<double, kN> qx{}, qy{}, tx{}, ty{}, sx{}, sy{};
+  std::vector<double> u;
+};
+
+// Points [0, n) of (x, y) through one term, its w·V added to (ox, oy).
+void run_term(const Term& t, const AffineMap& pre, std::size_t n, const double* x, const double* y,
+              double* ox, double* oy, Scratch& w, Rng& rng) {
+  if (!t.batch) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point r = t.f({.p = {x[i], y[i]}, .w = t.w, .params = t.params, .pre = &pre}, rng);
+      ox[i] += r.x;
+      oy[i] += r.y;
+    }
+    return;
+  }
+  const auto draws = static_cast<std::size_t>(t.batch->draws);
+  if (w.u.size() < draws * kN) w.u.resize(draws * kN);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < draws; ++j) w.u[j * kN + i] = rng.uniform();
+  t.batch->function({.w = t.w, .params = t.params.data(), .pre = &pre, .u = w.u.data()}, n, x, y,
+                    ox, oy);
+}
+
+void affine(const AffineMap& m, std::size_t n, double* x, double* y) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = x[i], v = y[i];
+    x[i] = m.a * u + m.b * v + m.e;
+    y[i] = m.c * u + m.d * v + m.f;
+  }
+}
+
 // An xform prepared for the loop: apply_xform's steps (flame/xform_eval.h) without looking
-// anything up, and the colour update c ← keep·c + shift.
+// anything up, over a batch of points, and the colour update c ← keep·c + shift.
 struct Step {
   AffineMap pre, post;
   bool has_post = false, has_sum = false;
@@ -35,48 +77,69 @@ struct Step {
   double keep = 1, shift = 0;
   std::array<std::array<std::uint32_t, 4>, 256> colours{};  // palette × opacity, in kUnit
 
-  Point chain(const std::vector<Term>& terms, Point q, Rng& rng) const {
+  // (x, y) ← each term of `terms` in order, over points [0, n).
+  void chain(const std::vector<Term>& terms, std::size_t n, double* x, double* y, Scratch& w,
+             Rng& rng) const {
+    const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
     for (const Term& t : terms) {
-      const Point r = t.f({.p = q, .w = t.w, .params = t.params, .pre = &pre}, rng);
-      q = t.adds ? Point{q.x + r.x, q.y + r.y} : r;
-    }
-    return q;
-  }
-  Point operator()(Point p, Rng& rng) const {
-    Point q = chain(pre_terms, pre(p), rng);
-    Point s = q;
-    if (has_sum) {
-      s = {0, 0};
-      for (const Term& t : sum_terms) {
-        const Point v = t.f({.p = q, .w = t.w, .params = t.params, .pre = &pre}, rng);
-        s = {s.x + v.x, s.y + v.y};
+      std::fill_n(w.tx.begin(), padded, 0.0);
+      std::fill_n(w.ty.begin(), padded, 0.0);
+      run_term(t, pre, n, x, y, w.tx.data(), w.ty.data(), w, rng);
+      for (std::size_t i = 0; i < n; ++i) {
+        x[i] = t.adds ? x[i] + w.tx[i] : w.tx[i];
+        y[i] = t.adds ? y[i] + w.ty[i] : w.ty[i];
       }
     }
-    if (has_post) s = post(s);
-    return chain(post_terms, s, rng);
+  }
+  // Points [0, n) of (x, y) moved through the xform, in place.
+  void operator()(std::size_t n, double* x, double* y, Scratch& w, Rng& rng) const {
+    std::copy_n(x, n, w.qx.begin());
+    std::copy_n(y, n, w.qy.begin());
+    const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
+    std::fill(w.qx.begin() + static_cast<std::ptrdiff_t>(n),
+              w.qx.begin() + static_cast<std::ptrdiff_t>(padded), 0.0);
+    std::fill(w.qy.begin() + static_cast<std::ptrdiff_t>(n),
+              w.qy.begin() + static_cast<std::ptrdiff_t>(padded), 0.0);
+    affine(pre, n, w.qx.data(), w.qy.data());
+    chain(pre_terms, n, w.qx.data(), w.qy.data(), w, rng);
+    double* sx = w.qx.data();
+    double* sy = w.qy.data();
+    if (has_sum) {
+      std::fill_n(w.sx.begin(), padded, 0.0);
+      std::fill_n(w.sy.begin(), padded, 0.0);
+      for (const Term& t : sum_terms)
+        run_term(t, pre, n, w.qx.data(), w.qy.data(), w.sx.data(), w.sy.data(), w, rng);
+      sx = w.sx.data();
+      sy = w.sy.data();
+    }
+    if (has_post) affine(post, n, sx, sy);
+    chain(post_terms, n, sx, sy, w, rng);
+    std::copy_n(sx, n, x);
+    std::copy_n(sy, n, y);
   }
 };
 
-std::vector<Term> terms_of(const std::vector<VariationTerm>& list, bool in_sum) {
+std::vector<Term> terms_of(const std::vector<VariationTerm>& list, bool in_sum, CpuLevel level) {
   std::vector<Term> out;
   for (const VariationTerm& t : list) {
     const Variation& v = variation(t.id);
     // z only: adds nothing to the sum, leaves the point alone in a list.
     if (v.kind == VariationKind::flat_3d) continue;
-    out.push_back({v.function, t.weight, t.params, !in_sum && v.assign == Assign::add});
+    out.push_back({v.function, find_batch_variation(level, v.name), t.weight, t.params,
+                   !in_sum && v.assign == Assign::add});
   }
   return out;
 }
 
-Step step_of(const Xform& xf, const Palette& palette) {
+Step step_of(const Xform& xf, const Palette& palette, CpuLevel level) {
   Step s;
   s.pre = xf.pre;
   s.has_post = xf.post.has_value();
   if (s.has_post) s.post = *xf.post;
   s.has_sum = !xf.variations.empty();
-  s.pre_terms = terms_of(xf.pre_variations, false);
-  s.sum_terms = terms_of(xf.variations, true);
-  s.post_terms = terms_of(xf.post_variations, false);
+  s.pre_terms = terms_of(xf.pre_variations, false, level);
+  s.sum_terms = terms_of(xf.variations, true, level);
+  s.post_terms = terms_of(xf.post_variations, false, level);
   s.keep = 1 - xf.colour_speed;
   s.shift = xf.colour_speed * xf.colour;
   for (std::size_t i = 0; i < 256; ++i) {
@@ -129,12 +192,16 @@ struct Bins {
   explicit Bins(const FlameRaster& r) : sums(4 * static_cast<std::size_t>(r.bins_x) * r.bins_y) {}
 };
 
-void plot(const Plan& plan, const Step& from, Point p, double c, Bins& bins) {
-  const FlameRaster& r = plan.raster;
+constexpr std::size_t kOff = SIZE_MAX;  // a point off the raster
+
+// The first of the four sums of p's bin, or kOff.
+std::size_t bin_of(const FlameRaster& r, Point p) {
   const Point b = r.to_bins(p);
-  if (!(b.x >= 0 && b.x < r.bins_x && b.y >= 0 && b.y < r.bins_y)) return;
-  std::uint64_t* bin =
-      &bins.sums[4 * (static_cast<std::size_t>(b.y) * r.bins_x + static_cast<std::size_t>(b.x))];
+  if (!(b.x >= 0 && b.x < r.bins_x && b.y >= 0 && b.y < r.bins_y)) return kOff;
+  return 4 * (static_cast<std::size_t>(b.y) * r.bins_x + static_cast<std::size_t>(b.x));
+}
+
+void plot(const Plan& plan, const Step& from, double c, std::uint64_t* bin) {
   c = std::clamp(c, 0.0, 1.0);
   if (!plan.linear_palette) {
     // Step palette: entry ⌊256·c⌋, the last one for c = 1.
@@ -153,49 +220,134 @@ void plot(const Plan& plan, const Step& from, Point p, double c, Bins& bins) {
   for (std::size_t k = 0; k < 4; ++k) bin[k] += (e0[k] * (256 - w) + e1[k] * w) >> 8;
 }
 
-// One chunk: a walker from a random start in [−1, 1]² (colour random in [0, 1)), burn_in
-// iterations unplotted, then n plotted ones; the final xform moves the plotted copy only.
+// Plots the points whose `at` is not kOff, their bins fetched ahead: a step's 64 random
+// writes overlap their cache misses.
+void plot_all(const Plan& plan, const std::array<std::size_t, kN>& at,
+              const std::array<std::uint32_t, kN>& k, const std::array<double, kN>& c,
+              std::size_t m, Bins& bins) {
+  for (std::size_t i = 0; i < m; ++i)
+    if (at[i] != kOff) __builtin_prefetch(&bins.sums[at[i]], 1);
+  for (std::size_t i = 0; i < m; ++i)
+    if (at[i] != kOff) plot(plan, plan.steps[k[i]], c[i], &bins.sums[at[i]]);
+}
+
+// The walkers of one chunk, grouped by the xform each goes through next.
+struct Lanes {
+  std::array<double, kN> x{}, y{}, c{};
+  std::array<std::uint32_t, kN> k{};      // the xform that moved it last (its picker row, colours)
+  std::array<std::uint64_t, kN> limit{};  // the step at which it stops plotting
+};
+
+// A walker's start: a random point in [−1, 1]², a random colour.
+void start(Lanes& a, std::size_t i, Rng& rng) {
+  a.x[i] = 2 * rng.uniform() - 1;
+  a.y[i] = 2 * rng.uniform() - 1;
+  a.c[i] = rng.uniform();
+}
+
+// `to` ← the m walkers of `from`, each having picked its next xform, grouped by it (stable);
+// first[j] is where group j starts, first[steps] = m.
+void pick_and_group(const Plan& plan, const Lanes& from, std::size_t m, Lanes& to,
+                    std::vector<std::size_t>& first, std::vector<std::size_t>& next, Rng& rng) {
+  std::array<std::uint32_t, kN> pick;  // NOLINT: the first m are set below
+  std::fill(first.begin(), first.end(), 0);
+  const bool xaos = plan.pickers.size() > 1;
+  for (std::size_t i = 0; i < m; ++i) {
+    // MapPicker's alias draw without its branch, which a random draw mispredicts half the time.
+    const MapPicker::View v = plan.pickers[xaos ? 1 + from.k[i] : 0].view();
+    const std::uint64_t r = rng.next();
+    const auto column = static_cast<std::uint32_t>(((r >> 32) * v.n) >> 32);
+    const std::uint32_t alias = v.alias[column];
+    const std::uint32_t own =
+        0u - static_cast<std::uint32_t>(static_cast<std::uint32_t>(r) < v.threshold[column]);
+    pick[i] = alias ^ ((column ^ alias) & own);
+    ++first[pick[i] + 1];
+  }
+  for (std::size_t j = 1; j < first.size(); ++j) first[j] += first[j - 1];
+  std::copy(first.begin(), first.end(), next.begin());
+  for (std::size_t i = 0; i < m; ++i) {
+    const std::size_t to_i = next[pick[i]]++;
+    to.x[to_i] = from.x[i];
+    to.y[to_i] = from.y[i];
+    to.c[to_i] = from.c[i];
+    to.k[to_i] = pick[i];
+    to.limit[to_i] = from.limit[i];
+  }
+}
+
+bool escaped(double x, double y) {
+  return !(std::abs(x) < kEscape && std::abs(y) < kEscape);
+}
+
+// After step `s` of every walker: escapees re-seeded, the others plotted (through the final
+// xform, when there is one, which moves the plotted copy only).
+std::uint64_t plot_lanes(const Plan& plan, Lanes& a, std::size_t m, std::uint64_t s,
+                         std::uint64_t burn_in, Scratch& w, Rng& rng, Bins& bins) {
+  std::array<bool, kN> out{};
+  std::uint64_t reseeded = 0;
+  for (std::size_t i = 0; i < m; ++i) {
+    if (!escaped(a.x[i], a.y[i])) continue;
+    out[i] = true;
+    start(a, i, rng);
+    ++reseeded;
+  }
+  if (s < burn_in) return reseeded;
+  std::array<std::size_t, kN> at{};
+  if (!plan.final_step) {
+    for (std::size_t i = 0; i < m; ++i)
+      at[i] = out[i] || s >= a.limit[i] ? kOff : bin_of(plan.raster, {a.x[i], a.y[i]});
+    plot_all(plan, at, a.k, a.c, m, bins);
+    return reseeded;
+  }
+  std::array<double, kN> fx = a.x, fy = a.y, fc{};
+  (*plan.final_step)(m, fx.data(), fy.data(), w, rng);
+  const Step& f = *plan.final_step;
+  for (std::size_t i = 0; i < m; ++i) {
+    const bool off = out[i] || s >= a.limit[i] || escaped(fx[i], fy[i]);
+    at[i] = off ? kOff : bin_of(plan.raster, {fx[i], fy[i]});
+    fc[i] = f.keep * a.c[i] + f.shift;
+  }
+  plot_all(plan, at, a.k, fc, m, bins);
+  return reseeded;
+}
+
+// One chunk: up to kBatchLanes walkers of kWalkerPoints points (the last one of the run may have
+// fewer), each from a random start, burn_in iterations unplotted, walked in lockstep.
 std::uint64_t walk_chunk(const Plan& plan, std::uint64_t seed, std::uint64_t chunk, std::uint64_t n,
                          int burn_in, Bins& bins) {
   Rng rng(stream_seed(seed, chunk));
-  const auto start = [&](Point& p, double& c) {
-    p = {2 * rng.uniform() - 1, 2 * rng.uniform() - 1};
-    c = rng.uniform();
-  };
-  Point p;
-  double c;
-  start(p, c);
+  const auto burn = static_cast<std::uint64_t>(burn_in);
+  const std::size_t m = static_cast<std::size_t>((n + kWalkerPoints - 1) / kWalkerPoints);
+  auto lanes = std::make_unique<std::array<Lanes, 2>>();
+  Lanes* a = &(*lanes)[0];
+  Lanes* b = &(*lanes)[1];
+  for (std::size_t i = 0; i < m; ++i) {
+    start(*a, i, rng);
+    a->limit[i] = burn + std::min(kWalkerPoints, n - i * kWalkerPoints);
+  }
+  Scratch w;
+  std::vector<std::size_t> first(plan.steps.size() + 1), next(first.size());
   std::uint64_t reseeded = 0;
-  std::size_t picker = 0;
-  const std::uint64_t total = n + static_cast<std::uint64_t>(burn_in);
-  for (std::uint64_t i = 0; i < total; ++i) {
-    const std::uint32_t k = plan.pickers[picker](rng.next());
-    if (plan.pickers.size() > 1) picker = 1 + k;
-    const Step& step = plan.steps[k];
-    const Point q = step(p, rng);
-    if (!(std::abs(q.x) < kEscape && std::abs(q.y) < kEscape)) {
-      start(p, c);
-      ++reseeded;
-      continue;
+  for (std::uint64_t s = 0; s < burn + kWalkerPoints; ++s) {
+    pick_and_group(plan, *a, m, *b, first, next, rng);
+    std::swap(a, b);
+    for (std::size_t j = 0; j + 1 < first.size(); ++j) {
+      const std::size_t lo = first[j], count = first[j + 1] - lo;
+      if (count == 0) continue;
+      const Step& step = plan.steps[j];
+      step(count, a->x.data() + lo, a->y.data() + lo, w, rng);
+      for (std::size_t i = lo; i < lo + count; ++i) a->c[i] = step.keep * a->c[i] + step.shift;
     }
-    p = q;
-    c = step.keep * c + step.shift;
-    if (i < static_cast<std::uint64_t>(burn_in)) continue;
-    if (!plan.final_step) {
-      plot(plan, step, p, c, bins);
-      continue;
-    }
-    const Point f = (*plan.final_step)(p, rng);
-    if (std::abs(f.x) < kEscape && std::abs(f.y) < kEscape)
-      plot(plan, step, f, plan.final_step->keep * c + plan.final_step->shift, bins);
+    reseeded += plot_lanes(plan, *a, m, s, burn, w, rng, bins);
   }
   return reseeded;
 }
 
 Plan plan_of(const Flame& flame, const FlameRaster& raster) {
   Plan plan;
-  for (const Xform& xf : flame.xforms) plan.steps.push_back(step_of(xf, flame.palette));
-  if (flame.final_xform) plan.final_step = step_of(*flame.final_xform, flame.palette);
+  const CpuLevel level = cpu_level();
+  for (const Xform& xf : flame.xforms) plan.steps.push_back(step_of(xf, flame.palette, level));
+  if (flame.final_xform) plan.final_step = step_of(*flame.final_xform, flame.palette, level);
   plan.pickers = pickers_of(flame);
   plan.linear_palette = flame.palette.mode == PaletteMode::linear;
   plan.raster = raster;

@@ -2,11 +2,14 @@
 // The paper's variations (Draves & Reckase, appendix) at points where their formulas are worked
 // by hand: r = √(x² + y²), θ = atan2(x, y) (measured from the y axis), φ = atan2(y, x).
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <numbers>
 #include <set>
 #include <sstream>
 
+#include "flame/detail/batch_variations.h"
+#include "ifs/cpu.h"
 #include "variation_check.h"
 
 namespace ifsfx::flame {
@@ -177,6 +180,71 @@ TEST(variations, blur_stays_within_the_weight) {
   for (std::uint64_t seed = 1; seed <= 50; ++seed) {
     const Point q = eval("blur", {5, 5}, 0.5, {}, {}, seed);
     EXPECT_LE(std::hypot(q.x, q.y), 0.5 + 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace ifsfx::flame
+
+namespace ifsfx::flame {
+namespace {
+
+// One batch form over `n` points, its draws taken from `rng` as the walker takes them (point by
+// point, each point's draws in order).
+std::vector<double> run_batch(const detail::BatchVariation& b, const std::vector<double>& params,
+                              const AffineMap& pre, const std::vector<double>& x,
+                              const std::vector<double>& y, std::uint64_t seed) {
+  using detail::kBatchStride;
+  Rng rng(seed);
+  std::vector<double> u(static_cast<std::size_t>(b.draws) * kBatchStride + kBatchStride);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    for (std::size_t j = 0; j < static_cast<std::size_t>(b.draws); ++j)
+      u[j * kBatchStride + i] = rng.uniform();
+  std::vector<double> px(kBatchStride), py(kBatchStride), ox(kBatchStride), oy(kBatchStride);
+  std::copy(x.begin(), x.end(), px.begin());
+  std::copy(y.begin(), y.end(), py.begin());
+  b.function({.w = 0.7, .params = params.data(), .pre = &pre, .u = u.data()}, x.size(), px.data(),
+             py.data(), ox.data(), oy.data());
+  std::vector<double> out;
+  for (std::size_t i = 0; i < x.size(); ++i) out.insert(out.end(), {ox[i], oy[i]});
+  return out;
+}
+
+// Every batch form (the 64-walker chaos game's, flame/detail/batch_variations.h) gives its
+// registry function's value to 1e-9 at random points and parameters, drawing the same random
+// numbers; and the AVX2 level gives the scalar level's bits.
+TEST(variations, batch_forms_equal_the_registry_and_every_level_the_scalar_bits) {
+  const auto scalar = detail::batch_variations(CpuLevel::scalar);
+  ASSERT_GE(scalar.size(), 40u);
+  Rng pick(99);
+  const AffineMap pre{0.8, -0.3, 0.4, 0.9, 0.35, -0.6};
+  for (const detail::BatchVariation& b : scalar) {
+    const Variation* v = find_variation(b.name);
+    ASSERT_NE(v, nullptr) << b.name;
+    std::vector<double> params = default_parameters(*v);
+    for (double& p : params) p += 0.25 + 0.5 * pick.uniform();
+    std::vector<double> x, y;
+    for (std::size_t i = 0; i < detail::kBatchLanes; ++i) {
+      x.push_back(6 * pick.uniform() - 3);
+      y.push_back(6 * pick.uniform() - 3);
+    }
+    const std::vector<double> ours = run_batch(b, params, pre, x, y, 5);
+    Rng rng(5);
+    int far = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      const Point r =
+          v->function({.p = {x[i], y[i]}, .w = 0.7, .params = params, .pre = &pre}, rng);
+      for (const auto& [got, want] : {std::pair{ours[2 * i], r.x}, std::pair{ours[2 * i + 1], r.y}})
+        far += !(std::abs(got - want) <= 1e-9 * (1 + std::abs(want)));
+    }
+    EXPECT_EQ(far, 0) << b.name;
+    for (CpuLevel level : supported_cpu_levels()) {
+      const detail::BatchVariation* other = detail::find_batch_variation(level, b.name);
+      ASSERT_NE(other, nullptr) << b.name << " at " << to_string(level);
+      const std::vector<double> theirs = run_batch(*other, params, pre, x, y, 5);
+      EXPECT_EQ(0, std::memcmp(theirs.data(), ours.data(), ours.size() * sizeof(double)))
+          << b.name << " at " << to_string(level);
+    }
   }
 }
 

@@ -1,0 +1,899 @@
+// SPDX-License-Identifier: Apache-2.0
+// The variations' batch forms (flame/detail/batch_variations.h): each is its registry function's
+// formula (flame/variations_*.cpp, where the comments cite the paper) over the lane type V of
+// flame/detail/vmath.inl, included after it. The random ones read their draws from t.u in the
+// order the registry function draws them.
+
+using flame::detail::BatchTerm;
+using flame::detail::BatchVariation;
+using flame::detail::kBatchStride;
+
+constexpr double kBEps = 1e-10;  // the registry's kEps
+
+struct VP {
+  V x, y;
+};
+
+// (ox, oy) += f(x, y, i) for the points [0, n), kW at a time.
+template <class F>
+inline void each(std::size_t n, const double* X, const double* Y, double* OX, double* OY, F f) {
+  for (std::size_t i = 0; i < n; i += kW) {
+    const VP r = f(load(X + i), load(Y + i), i);
+    store(OX + i, load(OX + i) + r.x);
+    store(OY + i, load(OY + i) + r.y);
+  }
+}
+
+inline V draw(const BatchTerm& t, int j, std::size_t i) {
+  return load(t.u + static_cast<std::size_t>(j) * kBatchStride + i);
+}
+
+inline V r_of(V x, V y) {
+  return vsqrt(x * x + y * y);
+}
+
+#define IFSFX_BATCH(name)                                                                        \
+  void b_##name(const BatchTerm& t, std::size_t n, const double* X, const double* Y, double* OX, \
+                double* OY)
+
+IFSFX_BATCH(linear) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) { return VP{t.w * x, t.w * y}; });
+}
+IFSFX_BATCH(sinusoidal) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) { return VP{t.w * vsin(x), t.w * vsin(y)}; });
+}
+IFSFX_BATCH(spherical) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V k = 1.0 / (x * x + y * y + kBEps);
+    return VP{t.w * k * x, t.w * k * y};
+  });
+}
+IFSFX_BATCH(swirl) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(x * x + y * y);
+    return VP{t.w * (x * sc.s - y * sc.c), t.w * (x * sc.c + y * sc.s)};
+  });
+}
+IFSFX_BATCH(horseshoe) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V k = 1.0 / (r_of(x, y) + kBEps);
+    return VP{t.w * k * ((x - y) * (x + y)), t.w * k * (2.0 * x * y)};
+  });
+}
+IFSFX_BATCH(polar) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * (vatan2(x, y) / kVPi), t.w * (r_of(x, y) - 1.0)};
+  });
+}
+IFSFX_BATCH(handkerchief) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = r_of(x, y), a = vatan2(x, y);
+    return VP{t.w * r * vsin(a + r), t.w * r * vcos(a - r)};
+  });
+}
+IFSFX_BATCH(heart) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = r_of(x, y);
+    const VSinCos sc = vsincos(vatan2(x, y) * r);
+    return VP{t.w * r * sc.s, t.w * r * -sc.c};
+  });
+}
+IFSFX_BATCH(disc) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(kVPi * r_of(x, y));
+    const V k = t.w * vatan2(x, y) / kVPi;
+    return VP{k * sc.s, k * sc.c};
+  });
+}
+IFSFX_BATCH(spiral) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r0 = r_of(x, y), r = r0 + kBEps;
+    const VSinCos sc = vsincos(r);
+    const V k = t.w / r;
+    return VP{k * (y / (r0 + kBEps) + sc.s), k * (x / (r0 + kBEps) - sc.c)};
+  });
+}
+IFSFX_BATCH(hyperbolic) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r0 = r_of(x, y), r = r0 + kBEps;
+    return VP{t.w * (x / (r0 + kBEps) / r), t.w * (r * (y / (r0 + kBEps)))};
+  });
+}
+IFSFX_BATCH(diamond) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = r_of(x, y);
+    const VSinCos sc = vsincos(r);
+    return VP{t.w * (x / (r + kBEps) * sc.c), t.w * (y / (r + kBEps) * sc.s)};
+  });
+}
+IFSFX_BATCH(ex) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = r_of(x, y), a = vatan2(x, y);
+    const V p0 = vsin(a + r), p1 = vcos(a - r);
+    const V p03 = p0 * p0 * p0, p13 = p1 * p1 * p1;
+    return VP{t.w * r * (p03 + p13), t.w * r * (p03 - p13)};
+  });
+}
+IFSFX_BATCH(julia) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V a = vatan2(x, y) / 2.0 + sel(draw(t, 0, i) < 0.5, splat(0.0), splat(kVPi));
+    const VSinCos sc = vsincos(a);
+    const V k = t.w * vsqrt(r_of(x, y));
+    return VP{k * sc.c, k * sc.s};
+  });
+}
+IFSFX_BATCH(bent) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * sel(x < 0.0, 2.0 * x, x), t.w * sel(y < 0.0, y / 2.0, y)};
+  });
+}
+IFSFX_BATCH(waves) {
+  const AffineMap& m = *t.pre;
+  const double kx = m.e * m.e + kBEps, ky = m.f * m.f + kBEps;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * (x + m.b * vsin(y / kx)), t.w * (y + m.d * vsin(x / ky))};
+  });
+}
+IFSFX_BATCH(fisheye) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V k = 2.0 / (r_of(x, y) + 1.0);
+    return VP{t.w * k * y, t.w * k * x};
+  });
+}
+IFSFX_BATCH(exponential) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V k = t.w * vexp(x - 1.0);
+    const VSinCos sc = vsincos(kVPi * y);
+    return VP{k * sc.c, k * sc.s};
+  });
+}
+IFSFX_BATCH(power) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = r_of(x, y), s = x / (r + kBEps), c = y / (r + kBEps);
+    const V k = t.w * vpow(r, s);
+    return VP{k * c, k * s};
+  });
+}
+IFSFX_BATCH(cosine) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(kVPi * x);
+    const VSinhCosh h = vsinhcosh(y);
+    return VP{t.w * (sc.c * h.c), t.w * (-sc.s * h.s)};
+  });
+}
+IFSFX_BATCH(eyefish) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V k = 2.0 / (r_of(x, y) + 1.0);
+    return VP{t.w * k * x, t.w * k * y};
+  });
+}
+IFSFX_BATCH(bubble) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V k = 4.0 / (x * x + y * y + 4.0);
+    return VP{t.w * k * x, t.w * k * y};
+  });
+}
+IFSFX_BATCH(cylinder) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) { return VP{t.w * vsin(x), t.w * y}; });
+}
+IFSFX_BATCH(julian) {
+  const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V p3 = vtrunc(ap * draw(t, 0, i));
+    const VSinCos sc = vsincos((vatan2(y, x) + 2.0 * kVPi * p3) / p);
+    const V k = t.w * vpow(x * x + y * y, splat(e));
+    return VP{k * sc.c, k * sc.s};
+  });
+}
+IFSFX_BATCH(blur) {
+  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
+    const V k = t.w * draw(t, 0, i);
+    const VSinCos sc = vsincos(2.0 * kVPi * draw(t, 1, i));
+    return VP{k * sc.c, k * sc.s};
+  });
+}
+IFSFX_BATCH(gaussian_blur) {
+  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
+    const V g = draw(t, 0, i) + draw(t, 1, i) + draw(t, 2, i) + draw(t, 3, i) - 2.0;
+    const VSinCos sc = vsincos(2.0 * kVPi * draw(t, 4, i));
+    return VP{t.w * g * sc.c, t.w * g * sc.s};
+  });
+}
+IFSFX_BATCH(curl) {
+  const double c1 = t.params[0], c2 = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V t1 = 1.0 + c1 * x + c2 * (x * x - y * y), t2 = c1 * y + 2.0 * c2 * x * y;
+    const V k = t.w * (1.0 / (t1 * t1 + t2 * t2 + kBEps));
+    return VP{k * (x * t1 + y * t2), k * (y * t1 - x * t2)};
+  });
+}
+IFSFX_BATCH(tangent) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sy = vsincos(y);
+    return VP{t.w * (vsin(x) / sy.c), t.w * (sy.s / sy.c)};
+  });
+}
+IFSFX_BATCH(square) {
+  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
+    return VP{t.w * (draw(t, 0, i) - 0.5), t.w * (draw(t, 1, i) - 0.5)};
+  });
+}
+IFSFX_BATCH(cross) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V d = x * x - y * y;
+    const V k = t.w * vsqrt(1.0 / (d * d + kBEps));
+    return VP{k * x, k * y};
+  });
+}
+
+// The complex functions (flame/variations_complex.cpp).
+IFSFX_BATCH(exp) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V e = t.w * vexp(x);
+    const VSinCos sc = vsincos(y);
+    return VP{e * sc.c, e * sc.s};
+  });
+}
+IFSFX_BATCH(log) {
+  const double base = std::log(t.params[0]);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * (0.5 * vlog(x * x + y * y) / base), t.w * vatan2(y, x)};
+  });
+}
+IFSFX_BATCH(sin) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(x);
+    const VSinhCosh h = vsinhcosh(y);
+    return VP{t.w * (sc.s * h.c), t.w * (sc.c * h.s)};
+  });
+}
+IFSFX_BATCH(cos) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(x);
+    const VSinhCosh h = vsinhcosh(y);
+    return VP{t.w * (sc.c * h.c), t.w * (-sc.s * h.s)};
+  });
+}
+IFSFX_BATCH(tan) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(2.0 * x);
+    const VSinhCosh h = vsinhcosh(2.0 * y);
+    const V d = t.w * (1.0 / (sc.c + h.c));
+    return VP{d * sc.s, d * h.s};
+  });
+}
+IFSFX_BATCH(sec) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(x);
+    const VSinhCosh h = vsinhcosh(y);
+    const V d = t.w * (2.0 / (vcos(2.0 * x) + vcosh(2.0 * y)));
+    return VP{d * (sc.c * h.c), d * (sc.s * h.s)};
+  });
+}
+IFSFX_BATCH(csc) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(x);
+    const VSinhCosh h = vsinhcosh(y);
+    const V d = t.w * (2.0 / (vcosh(2.0 * y) - vcos(2.0 * x)));
+    return VP{d * (sc.s * h.c), d * (-sc.c * h.s)};
+  });
+}
+IFSFX_BATCH(cot) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(2.0 * x);
+    const VSinhCosh h = vsinhcosh(2.0 * y);
+    const V d = t.w * (1.0 / (h.c - sc.c));
+    return VP{d * sc.s, d * -h.s};
+  });
+}
+IFSFX_BATCH(sinh) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(y);
+    const VSinhCosh h = vsinhcosh(x);
+    return VP{t.w * (h.s * sc.c), t.w * (h.c * sc.s)};
+  });
+}
+IFSFX_BATCH(cosh) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(y);
+    const VSinhCosh h = vsinhcosh(x);
+    return VP{t.w * (h.c * sc.c), t.w * (h.s * sc.s)};
+  });
+}
+IFSFX_BATCH(tanh) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(2.0 * y);
+    const VSinhCosh h = vsinhcosh(2.0 * x);
+    const V d = t.w * (1.0 / (sc.c + h.c));
+    return VP{d * h.s, d * sc.s};
+  });
+}
+IFSFX_BATCH(sech) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(y);
+    const VSinhCosh h = vsinhcosh(x);
+    const V d = t.w * (2.0 / (vcos(2.0 * y) + vcosh(2.0 * x)));
+    return VP{d * (sc.c * h.c), d * (-sc.s * h.s)};
+  });
+}
+IFSFX_BATCH(csch) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(y);
+    const VSinhCosh h = vsinhcosh(x);
+    const V d = t.w * (2.0 / (vcosh(2.0 * x) - vcos(2.0 * y)));
+    return VP{d * (h.s * sc.c), d * (-h.c * sc.s)};
+  });
+}
+IFSFX_BATCH(coth) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(2.0 * y);
+    const VSinhCosh h = vsinhcosh(2.0 * x);
+    const V d = t.w * (1.0 / (h.c - sc.c));
+    return VP{d * h.s, d * sc.s};
+  });
+}
+
+// flam3's later variations (flame/variations_flam3.cpp).
+IFSFX_BATCH(popcorn2) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos a = vsincos(y * k[2]), b = vsincos(x * k[2]);
+    return VP{t.w * (x + k[0] * vsin(a.s / a.c)), t.w * (y + k[1] * vsin(b.s / b.c))};
+  });
+}
+IFSFX_BATCH(pie) {
+  const double slices = t.params[0], rotation = t.params[1], thickness = t.params[2];
+  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
+    const V t1 = vtrunc(draw(t, 0, i) * slices + 0.5);
+    const V t2 = rotation + 2.0 * kVPi / slices * (t1 + draw(t, 1, i) * thickness);
+    const VSinCos sc = vsincos(t2);
+    const V k = t.w * draw(t, 2, i);
+    return VP{k * sc.c, k * sc.s};
+  });
+}
+IFSFX_BATCH(boarders) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V rx = vround(x), ry = vround(y), ox = x - rx, oy = y - ry;
+    const V hx = ox * 0.5 + rx, hy = oy * 0.5 + ry;
+    const V sx = sel(ox >= 0.0, splat(0.25), splat(-0.25));
+    const V sy = sel(oy >= 0.0, splat(0.25), splat(-0.25));
+    const M along_x = vabs(ox) >= vabs(oy), keep = draw(t, 0, i) >= 0.75;
+    V px = sel(along_x, hx + sx, hx + sy * ox / oy);
+    V py = sel(along_x, hy + sx * oy / ox, hy + sy);
+    px = sel(keep, hx, px);
+    py = sel(keep, hy, py);
+    return VP{t.w * px, t.w * py};
+  });
+}
+IFSFX_BATCH(super_shape) {
+  const double* k = t.params;
+  const double rnd = k[0], m = k[1], n1 = k[2], n2 = k[3], n3 = k[4], holes = k[5];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const VSinCos sc = vsincos(m / 4 * vatan2(y, x) + kVPi / 4);
+    const V t1 = vpow(vabs(sc.c), splat(n2)), t2 = vpow(vabs(sc.s), splat(n3));
+    const V r = r_of(x, y);
+    const V rr = (rnd * draw(t, 0, i) + (1 - rnd) * r - holes) * vpow(t1 + t2, splat(-1 / n1));
+    const V f = t.w * rr / (r + kBEps);
+    return VP{f * x, f * y};
+  });
+}
+IFSFX_BATCH(loonie) {
+  const double w2 = t.w * t.w;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r2 = x * x + y * y;
+    const V k = sel((r2 < w2) & (r2 != 0.0), t.w * vsqrt(w2 / r2 - 1.0), splat(t.w));
+    return VP{k * x, k * y};
+  });
+}
+IFSFX_BATCH(conic) {
+  const double e = t.params[0], holes = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V r = r_of(x, y) + kBEps, ct = x / r;
+    const V k = t.w * (draw(t, 0, i) - holes) * e / (1.0 + e * ct) / r;
+    return VP{k * x, k * y};
+  });
+}
+IFSFX_BATCH(curve) {
+  const double* k = t.params;
+  const double xl = std::max(k[2] * k[2], 1e-20), yl = std::max(k[3] * k[3], 1e-20);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * (x + k[0] * vexp(-y * y / xl)), t.w * (y + k[1] * vexp(-x * x / yl))};
+  });
+}
+IFSFX_BATCH(flower) {
+  const double petals = t.params[0], holes = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V r = t.w * (draw(t, 0, i) - holes) * vcos(petals * vatan2(y, x));
+    const V k = r / (r_of(x, y) + kBEps);
+    return VP{k * x, k * y};
+  });
+}
+IFSFX_BATCH(whorl) {
+  const double inside = t.params[0], outside = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = r_of(x, y);
+    const V turn = sel(r < t.w, splat(inside), splat(outside)) / (t.w - r);
+    const VSinCos sc = vsincos(vatan2(y, x) + turn);
+    return VP{t.w * r * sc.c, t.w * r * sc.s};
+  });
+}
+IFSFX_BATCH(foci) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V ex = 0.5 * vexp(x), enx = 0.25 / ex;
+    const VSinCos sc = vsincos(y);
+    const V k = t.w / (ex + enx - sc.c);
+    return VP{k * (ex - enx), k * sc.s};
+  });
+}
+IFSFX_BATCH(bent2) {
+  const double px = t.params[0], py = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * sel(x < 0.0, x * px, x), t.w * sel(y < 0.0, y * py, y)};
+  });
+}
+IFSFX_BATCH(polar2) {
+  const double k = t.w / kVPi;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{k * vatan2(x, y), k / 2 * vlog(x * x + y * y)};
+  });
+}
+IFSFX_BATCH(waves2) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * (x + k[0] * vsin(y * k[2])), t.w * (y + k[1] * vsin(x * k[3]))};
+  });
+}
+IFSFX_BATCH(splits) {
+  const double px = t.params[0], py = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * sel(x >= 0.0, x + px, x - px), t.w * sel(y >= 0.0, y + py, y - py)};
+  });
+}
+
+// More of the paper's catalogue (flame/variations_paper.cpp).
+IFSFX_BATCH(popcorn) {
+  const AffineMap& m = *t.pre;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos a = vsincos(3.0 * y), b = vsincos(3.0 * x);
+    return VP{t.w * (x + m.e * vsin(a.s / a.c)), t.w * (y + m.f * vsin(b.s / b.c))};
+  });
+}
+IFSFX_BATCH(rings) {
+  const double c2 = t.pre->e * t.pre->e + kBEps;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = r_of(x, y);
+    const V k = t.w * (vfmod(r + c2, splat(2 * c2)) - c2 + r * (1 - c2));
+    return VP{k * (y / (r + kBEps)), k * (x / (r + kBEps))};
+  });
+}
+IFSFX_BATCH(fan) {
+  const double tt = kVPi * (t.pre->e * t.pre->e + kBEps), f = t.pre->f;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V theta = vatan2(x, y);
+    const V a = sel(vfmod(theta + f, splat(tt)) > tt / 2, theta - tt / 2, theta + tt / 2);
+    const VSinCos sc = vsincos(a);
+    const V k = t.w * r_of(x, y);
+    return VP{k * sc.c, k * sc.s};
+  });
+}
+IFSFX_BATCH(blob) {
+  const double high = t.params[0], low = t.params[1], waves_n = t.params[2];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r0 = r_of(x, y);
+    const V r = r0 * (low + (high - low) / 2 * (vsin(waves_n * vatan2(x, y)) + 1.0));
+    return VP{t.w * r * (x / (r0 + kBEps)), t.w * r * (y / (r0 + kBEps))};
+  });
+}
+IFSFX_BATCH(pdj) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * (vsin(k[0] * y) - vcos(k[1] * x)), t.w * (vsin(k[2] * x) - vcos(k[3] * y))};
+  });
+}
+IFSFX_BATCH(fan2) {
+  const double p1 = kVPi * (t.params[0] * t.params[0] + kBEps), p2 = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V theta = vatan2(x, y);
+    const V tt = theta + p2 - p1 * vtrunc((theta + p2) / p1);
+    const VSinCos sc = vsincos(sel(tt > p1 / 2, theta - p1 / 2, theta + p1 / 2));
+    const V k = t.w * r_of(x, y);
+    return VP{k * sc.s, k * sc.c};
+  });
+}
+IFSFX_BATCH(rings2) {
+  const double p = t.params[0] * t.params[0] + kBEps;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = r_of(x, y);
+    const V k = t.w * (r - 2 * p * vtrunc((r + p) / (2 * p)) + r * (1 - p));
+    return VP{k * (x / (r + kBEps)), k * (y / (r + kBEps))};
+  });
+}
+IFSFX_BATCH(perspective) {
+  const double a = t.params[0] * kVPi / 2, d = t.params[1];
+  const double sa = std::sin(a), ca = std::cos(a);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V k = t.w * (d / (d - y * sa + kBEps));
+    return VP{k * x, k * (y * ca)};
+  });
+}
+IFSFX_BATCH(noise) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V k = t.w * draw(t, 0, i);
+    const VSinCos sc = vsincos(2 * kVPi * draw(t, 1, i));
+    return VP{k * (x * sc.c), k * (y * sc.s)};
+  });
+}
+IFSFX_BATCH(juliascope) {
+  const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V p3 = vtrunc(ap * draw(t, 0, i));
+    const V sign = sel(vfmod(p3, splat(2.0)) == 0.0, splat(1.0), splat(-1.0));
+    const VSinCos sc = vsincos((sign * vatan2(y, x) + 2.0 * kVPi * p3) / p);
+    const V k = t.w * vpow(x * x + y * y, splat(e));
+    return VP{k * sc.c, k * sc.s};
+  });
+}
+IFSFX_BATCH(radial_blur) {
+  const double p1 = t.params[0] * kVPi / 2, s1 = std::sin(p1), c1 = std::cos(p1);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V g = draw(t, 0, i) + draw(t, 1, i) + draw(t, 2, i) + draw(t, 3, i) - 2.0;
+    const V t1 = t.w * g, t2 = vatan2(y, x) + t1 * s1, t3 = t1 * c1 - 1.0;
+    const VSinCos sc = vsincos(t2);
+    const V r = r_of(x, y);
+    return VP{r * sc.c + t3 * x, r * sc.s + t3 * y};
+  });
+}
+IFSFX_BATCH(ngon) {
+  const double sides = t.params[0], pw = t.params[1], circle = t.params[2];
+  const double corners = t.params[3], p2 = 2 * kVPi / sides;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V phi = vatan2(y, x);
+    V t3 = phi - p2 * vfloor(phi / p2);
+    t3 = sel(t3 > p2 / 2, t3 - p2, t3);
+    const V k = (corners * (1.0 / (vcos(t3) + kBEps) - 1.0) + circle) /
+                (vpow(x * x + y * y, splat(pw / 2)) + kBEps);
+    return VP{t.w * k * x, t.w * k * y};
+  });
+}
+IFSFX_BATCH(rectangles) {
+  const double px = t.params[0], py = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V nx = px == 0 ? x : (2.0 * vfloor(x / px) + 1.0) * px - x;
+    const V ny = py == 0 ? y : (2.0 * vfloor(y / py) + 1.0) * py - y;
+    return VP{t.w * nx, t.w * ny};
+  });
+}
+IFSFX_BATCH(arch) {
+  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
+    const VSinCos sc = vsincos(draw(t, 0, i) * kVPi * t.w);
+    return VP{t.w * sc.s, t.w * (sc.s * sc.s / sc.c)};
+  });
+}
+IFSFX_BATCH(rays) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const VSinCos a = vsincos(draw(t, 0, i) * kVPi * t.w);
+    const V k = t.w * (t.w * (a.s / a.c) / (x * x + y * y + kBEps));
+    return VP{k * vcos(x), k * vsin(y)};
+  });
+}
+IFSFX_BATCH(blade) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const VSinCos sc = vsincos(draw(t, 0, i) * r_of(x, y) * t.w);
+    return VP{t.w * x * (sc.c + sc.s), t.w * x * (sc.c - sc.s)};
+  });
+}
+IFSFX_BATCH(secant2) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V c = vcos(t.w * r_of(x, y)), ic = 1.0 / c;
+    return VP{t.w * x, t.w * sel(c < 0.0, ic + 1.0, ic - 1.0)};
+  });
+}
+
+// More of flam3's (flame/variations_flam3.cpp, flame/variations_more.cpp).
+IFSFX_BATCH(flux) {
+  const double spread = 2 + t.params[0];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V xpw = x + t.w, xmw = x - t.w;
+    const V ratio = vsqrt(y * y + xpw * xpw) / (vsqrt(y * y + xmw * xmw) + kBEps);
+    const V r = t.w * spread * vsqrt(ratio);
+    const VSinCos sc = vsincos((vatan2(y, xmw) - vatan2(y, xpw)) * 0.5);
+    return VP{r * sc.c, r * sc.s};
+  });
+}
+IFSFX_BATCH(disc2) {
+  const double rot = t.params[0], twist = t.params[1];
+  double sin_add = std::sin(twist), cos_add = std::cos(twist) - 1, k = 1;
+  if (twist > 2 * kVPi) k = 1 + twist - 2 * kVPi;
+  if (twist < -2 * kVPi) k = 1 + twist + 2 * kVPi;
+  sin_add *= k;
+  cos_add *= k;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const VSinCos sc = vsincos(rot * kVPi * (x + y));
+    const V r = t.w * vatan2(x, y) / kVPi;
+    return VP{(sc.s + cos_add) * r, (sc.c + sin_add) * r};
+  });
+}
+IFSFX_BATCH(oscilloscope) {
+  const double sep = t.params[0], freq = t.params[1], amp = t.params[2], damp = t.params[3];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V wave = amp * vcos(2 * kVPi * freq * x);
+    const V tt = (damp == 0 ? wave : vexp(-vabs(x) * damp) * wave) + sep;
+    return VP{t.w * x, t.w * sel(vabs(y) <= tt, -y, y)};
+  });
+}
+IFSFX_BATCH(stripes) {
+  const double space = t.params[0], warp = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V rx = vfloor(x + 0.5), ox = x - rx;
+    return VP{t.w * (ox * (1 - space) + rx), t.w * (y + ox * ox * warp)};
+  });
+}
+IFSFX_BATCH(hemisphere) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V k = t.w / vsqrt(x * x + y * y + 1.0);
+    return VP{k * x, k * y};
+  });
+}
+IFSFX_BATCH(parabola) {
+  const double h = t.params[0], wd = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const VSinCos sc = vsincos(r_of(x, y));
+    return VP{t.w * (h * sc.s * sc.s * draw(t, 0, i)), t.w * (wd * sc.c * draw(t, 1, i))};
+  });
+}
+IFSFX_BATCH(butterfly) {
+  const double c = 4 / std::sqrt(3 * kVPi);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V y2 = 2.0 * y;
+    const V k = t.w * (c * vsqrt(vabs(x * y) / (x * x + y2 * y2 + kBEps)));
+    return VP{k * x, k * y2};
+  });
+}
+IFSFX_BATCH(scry) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r2 = x * x + y * y;
+    const V k = 1.0 / (vsqrt(r2) * (r2 + 1 / (t.w + kBEps)) + kBEps);
+    return VP{k * x, k * y};
+  });
+}
+IFSFX_BATCH(split) {
+  const double px = t.params[0], py = t.params[1];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V ny = sel(vcos(x * px * kVPi) >= 0.0, y, -y);
+    const V nx = sel(vcos(y * py * kVPi) >= 0.0, x, -x);
+    return VP{t.w * nx, t.w * ny};
+  });
+}
+IFSFX_BATCH(escher) {
+  const double vc = 0.5 * (1 + std::cos(t.params[0])), vd = 0.5 * std::sin(t.params[0]);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V a = vatan2(y, x), lnr = 0.5 * vlog(x * x + y * y);
+    const V m = t.w * vexp(vc * lnr - vd * a);
+    const VSinCos sc = vsincos(vc * a + vd * lnr);
+    return VP{m * sc.c, m * sc.s};
+  });
+}
+IFSFX_BATCH(cell) {
+  const double size = t.params[0], inv = 1 / (size + kBEps);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    V cx = vfloor(x * inv), cy = vfloor(y * inv);
+    const V dx = x - cx * size, dy = y - cy * size;
+    cx = sel(cx >= 0.0, 2.0 * cx, -(2.0 * cx + 1.0));
+    cy = sel(cy >= 0.0, 2.0 * cy, -(2.0 * cy + 1.0));
+    return VP{t.w * (dx + cx * size), t.w * -(dy + cy * size)};
+  });
+}
+// flam3's mobius and Apophysis' Mobius: w·(a·z + b)/(c·z + d), parameters re a, im a, … im d.
+IFSFX_BATCH(mobius) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V ur = k[0] * x - k[1] * y + k[2], ui = k[0] * y + k[1] * x + k[3];
+    const V vr = k[4] * x - k[5] * y + k[6], vi = k[4] * y + k[5] * x + k[7];
+    const V s = t.w / (vr * vr + vi * vi + kBEps);
+    return VP{s * (ur * vr + ui * vi), s * (ui * vr - ur * vi)};
+  });
+}
+
+// The wedges' angle: a·(1 − angle·count/2π) + ⌊(count·a + π)/2π⌋·angle.
+inline V wedge_angle(V a, double angle, double count) {
+  const V c = vfloor((count * a + kVPi) / (2 * kVPi));
+  return a * (1 - angle * count / (2 * kVPi)) + c * angle;
+}
+IFSFX_BATCH(wedge) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = r_of(x, y);
+    const VSinCos sc = vsincos(wedge_angle(vatan2(y, x) + k[3] * r, k[0], k[2]));
+    const V f = t.w * (r + k[1]);
+    return VP{f * sc.c, f * sc.s};
+  });
+}
+IFSFX_BATCH(wedge_julia) {
+  const double angle = t.params[0], count = t.params[1], pw = t.params[2], dist = t.params[3];
+  const double ap = std::abs(pw), e = dist / pw / 2;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V r = t.w * vpow(x * x + y * y, splat(e));
+    const V branch = vtrunc(ap * draw(t, 0, i));
+    const VSinCos sc = vsincos(wedge_angle((vatan2(y, x) + 2 * kVPi * branch) / pw, angle, count));
+    return VP{r * sc.c, r * sc.s};
+  });
+}
+IFSFX_BATCH(wedge_sph) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r = 1.0 / (r_of(x, y) + kBEps);
+    const VSinCos sc = vsincos(wedge_angle(vatan2(y, x) + k[3] * r, k[0], k[1]));
+    const V f = t.w * (r + k[2]);
+    return VP{f * sc.c, f * sc.s};
+  });
+}
+inline V wrap_into(V v, double m) {
+  const V above = -m + vfmod(v + m, splat(2 * m)), below = m - vfmod(m - v, splat(2 * m));
+  return sel(v > m, above, sel(v < -m, below, v));
+}
+IFSFX_BATCH(modulus) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * wrap_into(x, t.params[0]), t.w * wrap_into(y, t.params[1])};
+  });
+}
+inline V separate(V v, double s, double inside) {
+  const V h = vsqrt(v * v + s * s);
+  return sel(v > 0.0, h - v * inside, -(h + v * inside));
+}
+IFSFX_BATCH(separation) {
+  const double* k = t.params;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    return VP{t.w * separate(x, k[0], k[1]), t.w * separate(y, k[2], k[3])};
+  });
+}
+IFSFX_BATCH(bipolar) {
+  const double half = kVPi / 2, shift = half * t.params[0];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V r2 = x * x + y * y, tt = r2 + 1.0, x2 = 2.0 * x;
+    V v = 0.5 * vatan2(2.0 * y, r2 - 1.0) - shift;
+    v = sel(v > half, -half + vfmod(v + half, splat(kVPi)),
+            sel(v < -half, half - vfmod(half - v, splat(kVPi)), v));
+    const V u = 0.25 * vlog((tt + x2) / (tt - x2));
+    return VP{t.w * 2 / kVPi * u, t.w * 2 / kVPi * v};
+  });
+}
+IFSFX_BATCH(elliptic) {
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V tt = x * x + y * y + 1.0, x2 = 2.0 * x;
+    const V xmax = 0.5 * (vsqrt(tt + x2) + vsqrt(tt - x2));
+    const V a = x / xmax, one = 1.0 - a * a, xm = xmax - 1.0;
+    const V b = vsqrt(sel(one > 0.0, one, splat(0.0)));
+    const V ssx = vsqrt(sel(xm > 0.0, xm, splat(0.0)));
+    const double w = t.w / (kVPi / 2);
+    const V v = vlog(xmax + ssx);
+    return VP{w * vatan2(a, b), sel(y > 0.0, w * v, -w * v)};
+  });
+}
+IFSFX_BATCH(sineblur) {
+  const double pw = std::max(t.params[0], 0.0);
+  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
+    const VSinCos sc = vsincos(2 * kVPi * draw(t, 0, i));
+    const V u = pw == 1 ? draw(t, 1, i) : vpow(draw(t, 1, i), splat(pw));
+    const V c = 2.0 * u - 1.0;  // acos c = atan2(√(1 − c²), c)
+    const V r = t.w * vatan2(vsqrt(1.0 - c * c), c) / kVPi;
+    return VP{r * sc.c, r * sc.s};
+  });
+}
+IFSFX_BATCH(blur_linear) {
+  const double a = t.params[1], ca = std::cos(a), sa = std::sin(a);
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V r = t.params[0] * draw(t, 0, i);
+    return VP{t.w * (x + r * ca), t.w * (y + r * sa)};
+  });
+}
+IFSFX_BATCH(blur_zoom) {
+  const double cx = t.params[1], cy = t.params[2];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    const V z = 1.0 + t.params[0] * draw(t, 0, i);
+    return VP{t.w * ((x - cx) * z + cx), t.w * ((y - cy) * z + cy)};
+  });
+}
+
+#undef IFSFX_BATCH
+
+constexpr BatchVariation kTable[] = {
+    {"linear", b_linear},
+    {"sinusoidal", b_sinusoidal},
+    {"spherical", b_spherical},
+    {"swirl", b_swirl},
+    {"horseshoe", b_horseshoe},
+    {"polar", b_polar},
+    {"handkerchief", b_handkerchief},
+    {"heart", b_heart},
+    {"disc", b_disc},
+    {"spiral", b_spiral},
+    {"hyperbolic", b_hyperbolic},
+    {"diamond", b_diamond},
+    {"ex", b_ex},
+    {"julia", b_julia, 1},
+    {"bent", b_bent},
+    {"waves", b_waves},
+    {"fisheye", b_fisheye},
+    {"exponential", b_exponential},
+    {"power", b_power},
+    {"cosine", b_cosine},
+    {"eyefish", b_eyefish},
+    {"bubble", b_bubble},
+    {"cylinder", b_cylinder},
+    {"julian", b_julian, 1},
+    {"blur", b_blur, 2},
+    {"gaussian_blur", b_gaussian_blur, 5},
+    {"curl", b_curl},
+    {"tangent", b_tangent},
+    {"square", b_square, 2},
+    {"cross", b_cross},
+    {"exp", b_exp},
+    {"log", b_log},
+    {"sin", b_sin},
+    {"cos", b_cos},
+    {"tan", b_tan},
+    {"sec", b_sec},
+    {"csc", b_csc},
+    {"cot", b_cot},
+    {"sinh", b_sinh},
+    {"cosh", b_cosh},
+    {"tanh", b_tanh},
+    {"sech", b_sech},
+    {"csch", b_csch},
+    {"coth", b_coth},
+    {"popcorn2", b_popcorn2},
+    {"pie", b_pie, 3},
+    {"boarders", b_boarders, 1},
+    {"super_shape", b_super_shape, 1},
+    {"loonie", b_loonie},
+    {"conic", b_conic, 1},
+    {"curve", b_curve},
+    {"flower", b_flower, 1},
+    {"whorl", b_whorl},
+    {"foci", b_foci},
+    {"bent2", b_bent2},
+    {"polar2", b_polar2},
+    {"waves2", b_waves2},
+    {"splits", b_splits},
+    {"popcorn", b_popcorn},
+    {"rings", b_rings},
+    {"fan", b_fan},
+    {"blob", b_blob},
+    {"pdj", b_pdj},
+    {"fan2", b_fan2},
+    {"rings2", b_rings2},
+    {"perspective", b_perspective},
+    {"noise", b_noise, 2},
+    {"juliascope", b_juliascope, 1},
+    {"radial_blur", b_radial_blur, 4},
+    {"ngon", b_ngon},
+    {"rectangles", b_rectangles},
+    {"arch", b_arch, 1},
+    {"rays", b_rays, 1},
+    {"blade", b_blade, 1},
+    {"secant2", b_secant2},
+    {"flux", b_flux},
+    {"disc2", b_disc2},
+    {"oscilloscope", b_oscilloscope},
+    {"stripes", b_stripes},
+    {"hemisphere", b_hemisphere},
+    {"parabola", b_parabola, 2},
+    {"butterfly", b_butterfly},
+    {"scry", b_scry},
+    {"split", b_split},
+    {"escher", b_escher},
+    {"cell", b_cell},
+    {"mobius", b_mobius},
+    {"Mobius", b_mobius},
+    {"linear3D", b_linear},
+    {"wedge", b_wedge},
+    {"wedge_julia", b_wedge_julia, 1},
+    {"wedge_sph", b_wedge_sph},
+    {"modulus", b_modulus},
+    {"separation", b_separation},
+    {"bipolar", b_bipolar},
+    {"elliptic", b_elliptic},
+    {"sineblur", b_sineblur, 2},
+    {"blur_linear", b_blur_linear, 1},
+    {"blur_zoom", b_blur_zoom, 1},
+};

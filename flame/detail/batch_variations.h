@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: Apache-2.0
+// The variations over batches of points: the chaos game walks 64 walkers in lockstep
+// (flame/render_chaos.cpp), and every walker that picked the same xform goes through its terms
+// together, so a variation runs over an array of points, four at a time on AVX2. The registry's
+// function (flame/variations.h) stays the definition; a batch form is the same formula written
+// once (flame/detail/batch_kernels.inl) over a lane type and its own branch-free sin, cos,
+// atan2, exp and log (flame/detail/vmath.inl), compiled for each kernel level (ifs/cpu.h) with
+// the same operations in the same order and no fused multiply-add: every level gives the
+// scalar level's bits. A variation with no batch form runs point by point through the registry.
+//
+//   const BatchVariation* b = find_batch_variation(cpu_level(), "spherical");
+//   b->function({.w = 0.5, .params = p, .pre = &xf.pre}, n, x, y, sum_x, sum_y);
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <string_view>
+
+#include "ifs/affine_map.h"
+#include "ifs/cpu.h"
+
+namespace ifsfx::flame::detail {
+
+inline constexpr std::size_t kBatchLanes = 64;                // walkers of one chunk
+inline constexpr std::size_t kBatchStride = kBatchLanes + 8;  // an array's length, padded
+
+struct BatchTerm {
+  double w = 1;
+  const double* params = nullptr;  // the term's parameters, registry order
+  const AffineMap* pre = nullptr;  // the xform's pre-affine map (dependent variations)
+  // The random variations' draws, uniform in [0, 1): draw j of point i at u[j·kBatchStride + i].
+  const double* u = nullptr;
+};
+
+// Adds w·V(x[i], y[i]) to (ox[i], oy[i]) for i < n; may also write entries up to n rounded up
+// to the lane width (the arrays are kBatchStride long).
+using BatchFunction = void (*)(const BatchTerm& t, std::size_t n, const double* x, const double* y,
+                               double* ox, double* oy);
+
+struct BatchVariation {
+  std::string_view name;  // the registry's name
+  BatchFunction function = nullptr;
+  int draws = 0;  // uniforms per point
+};
+
+// The batch forms of `level` (or of the scalar level where this build has no other).
+std::span<const BatchVariation> batch_variations(CpuLevel level);
+
+// The batch form of the variation called `name` at `level`, or nullptr.
+const BatchVariation* find_batch_variation(CpuLevel level, std::string_view name);
+
+}  // namespace ifsfx::flame::detail
+
+// Each level's table (flame/batch_scalar.cpp, flame/batch_avx2.cpp), in the kernel namespaces
+// that alone may hold instructions beyond baseline x86-64 (tests/ifs/kernel_isolation_test.sh).
+namespace ifsfx::detail::kernel_scalar {
+std::span<const flame::detail::BatchVariation> flame_batch_table();
+}
+namespace ifsfx::detail::kernel_avx2 {
+std::span<const flame::detail::BatchVariation> flame_batch_table();
+}
