@@ -5,8 +5,10 @@
 #
 # Precompiled headers: most of the compile time went into parsing the same third-party headers
 # again in every translation unit: OpenCV's core and imgproc, {fmt} and the standard library in
-# nearly all of them, GoogleTest in every test, CLI11 in the command files, cpp-httplib in the
-# studio's, pybind11 in the module's. Each target that takes the project's options
+# nearly all of them, GoogleTest in every test, cpp-httplib in the studio's, pybind11 in the
+# module's. Not CLI11: its cost is not the parsing but the validators it defines at namespace
+# scope, compiled again in every file that includes it (a precompiled CLI11 made a 1 s file of
+# the command line's take 10 s). Each target that takes the project's options
 # (ifsfx_options) precompiles the ones it uses once, and its sources include that first. Off with
 # -DIFSFX_PCH=OFF: the fuzz build (clang refuses a header precompiled for other flags), and any
 # build that wants to check that each file includes what it uses.
@@ -19,7 +21,7 @@ if(IFSFX_FUZZ)
   set(ifsfx_pch_default OFF)
 endif()
 option(IFSFX_PCH
-       "Precompile the third-party headers every target parses (OpenCV, fmt, GoogleTest, CLI11, cpp-httplib, pybind11)"
+       "Precompile the third-party headers every target parses (OpenCV, fmt, GoogleTest, cpp-httplib, pybind11)"
        ${ifsfx_pch_default})
 
 # The targets defined in DIR and below it.
@@ -73,9 +75,6 @@ function(ifsfx_pch_headers target links out)
   if(links MATCHES "GTest::")
     list(APPEND headers <gtest/gtest.h>)
   endif()
-  if(links MATCHES "CLI11::")
-    list(APPEND headers <CLI/CLI.hpp>)
-  endif()
   if(links MATCHES "PkgConfig::HTTPLIB")
     list(APPEND headers <httplib.h>)
   endif()
@@ -83,6 +82,22 @@ function(ifsfx_pch_headers target links out)
     list(APPEND headers <pybind11/pybind11.h> <pybind11/numpy.h>)
   endif()
   set(${out} ${headers} PARENT_SCOPE)
+endfunction()
+
+# A file compiled for another instruction set (a SIMD kernel's -march=) cannot use the header
+# precompiled for the target: GCC would refuse it (-Winvalid-pch, an error with -Werror).
+function(ifsfx_skip_pch_for_other_cpus target)
+  get_target_property(sources ${target} SOURCES)
+  foreach(source IN LISTS sources)
+    if(source MATCHES "^\\$<")
+      continue()
+    endif()
+    get_source_file_property(options ${source} TARGET_DIRECTORY ${target} COMPILE_OPTIONS)
+    if(options MATCHES "-march=")
+      set_source_files_properties(${source} TARGET_DIRECTORY ${target} PROPERTIES
+                                  SKIP_PRECOMPILE_HEADERS ON)
+    endif()
+  endforeach()
 endfunction()
 
 # Applies both to every compiled target of the project that links ifsfx_options (a target can
@@ -106,6 +121,7 @@ function(ifsfx_speed_up_build)
     if(IFSFX_PCH AND files GREATER 2)
       ifsfx_pch_headers(${target} "${links}" headers)
       target_precompile_headers(${target} PRIVATE ${headers})
+      ifsfx_skip_pch_for_other_cpus(${target})
     endif()
   endforeach()
 endfunction()
