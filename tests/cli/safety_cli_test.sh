@@ -240,7 +240,9 @@ case "$check" in
     # The chaos-game steal map of `filter` before the first frame (once ignored for minutes).
     stop_during TERM 143 1.5 filter in.avi --size 8000x8000 --quality 2000 -o out.mp4
     # The exact steal map of `filter`.
-    stop_in_phase "exact descent" "chaos game" INT 130 "phase.mp4" filter in.avi --size 4000x4000 --exact -q -o phase.mp4
+    # (A signal that lands later, while frames are written, keeps them in phase.partial.mp4: a slow
+    # build, the sanitizers', can get there before the delay is bisected down.)
+    stop_in_phase "exact descent" "chaos game" INT 130 "phase.mp4 phase.partial.mp4" filter in.avi --size 4000x4000 --exact -q -o phase.mp4
     # The filter's animations, through the one fractal engine: a drift keyframe built on a worker
     # thread while the first frame waits for it, and the superIFS burn-in before any frame.
     stop_during INT 130 1.5 filter in.avi --size 3000x3000 --quality 20000 --animate drift --view -3,-1,3,11 -q -o out.mp4
