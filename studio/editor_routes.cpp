@@ -15,6 +15,7 @@
 #include "ifs/output_file.h"
 #include "ifs/preset.h"
 #include "ifs/render.h"
+#include "studio/flame_doc.h"
 #include "studio/folder.h"
 #include "studio/http.h"
 #include "studio/render.h"
@@ -67,11 +68,20 @@ void attach_colouring(json& body, const fs::path& folder, const std::string& fil
   }
 }
 
-// A preset: shipped (name=), of the folder (file= and, for a Fractint file, entry=), or, with
-// neither, the one of the command line. A folder preset becomes an input (never saved over);
-// NAME.toml brings its colouring NAME.colouring.toml when there is one.
+// A preset: shipped (name=), of the folder (file= and, for a Fractint or flame file, entry=), or,
+// with neither, the one of the command line. A folder file becomes an input (never saved over);
+// NAME.toml brings its colouring NAME.colouring.toml when there is one; a flame comes as its
+// document (studio/flame_doc.h).
 json open_preset(const httplib::Request& req, StudioState& studio) {
   const fs::path& folder = studio.context.folder();
+  if (req.has_param("file") && is_flame_name(req.get_param_value("file"))) {
+    const std::string file = req.get_param_value("file");
+    json body = flame_to_json(open_folder_flame(folder, file, req.get_param_value("entry")));
+    studio.context.add_input(folder_file(folder, file, true));
+    body["origin_file"] = file;
+    body["origin_entry"] = req.get_param_value("entry");
+    return body;
+  }
   if (req.has_param("file")) {
     const std::string file = req.get_param_value("file");
     const IfsPreset preset = open_folder_preset(folder, file, req.get_param_value("entry"));
@@ -132,9 +142,24 @@ void render(const httplib::Request& req, httplib::Response& res, StudioState& st
                   render.format == PictureFormat::png ? "image/png" : "application/octet-stream");
 }
 
+// Saves a flame's document as flame XML, NAME.flame, in --folder under the output policy
+// (a temporary name, then a rename): the file flam3-render and `ifsfx render` read.
+json save_flame(const json& body, const StudioContext& context) {
+  const std::string name = body.value("file", "");
+  if (!is_flame_name(name) || name.size() < 7)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("file: a flame is saved as NAME.flame (got '{}')", name));
+  const StudioFlame flame = flame_from_json(body);
+  write_file(folder_file(context.folder(), name, false), flame.xml, {.inputs = context.inputs()});
+  return {{"saved", name}};
+}
+
 // Saves the request's preset as TOML in --folder under the output policy, and its colouring
-// (when the request has one) as NAME.colouring.toml beside it, both or neither.
+// (when the request has one) as NAME.colouring.toml beside it, both or neither; a flame as
+// save_flame does.
 json save(const json& body, const StudioContext& context) {
+  if (body.is_object() && body.contains("flame") && !body["flame"].is_null())
+    return save_flame(body, context);
   const IfsPreset preset = preset_from_json(body);
   std::string name = body.value("file", "");
   if (name.size() < 6 || name.substr(name.size() - 5) != ".toml")
@@ -168,6 +193,9 @@ void add_editor_routes(httplib::Server& server, StudioState& studio) {
              }));
   server.Get("/api/folder", guard([&studio](const httplib::Request&, httplib::Response& res) {
                send_json(res, folder_presets(studio.context.folder()));
+             }));
+  server.Get("/api/flame/variations", guard([](const httplib::Request&, httplib::Response& res) {
+               send_json(res, variations_json());
              }));
   server.Get("/api/defaults", guard([](const httplib::Request& req, httplib::Response& res) {
                send_json(res, defaults(static_cast<std::size_t>(

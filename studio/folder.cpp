@@ -8,8 +8,10 @@
 
 #include <fmt/format.h>
 
+#include "flame/flame_file.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
+#include "studio/render.h"
 
 namespace ifsfx::app {
 namespace {
@@ -62,6 +64,35 @@ bool plain_name(const std::string& name) {
   return std::all_of(name.begin(), name.end(), [&](char c) {
     return word(c) || c == '.' || c == '+' || c == ' ' || c == '-';
   });
+}
+
+bool flame_name(std::string_view name) {
+  return ends_with(name, ".flame") || ends_with(name, ".flam3");
+}
+
+// The selector that picks flame `e` of its file: its name when no other flame of the file has
+// it (read_flame picks the first of a name), else its index.
+std::string flame_selector(const std::vector<flame::FlameEntry>& all, const flame::FlameEntry& e) {
+  const auto named = std::count_if(all.begin(), all.end(),
+                                   [&](const flame::FlameEntry& f) { return f.name == e.name; });
+  return !e.name.empty() && named == 1 ? e.name : std::to_string(e.index);
+}
+
+// One row per flame of a .flame file (docs/studio.md, "Flames"), as `ifsfx presets FILE` lists
+// them; "maps" counts the xforms.
+void add_flame_rows(json& list, const fs::path& folder, const std::string& name) {
+  const fs::path path = folder_file(folder, name, true);
+  const std::vector<flame::FlameEntry> entries = flame::list_flames(path.string());
+  for (const flame::FlameEntry& e : entries) {
+    std::string problem = e.problem;
+    if (problem.empty() && e.xforms > kMaxMaps)
+      problem =
+          fmt::format("{}: the studio edits at most {} xforms (got {})", name, kMaxMaps, e.xforms);
+    json row = summary_row(name, {.name = e.name, .maps = e.xforms, .problem = problem});
+    row["entry"] = flame_selector(entries, e);
+    row["flame"] = true;
+    list.push_back(std::move(row));
+  }
 }
 
 }  // namespace
@@ -132,8 +163,12 @@ json folder_presets(const fs::path& folder) {
     if (list.size() >= kMaxListed) break;
     const bool toml = ends_with(name, ".toml") && !ends_with(name, ".super.toml");
     const bool fractint = ends_with(name, ".ifs");
-    if (!toml && !fractint) continue;
+    if (!toml && !fractint && !flame_name(name)) continue;
     try {
+      if (flame_name(name)) {
+        add_flame_rows(list, folder, name);
+        continue;
+      }
       const fs::path path = folder_file(folder, name, true);
       for (const auto& s : list_presets_in(path.string())) {
         json row = summary_row(name, s);
@@ -161,6 +196,25 @@ IfsPreset open_folder_preset(const fs::path& folder, const std::string& file,
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("entry: only for a Fractint .ifs file (got '{}' for {})", entry, file));
   return load_ifs(fractint ? fmt::format("{}:{}", path.string(), entry) : path.string());
+}
+
+flame::Flame open_folder_flame(const fs::path& folder, const std::string& file,
+                               const std::string& entry) {
+  if (!flame_name(file))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("file: a flame file, .flame or .flam3 (got '{}')", file));
+  const fs::path path = folder_file(folder, file, true);
+  const flame::Flame f =
+      flame::read_flame(entry.empty() ? path.string() : fmt::format("{}:{}", path.string(), entry));
+  if (f.xforms.size() > kMaxMaps)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: the studio edits at most {} xforms (got {})", file, kMaxMaps,
+                            f.xforms.size()));
+  return f;
+}
+
+bool is_flame_name(std::string_view name) {
+  return flame_name(name);
 }
 
 std::string colouring_file_name(const std::string& preset_file) {

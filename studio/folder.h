@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "flame/flame.h"
 #include "ifs/output_file.h"
 #include "ifs/preset.h"
 
@@ -53,10 +54,12 @@ std::vector<std::string> folder_files(const std::filesystem::path& folder,
 // The images of `folder` by name, sorted (hidden files and folders left out).
 nlohmann::json folder_sources(const std::filesystem::path& folder);
 
-// The presets of `folder`: [{"file", "entry" (Fractint files), "name", "maps", "contraction",
-// "description", "problem"}], one per .toml file (superIFS files, *.super.toml, left out) and one
-// per entry of each .ifs file, sorted by file; "problem" is why it cannot be opened (as
-// `ifsfx presets FILE` says it), empty when it can. At most 1000 rows.
+// The presets of `folder`: [{"file", "entry" (Fractint and flame files), "name", "maps",
+// "contraction", "description", "problem", "flame" (flames: true)}], one per .toml file (superIFS
+// files, *.super.toml, left out), one per entry of each .ifs file and one per flame of each
+// .flame or .flam3 file (its "entry" picks it: its name, or its index where the name is empty or
+// taken twice; "maps" counts its xforms), sorted by file; "problem" is why it cannot be opened
+// (as `ifsfx presets FILE` says it), empty when it can. At most 1000 rows.
 nlohmann::json folder_presets(const std::filesystem::path& folder);
 
 // A preset of `folder`: the .toml `file`, or the entry `entry` of the .ifs `file` (its first when
@@ -64,6 +67,16 @@ nlohmann::json folder_presets(const std::filesystem::path& folder);
 // throw.
 IfsPreset open_folder_preset(const std::filesystem::path& folder, const std::string& file,
                              const std::string& entry);
+
+// Whether `name` ends in .flame or .flam3 (any case).
+bool is_flame_name(std::string_view name);
+
+// The flame `entry` (a name or an index; may be empty for a file of one flame) of the flame file
+// `file` of `folder`, read as `ifsfx render FILE.flame:ENTRY` reads it. Throws what folder_file
+// and read_flame throw, and Error{invalid_argument} for another extension or more than kMaxMaps
+// xforms.
+flame::Flame open_folder_flame(const std::filesystem::path& folder, const std::string& file,
+                               const std::string& entry);
 
 // The file a preset NAME.toml keeps its colouring IFS in: NAME.colouring.toml.
 std::string colouring_file_name(const std::string& preset_file);

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
+#include "flame/render.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
 #include "ifs/output_file.h"
@@ -45,6 +46,11 @@ std::string text(const json& body, const char* field, const std::string& fallbac
 
 IfsPreset preset_from_json(const json& body) {
   if (!body.is_object()) bad_field("request", "must be a JSON object", body.type_name());
+  if (body.contains("flame") && !body["flame"].is_null())
+    throw Error(ErrorKind::unsupported,
+                fmt::format("flame: an affine IFS is needed here; a flame is rendered in the "
+                            "editor and saved as .flame (got the flame '{}')",
+                            text(body, "name", "")));
   Ifs ifs;
   ifs.name = text(body, "name", "studio");
   if (ifs.name.empty()) ifs.name = "studio";
@@ -139,11 +145,16 @@ std::optional<Ifs> colouring_from_json(const json& body, const Ifs& F) {
 StudioRender studio_render_from_json(
     const json& body, const std::function<std::filesystem::path(const std::string&)>& source_path) {
   StudioRender r;
-  r.preset = preset_from_json(body);
+  const bool flame = body.is_object() && body.contains("flame") && !body["flame"].is_null();
+  if (flame)
+    r.flame = flame_from_json(body);
+  else
+    r.preset = preset_from_json(body);
   r.size = size_option(text(body, "size", "768x768"), "size");
   if (r.size.width > 4096 || r.size.height > 4096)
     bad_field("size", "at most 4096x4096 in the studio", text(body, "size", ""));
-  r.mode = parse_render_mode(text(body, "mode", "tops"), "mode");
+  r.mode = parse_render_mode(text(body, "mode", flame ? "measure" : "tops"), "mode");
+  if (flame) check_flame_mode(r.mode, "mode");
   // `ifsfx render`'s defaults (RenderOptions) but for the fields the page sets.
   if (body.contains("seed")) {
     const double seed = number(body["seed"], "seed");
@@ -155,6 +166,7 @@ StudioRender studio_render_from_json(
     r.options.sampling.quality = number(body["quality"], "quality");
     if (!(r.options.sampling.quality > 0 && r.options.sampling.quality <= kMaxQuality))
       bad_field("quality", fmt::format("must be in (0, {}]", kMaxQuality), body["quality"].dump());
+    if (flame) r.flame->flame.quality = r.options.sampling.quality;
   }
   r.options.sampling.view = view_option(text(body, "view", ""), "view");
   if (body.contains("threads")) {
@@ -170,7 +182,7 @@ StudioRender studio_render_from_json(
       bad_field("exact", "must be true or false", body["exact"].dump());
     r.exact = body["exact"].get<bool>();
   }
-  if (render_mode_info(r.mode).source) {
+  if (!flame && render_mode_info(r.mode).source) {
     r.source = source_path(text(body, "source", "sample"));
     r.colouring = colouring_from_json(body, r.preset.ifs);
   }
@@ -195,7 +207,32 @@ std::string rgba_bytes(const cv::Mat& image) {
   return bytes;
 }
 
+namespace {
+
+// The flame of a request as `ifsfx render FILE.flame --size WxH` renders it (the same call and
+// options; the camera moved to the page's view when it has one), with the same metadata.
+StudioImage flame_image(const StudioRender& r, CancelToken cancel, bool alpha) {
+  flame::Flame f = r.flame->flame;
+  f.camera = studio_camera(f.camera, r.size, r.options.sampling.view);
+  const std::uint64_t seed = r.options.sampling.seed;
+  const flame::FlameRenderOptions options{.seed = seed,
+                                          .threads = r.options.sampling.threads,
+                                          .cancel = cancel,
+                                          .channels = alpha ? 4 : 3,
+                                          .depth = r.flame_depth};
+  StudioImage out{.image = flame::render_flame(f, options), .view = camera_view(f.camera)};
+  out.write.metadata = {
+      {"ifsfx:flame", f.name},
+      {"ifsfx:mode", "measure"},
+      {"ifsfx:seed", std::to_string(seed)},
+      {"ImageDescription", fmt::format("ifsfx render {} --seed {}", f.name, seed)}};
+  return out;
+}
+
+}  // namespace
+
 StudioImage studio_image(const StudioRender& r, CancelToken cancel, bool alpha) {
+  if (r.flame) return flame_image(r, cancel, alpha);
   StillJob job{.mode = r.mode,
                .size = r.size,
                .options = r.options,

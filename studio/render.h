@@ -13,6 +13,9 @@
 //    "view": "x0,y0,x1,y1",      // optional: the plane rectangle shown (default: auto-framed)
 //    "seed": 1, "quality": 64, "exact": true, "threads": 0,                       // optional
 //    "format": "png" | "rgba"}   // the file's bytes (default), or raw pixels for the live view
+// or, for a fractal flame, its document (studio/flame_doc.h: "maps" and "flame") with "mode":
+// "measure" (the flame look), "size", "view", "seed", "quality" (default: the flame's), "threads"
+// and "format".
 #pragma once
 
 #include <cstddef>
@@ -29,6 +32,7 @@
 #include "ifs/preset.h"
 #include "ifs/render.h"
 #include "run/render_modes.h"
+#include "studio/flame_doc.h"
 
 namespace ifsfx::app {
 
@@ -39,7 +43,8 @@ inline constexpr std::size_t kMaxMaps = 64;
 // The preset of a request: name, description, maps, probabilities and colours. Its text is the
 // TOML that `to_toml` writes, so a saved preset renders with the same metadata. Throws
 // Error{parse} for a field of the wrong type or shape, and what validate() throws for an IFS that
-// does not contract (or contract on average with "allow_expansive": true).
+// does not contract (or contract on average with "allow_expansive": true); Error{unsupported} for
+// a flame's document (it has "flame": only the editor's render and save take flames).
 IfsPreset preset_from_json(const nlohmann::json& body);
 
 // The maps of `ifs` as [[a, b, c, d, e, f], ...], and a colour as "#rrggbb".
@@ -75,11 +80,16 @@ struct StudioRender {
   std::filesystem::path source;  // steal mode: the source image
   std::optional<Ifs> colouring;  // steal mode: G fitted to the unit square; none: the default
   PictureFormat format = PictureFormat::png;
+  // A fractal flame instead of `preset` (the request had "flame"), rendered as `ifsfx render
+  // FILE.flame` renders it (flame/render.h) at `size`, framed on options.sampling.view when
+  // given; its quality is the request's when given.
+  std::optional<StudioFlame> flame;
+  int flame_depth = CV_8U;  // the flame's pixels: CV_8U, CV_16U or CV_32F (a still's file)
 };
 
 // The one place where the page's settings become library options. `source_path` turns the request's
 // "source" into a readable file or throws Error{invalid_argument}. Throws Error{parse} or
-// Error{invalid_argument} for a bad field, naming it.
+// Error{invalid_argument} for a bad field, naming it (a flame in another mode than measure too).
 StudioRender studio_render_from_json(
     const nlohmann::json& body,
     const std::function<std::filesystem::path(const std::string&)>& source_path);

@@ -43,10 +43,12 @@ fs::path output_name(const json& body, const StudioContext& context,
 }
 
 int submit_still(JobQueue& jobs, const json& body, StudioContext& context) {
-  const StudioRender render = studio_render_from_json(
+  StudioRender render = studio_render_from_json(
       body, [&](const std::string& name) { return context.source_path(name); });
   const fs::path target = output_name(body, context, {".png", ".tif", ".tiff", ".exr", ".jpg"});
   const int bits = static_cast<int>(integer_field(body, "bits", 8, 8, 16));
+  // A flame is rendered at the file's depth, as `ifsfx render FILE.flame` renders it.
+  render.flame_depth = lower_extension(target) == ".exr" ? CV_32F : bits == 16 ? CV_16U : CV_8U;
   OutputOptions policy{.inputs = context.inputs()};
   if (!render.source.empty()) policy.inputs.add(render.source);
   check_writable_image(target, policy, bits);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // What the folder offers the page (docs/studio.md, "Presets" and "Colour stealing"): the Open
-// menu (shipped presets, the folder's .toml files and Fractint entries, the unusable ones listed
+// menu (shipped presets, the folder's .toml files, Fractint entries and flames, the unusable ones listed
 // with their reason), the sources, and images dropped on the page, saved in the folder.
 import { $, api, getJson } from './api.js';
 
@@ -55,14 +55,15 @@ export async function listPresets(initialName) {
   const f = group('Folder');
   const unusable = [];
   for (const p of folder) {
-    const label = p.entry !== undefined ? `${p.file}: ${p.entry}` : p.file;
-    const o = option(p.problem ? `${label} — unusable` : `${label} (${p.maps} maps)`,
+    // A flame as FILE.flame:NAME (as `ifsfx render` names it), a Fractint entry as FILE: NAME.
+    const label = p.flame ? `${p.file}:${p.entry}` : p.entry !== undefined ? `${p.file}: ${p.entry}` : p.file;
+    const o = option(p.problem ? `${label} — unusable` : `${label} (${p.maps} ${p.flame ? 'xforms' : 'maps'})`,
                      { file: p.file, entry: p.entry }, p.problem || p.description);
     o.disabled = Boolean(p.problem);
     f.appendChild(o);
     if (p.problem) unusable.push([label, p.problem]);
   }
-  if (!folder.length) f.appendChild(Object.assign(option('(no .toml or .ifs file)', {}), { disabled: true }));
+  if (!folder.length) f.appendChild(Object.assign(option('(no .toml, .ifs or .flame file)', {}), { disabled: true }));
   const list = $('unusable-list');
   list.textContent = '';
   for (const [label, problem] of unusable) {

@@ -4,9 +4,13 @@
 // no state but the renders in flight. Coordinates: "plane" is the IFS plane (y up), "pixels" the
 // canvas's own pixels (y down), through the view (view.js); the maps are drawn as the
 // parallelograms they make of the frame, the view rectangle the document was framed with (it
-// stays put under pan and zoom, so that the handles do not jump).
+// stays put under pan and zoom, so that the handles do not jump). A fractal flame's document
+// also has `flame` (flame.js): its maps are its xforms' pre-affine maps in the editor plane,
+// drawn on the unit square, and the picture is framed by its camera.
 import { $, getJson, postJson, status, token } from './api.js';
 import { listPresets, listSources, uploadImage } from './folder.js';
+import { chaosDuplicate, chaosRemove, chaosSwap, drawPalette, listFor, loadVariations, newXform,
+         paletteColour, renderFlamePanel } from './flame.js';
 import { defaultProbabilities, flipped, frameOf, middleMap, shifted } from './geometry.js';
 import { LiveRenderer } from './live.js';
 import { session } from './panels.js';
@@ -21,12 +25,13 @@ const view = new View(canvas);
 
 // The document: what Save writes (the preset, and NAME.colouring.toml when colouring is set).
 let doc = { name: 'studio', description: '', maps: [], probabilities: [], colours: [],
-            colouring: null, allow_expansive: false };
+            colouring: null, allow_expansive: false, flame: null };
 let selected = 0;
 let frame = null;       // frameOf(frameRect): where the maps are drawn from
 let frameRect = null;   // [x0, y0, x1, y1]: the view the document was framed with
 let picture = null;     // {canvas, view, full}: the last picture, drawn where its view lies
 let usedColouring = null;  // G as the server fitted it (X-Ifsfx-Colouring)
+let flameView = null;   // the rectangle a flame's own camera shows: no "view" is sent for it
 let openedFile = null;  // the folder file the document came from
 const undoStack = [];
 const redoStack = [];
@@ -49,6 +54,7 @@ function defaultsFor(n) {
 }
 
 function colourOf(i) {
+  if (doc.flame) return paletteColour(doc.flame, doc.flame.xforms[i].colour);
   const n = doc.maps.length;
   if (doc.colours.length === n) return doc.colours[i];
   const d = defaultsFor(n);
@@ -91,6 +97,7 @@ function renderTables() {
     select: (i) => { selected = i; refresh(); },
     set: (i, k, v) => edit(() => {
       if (k < 6) doc.maps[i][k] = v;
+      else if (doc.flame) doc.flame.xforms[i][k === 6 ? 'weight' : 'colour'] = v;
       else {
         if (doc.probabilities.length !== doc.maps.length) doc.probabilities = defaultProbabilities(doc.maps);
         doc.probabilities[i] = v;
@@ -105,6 +112,10 @@ function renderTables() {
     flip: (i) => edit(() => { doc.maps[i] = flipped(doc.maps[i], frame || frameOf([0, 0, 1, 1])); }),
     restore: refresh,
   });
+  $('p-head').textContent = doc.flame ? 'w' : 'p';
+  $('colour-head').textContent = doc.flame ? 'colour (0–1)' : 'colour';
+  $('flame-panel').hidden = !doc.flame;
+  if (doc.flame) renderFlame();
   $('colouring-panel').hidden = !steal();
   const g = colouringShown();
   if (steal() && g) {
@@ -118,6 +129,22 @@ function renderTables() {
     ? 'edited: saved beside the preset as NAME.colouring.toml'
     : `the default tiling for ${doc.maps.length} maps`;
   $('reset-colouring').disabled = !doc.colouring;
+}
+
+// The flame's panel: the palette strip and the selected xform's variations.
+function renderFlame() {
+  drawPalette($('palette'), doc.flame, selected);
+  const terms = (list, k) => doc.flame.xforms[selected][list][k];
+  renderFlamePanel(doc, selected, {
+    set: (list, k, param, v) => edit(() => {
+      if (param) terms(list, k).params[param] = v;
+      else terms(list, k).weight = v;
+    }),
+    remove: (list, k) => edit(() => { doc.flame.xforms[selected][list].splice(k, 1); }),
+    add: (name) => edit(() => { doc.flame.xforms[selected][listFor(name)].push({ name, weight: 1, params: {} }); }),
+    field: (key, v) => edit(() => { doc.flame.xforms[selected][key] = v; }),
+    restore: refresh,
+  });
 }
 
 function refresh() {
@@ -154,7 +181,7 @@ function changed(eventTime, interactive = false) {
 function dragChanged(eventTime, prefix, i, m) {
   renderer.changed(eventTime, true);
   const table = prefix ? '#colouring tbody' : '#maps tbody';
-  updateRow(document.querySelector(table), prefix, i, m);
+  updateRow(document.querySelector(table), prefix, i, m, !doc.flame);
   draw();
   if (steal()) source.draw();
 }
@@ -163,14 +190,20 @@ function restore(from, to) {
   if (!from.length) return;
   to.push(snapshot());
   const step = JSON.parse(from.pop());
-  if (step.doc.name !== doc.name) $('file').value = `${step.doc.name}.toml`;
+  if (step.doc.name !== doc.name || Boolean(step.doc.flame) !== Boolean(doc.flame))
+    $('file').value = saveName(step.doc.name, Boolean(step.doc.flame));
+  // Another frame, or another camera (another flame, or one flame and one IFS): framed anew.
+  const camera = (d) => JSON.stringify(d.flame && d.flame.camera);
+  const reframed = JSON.stringify(step.frame) !== JSON.stringify(frameRect) || camera(step.doc) !== camera(doc);
   doc = step.doc;
-  if (JSON.stringify(step.frame) !== JSON.stringify(frameRect)) {
+  if (reframed) {
     frameRect = step.frame;
     frame = frameRect && frameOf(frameRect);
-    view.rect = frameRect && frameRect.slice();
+    // A flame's frame is the unit square, not a view: its camera frames it again.
+    view.rect = frameRect && !doc.flame ? frameRect.slice() : null;
     picture = null;
   }
+  kindChanged();
   changed();
 }
 const undo = () => restore(undoStack, redoStack);
@@ -181,10 +214,12 @@ function ensureColouring() {
   return doc.colouring;
 }
 
-// The lists that follow the maps (probabilities, colours, the colouring's pieces), when set.
+// The lists that follow the maps (probabilities, colours, the colouring's pieces, a flame's
+// xforms), when set.
 function lists() {
   const n = doc.maps.length;
-  return [doc.probabilities, doc.colours, doc.colouring || []].filter((l) => l.length === n);
+  return [doc.probabilities, doc.colours, doc.colouring || [], doc.flame ? doc.flame.xforms : []]
+    .filter((l) => l.length === n);
 }
 
 function move(i, by) {
@@ -192,6 +227,7 @@ function move(i, by) {
   if (j < 0 || j >= doc.maps.length) return;
   edit(() => {
     for (const l of [...lists(), doc.maps]) [l[i], l[j]] = [l[j], l[i]];
+    if (doc.flame) chaosSwap(doc.flame.xforms, i, j);
     selected = j;
   });
 }
@@ -201,6 +237,7 @@ function duplicate(i) {
   edit(() => {
     const w = frameRect ? frameRect[2] - frameRect[0] : 1;
     for (const l of lists()) l.splice(i + 1, 0, JSON.parse(JSON.stringify(l[i])));
+    if (doc.flame) chaosDuplicate(doc.flame.xforms, i);
     if (doc.probabilities.length === doc.maps.length + 1) doc.probabilities[i + 1] = doc.probabilities[i];
     doc.maps.splice(i + 1, 0, shifted(doc.maps[i], 0.04 * w, -0.04 * w));  // beside it, visible
     selected = i + 1;
@@ -211,6 +248,7 @@ function remove(i) {
   if (doc.maps.length <= 1) { status('an IFS needs at least one map', true); return; }
   edit(() => {
     for (const l of [...lists(), doc.maps]) l.splice(i, 1);
+    if (doc.flame) chaosRemove(doc.flame.xforms, i);
     selected = Math.min(selected, doc.maps.length - 1);
   });
 }
@@ -222,6 +260,7 @@ function add() {
     if (doc.probabilities.length === n) doc.probabilities.push(1 / (n + 1));
     if (doc.colours.length === n) doc.colours.push('#ffffff');
     if (doc.colouring && doc.colouring.length === n) doc.colouring.push(middleMap(frameOf([0, 0, 1, 1]), 0.25));
+    if (doc.flame) doc.flame.xforms.push(newXform());
     doc.maps.push(middleMap(frame || frameOf([0, 0, 1, 1])));
     selected = n;
   });
@@ -229,7 +268,17 @@ function add() {
 
 // ---- the live picture ----
 
+// The quality of a flame's live picture: its own, up to this (a flame file may ask for
+// thousands of samples a pixel; a Jobs still renders at the flame's own).
+const kFlamePreviewQuality = 10;
+
 function requestBody() {
+  if (doc.flame) {
+    const body = { name: doc.name, maps: doc.maps, flame: doc.flame, mode: 'measure' };
+    // Framed by its camera until panned or zoomed: the picture `ifsfx render NAME.flame` makes.
+    if (view.framed && view.text() !== (flameView && flameView.join(','))) body.view = view.text();
+    return body;
+  }
   const body = { name: doc.name, description: doc.description, maps: doc.maps, mode: $('mode').value };
   if (doc.probabilities.length) body.probabilities = doc.probabilities;
   if (doc.colours.length) body.colours = doc.colours;
@@ -244,7 +293,11 @@ function requestBody() {
 
 const pictureCanvas = document.createElement('canvas');
 const renderer = new LiveRenderer({
-  body: requestBody,
+  body: () => {
+    const body = requestBody();
+    if (doc.flame) body.quality = Math.min(doc.flame.quality, kFlamePreviewQuality);
+    return body;
+  },
   size: () => $('size').value.split('x').map(Number),
   stats,
   fail: (message) => status(message, true),
@@ -257,16 +310,21 @@ const renderer = new LiveRenderer({
     picture = { canvas: pictureCanvas, view: p.view, full: p.full };
     if (!view.framed) {  // the server framed the attractor: the frame and the view from now on
       view.rect = p.view.slice();
-      frameRect = p.view.slice();
-      frame = frameOf(frameRect);
+      if (doc.flame) flameView = p.view.slice();
+      else {  // an IFS's maps are drawn on this frame (a flame's on the unit square)
+        frameRect = p.view.slice();
+        frame = frameOf(frameRect);
+      }
       renderTables();
     }
     usedColouring = p.colouring;
     draw();
     if (steal()) source.draw();
     if (p.full) {
-      status(`${doc.name}: ${doc.maps.length} maps; ${$('mode').value} ${p.width}x${p.height} ` +
-             `rendered in ${p.renderMs} ms`);
+      const what = doc.flame
+        ? `flame, ${doc.maps.length} xforms, quality ${Math.min(doc.flame.quality, kFlamePreviewQuality)} of its ${doc.flame.quality}`
+        : `${doc.maps.length} maps; ${$('mode').value}`;
+      status(`${doc.name}: ${what} ${p.width}x${p.height} rendered in ${p.renderMs} ms`);
     }
   },
 });
@@ -394,23 +452,43 @@ async function upload(file) {
   try {
     const saved = await uploadImage(file);
     await listSources(saved);
-    $('mode').value = 'steal';
+    if (!doc.flame) $('mode').value = 'steal';  // a flame renders in measure mode only
     status(`${saved}: saved in the folder; it is the source now`);
     modeChanged();
   } catch (e) { status(e.message, true); }
 }
 
+// Save's name for a document: NAME.toml, or NAME.flame, as a plain name of the folder.
+function saveName(name, flame) {
+  const plain = (name || 'studio').replace(/[^A-Za-z0-9_.+ -]/g, '-').replace(/\.\.+/g, '.')
+    .replace(/^[^A-Za-z0-9_]+/, '') || 'studio';
+  const file = `${plain}.${flame ? 'flame' : 'toml'}`;
+  return file === openedFile ? `${plain}-2.${flame ? 'flame' : 'toml'}` : file;
+}
+
+// A flame renders in measure mode only (its look); an IFS in any.
+function kindChanged() {
+  for (const o of $('mode').options) o.disabled = Boolean(doc.flame) && o.value !== 'measure';
+  if (doc.flame && $('mode').value !== 'measure') {
+    $('mode').value = 'measure';
+    $('source-label').hidden = true;
+  }
+}
+
 function open(preset) {
   doc = { name: preset.name, description: preset.description || '', maps: preset.maps,
           probabilities: preset.probabilities || [], colours: preset.colours || [],
-          colouring: preset.colouring || null, allow_expansive: Boolean(preset.allow_expansive) };
+          colouring: preset.colouring || null, allow_expansive: Boolean(preset.allow_expansive),
+          flame: preset.flame || null };
   selected = 0;
   view.rect = null;
-  frame = frameRect = null;
+  frameRect = doc.flame ? [0, 0, 1, 1] : null;
+  frame = frameRect && frameOf(frameRect);
   picture = null;
   openedFile = preset.origin_file || null;
-  $('file').value = openedFile === `${preset.name}.toml` ? `${preset.name}-2.toml` : `${preset.name}.toml`;
+  $('file').value = saveName(preset.name, Boolean(doc.flame));
   if (preset.warnings && preset.warnings.length) status(preset.warnings.join('; '));
+  kindChanged();
   changed();
 }
 
@@ -460,10 +538,14 @@ async function start() {
     draw();
     renderer.changed();
   };
-  $('reframe').onclick = () => { view.rect = null; frame = frameRect = null; renderer.changed(); };
+  $('reframe').onclick = () => {
+    view.rect = null;
+    if (!doc.flame) frame = frameRect = null;
+    renderer.changed();
+  };
   $('reset-view').onclick = () => {
     if (!frameRect) return;
-    view.rect = frameRect.slice();
+    view.rect = doc.flame ? null : frameRect.slice();  // a flame: its camera's framing
     draw();
     renderer.changed();
   };
@@ -482,6 +564,7 @@ async function start() {
     if (file) upload(file);
   });
   $('source-label').hidden = true;
+  loadVariations().catch((e) => status(e.message, true));
   open(initial);
 }
 

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // The tables of maps: the IFS's (a–f, probability, colour, contraction factor, and buttons to
-// reorder, duplicate, flip and delete) and the colouring IFS's (a–f on the source's unit square).
+// reorder, duplicate, flip and delete) or a flame's (its xforms' pre-affine maps, weights and
+// colour coordinates), and the colouring IFS's (a–f on the source's unit square).
 import { factor } from './geometry.js';
 
 const kFields = ['a', 'b', 'c', 'd', 'e', 'f'];
@@ -9,7 +10,7 @@ export const fmt = (x) => String(Number(Number(x).toPrecision(6)));
 
 // A text field for a number (a number field's spinner would hide digits): onValue(number) when
 // it changes to a finite number, restore() otherwise.
-function numberCell(name, value, placeholder, onValue, restore) {
+export function numberCell(name, value, placeholder, onValue, restore) {
   const td = document.createElement('td');
   const input = document.createElement('input');
   input.name = name;
@@ -36,8 +37,19 @@ function headCell(i, colour, onSelect) {
   return td;
 }
 
+// A flame's weight and colour coordinate cells (in place of p and the colour field): on.set(i, 6,
+// weight), on.set(i, 7, colour in [0, 1]).
+function flameCells(tr, xf, i, on) {
+  tr.appendChild(numberCell(`w${i}`, fmt(xf.weight), '', (v) => on.set(i, 6, v), on.restore));
+  const c = numberCell(`colour${i}`, fmt(xf.colour), '', (v) => on.set(i, 7, v), on.restore);
+  c.firstChild.title = 'The colour coordinate, 0 to 1: where on the palette this xform draws';
+  tr.appendChild(c);
+}
+
 // The IFS's table. doc: the document; on: {select(i), set(i, k, v) (k 0..5: a–f, 6: p),
-// colour(i, '#rrggbb'), move(i, by), duplicate(i), flip(i), remove(i), restore()}.
+// colour(i, '#rrggbb'), move(i, by), duplicate(i), flip(i), remove(i), restore()}. A flame's
+// rows have its xforms' weights and colour coordinates instead (flameCells), and a factor that
+// may be 1 or more (a flame's maps need not contract).
 export function renderMapsTable(tbody, doc, selected, colourOf, on) {
   tbody.textContent = '';
   const n = doc.maps.length;
@@ -48,22 +60,10 @@ export function renderMapsTable(tbody, doc, selected, colourOf, on) {
     tr.appendChild(headCell(i, colourOf(i), () => on.select(i)));
     kFields.forEach((name, k) =>
       tr.appendChild(numberCell(`${name}${i}`, fmt(m[k]), '', (v) => on.set(i, k, v), on.restore)));
-    const p = doc.probabilities.length === n ? fmt(doc.probabilities[i]) : '';
-    tr.appendChild(numberCell(`p${i}`, p, 'auto', (v) => on.set(i, 6, v), on.restore));
-    const ctd = document.createElement('td');
-    const colour = document.createElement('input');
-    colour.type = 'color';
-    colour.name = `colour${i}`;
-    colour.value = colourOf(i);
-    colour.title = doc.colours.length === n ? 'The colour of this map' : 'The default palette (pick one to set every map\'s colour)';
-    colour.onchange = () => on.colour(i, colour.value);
-    ctd.appendChild(colour);
-    tr.appendChild(ctd);
-    const s = factor(m);
+    if (doc.flame) flameCells(tr, doc.flame.xforms[i], i, on);
+    else ifsCells(tr, doc, i, colourOf, on);
     const ftd = document.createElement('td');
-    ftd.className = s >= 1 ? 'warn factor' : 'factor';
-    ftd.textContent = s >= 1 ? `${s.toFixed(3)} ⚠ ≥ 1` : s.toFixed(3);
-    if (s >= 1) ftd.title = 'This map does not contract: the IFS has no attractor unless it contracts on average';
+    showFactor(ftd, m, !doc.flame);
     tr.appendChild(ftd);
     const actions = document.createElement('td');
     actions.className = 'actions';
@@ -84,18 +84,41 @@ export function renderMapsTable(tbody, doc, selected, colourOf, on) {
   });
 }
 
-// Puts map i's current numbers into its row's fields (during a drag: no rebuilding the table).
-export function updateRow(tbody, prefix, i, m) {
+// An IFS's probability and colour cells.
+function ifsCells(tr, doc, i, colourOf, on) {
+  const n = doc.maps.length;
+  const p = doc.probabilities.length === n ? fmt(doc.probabilities[i]) : '';
+  tr.appendChild(numberCell(`p${i}`, p, 'auto', (v) => on.set(i, 6, v), on.restore));
+  const ctd = document.createElement('td');
+  const colour = document.createElement('input');
+  colour.type = 'color';
+  colour.name = `colour${i}`;
+  colour.value = colourOf(i);
+  colour.title = doc.colours.length === n ? 'The colour of this map' : 'The default palette (pick one to set every map\'s colour)';
+  colour.onchange = () => on.colour(i, colour.value);
+  ctd.appendChild(colour);
+  tr.appendChild(ctd);
+}
+
+// The contraction factor of map m in its cell, flagged at 1 or more where that matters (`warn`:
+// an IFS's maps; a flame's need not contract).
+function showFactor(cell, m, warn) {
+  const s = factor(m);
+  const flagged = warn && s >= 1;
+  cell.className = flagged ? 'warn factor' : 'factor';
+  cell.textContent = flagged ? `${s.toFixed(3)} ⚠ ≥ 1` : s.toFixed(3);
+  cell.title = flagged ? 'This map does not contract: the IFS has no attractor unless it contracts on average' : '';
+}
+
+// Puts map i's current numbers into its row's fields (during a drag: no rebuilding the table);
+// `warn`: flag a factor of 1 or more.
+export function updateRow(tbody, prefix, i, m, warn = true) {
   kFields.forEach((name, k) => {
     const input = tbody.querySelector(`input[name="${prefix}${name}${i}"]`);
     if (input && document.activeElement !== input) input.value = fmt(m[k]);
   });
   const cell = tbody.querySelector(`tr[data-map="${i}"] td.factor`);
-  if (cell) {
-    const s = factor(m);
-    cell.className = s >= 1 ? 'warn factor' : 'factor';
-    cell.textContent = s >= 1 ? `${s.toFixed(3)} ⚠ ≥ 1` : s.toFixed(3);
-  }
+  if (cell) showFactor(cell, m, warn);
 }
 
 // The colouring IFS's table: maps on the source's unit square. on: {select(i), set(i, k, v),

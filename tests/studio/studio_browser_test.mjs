@@ -8,9 +8,12 @@
 //   reason); an image dropped on the page becomes the source; a piece of the colouring IFS dragged
 //   on the source changes the picture and is saved as NAME.colouring.toml; an IFS that does not
 //   contract shows the server's error in the page; two tabs edit at once without disturbing each
-//   other; `--source IMAGE` (relative, found in --folder) is the source selected at start.
-//   Screenshots are kept in WORK (studio.png, studio-zoomed.png, studio-measure.png,
-//   studio-steal.png, studio-source.png). The drag-to-pixels latency is bench/studio_latency.mjs's,
+//   other; a flame of a .flame file of the folder opened (its xforms as maps, the palette strip,
+//   the variations table), a map's corner dragged and a variation's weight and parameter changed,
+//   saved as NAME.flame (which `ifsfx render` renders) and reopened as it was saved; `--source
+//   IMAGE` (relative, found in --folder) is the source selected at start. Screenshots are kept in
+//   WORK (studio.png, studio-zoomed.png, studio-measure.png, studio-steal.png, studio-flame.png,
+//   studio-source.png). The drag-to-pixels latency is bench/studio_latency.mjs's,
 //   not measured here.
 // Usage: node studio_browser_test.mjs IFSFX WORK NODE_MODULES
 import { spawn, execFileSync } from 'node:child_process';
@@ -42,6 +45,20 @@ triangle {
   .5 0 0 .5 .5 0 .33
   .5 0 0 .5 .25 .5 .34
 }
+`);
+// Two flames (one the reader refuses) in a flame file: a spiral of julian and spherical, on a
+// palette from green through orange to blue.
+const palette = Array.from({ length: 256 }, (_, k) =>
+  [k < 128 ? 2 * k : 255, 200 - Math.round(k / 2), k < 128 ? 40 : 2 * (k - 128)]
+    .map((v) => v.toString(16).padStart(2, '0')).join('')).join('');
+writeFileSync(path.join(folder, 'pair.flame'), `<flames>
+<flame name="spiral" size="400 400" center="0 0" scale="110" quality="40" brightness="4" gamma="3">
+ <xform weight="0.7" color="0" linear="0.4" julian="0.6" julian_power="4" julian_dist="1" coefs="0.7 0.3 -0.3 0.7 0.2 0.1"/>
+ <xform weight="0.3" color="1" spherical="0.8" swirl="0.2" coefs="0.5 -0.2 0.2 0.5 -0.5 0.3"/>
+ <palette count="256" format="RGB">${palette}</palette>
+</flame>
+<flame name="broken"><xform weight="1" nope="1" coefs="1 0 0 1 0 0"/><palette count="256" format="RGB">${palette}</palette></flame>
+</flames>
 `);
 let failures = 0;
 const check = (ok, what) => { console.log(`${ok ? 'ok' : 'FAIL'}: ${what}`); if (!ok) failures++; };
@@ -302,6 +319,95 @@ try {
         `two tabs keep their own documents (map 3's e: ${s1.maps[2][4].toFixed(3)}, ${s2.maps[2][4].toFixed(3)})`);
   check(await other.evaluate(() => window.studio.errors === 0), 'the second tab saw no error');
   await other.close();
+
+  // A flame of the folder: its xforms as maps, the palette, the variations; drag a corner, change
+  // a variation's weight and parameter, save it as NAME.flame, reopen it.
+  await page.bringToFront();
+  await page.evaluate(() => window.studio.openPreset({ name: 'x', maps: [[0.5, 0, 0, 0.5, 0, 0]] }));
+  await settled(page);
+  const menu = await page.evaluate(() => [...document.querySelectorAll('#preset option')].map((o) => [o.textContent, o.disabled, o.value]));
+  const spiral = menu.find((o) => o[0].startsWith('pair.flame:spiral (2 xforms)'));
+  const broken = menu.find((o) => o[0].startsWith('pair.flame:broken'));
+  check(spiral && !spiral[1] && broken && broken[1], `the flames of pair.flame are listed as FILE:NAME, the broken one disabled`);
+  check(await page.evaluate(() => /unknown variation "nope"/.test(document.getElementById('unusable-list').textContent)),
+        'the unusable flame is listed with its reason');
+  const errorsBefore = await page.evaluate(() => window.studio.errors);
+  await page.selectOption('#preset', spiral[2]);
+  await page.waitForFunction(() => window.studio.state().flame !== null, null, { timeout: 30000 });
+  await settled(page);
+  s = await state(page);
+  check(s.name === 'spiral' && s.maps.length === 2 && s.flame.xforms[0].variations.map((v) => v.name).join() === 'linear,julian',
+        `the flame opens with its xforms as maps (${s.name}, ${s.maps.length} maps)`);
+  // coefs 0.7 0.3 -0.3 0.7 0.2 0.1 (flam3's order, y down) is [0.7, 0.3, -0.3, 0.7, 0.2, -0.1] in the editor.
+  check(JSON.stringify(s.maps[0]) === '[0.7,0.3,-0.3,0.7,0.2,-0.1]', `the pre-affine map in the editor plane (${s.maps[0]})`);
+  check(await page.evaluate(() => document.getElementById('mode').value === 'measure' &&
+                            document.querySelector('#mode option[value=tops]').disabled), 'a flame renders in measure mode only');
+  check(await page.evaluate(() => !document.getElementById('flame-panel').hidden &&
+                            document.querySelectorAll('#variations tbody tr').length === 2), 'the flame panel lists xform 1\'s two variations');
+  const strip = await page.evaluate(() => {
+    const d = document.getElementById('palette').getContext('2d').getImageData(0, 2, 512, 1).data;
+    return [[d[0], d[1], d[2]], [d[4 * 511], d[4 * 511 + 1], d[4 * 511 + 2]]];
+  });
+  check(JSON.stringify(strip) === '[[0,200,40],[255,72,254]]', `the palette strip shows the flame's palette, first to last (${JSON.stringify(strip)})`);
+  const lit = await page.evaluate(() => {
+    const c = document.createElement('canvas');
+    const img = new Image();
+    return new Promise((resolve) => {
+      img.onload = () => {
+        c.width = img.width; c.height = img.height;
+        const g = c.getContext('2d');
+        g.drawImage(img, 0, 0);
+        const d = g.getImageData(0, 0, c.width, c.height).data;
+        let n = 0;
+        for (let i = 0; i < d.length; i += 4) n += d[i] + d[i + 1] + d[i + 2] > 60;
+        resolve(n / (d.length / 4));
+      };
+      img.src = window.studio.picture();
+    });
+  });
+  check(lit > 0.05, `the flame's picture is drawn (${(100 * lit).toFixed(1)}% of it lit)`);
+  const flamePicture = await picturePixels(page);
+  await drag(page, await page.evaluate(() => window.studio.handle(1, 'corner', 1)), 25, -15, 5);
+  await settled(page);
+  const dragged1 = (await state(page)).maps[1];
+  check([0, 1, 2, 3].some((j) => dragged1[j] !== s.maps[1][j]) && dragged1[4] !== s.maps[1][4],
+        `dragging xform 2's corner turns and scales its map (${s.maps[1].slice(0, 4)} -> ${dragged1.slice(0, 4).map((x) => x.toFixed(3))})`);
+  check(await picturePixels(page) !== flamePicture, 'the flame\'s picture changed');
+  await page.click('#maps tr[data-map="0"] td.index');
+  await page.fill('#variations input[name="vw-variations-1"]', '0.3');
+  await page.press('#variations input[name="vw-variations-1"]', 'Enter');
+  await settled(page);
+  await page.fill('#variations input[name="vp-variations-1-julian_power"]', '5');
+  await page.press('#variations input[name="vp-variations-1-julian_power"]', 'Enter');
+  await settled(page);
+  const edited = await state(page);
+  check(edited.flame.xforms[0].variations[1].weight === 0.3 && edited.flame.xforms[0].variations[1].params.julian_power === 5,
+        `xform 1's julian: weight 0.3, power 5 (${JSON.stringify(edited.flame.xforms[0].variations[1])})`);
+  const editedPicture = await picturePixels(page);
+  check(editedPicture !== flamePicture, 'the variation\'s weight and power change the picture');
+  await page.screenshot({ path: path.join(work, 'studio-flame.png') });
+  check(await page.evaluate(() => document.getElementById('file').value) === 'spiral.flame', 'Save offers spiral.flame');
+  await page.click('#save');
+  await page.waitForFunction(() => /saved spiral|error/.test(document.getElementById('status').textContent));
+  const savedFlame = path.join(folder, 'spiral.flame');
+  check(existsSync(savedFlame) && /julian="0.3" julian_power="5"/.test(readFileSync(savedFlame, 'utf8')),
+        'Save writes spiral.flame with the edits');
+  try {
+    execFileSync(ifsfx, ['render', savedFlame, '--size', '64x64', '-q', '-o', path.join(work, 'spiral.png')]);
+    check(true, 'ifsfx render renders the saved flame');
+  } catch (e) { check(false, `ifsfx render refused the saved flame: ${e.stderr}`); }
+  await page.waitForFunction(() => [...document.querySelectorAll('#preset option')].some((o) => o.textContent.startsWith('spiral.flame:spiral')));
+  const reopen = await page.evaluate(() => [...document.querySelectorAll('#preset option')].find((o) => o.textContent.startsWith('spiral.flame:spiral')).value);
+  await page.selectOption('#preset', reopen);
+  // Opened (Save now offers spiral-2.flame: spiral.flame is an input), then drawn.
+  await page.waitForFunction(() => document.getElementById('file').value === 'spiral-2.flame', null, { timeout: 30000 });
+  await settled(page);
+  const reopened = await state(page);
+  check(JSON.stringify(reopened.maps) === JSON.stringify(edited.maps) &&
+        JSON.stringify(reopened.flame) === JSON.stringify(edited.flame),
+        'the saved flame reopens as it was saved');
+  check(await picturePixels(page) === editedPicture, '... with the same picture');
+  check(await page.evaluate((n) => window.studio.errors === n, errorsBefore), 'no flame render failed');
 
   // `--source IMAGE`, a relative name found in --folder (not in the current folder): the page
   // opens with it selected, and steal mode shows it, not the sample (issue 30).

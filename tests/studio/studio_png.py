@@ -4,6 +4,11 @@
 #   studio_png.py same-pixels PNG RGBA W H   exit 0 when the raw RGBA rows (the studio's
 #       "format": "rgba") are the PNG's pixels as 8-bit RGBA (grey and RGB widened, alpha 255)
 #   studio_png.py write PNG W H              a black 8-bit grey PNG of W x H pixels
+#   studio_png.py similar A B C TOLERANCE    exit 0 when C is as like A as B is, less TOLERANCE:
+#       two renders of one flame (A and B: flam3-render with two seeds, C: ifsfx), by the SSIM of
+#       their luminances (bench/flame_compare.cpp's: Gaussian window σ = 1.5, K1 = 0.01, K2 =
+#       0.03, alpha ignored as OpenCV's IMREAD_COLOR ignores it); prints both
+import math
 import struct
 import sys
 import zlib
@@ -63,6 +68,42 @@ def rgba_of_png(data):
     return w, h, bytes(out)
 
 
+def luminance(path):
+    w, h, rgba = rgba_of_png(open(path, "rb").read())
+    # OpenCV's BGR2GRAY weights, as bench/flame_compare.cpp reads the pictures
+    return w, h, [0.299 * rgba[i] + 0.587 * rgba[i + 1] + 0.114 * rgba[i + 2]
+                  for i in range(0, len(rgba), 4)]
+
+
+def blur(v, w, h):
+    """cv::GaussianBlur(11x11, σ = 1.5) with its reflect-101 border."""
+    taps = [math.exp(-(k * k) / (2 * 1.5 * 1.5)) for k in range(-5, 6)]
+    taps = [t / sum(taps) for t in taps]
+
+    def reflect(i, n):
+        while i < 0 or i >= n:
+            i = -i if i < 0 else 2 * n - 2 - i
+        return i
+    rows = [sum(taps[k] * v[y * w + reflect(x + k - 5, w)] for k in range(11))
+            for y in range(h) for x in range(w)]
+    return [sum(taps[k] * rows[reflect(y + k - 5, h) * w + x] for k in range(11))
+            for y in range(h) for x in range(w)]
+
+
+def ssim(a, b, w, h):
+    c1, c2 = (0.01 * 255) ** 2, (0.03 * 255) ** 2
+    ma, mb = blur(a, w, h), blur(b, w, h)
+    aa = blur([x * x for x in a], w, h)
+    bb = blur([x * x for x in b], w, h)
+    ab = blur([x * y for x, y in zip(a, b)], w, h)
+    total = 0.0
+    for i in range(w * h):
+        va, vb, cov = aa[i] - ma[i] ** 2, bb[i] - mb[i] ** 2, ab[i] - ma[i] * mb[i]
+        total += ((2 * ma[i] * mb[i] + c1) * (2 * cov + c2)
+                  / ((ma[i] ** 2 + mb[i] ** 2 + c1) * (va + vb + c2)))
+    return total / (w * h)
+
+
 def png_chunk(kind, body):
     return struct.pack(">I", len(body)) + kind + body + struct.pack(">I", zlib.crc32(kind + body))
 
@@ -81,5 +122,12 @@ elif sys.argv[1] == "write":
     data = (b"\x89PNG\r\n\x1a\n" + png_chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 0, 0, 0, 0))
             + png_chunk(b"IDAT", zlib.compress(raw)) + png_chunk(b"IEND", b""))
     open(sys.argv[2], "wb").write(data)
+elif sys.argv[1] == "similar":
+    (w, h, a), (wb, hb, b), (wc, hc, c) = (luminance(p) for p in sys.argv[2:5])
+    if (w, h) != (wb, hb) or (w, h) != (wc, hc):
+        sys.exit(f"sizes differ: {w}x{h}, {wb}x{hb}, {wc}x{hc}")
+    spread, ours = ssim(a, b, w, h), ssim(a, c, w, h)
+    print(f"SSIM of two flam3 seeds {spread:.3f}, flam3 and ifsfx {ours:.3f}")
+    sys.exit(0 if ours >= spread - float(sys.argv[5]) else 1)
 else:
-    sys.exit("usage: studio_png.py same-pixels PNG RGBA W H | write PNG W H")
+    sys.exit("usage: studio_png.py same-pixels PNG RGBA W H | write PNG W H | similar A B C TOL")

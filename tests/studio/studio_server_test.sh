@@ -250,6 +250,111 @@ expect 200 "swap.toml with its colouring" GET "/api/preset?file=swap.toml" "${au
   pass "a folder preset brings NAME.colouring.toml" || fail "swap.toml: $(cat "$work/body")"
 expect 400 "save over a preset opened from the folder" POST /api/save "${auth[@]}" --data "${preset/#\{/\{\"file\": \"swap.toml\",}"
 
+# ---- Flames: a flame of the folder opened, rendered, edited and saved (docs/studio.md, "Flames") ----
+# A flame's document is larger than cpp-httplib takes as a form (8 KiB): sent as JSON, as the page does.
+jsonh=(-H 'Content-Type: application/json')
+palette=$("$py" -c "print(''.join('%02X%02X%02X' % (k, 255 - k, (4 * k) % 256) for k in range(256)))")
+cat >folder/pair.flame <<XML
+<flames>
+<flame name="spiral" size="96 72" center="0.1 -0.2" scale="30" quality="40" oversample="1"
+  filter="0.5" brightness="4" gamma="2.5" background="0 0 0">
+ <xform weight="0.6" color="0" linear="0.5" julian="0.5" julian_power="3" julian_dist="1"
+  coefs="0.6 0.2 -0.2 0.6 0.3 -0.1"/>
+ <xform weight="0.4" color="1" color_speed="0.3" spherical="1" coefs="0.5 -0.3 0.3 0.5 -0.4 0.2"
+  post="1 0 0 1 0.1 0"/>
+ <finalxform color="0.5" linear="1" coefs="1.1 0 0 1.1 0 0"/>
+ <palette count="256" format="RGB">$palette</palette>
+</flame>
+<flame name="turned" size="80 60" center="0 0" scale="24" rotate="30" quality="40" palette="15" hue="0.2">
+ <xform weight="1" color="0" linear="1" coefs="0.5 0 0 0.5 0.5 0"/>
+ <xform weight="1" color="1" swirl="1" coefs="0.5 0 0 0.5 -0.5 0.3"/>
+</flame>
+<flame><xform weight="1" nope="1" coefs="0.5 0 0 0.5 0 0"/><palette count="256" format="RGB">$palette</palette></flame>
+</flames>
+XML
+expect 200 "the folder with a flame file" GET /api/folder "${auth[@]}"
+listing=$(json "'; '.join(r['file'] + ':' + r['entry'] + ':' + str(r['maps']) + ':' + (r['problem'].replace('$work/folder/', '') or 'ok') for r in d if r.get('flame'))")
+[[ $listing == 'pair.flame:spiral:2:ok; pair.flame:turned:2:ok; pair.flame:2:0:pair.flame: flame "#2": xform 0: unknown variation "nope"' ]] &&
+  pass "each flame of pair.flame listed as FILE:NAME (the unusable with its reason)" || fail "flames listed: $listing"
+expect 200 "the variations" GET /api/flame/variations "${auth[@]}"
+[[ $(json "[v['params'] for v in d if v['name'] == 'julian'][0]") == "[{'default': 1.0, 'name': 'julian_power'}, {'default': 1.0, 'name': 'julian_dist'}]" ]] &&
+  pass "the variations: julian with its parameters" || fail "variations: $(json "[v for v in d if v['name'] == 'julian']")"
+expect 200 "a flame of the folder" GET "/api/preset?file=pair.flame&entry=spiral" "${auth[@]}"
+cp "$work/body" "$work/spiral.json"
+# coefs="a b c d e f" is x' = a·x + c·y + e, y' = b·x + d·y + f in the flame plane (y down): the
+# editor's map, y up, is [a, -c, -b, d, e, -f].
+[[ $(json "d['maps'][0], d['flame']['xforms'][1]['variations'], d['flame']['final']['coefs'], d['flame']['palette']['colours'][1]") == \
+   "[0.6, 0.2, -0.2, 0.6, 0.3, 0.1] [{'name': 'spherical', 'params': {}, 'weight': 1.0}] [1.1, 0.0, 0.0, 1.1, 0.0, 0.0] [0.00392156862745098, 0.996078431372549, 0.01568627450980392, 1.0]" ]] &&
+  pass "a flame's document: the editor-plane map, variations, final xform, palette" || fail "spiral: $(head -c 600 "$work/body")"
+# flame_pixels DOC SIZE CLI_SPEC WHAT: the studio's pixels of DOC are `ifsfx render CLI_SPEC`'s
+flame_pixels() {
+  local doc=$1 size=$2 spec=$3 what=$4 c
+  c=$(code POST /api/render "${auth[@]}" "${jsonh[@]}" --data "$("$py" -c "import json; d = json.load(open('$doc')); d.update(size='$size', format='rgba'); print(json.dumps(d))")")
+  "$ifsfx" render "$spec" --size "$size" -q -o "$work/cli-flame.png" 2>"$work/cli-flame.err" || fail "$what: ifsfx render $spec: $(cat "$work/cli-flame.err")"
+  [[ $c == 200 ]] && "$py" "$png_tool" same-pixels "$work/cli-flame.png" "$work/body" "${size%x*}" "${size#*x}" &&
+    pass "$what: the studio's pixels are ifsfx render's" || fail "$what: $c, not ifsfx render's pixels ($(head -c 200 "$work/body" | tr -d '\0'))"
+}
+flame_pixels "$work/spiral.json" 96x72 folder/pair.flame:spiral "spiral"
+[[ $(header X-Ifsfx-View) == "-1.5,-1,1.7000000000000002,1.4" ]] &&
+  pass "the flame's view: its camera, y up" || fail "the flame's view: $(header X-Ifsfx-View)"
+code GET "/api/preset?file=pair.flame&entry=turned" "${auth[@]}" >/dev/null && cp "$work/body" "$work/turned.json"
+flame_pixels "$work/turned.json" 80x60 folder/pair.flame:turned "a turned camera and a library palette"
+# An edit (a map moved, a variation's weight and parameter), saved, renders as the page showed it
+"$py" -c "
+import json
+d = json.load(open('$work/spiral.json'))
+d['maps'][1][4] += 0.25
+d['flame']['xforms'][0]['variations'][1]['weight'] = 0.7
+d['flame']['xforms'][0]['variations'][1]['params']['julian_power'] = 5
+d['flame']['xforms'][1]['variations'].append({'name': 'swirl', 'weight': 0.2})
+json.dump(d, open('$work/edited.json', 'w'))
+d['file'] = 'edited.flame'
+json.dump(d, open('$work/save.json', 'w'))"
+expect 200 "save a flame" POST /api/save "${auth[@]}" "${jsonh[@]}" --data "@$work/save.json"
+grep -q 'julian="0.7" julian_power="5" julian_dist="1"' folder/edited.flame && grep -q 'swirl="0.2"' folder/edited.flame &&
+  pass "edited.flame holds the edits" || fail "edited.flame: $(cat folder/edited.flame | head -5)"
+flame_pixels "$work/edited.json" 96x72 folder/edited.flame "the saved flame"
+expect 200 "reopen the saved flame" GET "/api/preset?file=edited.flame" "${auth[@]}"
+"$py" -c "
+import json, sys
+a, b = json.load(open('$work/edited.json')), json.load(open('$work/body'))
+a['flame']['xforms'][1]['variations'][1]['params'] = {}  # swirl has none
+sys.exit(a['maps'] != b['maps'] or a['flame'] != b['flame'])" &&
+  pass "the saved flame reads back as the document saved" || fail "reopened: $(head -c 300 "$work/body")"
+if command -v flam3-render >/dev/null; then
+  # flam3-render draws the saved file as ifsfx does: as alike as two flam3 seeds are, less 0.05
+  for seed in 1 2; do
+    env out="$work/flam3-$seed.png" seed=$seed isaac_seed=$seed transparency=0 format=png verbose=0 \
+      flam3-render <folder/edited.flame >/dev/null 2>&1 ||
+      fail "flam3-render refused edited.flame"
+  done
+  "$ifsfx" render folder/edited.flame -q -o "$work/ifsfx-edited.png"
+  "$py" "$png_tool" similar "$work/flam3-1.png" "$work/flam3-2.png" "$work/ifsfx-edited.png" 0.05 &&
+    pass "flam3-render renders the saved flame as ifsfx does ($("$py" "$png_tool" similar "$work/flam3-1.png" "$work/flam3-2.png" "$work/ifsfx-edited.png" 0.05 2>&1))" ||
+    fail "flam3-render and ifsfx differ on edited.flame: $("$py" "$png_tool" similar "$work/flam3-1.png" "$work/flam3-2.png" "$work/ifsfx-edited.png" 0.05 2>&1)"
+fi
+bad_flame() {  # bad_flame WHAT PYTHON_EDIT EXPECTED_MESSAGE_PART [FILE]: a refused flame request
+  "$py" -c "
+import json
+d = json.load(open('$work/spiral.json'))
+$2
+json.dump(d, open('$work/bad.json', 'w'))"
+  expect 400 "$1" POST "/api/${4:-render}" "${auth[@]}" "${jsonh[@]}" --data "@$work/bad.json"
+  grep -qF "$3" "$work/body" || fail "$1: the message $(cat "$work/body") lacks '$3'"
+}
+bad_flame "an unknown variation" "d['flame']['xforms'][0]['variations'][0]['name'] = 'nope'" 'flame.xforms[0].variations[0].name: a variation'
+bad_flame "an unknown parameter" "d['flame']['xforms'][0]['variations'][1]['params']['power'] = 2" 'the parameters of julian (got \"power\")'
+bad_flame "a weight that is no number" "d['flame']['xforms'][1]['weight'] = 'x'" 'flame.xforms[1].weight: must be a finite number'
+bad_flame "a negative weight (the reader's rule)" "d['flame']['xforms'][1]['weight'] = -1" 'xform 1: weight: must be >= 0'
+bad_flame "one xform for two maps" "d['flame']['xforms'].pop()" 'one per map'
+bad_flame "a palette of 3 colours" "d['flame']['palette']['colours'] = d['flame']['palette']['colours'][:3]" 'must be 256 colours'
+bad_flame "a flame in tops mode" "d['mode'] = 'tops'" 'a flame renders in mode measure'
+bad_flame "a flame saved as .toml" "d['file'] = 'spiral.toml'" 'a flame is saved as NAME.flame' save
+bad_flame "a flame saved over its file" "d['file'] = 'pair.flame'" 'pair.flame' save
+bad_flame "a flame sent to the movie filter" "d['movie'] = 'x.mp4'; d['file'] = 'x.mp4'; d['kind'] = 'filter'" 'an affine IFS is needed here' jobs
+expect 404 "a flame that is not in the file" GET "/api/preset?file=pair.flame&entry=nothing" "${auth[@]}"
+expect 400 "the unusable flame" GET "/api/preset?file=pair.flame&entry=2" "${auth[@]}"
+
 # Sources: the folder's images, shown as RGBA at most 1024 pixels a side
 expect 200 "sources" GET /api/sources "${auth[@]}"
 [[ $(json "d") == "['sample', 'photo.png']" ]] && pass "sources: sample and photo.png" || fail "sources: $(cat "$work/body")"
