@@ -163,6 +163,7 @@ void run(const char* name, const PluginSettings& settings, const Webcam& cam, do
   std::vector<std::pair<std::int64_t, double>> ready_of_frame;
   std::set<std::uint64_t> shown;
   std::int64_t measured = 0, k = 0;
+  std::uint64_t first = 0;
   bool warm = false;
   double cpu_start = 0;
   for (;; ++k) {
@@ -174,15 +175,17 @@ void run(const char* name, const PluginSettings& settings, const Webcam& cam, do
     const auto t0 = Clock::now();
     const Shown s = worker.exchange(frame);
     const auto t1 = Clock::now();
-    if (!warm) {  // the maps are being built: not measured
+    if (!warm) {  // the maps are being built: not measured, nor the first picture (of a frame
+                  // that waited for them)
       warm = s.written;
+      first = s.timestamp;
       if (warm) fmt::print("{}: maps ready after {:.0f} ms\n", name, Ms(t1 - start).count());
       cpu_start = cpu_seconds();
       continue;
     }
     ++measured;
     in_filter.push_back(Ms(t1 - t0).count());
-    if (shown.insert(s.timestamp).second) {
+    if (s.timestamp != first && shown.insert(s.timestamp).second) {
       ready.push_back(Ms(s.finished - s.submitted).count());
       ready_of_frame.emplace_back(static_cast<std::int64_t>(s.timestamp / interval.count()),
                                   ready.back());

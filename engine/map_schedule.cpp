@@ -52,8 +52,10 @@ MapSchedule::~MapSchedule() {
 std::shared_future<MapSchedule::Table>& MapSchedule::keyframe(std::int64_t k) {
   auto it = keyframes_.find(k);
   if (it == keyframes_.end()) {
-    auto future = std::async(std::launch::async, [this, k] {
-      if (options_.live) lower_priority();
+    // Live, the builds before the first picture keep the caller's priority: no picture waits on
+    // the thread then, the frames pass through until it is ready.
+    auto future = std::async(std::launch::async, [this, k, lower = options_.live && started_] {
+      if (lower) lower_priority();
       return std::make_shared<const PreparedStealMap>(builder_(k));
     });
     it = keyframes_.emplace(k, future.share()).first;

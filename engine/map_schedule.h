@@ -16,8 +16,8 @@
 // (position (j, 0), the picture of frame j·K); with none ready (the source went back in time), the
 // last picture's maps. Each is a picture the frame-keyed rule gives for some frame, and but for a
 // source gone back never a later one than asked. Keyframes are built one at a time, in order, on a
-// thread at a lower priority (nice 10, so that the frames' own work comes first; the engine's
-// builders use one thread for a live source), the lowest
+// thread at a lower priority once a picture has been shown (nice 10, so that the frames' own work
+// comes first; the engine's builders use one thread for a live source), the lowest
 // keyframe of k … k + lookahead not yet built next: a keyframe the position has passed before its
 // build started is never built. A build already running when the position passes it is let finish
 // (it becomes the newest ready keyframe ≤ k and is shown, so the animation moves on at the builds'
