@@ -14,7 +14,7 @@
 // the first picture's (it waits for keyframe k alone). The position (k, φ) is shown exactly when
 // keyframes k and k + 1 are ready; otherwise the newest ready keyframe j ≤ k is shown alone
 // (position (j, 0), the picture of frame j·K); with none ready (the source went back in time), the
-// last picture's maps. Each is a picture the frame-keyed rule gives for some frame, and but for a
+// last picture's maps. Each is a pair of maps the frame-keyed rule gives some frame, and but for a
 // source gone back never a later one than asked. Keyframes are built one at a time, in order, on a
 // thread at a lower priority once a picture has been shown (nice 10, so that the frames' own work
 // comes first; the engine's builders use one thread for a live source), the lowest
