@@ -22,6 +22,10 @@
 #include <fmt/format.h>
 #include <media-io/video-io.h>
 
+#include "engine/drift.h"
+#include "ifs/parallel.h"
+#include "ifs/sampling.h"
+#include "ifs/steal_map.h"
 #include "plugins/obs/filter_worker.h"
 #include "video/camera_synthetic.h"
 
@@ -70,7 +74,85 @@ struct Webcam {
   }
 };
 
-void run(const char* name, const PluginSettings& settings, const Webcam& cam, double seconds) {
+// Wall and CPU milliseconds (the whole process: nothing else of it runs then) of the fastest of
+// `times` calls of fn: the quiet cost, without the load's noise.
+struct Cost {
+  double wall = 1e300, cpu = 0;
+};
+template <typename Fn>
+Cost best_of(int times, Fn&& fn) {
+  Cost best;
+  for (int i = 0; i < times; ++i) {
+    const double c0 = cpu_seconds();
+    const auto t0 = Clock::now();
+    fn();
+    const double wall = Ms(Clock::now() - t0).count();
+    if (wall < best.wall) best = {wall, 1e3 * (cpu_seconds() - c0)};
+  }
+  return best;
+}
+
+std::string str(const Cost& c) {
+  return fmt::format("{:.1f} ({:.1f} CPU)", c.wall, c.cpu);
+}
+
+// Where a picture's time goes, each part alone on an idle worker: the colour conversions, the
+// filter through one map and through a cross-fade of two, and one drift keyframe's build (the
+// engine's builder: drift, steal map, prepared table) on one thread and on all.
+void breakdown(const PluginSettings& drift_settings, const Webcam& cam) {
+  engine::FractalEngine engine(drift_settings.engine);
+  const engine::FractalSettings& s = engine.settings();
+  StealMapOptions map_options = engine.map_options();
+  map_options.sampling.view = framed_viewport(engine.drawing(), kSize, s.sampling).view;
+  StealMap map;
+  const auto build = [&](int threads, double seconds) {
+    map_options.sampling.threads = threads;
+    map = compute_steal_map(engine::drift(engine.drawing(), seconds, engine.drift_options()),
+                            engine.colouring(), kSize, map_options);
+    return engine::prepare_filter(map, kSize, s.interpolation, threads);
+  };
+  const PreparedStealMap a = build(1, 0), b = build(1, 0.4);
+  cv::Mat bgr, out;
+  std::vector<cv::Mat> planes = cam.frames[0];
+  const Cost in =
+      best_of(10, [&] { bgr = to_engine(PixelFormat::nv12, cam.frames[0], cam.yuv, kSize); });
+  const Cost back = best_of(10, [&] { from_engine(bgr, PixelFormat::nv12, cam.yuv, planes); });
+  engine::FilterOptions one = engine.filter_options();
+  std::string filters;
+  for (const int threads : {1, 0}) {
+    one.threads = threads;
+    filters += fmt::format(
+        "\n  {} thread(s): filter one map {}, cross-fade of two {}, drift keyframe build {} of "
+        "which the prepared table {}",
+        resolve_threads(threads), str(best_of(10, [&] { engine::filter_frame(bgr, a, one, out); })),
+        str(best_of(10, [&] { engine::filter_frame(bgr, a, b, 0.5, one, out); })),
+        str(best_of(3, [&] { build(threads, 0.8); })),
+        str(best_of(3, [&] { engine::prepare_filter(map, kSize, s.interpolation, threads); })));
+  }
+  fmt::print("where the time goes (ms, fastest of 10, alone): NV12 in {}, out {}{}; load {}\n",
+             str(in), str(back), filters, load());
+}
+
+// The picture-ready latencies of the frames shown, by the frame's phase within its keyframe
+// interval (frame mod K): a keyframe build that slows the pictures shows as slow phases.
+void by_phase(const std::vector<std::pair<std::int64_t, double>>& ready, int interval) {
+  std::string line;
+  for (int phase = 0; phase < interval; ++phase) {
+    std::vector<double> v;
+    int late = 0;
+    for (const auto& [frame, ms] : ready)
+      if (frame % interval == phase) {
+        v.push_back(ms);
+        late += ms > 1e3 / kFps;
+      }
+    line += fmt::format(" {}:{:.0f}/{:.0f}{}", phase, percentile(v, 0.5), percentile(v, 1),
+                        late > 0 ? fmt::format("({} late)", late) : "");
+  }
+  fmt::print("  picture ready by phase (frame mod {}: p50/max ms):{}\n", interval, line);
+}
+
+void run(const char* name, const PluginSettings& settings, const Webcam& cam, double seconds,
+         int keyframe_interval) {
   FilterWorker worker(kFps);
   worker.configure(settings);
   FrameData frame{.format = PixelFormat::nv12, .size = kSize, .yuv = cam.yuv};
@@ -78,8 +160,10 @@ void run(const char* name, const PluginSettings& settings, const Webcam& cam, do
   const auto interval = std::chrono::nanoseconds(static_cast<std::int64_t>(1e9 / kFps));
   const auto start = Clock::now();
   std::vector<double> ready, shown_after, in_filter;
+  std::vector<std::pair<std::int64_t, double>> ready_of_frame;
   std::set<std::uint64_t> shown;
   std::int64_t measured = 0, k = 0;
+  std::uint64_t first = 0;
   bool warm = false;
   double cpu_start = 0;
   for (;; ++k) {
@@ -91,16 +175,20 @@ void run(const char* name, const PluginSettings& settings, const Webcam& cam, do
     const auto t0 = Clock::now();
     const Shown s = worker.exchange(frame);
     const auto t1 = Clock::now();
-    if (!warm) {  // the maps are being built: not measured
+    if (!warm) {  // the maps are being built: not measured, nor the first picture (of a frame
+                  // that waited for them)
       warm = s.written;
+      first = s.timestamp;
       if (warm) fmt::print("{}: maps ready after {:.0f} ms\n", name, Ms(t1 - start).count());
       cpu_start = cpu_seconds();
       continue;
     }
     ++measured;
     in_filter.push_back(Ms(t1 - t0).count());
-    if (shown.insert(s.timestamp).second) {
+    if (s.timestamp != first && shown.insert(s.timestamp).second) {
       ready.push_back(Ms(s.finished - s.submitted).count());
+      ready_of_frame.emplace_back(static_cast<std::int64_t>(s.timestamp / interval.count()),
+                                  ready.back());
       shown_after.push_back(Ms(t0 - s.submitted).count());
     }
     if (measured >= static_cast<std::int64_t>(seconds * kFps)) break;
@@ -116,6 +204,7 @@ void run(const char* name, const PluginSettings& settings, const Webcam& cam, do
       percentile(ready, 0.95), percentile(ready, 1), percentile(shown_after, 0.5),
       percentile(shown_after, 0.95), percentile(in_filter, 0.5), percentile(in_filter, 0.95),
       percentile(in_filter, 1), cpu_per_picture, load());
+  if (settings.engine.animate != engine::Animate::none) by_phase(ready_of_frame, keyframe_interval);
 }
 
 }  // namespace
@@ -125,10 +214,11 @@ int main(int argc, char** argv) {
   const int interval = argc > 2 ? std::stoi(argv[2]) : 12;
   const Webcam cam;
   PropertyValues values;  // the filter's defaults: sierpinski-triangle, as `ifsfx cam`
-  run("fixed/1280x720@30 nv12", settings_of(values), cam, seconds);
+  run("fixed/1280x720@30 nv12", settings_of(values), cam, seconds, interval);
   values.animate = "drift";
   values.keyframe_interval = interval;
   run(fmt::format("drift/1280x720@30 nv12, a map every {} frames", interval).c_str(),
-      settings_of(values), cam, seconds);
+      settings_of(values), cam, seconds, interval);
+  breakdown(settings_of(values), cam);
   return 0;
 }

@@ -94,7 +94,11 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
   const cv::Size size = output_size.empty() ? frame_size : output_size;
   const FractalSettings& s = settings_;
   StealMapOptions map_options = this->map_options();
+  // A live source's keyframes are built on one thread beside the frames (map_schedule.h); the
+  // maps do not depend on the threads.
   const int threads = s.sampling.threads;
+  const int build_threads = s.live ? 1 : threads;
+  const ScheduleOptions schedule{.live = s.live};
   const Interpolation interpolation = s.interpolation;
   switch (s.animate) {
     case Animate::none:
@@ -105,6 +109,7 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
       // Keyframe k shows F drifted to time k·K/fps, in a view fixed from F itself so that the
       // frame does not jump as the attractor moves.
       map_options.sampling.view = framed_viewport(F_, size, s.sampling).view;
+      map_options.sampling.threads = build_threads;
       // With a loop of L frames and Q keyframes, keyframe k shows time (k mod Q) · L / Q frames:
       // keyframe Q is keyframe 0, and the drift's own period is the loop.
       schedule_ = std::make_unique<MapSchedule>(
@@ -115,9 +120,9 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
                                            : static_cast<double>(k) * interval;
             const Ifs now = drift(F, frames / fps, drift_options);
             return prepare_filter(compute_steal_map(now, G, size, map_options), frame_size,
-                                  interpolation, threads);
+                                  interpolation, build_threads);
           },
-          s.keyframe_interval);
+          s.keyframe_interval, schedule);
       return;
     }
     case Animate::superifs: {
@@ -126,6 +131,7 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
       TextureOptions t;
       t.sampling = s.sampling;
       t.sampling.view.reset();  // the superIFS brings its own
+      t.sampling.threads = build_threads;
       t.count = s.buffers;
       t.mode = TextureMode::steal;
       t.source = cv::Mat(frame_size, CV_8UC3);  // only its size: it sets the descent depth
@@ -134,9 +140,9 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
       schedule_ = std::make_unique<MapSchedule>(
           [=, sequence = sequence_](std::int64_t k) {
             return prepare_filter(sequence->map_at(std::max<std::int64_t>(k, 0)), frame_size,
-                                  interpolation, threads);
+                                  interpolation, build_threads);
           },
-          s.keyframe_interval);
+          s.keyframe_interval, schedule);
       return;
     }
   }

@@ -92,6 +92,12 @@ struct FractalSettings {
   // is periodic with period loop / frame rate, the superIFS steps close into a loop of textures.
   std::int64_t loop = 0;
 
+  // A live source (a camera through the OBS filter), timed by its clock: an animation's frames
+  // never wait for a late keyframe but show the nearest earlier ready maps, and its keyframes are
+  // built one at a time on one thread at a lower priority (engine/map_schedule.h, "Live"). Off
+  // (files, frame-keyed): a frame's picture depends only on its index.
+  bool live = false;
+
   friend bool operator==(const FractalSettings&, const FractalSettings&) = default;
 };
 

@@ -52,6 +52,9 @@ PluginSettings settings_of(const PropertyValues& v) {
   s.buffers = static_cast<int>(v.buffers);
   s.keyframe_interval = static_cast<int>(v.keyframe_interval);
   s.loop = v.loop;
+  // A camera's frames come at its pace: an animation never holds one back for a late keyframe
+  // (engine/map_schedule.h, "Live"; docs/obs.md).
+  s.live = true;
   // `ifsfx filter`'s rule (check_filter_rules): a loop repeats an animation.
   if (s.loop > 0 && s.animate == engine::Animate::none)
     throw Error(ErrorKind::invalid_argument,

@@ -2,8 +2,11 @@
 #include "engine/map_schedule.h"
 
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <mutex>
 #include <set>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -65,6 +68,86 @@ TEST(map_schedule, builder_error_reaches_the_caller) {
       5);
   EXPECT_NO_THROW(schedule.at(0));
   EXPECT_THROW(schedule.at(5), Error);
+}
+
+// Keyframe builds the test lets finish: build(k) returns only once k is released (or after 10 s,
+// so that a schedule that waits for an unreleased keyframe fails its checks instead of hanging).
+class Gate {
+ public:
+  PreparedStealMap build(std::int64_t k) {
+    std::unique_lock lock(mutex_);
+    started_.insert(k);
+    changed_.notify_all();
+    changed_.wait_for(lock, std::chrono::seconds(10), [&] { return released_.count(k) > 0; });
+    return table_for(k);
+  }
+  void release(std::initializer_list<std::int64_t> keyframes) {
+    std::lock_guard lock(mutex_);
+    released_.insert(keyframes);
+    changed_.notify_all();
+  }
+  bool started(std::int64_t k) {
+    std::lock_guard lock(mutex_);
+    return started_.count(k) > 0;
+  }
+  void wait_started(std::int64_t k) {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [&] { return started_.count(k) > 0; });
+  }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::set<std::int64_t> started_, released_;
+};
+
+// The maps of `frame` once `done` holds for them: a released build becomes ready a moment after
+// it returns.
+template <typename Done>
+MapSchedule::Blend once(MapSchedule& schedule, std::int64_t frame, Done done) {
+  MapSchedule::Blend b = schedule.at(frame);
+  for (int i = 0; i < 1000 && !done(b); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    b = schedule.at(frame);
+  }
+  return b;
+}
+
+TEST(map_schedule, live_frames_never_wait_for_a_late_keyframe_nor_build_one_skipped) {
+  Gate gate;
+  gate.release({0, 1});
+  MapSchedule schedule([&](std::int64_t k) { return gate.build(k); }, 4, {.live = true});
+  // The first picture waits for its keyframe; frame 3 then fades 0 into 1 as a file's does.
+  EXPECT_EQ(keyframe_of(*schedule.at(0).from), 0);
+  MapSchedule::Blend b = once(schedule, 3, [](const auto& m) { return keyframe_of(*m.to) == 1; });
+  EXPECT_EQ(keyframe_of(*b.from), 0);
+  EXPECT_EQ(keyframe_of(*b.to), 1);
+  EXPECT_DOUBLE_EQ(b.t, 0.75);
+  // Keyframe 2 is building and held back: frames 4 and 6 show keyframe 1 alone (frame 4's
+  // picture) at once instead of waiting for it.
+  gate.wait_started(2);
+  const std::int64_t stalls = schedule.stalls();
+  for (const std::int64_t frame : {4, 6}) {
+    b = schedule.at(frame);
+    EXPECT_EQ(keyframe_of(*b.from), 1) << frame;
+    EXPECT_EQ(keyframe_of(*b.to), 1) << frame;
+    EXPECT_EQ(b.t, 0) << frame;
+  }
+  EXPECT_EQ(schedule.stalls(), stalls + 2) << "the frames shown at an earlier position";
+  // The source jumps to frame 20 (keyframe 5) while 2 builds: one build at a time, so 3 and 4
+  // are not started; once 2 is ready it is shown (the newest ready at or before 5) and 5 starts.
+  EXPECT_EQ(keyframe_of(*schedule.at(20).from), 1);
+  gate.release({2});
+  b = once(schedule, 20, [](const auto& m) { return keyframe_of(*m.from) == 2; });
+  EXPECT_EQ(keyframe_of(*b.from), 2);
+  gate.wait_started(5);
+  gate.release({5, 6, 7});
+  b = once(schedule, 20, [](const auto& m) { return keyframe_of(*m.to) == 6; });
+  EXPECT_EQ(keyframe_of(*b.from), 5);
+  EXPECT_EQ(keyframe_of(*b.to), 6);
+  EXPECT_FALSE(gate.started(3));
+  EXPECT_FALSE(gate.started(4));
+  gate.release({3, 4, 8});
 }
 
 TEST(map_schedule, interval_must_be_positive) {

@@ -105,6 +105,13 @@ TEST(filter_worker, a_preset_that_fails_to_build_says_why) {
   EXPECT_NE(worker.status(), "");
 }
 
+TEST(settings, the_filter_is_a_live_source) {
+  // The plugin's frames never wait for a drift keyframe (engine/map_schedule.h, "Live").
+  PropertyValues v;
+  v.animate = "drift";
+  EXPECT_TRUE(settings_of(v).engine.live);
+}
+
 TEST(settings, a_loop_needs_an_animation) {
   PropertyValues v;
   v.loop = 48;

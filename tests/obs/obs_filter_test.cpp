@@ -100,8 +100,11 @@ TEST_F(obs_filter, bgra_pictures_are_the_clis_bit_for_bit) {
 
 TEST_F(obs_filter, drift_is_keyed_on_the_frame_timestamps) {
   constexpr int kFrames = 24;
-  std::vector<cv::Mat> frames;
-  for (int i = 0; i < kFrames; ++i) frames.push_back(test_frame(i));
+  // One picture throughout, so that a picture names the time of its maps alone: a live source
+  // whose next keyframe is late shows the newest ready one over the frame of now (the maps of an
+  // earlier frame, engine/map_schedule.h "Live"), which `ifsfx filter` gives for no frame of a
+  // changing sequence.
+  const std::vector<cv::Mat> frames(kFrames, test_frame(0));
   const std::vector<cv::Mat> expected = cli_frames(
       frames, "--preset maple-leaf --animate drift --drift-amount 0.3 --drift-speed 1", "drift");
   Chain c(R"({"preset": "maple-leaf", "animate": "drift", "drift_amount": 0.3,
@@ -111,7 +114,8 @@ TEST_F(obs_filter, drift_is_keyed_on_the_frame_timestamps) {
   std::int64_t index = 0;
   ASSERT_TRUE(show_until(c.chain.source, bgra_frame(frames[0]), index, expected[0], 0));
   // Then frame i at timestamp i: each picture is the CLI's frame j for the newest j the worker
-  // finished, never later than i and never going back.
+  // finished (or the keyframe before it, when the next one was late), never later than i and never
+  // going back.
   int last = 0, distinct = 0;
   for (int i = 1; i < kFrames; ++i) {
     std::int64_t at = i;
