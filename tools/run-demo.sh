@@ -30,9 +30,9 @@ $ifsfx render barnsley-fern --mode steal --exact --size 1024x1024 \
   --source /usr/share/doc/opencv-doc/examples/data/baboon.jpg -o out/fern-steal.png
 # A fractal flame (docs/flames.md) as a preset: the orb stealing the photo's colours through the
 # chaos game, and the clip filtered through it.
-$ifsfx render docs/images/flame-orb.flame --mode steal --size 768x768 \
+$ifsfx render docs/images/flame-orb.flame --mode steal --size 384x384 --quality 16 \
   --source /usr/share/doc/opencv-doc/examples/data/baboon.jpg -o out/flame-orb-steal.png
-$ifsfx filter "$clip" --preset docs/images/flame-orb.flame -o out/vtest-flame-orb.mp4
+$ifsfx filter "$clip" --preset docs/images/flame-orb.flame --quality 16 -o out/vtest-flame-orb.mp4
 # The README's pictures (docs/images/): 256 pixels wide, JPEG, into out/readme/; copy them over
 # docs/images/ to refresh the README.
 mkdir -p out/readme
