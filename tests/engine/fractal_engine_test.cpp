@@ -113,7 +113,7 @@ TEST(fractal_engine, settings_default_to_the_library_sampling) {
 
 TEST(fractal_engine, bad_settings_fail_before_any_frame) {
   FractalSettings s;
-  s.drawing.maps[1].e = std::nan("");  // a coefficient that is not a number
+  std::get<Ifs>(s.drawing).maps[1].e = std::nan("");  // a coefficient that is not a number
   EXPECT_THROW(FractalEngine{s}, Error);
   s.drawing = load_ifs("barnsley-fern").ifs;
   s.colouring = load_ifs("sierpinski-triangle").ifs;
