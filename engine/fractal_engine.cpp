@@ -54,9 +54,11 @@ FractalEngine::FractalEngine(const FractalSettings& settings) : settings_(settin
   const std::size_t n = map_count(F_);
   G_ = settings.colouring ? *settings.colouring : default_colouring(n);
   if (G_.size() != n)
-    throw Error(ErrorKind::invalid_ifs,
-                fmt::format("colouring: must have as many maps as {} has {} (got {} for {})", name_,
-                            std::holds_alternative<Ifs>(F_) ? "maps" : "xforms", G_.size(), n));
+    throw Error(
+        ErrorKind::invalid_ifs,
+        fmt::format("colouring: must have {} {} (got {} for {})",
+                    std::holds_alternative<Ifs>(F_) ? "as many maps as" : "one map per xform of",
+                    name_, G_.size(), n));
   validate(G_, "colouring", {.allow_expansive = true});
   if (std::holds_alternative<flame::Flame>(F_) && settings.sampling.seamless)
     throw Error(ErrorKind::invalid_argument,
