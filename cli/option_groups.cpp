@@ -15,8 +15,8 @@ using engine::Animate;
 void add_fractal_filter_options(CLI::App& cmd, FractalFilterArgs& args) {
   constexpr const char* kFractal = "Fractal";
   cmd.add_option("--preset", args.preset,
-                 "The drawing IFS F: a shipped name (see `ifsfx presets`), a .toml/.ifs path, or "
-                 "FILE.ifs:NAME")
+                 "The drawing IFS F: a shipped name (see `ifsfx presets`), a .toml/.ifs path, "
+                 "FILE.ifs:NAME, or a fractal flame, FILE.flame[:NAME] (through the chaos game)")
       ->capture_default_str()
       ->group(kFractal);
   cmd.add_option("--colouring", args.colouring,

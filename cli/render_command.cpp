@@ -112,7 +112,7 @@ void print_steal_summary(const StealMapStats& ss, bool exact) {
 // joins `staged`, to be put in place with the image (commit_together). With --seamless the modes
 // render one period, laid out as --tiles and --tile-offset say (the steal mode lays out its map,
 // so that --save-map colours the whole picture too).
-StillResult render_picture(const Ifs& ifs, cv::Size size, const RenderArgs& args,
+StillResult render_picture(const engine::Drawing& F, cv::Size size, const RenderArgs& args,
                            const RenderOptions& options, const TileLayout& layout,
                            const OutputOptions& output, std::vector<OutputFile>& staged) {
   StillJob job{.mode = args.mode,
@@ -126,9 +126,9 @@ StillResult render_picture(const Ifs& ifs, cv::Size size, const RenderArgs& args
   if (render_mode_info(args.mode).source) {
     // Read first: a missing or unreadable source fails before any long work.
     job.source = read_image(args.source).pixels;
-    job.colouring = colouring_option(args.colouring, ifs);
+    job.colouring = engine::colouring_for(args.colouring, F, "--colouring");
   }
-  StillResult still = render_still(ifs, job);
+  StillResult still = render_still(F, job);
   if (still.map && !args.save_map.empty()) {
     OutputFile file(args.save_map, output);
     save(*still.map, file);
@@ -244,6 +244,49 @@ void run_flame_render(const RenderArgs& args) {
         args.output);
 }
 
+// `ifsfx render FILE.flame[:NAME] --mode attractor|tops|steal -o OUT`: the flame's xforms through
+// the chaos game (flame/flame_chaos.h), framed by its camera, at its own size unless --size is
+// given; --chaos is implied, --exact refused (a flame's xforms have no inverse).
+void run_flame_chaos_render(const RenderArgs& args) {
+  check_mode_options(args);
+  for (const char* flag :
+       {"--view", "--margin", "--seamless", "--tiles", "--tile-offset", "--allow-expansive"})
+    if (args.was_given(flag))
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("{}: a flame brings its own (got {})", flag, args.preset));
+  StopSignals signals;
+  const OutputOptions output = checked_outputs(args);
+  const flame::Flame f = flame::read_flame(args.preset);
+  const cv::Size size =
+      args.was_given("--size") ? size_option(args.size) : cv::Size{f.camera.width, f.camera.height};
+  RenderArgs chaos = args;
+  chaos.exact = args.map_method_given && args.exact;  // refused by render_still when asked for
+  RenderOptions options = args.options;
+  options.sampling.cancel = output.cancel;
+  std::vector<OutputFile> staged;
+  const StillResult still = render_picture(f, size, chaos, options, {}, output, staged);
+  if (!args.save_flame.empty()) {
+    OutputFile file(args.save_flame, output);
+    write_file(file, flame::flame_xml(f));
+    staged.push_back(std::move(file));
+  }
+  const std::string seed = std::to_string(options.sampling.seed);
+  OutputFile image_file(args.output, output);
+  write_image(
+      image_file, still.image,
+      {.bits = args.bits,
+       .smallest = args.smallest,
+       .metadata = {{"ifsfx:flame", args.preset},
+                    {"ifsfx:mode", to_string(args.mode)},
+                    {"ifsfx:seed", seed},
+                    {"ImageDescription", fmt::format("ifsfx render {} --mode {} --seed {}",
+                                                     args.preset, to_string(args.mode), seed)}}});
+  staged.push_back(std::move(image_file));
+  commit_together(staged);
+  if (!args.quiet)
+    print_summary(f.name.empty() ? args.preset : f.name, still.image.size(), chaos, still.stats);
+}
+
 // --mode, its choices and one line of help for each, from the modes' table (run/render_modes.h).
 void add_mode_option(CLI::App& cmd, RenderMode& mode) {
   std::map<std::string, RenderMode> modes;
@@ -295,8 +338,9 @@ void add_render_command(CLI::App& app) {
   cmd->add_option(
          "preset", args->preset,
          "Preset: a shipped name (see `ifsfx presets`), a .toml/.ifs path, FILE.ifs:NAME, or a "
-         "flame: FILE.flame, FILE.flame:NAME or FILE.flame:INDEX (rendered as flam3 does, at "
-         "its own size and quality unless --size and --quality are given)")
+         "flame: FILE.flame, FILE.flame:NAME or FILE.flame:INDEX (its measure rendered as flam3 "
+         "does, at its own size and quality unless --size and --quality are given; attractor, "
+         "tops and steal through the chaos game)")
       ->required();
   cmd->add_option("-o,--output", args->output,
                   "Output image; format by extension: .png (8/16-bit), .tif, .exr (float), .jpg")
@@ -345,8 +389,10 @@ void add_render_command(CLI::App& app) {
     args->margin_given = margin->count() > 0;
     for (const CLI::Option* option : cmd->get_options())
       if (option->count() > 0) args->given.push_back(option->get_name());
-    if (flame::is_flame_spec(args->preset))
+    if (flame::is_flame_spec(args->preset) && args->mode == RenderMode::measure)
       run_flame_render(*args);
+    else if (flame::is_flame_spec(args->preset))
+      run_flame_chaos_render(*args);
     else
       run_render(*args);
   });

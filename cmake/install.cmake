@@ -34,7 +34,7 @@ include(GNUInstallDirs)
 include(CMakePackageConfigHelpers)
 
 set(IFSFX_LIBRARIES)
-foreach(lib ifs superifs collage fractaldb engine video)
+foreach(lib ifs superifs collage fractaldb flame engine video)
   if(TARGET ${lib})
     list(APPEND IFSFX_LIBRARIES ${lib})
     # libifsfx_video.a, not libvideo.a, once it lies beside every other library of the system.
@@ -106,7 +106,7 @@ endforeach()
 # Static libraries: every library they use goes into Libs/Requires (not *.private), or a plain
 # `pkg-config --libs ifsfx` would not link. Dependent libraries come first.
 set(IFSFX_PC_LIBS)
-foreach(lib video engine fractaldb collage superifs ifs)
+foreach(lib video engine flame fractaldb collage superifs ifs)
   if(lib IN_LIST IFSFX_LIBRARIES)
     string(APPEND IFSFX_PC_LIBS " -lifsfx_${lib}")
   endif()

@@ -7,11 +7,11 @@
 
 namespace ifsfx::engine {
 
-LiveDrift::LiveDrift(const Ifs& base, const Ifs& colouring, cv::Size size,
+LiveDrift::LiveDrift(const Drawing& base, const Ifs& colouring, cv::Size size,
                      const LiveDriftOptions& options)
     : base_(base), colouring_(colouring), size_(size), options_(options) {
   // The view fixed from the base IFS, so that the frame does not jump as the attractor moves.
-  options_.map.sampling.view = framed_viewport(base_, size_, options_.map.sampling).view;
+  options_.map = with_fixed_view(base_, size_, options_.map);
   if (options_.fade_frames < 1) options_.fade_frames = 1;
   current_ = std::make_shared<const PreparedStealMap>(build(0));
   previous_ = current_;
@@ -24,8 +24,8 @@ LiveDrift::~LiveDrift() {
 }
 
 PreparedStealMap LiveDrift::build(double t) const {
-  const Ifs now = drift(base_, t, options_.drift);
-  return prepare_filter(compute_steal_map(now, colouring_, size_, options_.map), size_,
+  const Drawing now = drift(base_, t, options_.drift);
+  return prepare_filter(steal_map(now, colouring_, size_, options_.map), size_,
                         options_.interpolation, options_.map.sampling.threads);
 }
 

@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// `--animate drift` for a live camera: the maps of a drifting IFS (engine/drift.h) built on a
-// worker thread that the live loop never waits for. A file filter may wait for each keyframe (its
-// frames are not going anywhere); a camera's frames are, so here the animation advances as fast as
-// maps can be built, and each new map is cross-faded in over a few frames. The frame rate stays the
-// camera's; only the pace of the drift depends on the machine.
+// `--animate drift` for a live camera: the maps of a drifting IFS or flame (engine/drawing.h) built
+// on a worker thread that the live loop never waits for. A file filter may wait for each keyframe
+// (its frames are not going anywhere); a camera's frames are, so here the animation advances as
+// fast as maps can be built, and each new map is cross-faded in over a few frames. The frame rate
+// stays the camera's; only the pace of the drift depends on the machine.
 #pragma once
 
 #include <cstdint>
 #include <future>
 #include <memory>
 
+#include "engine/drawing.h"
 #include "engine/drift.h"
 #include "engine/fractal_filter.h"
 #include "ifs/ifs.h"
@@ -32,7 +33,7 @@ class LiveDrift {
   // one in the background. Throws what drift() and compute_steal_map() throw.
   //   LiveDrift live(F, G, {1280, 720}, {.drift = {.amount = 0.05}});
   //   cv::Mat out = live.filter(frame.image, frame.timestamp);
-  LiveDrift(const Ifs& base, const Ifs& colouring, cv::Size size,
+  LiveDrift(const Drawing& base, const Ifs& colouring, cv::Size size,
             const LiveDriftOptions& options = {});
   ~LiveDrift();  // waits for the map being built
   LiveDrift(const LiveDrift&) = delete;
@@ -48,7 +49,8 @@ class LiveDrift {
  private:
   PreparedStealMap build(double t) const;
 
-  Ifs base_, colouring_;
+  Drawing base_;
+  Ifs colouring_;
   cv::Size size_;
   LiveDriftOptions options_;
   std::shared_ptr<const PreparedStealMap> previous_, current_;

@@ -99,8 +99,11 @@ Ifs drift(const Ifs& base, double t, const DriftOptions& options) {
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("drift loop: must be in [0, {:g}] seconds (got {})", kMaxDriftLoop,
                             options.loop));
-  const Box bounds = attractor_bounds(base, options.seed);
-  const double extent = std::max({bounds.width(), bounds.height(), 1e-9});
+  const auto attractor_extent = [&] {
+    const Box bounds = attractor_bounds(base, options.seed);
+    return std::max({bounds.width(), bounds.height(), 1e-9});
+  };
+  const double extent = options.extent ? *options.extent : attractor_extent();
   // A loop: time as the fraction u of the loop, on a noise of whole cycles per loop.
   const bool loop = options.loop > 0 && options.speed > 0;
   const std::int64_t cycles =

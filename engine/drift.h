@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "ifs/ifs.h"
 
@@ -40,6 +41,9 @@ struct DriftOptions {
   // Seconds after which the drift comes back to where it began, 0 = never. The slowest octave
   // then makes max(1, round(loop · speed)) whole cycles per loop instead of `speed` per second.
   double loop = 0;
+  // The size the translations (e, f) drift by a fraction of; none: the attractor's larger side
+  // (attractor_bounds). A flame's drift passes its camera's view (engine/drawing.h).
+  std::optional<double> extent;
 };
 
 // fBm noise in [−1, 1], zero at x = 0: octaves of gradient noise on channel `channel` of `seed`,

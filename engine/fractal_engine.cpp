@@ -48,16 +48,22 @@ FractalEngine::FractalEngine(const FractalSettings& settings) : settings_(settin
     name_ = super_.name.empty() ? settings.superifs : super_.name;
     return;
   }
-  // As load_ifs accepts a preset: maps that contract on average will do.
   F_ = settings.drawing;
-  validate(F_, F_.name.empty() ? "drawing" : F_.name, {.allow_expansive = true});
-  G_ = settings.colouring ? *settings.colouring : default_colouring(F_.size());
-  if (G_.size() != F_.size())
-    throw Error(ErrorKind::invalid_ifs,
-                fmt::format("colouring: must have as many maps as {} (got {} for {})", F_.name,
-                            G_.size(), F_.size()));
+  check_drawing(F_);
+  name_ = name_of(F_);
+  const std::size_t n = map_count(F_);
+  G_ = settings.colouring ? *settings.colouring : default_colouring(n);
+  if (G_.size() != n)
+    throw Error(
+        ErrorKind::invalid_ifs,
+        fmt::format("colouring: must have {} {} (got {} for {})",
+                    std::holds_alternative<Ifs>(F_) ? "as many maps as" : "one map per xform of",
+                    name_, G_.size(), n));
   validate(G_, "colouring", {.allow_expansive = true});
-  name_ = F_.name;
+  if (std::holds_alternative<flame::Flame>(F_) && settings.sampling.seamless)
+    throw Error(ErrorKind::invalid_argument,
+                "seamless: a flame is drawn in its own plane, not on the torus of a tile (got a "
+                "flame)");
   if (settings.animate == Animate::drift) drift(F_, 0, drift_options());  // checks them
 }
 
@@ -102,13 +108,13 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
   const Interpolation interpolation = s.interpolation;
   switch (s.animate) {
     case Animate::none:
-      table_ = std::make_shared<const PreparedStealMap>(prepare_filter(
-          compute_steal_map(F_, G_, size, map_options), frame_size, interpolation, threads));
+      table_ = std::make_shared<const PreparedStealMap>(
+          prepare_filter(steal_map(F_, G_, size, map_options), frame_size, interpolation, threads));
       return;
     case Animate::drift: {
       // Keyframe k shows F drifted to time k·K/fps, in a view fixed from F itself so that the
-      // frame does not jump as the attractor moves.
-      map_options.sampling.view = framed_viewport(F_, size, s.sampling).view;
+      // frame does not jump as the attractor moves (a flame's camera holds still already).
+      map_options = with_fixed_view(F_, size, map_options);
       map_options.sampling.threads = build_threads;
       // With a loop of L frames and Q keyframes, keyframe k shows time (k mod Q) · L / Q frames:
       // keyframe Q is keyframe 0, and the drift's own period is the loop.
@@ -118,9 +124,9 @@ void FractalEngine::prepare(cv::Size frame_size, cv::Size output_size, double fr
             const double frames = loop > 0 ? static_cast<double>(k % q) *
                                                  static_cast<double>(loop) / static_cast<double>(q)
                                            : static_cast<double>(k) * interval;
-            const Ifs now = drift(F, frames / fps, drift_options);
-            return prepare_filter(compute_steal_map(now, G, size, map_options), frame_size,
-                                  interpolation, build_threads);
+            const Drawing now = drift(F, frames / fps, drift_options);
+            return prepare_filter(steal_map(now, G, size, map_options), frame_size, interpolation,
+                                  build_threads);
           },
           s.keyframe_interval, schedule);
       return;

@@ -23,6 +23,7 @@
 
 #include <opencv2/core.hpp>
 
+#include "engine/drawing.h"
 #include "engine/drift.h"
 #include "engine/fractal_filter.h"
 #include "ifs/cancel.h"
@@ -59,12 +60,15 @@ inline constexpr const char* kDefaultPreset = "barnsley-fern";
 Ifs default_drawing();
 
 struct FractalSettings {
-  // The fractal (docs/design.md §3) as data, the doors load presets (load_ifs, load_colouring):
-  // the drawing IFS F, by default the shipped barnsley-fern, and the colouring IFS G on the unit
-  // square (load_colouring fits a preset to it), by default a tiling (default_colouring).
-  Ifs drawing = default_drawing();
+  // The fractal (docs/design.md §3) as data, the doors load presets (load_ifs, load_colouring,
+  // flame::read_flame): the drawing F, an IFS — by default the shipped barnsley-fern — or a
+  // fractal flame (its xforms through the chaos game, framed by its camera: engine/drawing.h),
+  // and the colouring IFS G on the unit square (load_colouring fits a preset to it), one map per
+  // map or xform of F, by default a tiling (default_colouring).
+  Drawing drawing = default_drawing();
   std::optional<Ifs> colouring;
-  bool exact = true;  // per-pixel descent (faster); false: the chaos game
+  bool exact = true;  // per-pixel descent (faster); false: the chaos game. A flame takes the
+                      // chaos game either way (its xforms have no inverse).
   // The plane rectangle of F shown (none: auto-framed; a superIFS brings its own), the margin,
   // the chaos game's points per pixel, the seed of the chaos game, the drift and the superIFS
   // steps, the threads (0 = all cores), and the stop flag, polled while maps are built (the steal
@@ -138,7 +142,7 @@ class FractalEngine {
   const FractalSettings& settings() const { return settings_; }
   // F's name, or the superIFS's when animate is superifs.
   const std::string& name() const { return name_; }
-  const Ifs& drawing() const { return F_; }
+  const Drawing& drawing() const { return F_; }
   const Ifs& colouring() const { return G_; }
   // The steal-map options of the settings (view, margin, exact, quality, seed, threads).
   StealMapOptions map_options() const;
@@ -159,7 +163,8 @@ class FractalEngine {
   double frame_rate_ = 25;
   FilterOptions options_;
   std::string name_;
-  Ifs F_, G_;
+  Drawing F_;
+  Ifs G_;
   SuperIfs super_;                                 // animate superifs
   std::shared_ptr<TextureSequence> sequence_;      // animate superifs
   std::shared_ptr<const PreparedStealMap> table_;  // animate none

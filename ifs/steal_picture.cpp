@@ -40,13 +40,15 @@ cv::Mat tops_picture(const Ifs& F, cv::Size size, const TopsOptions& options, co
   TopsOptions tops = options;
   tops.sampling.view = framed_viewport(F, size, options.sampling).view;  // to report it
   std::uint64_t points = 0;
-  cv::Mat image = render_tops(F, size, tops, &points);  // BGRA float, alpha = coverage
+  const cv::Mat image = render_tops(F, size, tops, &points);  // BGRA float, alpha = coverage
+  if (stats) *stats = {.view = *tops.sampling.view, .points = tops.exact ? 0 : points};
+  return tops_picture(image, background, alpha, stats);
+}
+
+cv::Mat tops_picture(cv::Mat image, const Rgb& background, bool alpha, TopsPictureStats* stats) {
   cv::Mat coverage;
   cv::extractChannel(image, coverage, 3);
-  if (stats)
-    *stats = {.view = *tops.sampling.view,
-              .points = tops.exact ? 0 : points,
-              .coverage = cv::countNonZero(coverage) / static_cast<double>(size.area())};
+  if (stats) stats->coverage = cv::countNonZero(coverage) / static_cast<double>(image.total());
   image.setTo(background_scalar(background, CV_32F), coverage == 0);
   if (!alpha) cv::cvtColor(image, image, cv::COLOR_BGRA2BGR);
   return image;

@@ -35,4 +35,9 @@ struct TopsPictureStats {
 cv::Mat tops_picture(const Ifs& F, cv::Size size, const TopsOptions& options, const Rgb& background,
                      bool alpha, TopsPictureStats* stats = nullptr);
 
+// The same from a render_tops picture already made (CV_32FC4, alpha the coverage): `background`
+// off the attractor, BGRA with `alpha`, else BGR. Fills stats->coverage only.
+cv::Mat tops_picture(cv::Mat tops, const Rgb& background, bool alpha,
+                     TopsPictureStats* stats = nullptr);
+
 }  // namespace ifsfx

@@ -32,9 +32,17 @@ TopSymbols top_symbols(const Ifs& F, cv::Size size, const TopsOptions& options) 
                                           .key_bits = 32,  // 32/b ≥ 2 symbols for any N ≤ 65536
                                           .cancel = options.sampling.cancel},
                                          &chaos);
-  TopSymbols out;
-  out.view = viewport.view;
+  TopSymbols out = detail::symbols_of(tops);
   out.points = chaos.points;
+  return out;
+}
+
+namespace detail {
+
+TopSymbols symbols_of(const AddressRaster& tops) {
+  const cv::Size size = tops.viewport.size;
+  TopSymbols out;
+  out.view = tops.viewport.view;
   out.first = cv::Mat(size, CV_16UC1, cv::Scalar::all(0));
   out.second = cv::Mat(size, CV_16UC1, cv::Scalar::all(0));
   out.coverage = cv::Mat(size, CV_8UC1, cv::Scalar::all(0));
@@ -49,25 +57,36 @@ TopSymbols top_symbols(const Ifs& F, cv::Size size, const TopsOptions& options) 
   return out;
 }
 
+}  // namespace detail
+
+std::vector<Rgb> map_colours(const Ifs& F) {
+  if (!F.colours.empty()) return F.colours;
+  std::vector<Rgb> out;
+  for (std::size_t n = 0; n < F.size(); ++n) out.push_back(palette_colour(n, F.size()));
+  return out;
+}
+
 cv::Mat render_tops(const Ifs& F, cv::Size size, const TopsOptions& options,
                     std::uint64_t* points) {
   const TopSymbols tops = top_symbols(F, size, options);
   if (points) *points = tops.points;
-  std::vector<cv::Vec4f> palette(F.size());
-  for (std::size_t n = 0; n < F.size(); ++n) {
-    const Rgb c = F.colours.empty() ? palette_colour(n, F.size()) : F.colours[n];
-    palette[n] =
-        cv::Vec4f(static_cast<float>(c.b), static_cast<float>(c.g), static_cast<float>(c.r), 1.0f);
-  }
+  return render_tops(tops, map_colours(F), options.second_symbol);
+}
+
+cv::Mat render_tops(const TopSymbols& tops, const std::vector<Rgb>& colours, bool second_symbol) {
+  std::vector<cv::Vec4f> palette;
+  for (const Rgb& c : colours)
+    palette.emplace_back(static_cast<float>(c.b), static_cast<float>(c.g), static_cast<float>(c.r),
+                         1.0f);
+  const cv::Size size = tops.coverage.size();
   cv::Mat out(size, CV_32FC4, cv::Scalar::all(0));
   for (int r = 0; r < size.height; ++r)
     for (int c = 0; c < size.width; ++c) {
       if (!tops.coverage.at<std::uint8_t>(r, c)) continue;
-      const cv::Vec4f& first = palette[tops.first.at<std::uint16_t>(r, c)];
+      const cv::Vec4f& first = palette.at(tops.first.at<std::uint16_t>(r, c));
       out.at<cv::Vec4f>(r, c) =
-          options.second_symbol
-              ? (2.0f * first + palette[tops.second.at<std::uint16_t>(r, c)]) / 3.0f
-              : first;
+          second_symbol ? (2.0f * first + palette.at(tops.second.at<std::uint16_t>(r, c))) / 3.0f
+                        : first;
     }
   return out;
 }

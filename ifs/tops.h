@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include <opencv2/core.hpp>
 
@@ -40,5 +41,12 @@ TopSymbols top_symbols(const Ifs& F, cv::Size size, const TopsOptions& options =
 // `points`, when given, receives TopSymbols::points.
 cv::Mat render_tops(const Ifs& F, cv::Size size, const TopsOptions& options = {},
                     std::uint64_t* points = nullptr);
+
+// The same picture from symbols already found (a flame's, flame/flame_chaos.h), each map n
+// coloured `colours[n]` (one per map).
+cv::Mat render_tops(const TopSymbols& tops, const std::vector<Rgb>& colours, bool second_symbol);
+
+// The colour of each map in a tops picture: the IFS's colours, or palette_colour(n, N).
+std::vector<Rgb> map_colours(const Ifs& F);
 
 }  // namespace ifsfx

@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 
 #include "ifs/chaos_game.h"
 #include "ifs/detail/address_raster.h"
@@ -74,13 +75,12 @@ struct Walkers {
 // key (Top keeps the larger address, eq. 7), cut to the top bits of a Cell (32 bits halve the
 // buffer's memory traffic; they hold 32/b symbols).
 template <class Cell>
-void run_chunk(const Walkers& w, std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
+void run_chunk(const KeyWalk& w, std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
                Cell* buffer) {
-  const LaneSeeds seeds = lane_seeds(seed, chunk);
   if constexpr (sizeof(Cell) == 4)
-    w.kernels.tops32(w.tables.spec(), seeds, points, buffer);
+    w.run32(seed, chunk, points, buffer);
   else
-    w.kernels.tops64(w.tables.spec(), seeds, points, buffer);
+    w.run64(seed, chunk, points, buffer);
 }
 
 // Holes: unhit pixels with hit neighbours on both sides along some line through them (or, at a
@@ -219,11 +219,9 @@ std::size_t hutchinson_passes(const Ifs& F, const Kernel& k, std::vector<std::ui
 // The coverage policy of ChaosTopsOptions with Cell-sized records; returns 64-bit keys (the
 // Cell's bits on top).
 template <class Cell>
-std::vector<std::uint64_t> run_policy(const Ifs& F, const Viewport& viewport,
+std::vector<std::uint64_t> run_policy(const KeyWalk& walkers, const Viewport& viewport,
                                       const ChaosTopsOptions& options, ChaosTopsStats* stats) {
   constexpr int kCellBits = 8 * static_cast<int>(sizeof(Cell));
-  const Kernel kernel(F, viewport);
-  const Walkers walkers(F, viewport);
   const std::size_t pixels = static_cast<std::size_t>(viewport.size.area());
   const int threads = resolve_threads(options.threads);
   std::vector<std::vector<Cell>> buffers(static_cast<std::size_t>(threads));
@@ -277,8 +275,9 @@ std::vector<std::uint64_t> run_policy(const Ifs& F, const Viewport& viewport,
   // Not on the torus: there a pixel's point, rebuilt from its key by the maps and the wraps between
   // them, is not known to within the contraction of its address (a wrap is not continuous), so the
   // passes could leave the attractor.
-  if (options.fill && !viewport.wrap)
-    s.propagated = hutchinson_passes(F, kernel, keys, kCellBits, kHutchinsonPasses, options.cancel);
+  if (options.fill && !viewport.wrap && walkers.affine)
+    s.propagated = hutchinson_passes(*walkers.affine, Kernel(*walkers.affine, viewport), keys,
+                                     kCellBits, kHutchinsonPasses, options.cancel);
   options.cancel.check("chaos game");
   std::vector<std::uint64_t> result = keys;
   if (options.fill)
@@ -290,15 +289,34 @@ std::vector<std::uint64_t> run_policy(const Ifs& F, const Viewport& viewport,
 
 }  // namespace
 
-AddressRaster chaos_tops(const Ifs& F, const Viewport& viewport, const ChaosTopsOptions& options,
-                         ChaosTopsStats* stats) {
+AddressRaster chaos_tops(const KeyWalk& walk, const Viewport& viewport,
+                         const ChaosTopsOptions& options, ChaosTopsStats* stats) {
   AddressRaster out;
   out.viewport = viewport;
-  out.bits = symbol_bits(F.size());
+  out.bits = walk.bits;
   out.key_bits = options.key_bits == 32 ? 32 : 64;
-  out.keys = out.key_bits == 32 ? run_policy<std::uint32_t>(F, viewport, options, stats)
-                                : run_policy<std::uint64_t>(F, viewport, options, stats);
+  out.keys = out.key_bits == 32 ? run_policy<std::uint32_t>(walk, viewport, options, stats)
+                                : run_policy<std::uint64_t>(walk, viewport, options, stats);
   return out;
+}
+
+AddressRaster chaos_tops(const Ifs& F, const Viewport& viewport, const ChaosTopsOptions& options,
+                         ChaosTopsStats* stats) {
+  const auto walkers = std::make_shared<const Walkers>(F, viewport);
+  const KeyWalk walk{
+      .run32 =
+          [walkers](std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
+                    std::uint32_t* cells) {
+            walkers->kernels.tops32(walkers->tables.spec(), lane_seeds(seed, chunk), points, cells);
+          },
+      .run64 =
+          [walkers](std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
+                    std::uint64_t* cells) {
+            walkers->kernels.tops64(walkers->tables.spec(), lane_seeds(seed, chunk), points, cells);
+          },
+      .bits = symbol_bits(F.size()),
+      .affine = &F};
+  return chaos_tops(walk, viewport, options, stats);
 }
 
 }  // namespace ifsfx::detail

@@ -152,8 +152,8 @@ std::string filter_init_doc(const engine::FractalSettings& d, double fps) {
   return fmt::format(
       R"doc(The settings of `ifsfx filter`, keyword for flag, with its defaults:
 
-preset: the drawing IFS F: a shipped name, a .toml/.ifs path or "FILE.ifs:NAME", default
-    "{}".
+preset: the drawing IFS F: a shipped name, a .toml/.ifs path, "FILE.ifs:NAME", or a flame
+    ("art.flame:NAME" or an ifsfx.Flame: through the chaos game), default "{}".
 colouring: the colouring IFS G (as many maps as F), default None: a tiling of the frame.
 view: plane rectangle (x0, y0, x1, y1) or "x0,y0,x1,y1" shown on the frame, default None:
     the attractor, auto-framed with `margin` (default {}).

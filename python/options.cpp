@@ -117,10 +117,10 @@ engine::FractalSettings fractal_settings(const FilterKeywords& k) {
   // F and G as data, the preset read as render() reads it (an unknown name is a ValueError, a
   // Fractint entry that contracts only on average a UserWarning); a superIFS brings its own.
   if (s.animate != engine::Animate::superifs) {
-    IfsPreset F = preset_arg(k.preset);
+    engine::Drawing F = drawing_arg(k.preset);
     const std::string colouring = spec_arg(k.colouring, "colouring");
-    if (!colouring.empty()) s.colouring = load_colouring(colouring, F.ifs, "colouring");
-    s.drawing = std::move(F.ifs);
+    if (!colouring.empty()) s.colouring = engine::colouring_for(colouring, F, "colouring");
+    s.drawing = std::move(F);
   }
   return s;
 }

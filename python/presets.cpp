@@ -9,6 +9,8 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include "flame/flame_file.h"
+#include "flame/flame_write.h"
 #include "ifs/error.h"
 
 namespace ifsfx::python {
@@ -82,7 +84,42 @@ IfsPreset preset_arg(const py::handle& preset, bool allow_expansive) {
                           std::string(py::str(py::type::of(preset).attr("__name__")))));
 }
 
+engine::Drawing drawing_arg(const py::handle& preset, bool allow_expansive) {
+  if (py::isinstance<flame::Flame>(preset)) return preset.cast<flame::Flame>();
+  std::string spec;
+  if (py::isinstance<py::str>(preset)) spec = preset.cast<std::string>();
+  if (py::hasattr(preset, "__fspath__")) spec = py::str(preset.attr("__fspath__")());
+  if (!spec.empty() && flame::is_flame_spec(spec)) return flame::read_flame(spec);
+  return preset_arg(preset, allow_expansive).ifs;
+}
+
+namespace {
+
+// ifsfx.Flame: what Python sees of a flame.
+void bind_flame(py::module_& m) {
+  py::class_<flame::Flame>(m, "Flame", R"doc(
+A fractal flame of flam3, Apophysis, JWildfire or Fractorium, read by load_preset("art.flame:NAME").
+render() draws its measure as flam3 does and its attractor, tops and colour stealing through the
+chaos game (its xforms play the maps' part); Filter takes it as its preset.
+)doc")
+      .def_property_readonly("name", [](const flame::Flame& f) { return f.name; })
+      .def_property_readonly(
+          "size", [](const flame::Flame& f) { return std::pair(f.camera.width, f.camera.height); },
+          "the camera's (width, height) in pixels")
+      .def_property_readonly(
+          "text", [](const flame::Flame& f) { return flame::flame_xml(f); },
+          "the flame as flam3 XML")
+      .def("__len__", [](const flame::Flame& f) { return f.xforms.size(); })
+      .def("__repr__", [](const flame::Flame& f) {
+        return fmt::format("<ifsfx.Flame '{}': {} xforms{}>", f.name, f.xforms.size(),
+                           f.final_xform ? " and a final xform" : "");
+      });
+}
+
+}  // namespace
+
 void bind_presets(py::module_& m) {
+  bind_flame(m);
   py::class_<IfsPreset>(m, "Ifs", R"doc(
 An iterated function system: affine maps f(x, y) = (a x + b y + e, c x + d y + f) with
 probabilities, and where it came from. Made by load_preset() or from an (N, 6) array:
@@ -130,9 +167,15 @@ on average. Raises ValueError for maps that do not contract, bad probabilities, 
       });
 
   m.def(
-      "load_preset", &load, py::arg("spec"), py::arg("allow_expansive") = false,
-      R"doc(A shipped name ("barnsley-fern", see presets()), a .toml or .ifs path, or "FILE.ifs:NAME"
-for one entry of a Fractint file. Raises ValueError for an unknown name or a malformed preset
+      "load_preset",
+      [](const std::string& spec, bool allow_expansive) -> py::object {
+        if (flame::is_flame_spec(spec)) return py::cast(flame::read_flame(spec));
+        return py::cast(load(spec, allow_expansive));
+      },
+      py::arg("spec"), py::arg("allow_expansive") = false,
+      R"doc(A shipped name ("barnsley-fern", see presets()), a .toml or .ifs path, "FILE.ifs:NAME"
+for one entry of a Fractint file, or a flame: "art.flame", "art.flame:NAME" or "art.flame:INDEX"
+(an ifsfx.Flame). Raises ValueError for an unknown name or a malformed preset
 (the message names the file and line), FileNotFoundError for a missing file. A Fractint entry
 that contracts only on average is accepted with a UserWarning.)doc");
   m.def(

@@ -58,11 +58,18 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
                  bool allow_expansive, bool rgb) {
   const app::RenderMode mode = app::parse_render_mode(mode_name);
   const cv::Size pixels = size_arg(size);
-  if (py::isinstance<py::str>(preset) && flame::is_flame_spec(preset.cast<std::string>())) {
-    // A flame draws as flam3 does, at `size` and `quality` (render_flame: its own by default).
-    app::check_flame_mode(mode, "mode");
-    const cv::Mat image =
-        flame_picture(preset.cast<std::string>(), pixels, quality, seed, threads, alpha);
+  const engine::Drawing F = drawing_arg(preset, allow_expansive);
+  const auto* as_flame = std::get_if<flame::Flame>(&F);
+  if (as_flame && mode == app::RenderMode::measure) {
+    // A flame's measure draws as flam3 does, at `size` and `quality`.
+    const cv::Mat image = run_released([&](const CancelToken& cancel) {
+      return flame::render_flame(*as_flame, {.size = pixels,
+                                             .quality = quality,
+                                             .seed = seed,
+                                             .threads = threads,
+                                             .cancel = cancel,
+                                             .channels = alpha ? 4 : 3});
+    });
     return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
   }
   const Keywords k =
@@ -75,20 +82,20 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
   const bool steal = mode == app::RenderMode::steal;
   app::StillJob job{.mode = mode,
                     .size = pixels,
-                    .exact = k.exact,
+                    // A flame's xforms have no inverse: the chaos game, whatever `exact` says.
+                    .exact = k.exact && !as_flame,
                     .second_symbol = second_symbol,
                     .background = colour_arg(background),
                     .alpha = alpha};
-  const IfsPreset F = preset_arg(preset, allow_expansive);
   py::object keep;
   if (steal) {
     job.source = source_arg(source, keep, "source", rgb);
-    job.colouring = load_colouring(
-        colouring.is_none() ? std::string() : colouring.cast<std::string>(), F.ifs, "colouring");
+    job.colouring = engine::colouring_for(
+        colouring.is_none() ? std::string() : colouring.cast<std::string>(), F, "colouring");
   }
   const cv::Mat image = run_released([&](const CancelToken& cancel) {
     job.options = render_options(k, cancel);
-    return app::render_still(F.ifs, job).image;
+    return app::render_still(F, job).image;
   });
   return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
 }
@@ -158,7 +165,9 @@ void bind_render(py::module_& m) {
 pixels (BGR order, like cv2). The GIL is released while it works; Ctrl-C stops it
 (KeyboardInterrupt).
 
-preset: a shipped name, a .toml/.ifs path, "FILE.ifs:NAME", or an Ifs.
+preset: a shipped name, a .toml/.ifs path, "FILE.ifs:NAME", an Ifs, or a flame ("art.flame",
+    "art.flame:NAME" or an ifsfx.Flame): its measure as flam3 draws it, the other modes
+    through the chaos game (exact is then ignored: a flame's xforms have no inverse).
 mode: "attractor" (the set: H×W, 255 on it), "measure" (log-density of the invariant
     measure, coloured by map: H×W×3), "tops" (each pixel coloured by the first symbol of its
     top address: H×W×4, or ×3 with alpha=False), "steal" (colours stolen from `source`:

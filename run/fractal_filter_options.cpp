@@ -11,15 +11,13 @@
 namespace ifsfx::app {
 
 engine::FractalSettings FractalFilterArgs::settings(std::vector<std::string>* warnings) const {
-  IfsPreset F = load_ifs(preset);
-  if (F.ifs.name.empty()) F.ifs.name = preset;
-  if (warnings) warnings->insert(warnings->end(), F.warnings.begin(), F.warnings.end());
+  engine::Drawing F = engine::load_drawing(preset, {}, warnings);
   std::optional<Ifs> G;
-  if (!colouring.empty()) G = load_colouring(colouring, F.ifs, "colouring");
-  return settings_of(std::move(F.ifs), std::move(G));
+  if (!colouring.empty()) G = engine::colouring_for(colouring, F, "colouring");
+  return settings_of(std::move(F), std::move(G));
 }
 
-engine::FractalSettings FractalFilterArgs::settings_of(Ifs drawing,
+engine::FractalSettings FractalFilterArgs::settings_of(engine::Drawing drawing,
                                                        std::optional<Ifs> colouring_ifs) const {
   engine::FractalSettings s = engine;
   s.drawing = std::move(drawing);

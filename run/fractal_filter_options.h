@@ -17,7 +17,8 @@ struct FractalFilterArgs {
   // The flags bind here, the engine's defaults but for the fractal; the presets, the view and the
   // background are read by settings().
   engine::FractalSettings engine;
-  std::string preset = engine::kDefaultPreset;  // F: a shipped name, a .toml/.ifs path, FILE:NAME
+  std::string preset = engine::kDefaultPreset;  // F: a shipped name, a .toml/.ifs path, FILE:NAME,
+                                                // or a flame: FILE.flame[:NAME|:INDEX]
   std::string colouring;  // G: a preset fitted to the unit square; "" = a tiling
   std::string view;
   std::string background = "black";
@@ -27,7 +28,7 @@ struct FractalFilterArgs {
   // adds its own (the stop flag, animation, interpolation). The engine checks the rest.
   engine::FractalSettings settings(std::vector<std::string>* warnings = nullptr) const;
   // The same with F and G given as data (a door that holds them: the studio), the presets unread.
-  engine::FractalSettings settings_of(Ifs drawing, std::optional<Ifs> colouring) const;
+  engine::FractalSettings settings_of(engine::Drawing drawing, std::optional<Ifs> colouring) const;
 };
 
 }  // namespace ifsfx::app

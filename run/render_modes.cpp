@@ -12,7 +12,8 @@ namespace ifsfx::app {
 namespace {
 
 constexpr std::array kModes{
-    RenderModeInfo{.mode = RenderMode::attractor, .name = "attractor", .help = "the set"},
+    RenderModeInfo{
+        .mode = RenderMode::attractor, .name = "attractor", .help = "the set", .flames = true},
     RenderModeInfo{.mode = RenderMode::measure,
                    .name = "measure",
                    .help = "log-density of the invariant measure, coloured by map",
@@ -22,7 +23,8 @@ constexpr std::array kModes{
                    .help = "each pixel coloured by the first symbol of its top address",
                    .map_method = true,
                    .second_symbol = true,
-                   .background = true},
+                   .background = true,
+                   .flames = true},
     RenderModeInfo{.mode = RenderMode::steal,
                    .name = "steal",
                    .help = "colours stolen from --source (fractal tops, colour stealing)",
@@ -30,7 +32,8 @@ constexpr std::array kModes{
                    .colouring = true,
                    .save_map = true,
                    .map_method = true,
-                   .background = true},
+                   .background = true,
+                   .flames = true},
 };
 
 // "tops or steal": the modes for which `takes` holds.
@@ -78,9 +81,8 @@ RenderMode parse_render_mode(const std::string& text, const std::string& what) {
 void check_flame_mode(RenderMode mode, const std::string& mode_word) {
   if (!render_mode_info(mode).flames)
     throw Error(ErrorKind::invalid_argument,
-                fmt::format("{} {}: a flame renders in mode {} (its attractor, tops and colour "
-                            "stealing through the chaos game are not built yet)",
-                            mode_word, to_string(mode), modes_taking(&RenderModeInfo::flames)));
+                fmt::format("{} {}: a flame renders in mode {} (got a flame)", mode_word,
+                            to_string(mode), modes_taking(&RenderModeInfo::flames)));
 }
 
 void check_mode_options(RenderMode mode, const ModeOptions& options, const std::string& mode_word) {

@@ -30,7 +30,8 @@ struct RenderModeInfo {
   bool map_method = false;     // top addresses by the exact descent or the chaos game
   bool second_symbol = false;  // the second symbol's colour mixed in
   bool background = false;     // a colour off the attractor; alpha where the format has it
-  bool flames = false;         // renders a fractal flame (flame/render.h), not only an affine IFS
+  bool flames = false;  // renders a fractal flame too: its measure as flam3 does (flame/render.h),
+                        // the others through the chaos game (flame/flame_chaos.h)
 };
 
 // Every mode, in the order the help lists them.
@@ -63,8 +64,8 @@ struct ModeOptions {
 // own option ("--mode", "mode").
 void check_mode_options(RenderMode mode, const ModeOptions& options, const std::string& mode_word);
 
-// Refuses a mode that does not render flames: Error{invalid_argument} "MODE_WORD tops: a flame
-// renders in mode measure (...)".
+// Refuses a mode that does not render flames (every mode does today): Error{invalid_argument}
+// "MODE_WORD NAME: a flame renders in mode ... (got a flame)".
 void check_flame_mode(RenderMode mode, const std::string& mode_word);
 
 }  // namespace ifsfx::app

@@ -28,6 +28,11 @@ $ifsfx texture carpet-lace -V 3 --seamless --tiles 3x3 --size 512x512 --mode ste
 $ifsfx render barnsley-fern --mode measure --size 1024x1024 --supersample 2 -o out/fern-measure.png
 $ifsfx render barnsley-fern --mode steal --exact --size 1024x1024 \
   --source /usr/share/doc/opencv-doc/examples/data/baboon.jpg -o out/fern-steal.png
+# A fractal flame (docs/flames.md) as a preset: the orb stealing the photo's colours through the
+# chaos game, and the clip filtered through it.
+$ifsfx render docs/images/flame-orb.flame --mode steal --size 384x384 --quality 16 \
+  --source /usr/share/doc/opencv-doc/examples/data/baboon.jpg -o out/flame-orb-steal.png
+$ifsfx filter "$clip" --preset docs/images/flame-orb.flame --quality 16 -o out/vtest-flame-orb.mp4
 # The README's pictures (docs/images/): 256 pixels wide, JPEG, into out/readme/; copy them over
 # docs/images/ to refresh the README.
 mkdir -p out/readme
@@ -37,5 +42,8 @@ small out/fern-steal.png out/readme/fern-steal.jpg
 small out/carpet-lace-steal.png out/readme/carpet-lace-steal.jpg
 small out/vtest-fern.mp4 out/readme/vtest-fern.jpg 40
 small out/carpet-lace-tiles.png out/readme/carpet-lace-tiles.jpg 0 384
-echo "run-demo: results in out/ (vtest-fern.mp4, paper-fig4*.png, carpet-lace-*.png, fern-*.png;"
+small out/flame-orb-steal.png out/readme/flame-orb-steal.jpg
+small out/vtest-flame-orb.mp4 out/readme/vtest-flame-orb.jpg 40
+echo "run-demo: results in out/ (vtest-fern.mp4, paper-fig4*.png, carpet-lace-*.png, fern-*.png,"
+echo "          flame-orb-steal.png, vtest-flame-orb.mp4;"
 echo "          the README's pictures in out/readme/)"

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -18,6 +19,7 @@
 #include "ifs/cancel.h"
 #include "ifs/ifs.h"
 #include "ifs/sampling.h"
+#include "ifs/tops.h"
 #include "ifs/view.h"
 
 namespace ifsfx::detail {
@@ -76,6 +78,29 @@ struct ChaosTopsStats {
 AddressRaster chaos_tops(const Ifs& F, const Viewport& viewport, const ChaosTopsOptions& options,
                          ChaosTopsStats* stats = nullptr);
 
+// A chaos game that plots address keys: F's affine walkers above, or a flame's xforms
+// (flame/flame_chaos.h). run32/run64 plot `points` points of chunk `chunk` of the walk seeded
+// with `seed` into one worker's records (row-major on the viewport), each record keeping the
+// largest key cut to its top 32 or 64 bits, bit 0 set (what walk_kernels.h's tops sinks do). The
+// result must depend on (seed, chunk, points) only.
+struct KeyWalk {
+  std::function<void(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
+                     std::uint32_t* cells)>
+      run32;
+  std::function<void(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
+                     std::uint64_t* cells)>
+      run64;
+  int bits = 1;  // b = ceil(log2 N)
+  // The Hutchinson passes step every pixel's point by these maps, in the viewport's plane: the
+  // walk's own maps when they are affine and contract; none skips the passes (a flame's xforms
+  // have no contraction bound that would keep a rebuilt point on the attractor).
+  const Ifs* affine = nullptr;
+};
+
+// The coverage policy above over any walk of address keys.
+AddressRaster chaos_tops(const KeyWalk& walk, const Viewport& viewport,
+                         const ChaosTopsOptions& options, ChaosTopsStats* stats = nullptr);
+
 // The exact top-address descent (docs/design.md §3) from every pixel centre of `viewport`.
 struct DescentOptions {
   int levels = 2;  // L: symbols followed per pixel
@@ -103,6 +128,9 @@ double word_contraction(const Ifs& G);
 
 // Levels L such that s^L ≤ 2^-20: T is then within a millionth of the unit square.
 int levels_for(double contraction);
+
+// The first two symbols of every covered pixel of `tops` (TopSymbols::points left 0).
+TopSymbols symbols_of(const AddressRaster& tops);
 
 // Evaluates T from keys for the chaos-game steal map: T ≈ g_σ1 ∘ … ∘ g_σm(c), m the symbols
 // after which F's piece holding the pixel's point has shrunk to a pixel, c the centre of G's

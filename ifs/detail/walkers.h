@@ -49,6 +49,31 @@ class WalkTables {
   WalkSpec spec_{};
 };
 
+// One lane's xoshiro256+ (Blackman and Vigna) on the baseline side: the generator of the walk
+// kernels' lanes (walk_kernels_common.inl keeps its own copy per instruction set), for a walker
+// that must draw what a kernel lane draws — a flame's, flame/flame_chaos.cpp, which gives an
+// affine IFS's bytes when its xforms are the IFS's maps.
+class LaneRng {
+ public:
+  explicit LaneRng(const std::uint64_t (&state)[4]) : s_{state[0], state[1], state[2], state[3]} {}
+  std::uint64_t next() {
+    const std::uint64_t result = s_[0] + s_[3];
+    const std::uint64_t t = s_[1] << 17;
+    s_[2] ^= s_[0];
+    s_[3] ^= s_[1];
+    s_[1] ^= s_[2];
+    s_[0] ^= s_[3];
+    s_[2] ^= t;
+    s_[3] = (s_[3] << 45) | (s_[3] >> 19);
+    return result;
+  }
+  // A uniform coordinate in [0, 1) from one draw (53 bits), as the kernels start a lane.
+  double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+
+ private:
+  std::uint64_t s_[4];
+};
+
 // The maps as structure-of-arrays for run_chunk.
 struct MapTable {
   std::vector<double> a, b, c, d, e, f;

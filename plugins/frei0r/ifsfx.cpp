@@ -36,7 +36,8 @@ constexpr const char* plugin_name = "ifsfx";
 enum Param { preset, colouring, mix, background, exact, drift, speed, seed, view, rate, loop };
 constexpr ParamInfo table[] = {
     {"preset", ParamType::text,
-     "The drawing IFS F: a shipped name (see `ifsfx presets`), a .toml/.ifs path or FILE.ifs:NAME",
+     "The drawing F: a shipped name (see `ifsfx presets`), a .toml/.ifs path, FILE.ifs:NAME, or "
+     "a flame, FILE.flame[:NAME]",
      0, engine::kDefaultPreset},
     {"colouring", ParamType::text,
      "The colouring IFS G on the frame, with as many maps as F (empty: a tiling of the frame)"},
@@ -77,23 +78,23 @@ class LoadedPresets {
     error_.clear();
     loaded_ = false;
     try {
-      IfsPreset F = load_ifs(preset);
+      engine::Drawing F = engine::load_drawing(preset);
       G_.reset();
-      if (!colouring.empty()) G_ = load_colouring(colouring, F.ifs, "colouring");
-      F_ = std::move(F.ifs);
+      if (!colouring.empty()) G_ = engine::colouring_for(colouring, F, "colouring");
+      F_ = std::move(F);
       loaded_ = true;
     } catch (const Error& e) {
       error_ = e.what();
       throw;
     }
   }
-  const Ifs& drawing() const { return F_; }
+  const engine::Drawing& drawing() const { return F_; }
   const std::optional<Ifs>& colouring() const { return G_; }
 
  private:
   bool loaded_ = false;
   std::string preset_, colouring_, error_;
-  Ifs F_;
+  engine::Drawing F_;
   std::optional<Ifs> G_;
 };
 

@@ -36,8 +36,9 @@ void add_fractal(obs_properties_t* p) {
       p, "preset", text("Preset"), OBS_COMBO_TYPE_EDITABLE, OBS_COMBO_FORMAT_STRING);
   for (const PresetSummary& s : list_shipped_presets())
     obs_property_list_add_string(preset, s.name.c_str(), s.name.c_str());
-  obs_properties_add_path(p, "preset_file", text("PresetFile"), OBS_PATH_FILE,
-                          "IFS presets (*.toml *.ifs *.csv);;All files (*.*)", nullptr);
+  obs_properties_add_path(
+      p, "preset_file", text("PresetFile"), OBS_PATH_FILE,
+      "IFS presets and flames (*.toml *.ifs *.csv *.flame *.flam3);;All files (*.*)", nullptr);
   obs_property_t* mode = obs_properties_add_list(p, "mode", text("Mode"), OBS_COMBO_TYPE_LIST,
                                                  OBS_COMBO_FORMAT_STRING);
   obs_property_list_add_string(mode, text("Mode.Steal"), "steal");

@@ -20,7 +20,7 @@ PictureMaker::PictureMaker(const PluginSettings& settings, cv::Size size, double
   const TopsOptions options{.sampling = engine_->map_options().sampling,
                             .exact = settings.engine.exact};
   // BGRA in [0, 1], alpha the coverage: as bytes.
-  tops_picture(engine_->drawing(), size, options, Rgb{}, true).convertTo(tops_, CV_8U, 255);
+  engine::tops_picture(engine_->drawing(), size, options, Rgb{}, true).convertTo(tops_, CV_8U, 255);
 }
 
 void PictureMaker::make(const cv::Mat& frame, double seconds, cv::Mat& out) {

@@ -35,9 +35,9 @@ PluginSettings settings_of(const PropertyValues& v) {
   const std::string preset = v.preset_file.empty() ? v.preset : v.preset_file;
   if (preset.empty()) throw Error(ErrorKind::invalid_argument, "preset: must be given (got none)");
   if (s.animate != engine::Animate::superifs) {  // a superIFS brings its own maps
-    IfsPreset F = load_ifs(preset);
-    if (!v.colouring.empty()) s.colouring = load_colouring(v.colouring, F.ifs, "colouring");
-    s.drawing = std::move(F.ifs);
+    engine::Drawing F = engine::load_drawing(preset);
+    if (!v.colouring.empty()) s.colouring = engine::colouring_for(v.colouring, F, "colouring");
+    s.drawing = std::move(F);
   }
   if (!v.view.empty()) s.sampling.view = parse_box(v.view, "view");
   if (v.seed < 0)

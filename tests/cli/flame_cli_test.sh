@@ -47,10 +47,21 @@ XML
     file own.png | grep -q '80 x 60' || fail "own size: $(file own.png)"
     "$ifsfx" render two.flame:0 --size 64x48 --quality 2 -q -o sized.jpg
     file sized.jpg | grep -q '64x48' || fail "--size: $(file sized.jpg)"
+    # The paper's modes through the chaos game (docs/flames.md), at the flame's own size.
+    "$ifsfx" render two.flame:spiral --mode tops -q -o t.png
+    file t.png | grep -q '80 x 60' || fail "tops size: $(file t.png)"
+    "$ifsfx" render sierpinski-triangle --size 32x32 -q -o src.png
+    "$ifsfx" render two.flame:spiral --mode steal --source src.png --size 40x30 -q -o s.png
+    file s.png | grep -q '40 x 30' || fail "steal size: $(file s.png)"
     rc=0
-    "$ifsfx" render two.flame:spiral --mode tops -o t.png 2>err.txt || rc=$?
-    [ "$rc" -ne 0 ] && grep -q '^ifsfx: --mode tops: a flame renders in mode measure' err.txt ||
-      fail "tops of a flame: rc $rc, $(cat err.txt)"
+    "$ifsfx" render two.flame:spiral --mode tops --exact -o t.png 2>err.txt || rc=$?
+    [ "$rc" -ne 0 ] && grep -q "^ifsfx: .*exact: the exact descent follows inverse maps" err.txt ||
+      fail "--exact of a flame: rc $rc, $(cat err.txt)"
+    rc=0
+    "$ifsfx" render two.flame:spiral --mode steal --source src.png --colouring sierpinski-triangle \
+      -o s.png 2>err.txt || rc=$?
+    [ "$rc" -ne 0 ] && grep -q "sierpinski-triangle must have as many maps as spiral (got 3 for 2)" err.txt ||
+      fail "--colouring of 3 maps for 2 xforms: rc $rc, $(cat err.txt)"
     rc=0
     "$ifsfx" render two.flame -o t.png 2>err.txt || rc=$?
     [ "$rc" -ne 0 ] && grep -q 'spiral' err.txt || fail "no pick in a file of two: rc $rc, $(cat err.txt)"

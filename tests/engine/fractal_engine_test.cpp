@@ -12,6 +12,8 @@
 
 #include <gtest/gtest.h>
 
+#include "flame/flame_chaos.h"
+#include "flame/variations.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "interrupted.h"
@@ -111,7 +113,7 @@ TEST(fractal_engine, settings_default_to_the_library_sampling) {
 
 TEST(fractal_engine, bad_settings_fail_before_any_frame) {
   FractalSettings s;
-  s.drawing.maps[1].e = std::nan("");  // a coefficient that is not a number
+  std::get<Ifs>(s.drawing).maps[1].e = std::nan("");  // a coefficient that is not a number
   EXPECT_THROW(FractalEngine{s}, Error);
   s.drawing = load_ifs("barnsley-fern").ifs;
   s.colouring = load_ifs("sierpinski-triangle").ifs;
@@ -127,7 +129,7 @@ TEST(fractal_engine, bad_settings_fail_before_any_frame) {
 }
 
 TEST(fractal_engine, draws_the_shipped_fern_by_default) {
-  EXPECT_EQ(FractalSettings{}.drawing, load_ifs(kDefaultPreset).ifs);
+  EXPECT_EQ(FractalSettings{}.drawing, Drawing(load_ifs(kDefaultPreset).ifs));
   EXPECT_EQ(FractalEngine(FractalSettings{}).name(), "barnsley-fern");
 }
 
@@ -135,6 +137,55 @@ TEST(fractal_engine, draws_the_shipped_fern_by_default) {
 // and keyframes, the superIFS burn-in — polls settings.cancel, so that `ifsfx filter` and `cam`
 // stop within a fraction of a second on Ctrl-C (issue 12). The flag is set before the call: the
 // test proves the polling without timing anything.
+// Two xforms and a final one: a flame as the engine's drawing (docs/flames.md).
+flame::Flame spiral_flame() {
+  const auto term = [](const char* name, double w) {
+    const flame::Variation* v = flame::find_variation(name);
+    return flame::VariationTerm{.id = v->id, .weight = w, .params = flame::default_parameters(*v)};
+  };
+  flame::Flame f;
+  f.name = "spiral";
+  f.camera = {.width = 48, .height = 40, .scale = 14};
+  f.xforms = {{.pre = {0.6, -0.2, 0.2, 0.6, 0.5, 0},
+               .variations = {term("linear", 0.8), term("swirl", 0.2)}},
+              {.pre = {0.5, 0, 0, 0.5, -0.5, 0.2}, .variations = {term("spherical", 1)}}};
+  f.final_xform = flame::Xform{.variations = {term("linear", 1)}};
+  return f;
+}
+
+TEST(fractal_engine, a_flame_colours_frames_through_its_steal_map_and_drifts_its_affine_parts) {
+  const cv::Size size{48, 40};
+  FractalSettings s;
+  s.drawing = spiral_flame();
+  s.sampling.quality = 4;
+  s.sampling.seed = 3;
+  FractalEngine fixed(s, size);
+  const flame::Flame& f = std::get<flame::Flame>(s.drawing);
+  const StealMap T = flame::flame_steal_map(f, default_colouring(2), size,
+                                            {.sampling = s.sampling, .exact = false});
+  const cv::Mat frame = test_frame(size, 0);
+  EXPECT_EQ(
+      cv::norm(fixed.filter(frame, 0),
+               filter_frame(frame, prepare_filter(T, size), fixed.filter_options()), cv::NORM_INF),
+      0);
+  EXPECT_EQ(fixed.name(), "spiral");
+  // The drift moves the pre-affine maps only.
+  const auto moved = std::get<flame::Flame>(drift(Drawing(f), 1.5, {.amount = 0.3, .seed = 2}));
+  EXPECT_NE(moved.xforms[0].pre, f.xforms[0].pre);
+  EXPECT_EQ(moved.xforms[0].variations, f.xforms[0].variations);
+  EXPECT_EQ(moved.final_xform, f.final_xform);
+  s.animate = Animate::drift;
+  s.drift_amount = 0.3;
+  s.drift_speed = 2;
+  s.keyframe_interval = 3;
+  FractalEngine drifting(s, size);
+  EXPECT_EQ(cv::norm(drifting.filter(frame, 0), fixed.filter(frame, 0), cv::NORM_INF), 0);
+  EXPECT_GT(cv::norm(drifting.filter(frame, 9), fixed.filter(frame, 9), cv::NORM_INF), 0);
+  // G must have one map per xform.
+  s.colouring = default_colouring(3);
+  EXPECT_THROW(FractalEngine{s}, Error);
+}
+
 TEST(fractal_engine, a_stop_request_ends_every_map_build) {
   std::atomic<bool> stop{true};
   const cv::Size size{64, 48};

@@ -126,7 +126,7 @@ TEST(settings, a_preset_file_replaces_the_preset) {
                          "[0.5, 0, 0, 0.5, 0.5, 0.5]]\n";
   PropertyValues v;
   v.preset_file = file;
-  EXPECT_EQ(settings_of(v).engine.drawing.size(), 2u);
+  EXPECT_EQ(engine::map_count(settings_of(v).engine.drawing), 2u);
   v.preset_file = "/no/such/preset.toml";
   EXPECT_THROW(settings_of(v), Error);
   v.preset_file = file;

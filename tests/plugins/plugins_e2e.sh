@@ -68,6 +68,29 @@ ffmpeg_lossless)
   p=$(min_psnr ffmpeg.mkv clip.mkv 30)
   awk -v p="$p" 'BEGIN { exit !(p < 20) }' || fail "the output looks like the input ($p dB)"
   ;;
+ffmpeg_flame)
+  # A fractal flame as the preset (docs/flames.md): the plugin through FFmpeg is `ifsfx filter
+  # --preset FILE.flame`, bit for bit, fixed and drifting.
+  cat > spiral.flame <<'XML'
+<flame name="spiral" size="80 60" center="0 0" scale="20">
+  <xform weight="0.5" color="0" linear="0.8" swirl="0.2" coefs="0.6 0.2 -0.2 0.6 0.5 0"/>
+  <xform weight="0.5" color="1" spherical="1" coefs="0.5 0 0 0.5 -0.5 0.2"/>
+  <finalxform color="0.5" linear="1" coefs="1 0 0 1 0 0"/>
+</flame>
+XML
+  clip clip.mkv 128:96 -c:v ffv1 -pix_fmt bgr0
+  "$ifsfx" filter clip.mkv -o cli.mkv --codec ffv1 --preset spiral.flame --seed 3 -q
+  ffmpeg -v error -y -i clip.mkv -vf "frei0r=ifsfx:spiral.flame||0|black|y|0|0.2|3|" \
+    -c:v ffv1 -pix_fmt bgr0 ffmpeg.mkv 2> err.txt || fail "ffmpeg: $(cat err.txt)"
+  [[ $(frames_of ffmpeg.mkv) == 30 ]] || fail "ffmpeg wrote $(frames_of ffmpeg.mkv) frames"
+  same_frames ffmpeg.mkv cli.mkv 30
+  p=$(min_psnr ffmpeg.mkv clip.mkv 30)
+  awk -v p="$p" 'BEGIN { exit !(p < 20) }' || fail "the output looks like the input ($p dB)"
+  "$ifsfx" filter clip.mkv -o drift.mkv --codec ffv1 --preset spiral.flame --seed 3 \
+    --animate drift --drift-amount 0.3 --drift-speed 1 -q
+  p=$(min_psnr drift.mkv cli.mkv 30)
+  awk -v p="$p" 'BEGIN { exit !(p < 1000) }' || fail "the drift did not move the flame"
+  ;;
 ffmpeg_h264)
   # A real H.264 clip: FFmpeg's YUV→RGBA conversion and ifsfx's YUV→BGR may differ in rounding.
   # (FFmpeg 5.1 hands frei0r plugins rows padded to 64 bytes as if they were contiguous, so its

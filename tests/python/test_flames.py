@@ -44,6 +44,20 @@ def test_render_of_a_flame_is_the_measure_at_the_size_given(cli, tmp_path, flame
                                                      alpha=True), a)
 
 
-def test_other_modes_of_a_flame_are_refused_with_the_reason(flame_file):
-    with pytest.raises(ValueError, match="mode tops: a flame renders in mode measure"):
-        ifsfx.render(flame_file, mode="tops")
+def test_every_mode_of_a_flame_equals_the_cli_and_load_preset_gives_a_flame(cli, tmp_path,
+                                                                           flame_file, photo):
+    flame = ifsfx.load_preset(flame_file)
+    assert isinstance(flame, ifsfx.Flame) and len(flame) == 2 and flame.size == (80, 60)
+    for mode in ("attractor", "tops"):
+        a = ifsfx.render(flame, mode=mode, size=(64, 48), quality=4, seed=5)
+        b = cli_image(cli, tmp_path, "render", flame_file, "--mode", mode, "--size", "64x48",
+                      "--quality", "4", "--seed", "5", name=f"{mode}.png")
+        np.testing.assert_array_equal(a, b)
+        assert a.max() > 0
+    image, path = photo
+    a = ifsfx.render(flame_file, mode="steal", source=path, size=(64, 48), quality=4)
+    b = cli_image(cli, tmp_path, "render", flame_file, "--mode", "steal", "--source", str(path),
+                  "--size", "64x48", "--quality", "4", name="steal.png")
+    np.testing.assert_array_equal(a, b)
+    with pytest.raises(ValueError, match="must have as many maps as spiral"):
+        ifsfx.render(flame_file, mode="steal", source=path, colouring="sierpinski-triangle")

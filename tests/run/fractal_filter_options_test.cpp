@@ -21,13 +21,13 @@ namespace {
 TEST(fractal_filter_args, settings_load_the_presets_as_data) {
   FractalFilterArgs args{.preset = "maple-leaf", .colouring = "maple-leaf", .view = "0,0,1,1"};
   const engine::FractalSettings s = args.settings();
-  EXPECT_EQ(s.drawing, load_ifs("maple-leaf").ifs);
+  EXPECT_EQ(s.drawing, engine::Drawing(load_ifs("maple-leaf").ifs));
   ASSERT_TRUE(s.colouring.has_value());
-  EXPECT_EQ(*s.colouring, load_colouring("maple-leaf", s.drawing));
+  EXPECT_EQ(*s.colouring, load_colouring("maple-leaf", std::get<Ifs>(s.drawing)));
   ASSERT_TRUE(s.sampling.view.has_value());
   EXPECT_EQ(s.sampling.view->x1, 1);
   EXPECT_FALSE(FractalFilterArgs{}.settings().colouring.has_value());
-  EXPECT_EQ(FractalFilterArgs{}.settings().drawing, engine::default_drawing());
+  EXPECT_EQ(FractalFilterArgs{}.settings().drawing, engine::Drawing(engine::default_drawing()));
 }
 
 TEST(fractal_filter_args, bad_presets_fail_naming_them) {
@@ -59,7 +59,7 @@ TEST(fractal_filter_args, hands_on_the_warning_of_a_fractint_entry_contracting_o
                              "Fractint renders it"),
             std::string::npos)
       << warnings[0];
-  EXPECT_EQ(s.drawing.size(), 4u);
+  EXPECT_EQ(engine::map_count(s.drawing), 4u);
   std::vector<std::string> none;
   FractalFilterArgs{}.settings(&none);
   EXPECT_TRUE(none.empty());

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include "flame/flame_chaos.h"
+#include "flame/variations.h"
 #include "ifs/error.h"
 #include "ifs/preset.h"
 #include "ifs/steal_picture.h"
@@ -51,6 +53,40 @@ TEST(render_still, steal_colours_the_source_through_the_map_it_returns) {
   EXPECT_TRUE(testing::same_bytes(still.image, expected));
   EXPECT_GT(still.steal.levels, 0);
   EXPECT_DOUBLE_EQ(still.stats.coverage, still.steal.coverage);
+}
+
+// A flame: its attractor, tops and steal are flame_chaos's pictures; the exact descent is refused
+// with the reason.
+TEST(render_still, a_flame_draws_each_mode_through_the_chaos_game) {
+  const flame::Variation* linear = flame::find_variation("linear");
+  const flame::Variation* swirl = flame::find_variation("swirl");
+  flame::Flame f;
+  f.camera = {.width = 96, .height = 80, .scale = 30};
+  f.xforms = {{.pre = {0.5, 0, 0, 0.5, -0.5, 0}, .variations = {{.id = linear->id}}},
+              {.pre = {0.5, 0, 0, 0.5, 0.5, 0}, .variations = {{.id = swirl->id}}}};
+  RenderOptions options;
+  options.sampling.quality = 4;
+  EXPECT_TRUE(testing::same_bytes(
+      render_still(
+          f, {.mode = RenderMode::attractor, .size = kSize, .options = options, .exact = false})
+          .image,
+      flame::flame_attractor(f, kSize, options.sampling)));
+  EXPECT_TRUE(testing::same_bytes(
+      render_still(f, {.mode = RenderMode::tops, .size = kSize, .options = options, .exact = false})
+          .image,
+      flame::flame_tops(f, kSize, {.sampling = options.sampling, .exact = false}, {}, true)));
+  cv::Mat source(40, 50, CV_8UC3);
+  cv::randu(source, 0, 255);
+  const StillResult still = render_still(f, {.mode = RenderMode::steal,
+                                             .size = kSize,
+                                             .options = options,
+                                             .exact = false,
+                                             .source = source});
+  const StealMap map = flame::flame_steal_map(f, default_colouring(2), kSize,
+                                              {.sampling = options.sampling, .exact = false});
+  EXPECT_TRUE(testing::same_bytes(still.image,
+                                  with_coverage_alpha(apply(map, source), map.coverage, true)));
+  EXPECT_THROW(render_still(f, {.mode = RenderMode::tops, .size = kSize}), Error);
 }
 
 TEST(render_still, a_steal_without_a_source_is_refused) {

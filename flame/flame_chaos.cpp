@@ -1,0 +1,385 @@
+// SPDX-License-Identifier: Apache-2.0
+// A flame's attractor, tops and steal map by ifsfx's chaos game (flame/flame_chaos.h).
+#include "flame/flame_chaos.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "flame/render_camera.h"
+#include "flame/xform_eval.h"
+#include "ifs/detail/address_raster.h"
+#include "ifs/detail/preconditions.h"
+#include "ifs/detail/walkers.h"
+#include "ifs/error.h"
+#include "ifs/parallel.h"
+#include "ifs/rng.h"
+
+namespace ifsfx::flame {
+namespace {
+
+// A point beyond this (or not a number) has left the flame: its walker starts again (the
+// renderer's rule, flame/detail/render_chaos.h).
+constexpr double kEscape = 1e10;
+// Burn-in of a flame that is not an affine IFS: no contraction factor says how long the walk
+// takes to forget its start; flam3 discards 15, the affine chaos game at least 64.
+constexpr int kFlameBurnIn = 64;
+
+// The flame plane's y points down, the IFS plane's up: S(x, y) = (x, −y), its own inverse.
+Point flip(Point p) {
+  return {p.x, -p.y};
+}
+
+// The camera at `size`: the framing kept, the scale following the width (render_flame's rule).
+Camera sized_camera(const Flame& flame, cv::Size size) {
+  Camera camera = flame.camera;
+  if (size.width != camera.width || size.height != camera.height) {
+    camera.scale *= static_cast<double>(size.width) / camera.width;
+    camera.width = size.width;
+    camera.height = size.height;
+  }
+  return camera;
+}
+
+// Picks the next xform: [0] by the weights alone, [1 + i] after xform i by weight × chaos row i
+// (a row of zeros falls back to the weights), as the renderer picks them.
+std::vector<MapPicker> pickers_of(const Flame& flame) {
+  std::vector<double> weights;
+  bool xaos = false;
+  double total = 0;
+  for (const Xform& xf : flame.xforms) {
+    weights.push_back(xf.weight);
+    total += xf.weight;
+    for (double c : xf.chaos) xaos = xaos || c != 1;
+  }
+  // Normalised as effective_probabilities normalises an IFS's, so that an affine flame's table
+  // is its IFS's to the bit.
+  for (double& w : weights) w /= total;
+  std::vector<MapPicker> out{MapPicker(weights)};
+  if (!xaos) return out;
+  for (const Xform& from : flame.xforms) {
+    std::vector<double> row = weights;
+    double sum = 0;
+    for (std::size_t j = 0; j < row.size(); ++j) {
+      if (j < from.chaos.size()) row[j] *= from.chaos[j];
+      sum += row[j];
+    }
+    out.emplace_back(sum > 0 ? row : weights);
+  }
+  return out;
+}
+
+// The walkers of one flame on one viewport: the affine kernels' lanes (ifs/detail/walkers.h) —
+// each lane starts at a uniform point of [0, 1)² from its own xoshiro256+, picks every xform
+// with one draw of it, burns in, then plots — with the xform's step in place of the affine map.
+// Random variations draw from a second generator per lane, so the picks are the kernels' picks
+// whatever the variations draw. Lanes run one after another: what they plot is merged by max
+// or OR, which ignores the order.
+class FlameWalk {
+ public:
+  FlameWalk(const Flame& flame, const Viewport& viewport, const std::optional<AffineMap>& turn,
+            int burn_in)
+      : flame_(flame), pickers_(pickers_of(flame)), turn_(turn), burn_in_(burn_in) {
+    const AffineMap to_pixel = viewport.plane_to_pixel();
+    sx_ = to_pixel.a, ox_ = to_pixel.e, sy_ = to_pixel.d, oy_ = to_pixel.f;
+    width_ = viewport.size.width;
+    height_ = viewport.size.height;
+    bits_ = detail::symbol_bits(flame.xforms.size());
+  }
+
+  int bits() const { return bits_; }
+
+  // `points` points of chunk `chunk`: plot(pixel, key) for each that lands on the raster, its
+  // address key (σk in the top b bits, docs/design.md §2).
+  template <class Plot>
+  void walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, Plot&& plot) const {
+    const detail::LaneSeeds seeds = detail::lane_seeds(seed, chunk);
+    for (int lane = 0; lane < detail::kLanes; ++lane) {
+      const std::uint64_t n = points / detail::kLanes +
+                              (static_cast<std::uint64_t>(lane) < points % detail::kLanes ? 1 : 0);
+      walk_lane(seeds.s[lane], n, plot);
+    }
+  }
+
+ private:
+  template <class Plot>
+  void walk_lane(const std::uint64_t (&state)[4], std::uint64_t n, Plot& plot) const {
+    detail::LaneRng rng(state);
+    Rng variations(stream_seed(state[0], state[1]));
+    const int shift = 64 - bits_;
+    Point p;
+    std::uint64_t key = 0;
+    std::size_t picker = 0;
+    int burn = 0;
+    const auto start = [&] {
+      const double x = rng.unit();
+      p = {x, rng.unit()};
+      key = 0;
+      picker = 0;
+      burn = burn_in_;
+    };
+    start();
+    for (std::uint64_t plotted = 0; plotted < n;) {
+      const std::uint32_t k = pickers_[picker](rng.next());
+      if (pickers_.size() > 1) picker = 1 + k;
+      const Point q = flip(apply_xform(flame_.xforms[k], flip(p), variations));
+      if (!(std::abs(q.x) < kEscape && std::abs(q.y) < kEscape)) {
+        start();
+        continue;
+      }
+      p = q;
+      key = (key >> bits_) | (static_cast<std::uint64_t>(k) << shift);
+      if (burn > 0) {
+        --burn;
+        continue;
+      }
+      ++plotted;
+      Point x = p;
+      if (flame_.final_xform) x = flip(apply_xform(*flame_.final_xform, flip(x), variations));
+      if (turn_) x = (*turn_)(x);
+      // The kernels' pixel mapping, to the bit: px = sx·x + ox, py = sy·y + oy.
+      const double px = sx_ * x.x + ox_, py = sy_ * x.y + oy_;
+      if ((px >= 0) & (px < width_) & (py >= 0) & (py < height_))
+        plot(static_cast<long>(py) * width_ + static_cast<long>(px), key);
+    }
+  }
+
+  const Flame& flame_;
+  std::vector<MapPicker> pickers_;
+  std::optional<AffineMap> turn_;
+  int burn_in_;
+  double sx_ = 0, ox_ = 0, sy_ = 0, oy_ = 0;
+  int width_ = 0, height_ = 0;
+  int bits_ = 1;
+};
+
+// Everything a picture of a flame needs: its viewport, its affine IFS when it is one that
+// contracts (then the affine chaos game's Hutchinson passes, burn-in and pixel-centre steal
+// apply), and the camera's turn of the plotted points.
+struct Plan {
+  Viewport viewport;
+  std::optional<Ifs> affine;
+  std::optional<AffineMap> turn;
+};
+
+Plan plan_of(const Flame& flame, cv::Size size, const Sampling& sampling) {
+  Plan plan{flame_viewport(flame, size, sampling), affine_ifs(flame), std::nullopt};
+  if (plan.affine && !(plan.affine->contraction() < 1)) plan.affine.reset();
+  if (!sampling.view && flame.camera.rotate != 0) {
+    // The camera's bins (flame plane → pixels, turned) against the unturned viewport: the turn
+    // in the IFS plane is V⁻¹ ∘ M ∘ S.
+    const AffineMap M = flame_raster(sized_camera(flame, size), 1, 0).to_bins;
+    const AffineMap S{1, 0, 0, -1, 0, 0};
+    plan.turn = plan.viewport.plane_to_pixel().inverse(0)->compose(M).compose(S);
+  }
+  return plan;
+}
+
+void check_inputs(const Flame& flame, cv::Size size, const Sampling& sampling, bool exact) {
+  check_flame_chaos(sampling, exact);
+  if (flame.xforms.empty())
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("flame \"{}\": has no xform (got 0)", flame.name));
+  Ifs pre;
+  for (const Xform& xf : flame.xforms) {
+    pre.maps.push_back(xf.pre);
+    pre.probabilities.push_back(xf.weight);
+  }
+  pre.name = flame.name.empty() ? "flame" : flame.name;
+  detail::check_chaos_game({.ifs = pre, .size = size, .sampling = &sampling});
+}
+
+// The tops keys of a flame on its plan: the affine coverage policy over the flame's walk.
+detail::AddressRaster flame_keys(const Flame& flame, const Plan& plan, const Sampling& sampling,
+                                 int key_bits, detail::ChaosTopsStats* stats) {
+  const int bits = detail::symbol_bits(flame.xforms.size());
+  const int burn_in =
+      std::max(plan.affine ? default_burn_in(*plan.affine) : kFlameBurnIn, 64 / bits + 1);
+  const auto walk = std::make_shared<const FlameWalk>(flame, plan.viewport, plan.turn, burn_in);
+  const auto run = [walk](auto* cells, std::uint64_t seed, std::uint64_t chunk,
+                          std::uint64_t points) {
+    using Cell = std::remove_pointer_t<decltype(cells)>;
+    constexpr int kShift = 64 - 8 * static_cast<int>(sizeof(Cell));
+    walk->walk(seed, chunk, points, [cells](long pixel, std::uint64_t key) {
+      // Top keeps the larger address (eq. 7): each pixel keeps its largest key.
+      const Cell v = static_cast<Cell>(key >> kShift) | 1;
+      if (v > cells[pixel]) cells[pixel] = v;
+    });
+  };
+  const detail::KeyWalk keys{
+      .run32 = [run](std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
+                     std::uint32_t* cells) { run(cells, seed, chunk, points); },
+      .run64 = [run](std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
+                     std::uint64_t* cells) { run(cells, seed, chunk, points); },
+      .bits = bits,
+      .affine = plan.affine ? &*plan.affine : nullptr};
+  return detail::chaos_tops(keys, plan.viewport,
+                            {.quality = sampling.quality,
+                             .seed = sampling.seed,
+                             .threads = sampling.threads,
+                             .key_bits = key_bits,
+                             .cancel = sampling.cancel},
+                            stats);
+}
+
+// T of each covered pixel from its whole key: g_σ1 ∘ … ∘ g_σK(c), c the fixed point of g_σK — the
+// colouring orbit of the pixel's winning point, run in lockstep with it (paper §4), to within
+// s_G^K. CV_32FC2 (u, v), v = 1 − y.
+cv::Mat uv_of_whole_keys(const detail::AddressRaster& tops, const Ifs& G, int threads) {
+  const auto n = static_cast<std::uint32_t>(G.size());
+  const int K = tops.symbols();
+  cv::Mat uv(tops.viewport.size, CV_32FC2, cv::Scalar::all(0));
+  parallel_for(static_cast<std::size_t>(uv.rows), threads, [&](std::size_t r, int) {
+    const int row = static_cast<int>(r);
+    auto* out = uv.ptr<cv::Vec2f>(row);
+    for (int col = 0; col < uv.cols; ++col) {
+      const std::uint64_t key = tops.at(col, row);
+      if (key == 0) continue;
+      const auto symbol = [&](int m) { return std::min(tops.symbol(key, m), n - 1); };
+      Point y = detail::fixed_point(G.maps[symbol(K - 1)]);
+      for (int m = K - 1; m >= 0; --m) y = G.maps[symbol(m)](y);
+      out[col] = cv::Vec2f(static_cast<float>(y.x), static_cast<float>(1 - y.y));
+    }
+  });
+  return uv;
+}
+
+}  // namespace
+
+void check_flame_chaos(const Sampling& sampling, bool exact) {
+  if (exact)
+    throw Error(ErrorKind::invalid_argument,
+                "exact: the exact descent follows inverse maps, and a flame's xforms have none; "
+                "its tops and steal maps come from the chaos game (got a flame)");
+  if (sampling.seamless)
+    throw Error(ErrorKind::invalid_argument,
+                "seamless: a flame is drawn in its own plane, not on the torus of a tile (got a "
+                "flame)");
+}
+
+Viewport flame_viewport(const Flame& flame, cv::Size size, const Sampling& sampling) {
+  if (sampling.view) return {*sampling.view, size, false};
+  const Camera camera = sized_camera(flame, size);
+  const double ppu = camera.scale * std::exp2(camera.zoom);
+  const double half_w = 0.5 * size.width / ppu, half_h = 0.5 * size.height / ppu;
+  // The flame plane's rows [cy − h, cy + h] downwards are the IFS plane's [−cy − h, −cy + h].
+  return {{camera.center.x - half_w, -camera.center.y - half_h, camera.center.x + half_w,
+           -camera.center.y + half_h},
+          size,
+          false};
+}
+
+std::optional<Ifs> affine_ifs(const Flame& flame) {
+  if (flame.final_xform || flame.xforms.empty()) return std::nullopt;
+  Ifs ifs;
+  ifs.name = flame.name;
+  for (const Xform& xf : flame.xforms) {
+    const bool plain = xf.variations.empty() || (xf.variations.size() == 1 &&
+                                                 variation(xf.variations[0].id).name == "linear" &&
+                                                 xf.variations[0].weight == 1);
+    const bool xaos =
+        std::any_of(xf.chaos.begin(), xf.chaos.end(), [](double c) { return c != 1; });
+    if (!plain || xf.post || !xf.pre_variations.empty() || !xf.post_variations.empty() || xaos)
+      return std::nullopt;
+    const AffineMap& A = xf.pre;
+    ifs.maps.push_back({A.a, -A.b, -A.c, A.d, A.e, -A.f});  // S∘A∘S
+    // Unnormalised: effective_probabilities divides by their sum as pickers_of does.
+    ifs.probabilities.push_back(xf.weight);
+  }
+  return ifs;
+}
+
+cv::Mat flame_attractor(const Flame& flame, cv::Size size, const Sampling& sampling,
+                        RenderStats* stats) {
+  check_inputs(flame, size, sampling, false);
+  const auto start = std::chrono::steady_clock::now();
+  const Plan plan = plan_of(flame, size, sampling);
+  const FlameWalk walk(flame, plan.viewport, plan.turn,
+                       plan.affine ? default_burn_in(*plan.affine) : kFlameBurnIn);
+  const auto points =
+      static_cast<std::uint64_t>(std::ceil(sampling.quality * size.width * double(size.height)));
+  const std::uint64_t chunks = detail::chunk_count(points);
+  const int workers = worker_count(chunks, sampling.threads);
+  std::vector<cv::Mat> hits(static_cast<std::size_t>(workers));
+  parallel_for(chunks, workers, [&](std::size_t chunk, int worker) {
+    sampling.cancel.check("render");
+    cv::Mat& mask = hits[static_cast<std::size_t>(worker)];
+    if (mask.empty()) mask = cv::Mat::zeros(size, CV_8UC1);
+    walk.walk(sampling.seed, chunk, detail::chunk_size(points, chunk),
+              [&mask](long pixel, std::uint64_t) { mask.data[pixel] = 255; });
+  });
+  cv::Mat out = cv::Mat::zeros(size, CV_8UC1);
+  for (const cv::Mat& mask : hits)
+    if (!mask.empty()) cv::bitwise_or(out, mask, out);
+  if (stats)
+    *stats = {points,
+              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+              cv::countNonZero(out) / static_cast<double>(size.area()), plan.viewport.view};
+  return out;
+}
+
+TopSymbols flame_top_symbols(const Flame& flame, cv::Size size, const TopsOptions& options) {
+  check_inputs(flame, size, options.sampling, options.exact);
+  const Plan plan = plan_of(flame, size, options.sampling);
+  detail::ChaosTopsStats chaos;
+  // 32-bit keys: 32/b ≥ 2 symbols, as top_symbols keeps them.
+  TopSymbols out = detail::symbols_of(flame_keys(flame, plan, options.sampling, 32, &chaos));
+  out.points = chaos.points;
+  return out;
+}
+
+cv::Mat flame_tops(const Flame& flame, cv::Size size, const TopsOptions& options,
+                   const Rgb& background, bool alpha, TopsPictureStats* stats) {
+  const TopSymbols tops = flame_top_symbols(flame, size, options);
+  std::vector<Rgb> colours;
+  for (std::size_t n = 0; n < flame.xforms.size(); ++n)
+    colours.push_back(palette_colour(n, flame.xforms.size()));
+  if (stats) *stats = {.view = tops.view, .points = tops.points};
+  return tops_picture(render_tops(tops, colours, options.second_symbol), background, alpha, stats);
+}
+
+StealMap flame_steal_map(const Flame& flame, const Ifs& G, cv::Size size,
+                         const StealMapOptions& options, StealMapStats* stats) {
+  const auto start = std::chrono::steady_clock::now();
+  check_inputs(flame, size, options.sampling, options.exact);
+  detail::check_chaos_game(
+      {.ifs = G, .name = G.name.empty() ? "colouring IFS" : G.name, .contracting = true});
+  if (G.size() != flame.xforms.size())
+    throw Error(ErrorKind::invalid_ifs,
+                fmt::format("colouring IFS: must have one map per xform of the flame (got {} for "
+                            "{})",
+                            G.size(), flame.xforms.size()));
+  const Plan plan = plan_of(flame, size, options.sampling);
+  // compute_steal_map's record size: 32 bits when their 32/b symbols pin T to 1/8192 through G.
+  const int bits = detail::symbol_bits(G.size());
+  const bool short_keys = std::pow(detail::word_contraction(G), 32 / bits) * 8192 <= 1;
+  detail::ChaosTopsStats chaos;
+  const detail::AddressRaster tops =
+      flame_keys(flame, plan, options.sampling, short_keys ? 32 : 64, &chaos);
+  options.sampling.cancel.check("steal map");
+  StealMap map;
+  map.source_uv = plan.affine
+                      ? detail::uv_from_keys(tops, *plan.affine, G, options.sampling.threads)
+                      : uv_of_whole_keys(tops, G, options.sampling.threads);
+  map.coverage = tops.coverage();
+  if (stats) {
+    const double area = static_cast<double>(size.area());
+    *stats = {
+        .points = chaos.points,
+        .rounds = chaos.rounds,
+        .hit = static_cast<double>(chaos.hit) / area,
+        .propagated = chaos.propagated,
+        .filled = chaos.filled,
+        .coverage = cv::countNonZero(map.coverage) / area,
+        .levels = tops.symbols(),
+        .seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+        .view = plan.viewport.view};
+  }
+  return map;
+}
+
+}  // namespace ifsfx::flame
