@@ -22,6 +22,7 @@
 #include <fmt/format.h>
 #include <media-io/video-io.h>
 
+#include "engine/drawing.h"
 #include "engine/drift.h"
 #include "ifs/parallel.h"
 #include "ifs/sampling.h"
@@ -103,11 +104,11 @@ void breakdown(const PluginSettings& drift_settings, const Webcam& cam) {
   engine::FractalEngine engine(drift_settings.engine);
   const engine::FractalSettings& s = engine.settings();
   StealMapOptions map_options = engine.map_options();
-  map_options.sampling.view = framed_viewport(engine.drawing(), kSize, s.sampling).view;
+  map_options = engine::with_fixed_view(engine.drawing(), kSize, map_options);
   StealMap map;
   const auto build = [&](int threads, double seconds) {
     map_options.sampling.threads = threads;
-    map = compute_steal_map(engine::drift(engine.drawing(), seconds, engine.drift_options()),
+    map = engine::steal_map(engine::drift(engine.drawing(), seconds, engine.drift_options()),
                             engine.colouring(), kSize, map_options);
     return engine::prepare_filter(map, kSize, s.interpolation, threads);
   };

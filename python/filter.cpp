@@ -216,7 +216,8 @@ std::unique_ptr<Filter> make_filter(
 
 void bind_filter(py::module_& m) {
   const engine::FractalSettings d;
-  const double fps = app::FilterArgs{}.fps;
+  const app::FilterArgs filter_defaults;  // a named object: GCC 12 warns on the temporary's string
+  const double fps = filter_defaults.fps;
   py::class_<Filter>(m, "Filter", kFilterDoc)
       .def(py::init(&make_filter), py::arg("preset") = engine::kDefaultPreset, py::kw_only(),
            py::arg("colouring") = py::none(), py::arg("view") = py::none(),

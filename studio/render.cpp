@@ -133,12 +133,15 @@ std::optional<IfsPreset> colouring_preset(const json& body, const std::string& n
 }
 
 std::optional<Ifs> colouring_from_json(const json& body, const Ifs& F) {
+  return colouring_from_json(body, F.size(), "map of the IFS");
+}
+
+std::optional<Ifs> colouring_from_json(const json& body, std::size_t maps, const std::string& per) {
   const auto g = colouring_preset(body, "colouring");
   if (!g) return std::nullopt;
-  if (g->ifs.size() != F.size())
+  if (g->ifs.size() != maps)
     throw Error(ErrorKind::invalid_ifs,
-                fmt::format("colouring: one map per map of the IFS (got {} for {})", g->ifs.size(),
-                            F.size()));
+                fmt::format("colouring: one map per {} (got {} for {})", per, g->ifs.size(), maps));
   return fit_to_unit_square(g->ifs);  // as load_colouring does with a --colouring preset
 }
 
@@ -177,14 +180,19 @@ StudioRender studio_render_from_json(
                 body["threads"].dump());
     r.options.sampling.threads = static_cast<int>(threads);
   }
+  // A flame's tops and steal maps come from the chaos game unless the exact descent is asked for,
+  // which render_still refuses with the reason (as `ifsfx render FILE.flame --exact`).
+  if (flame) r.exact = false;
   if (body.contains("exact")) {
     if (!body["exact"].is_boolean())
       bad_field("exact", "must be true or false", body["exact"].dump());
     r.exact = body["exact"].get<bool>();
   }
-  if (!flame && render_mode_info(r.mode).source) {
+  if (render_mode_info(r.mode).source) {
     r.source = source_path(text(body, "source", "sample"));
-    r.colouring = colouring_from_json(body, r.preset.ifs);
+    r.colouring =
+        flame ? colouring_from_json(body, r.flame->flame.xforms.size(), "xform of the flame")
+              : colouring_from_json(body, r.preset.ifs);
   }
   const std::string format = text(body, "format", "png");
   if (format != "png" && format != "rgba") bad_field("format", "png or rgba", format);
@@ -229,10 +237,27 @@ StudioImage flame_image(const StudioRender& r, CancelToken cancel, bool alpha) {
   return out;
 }
 
+// A flame's attractor, tops or steal picture as `ifsfx render FILE.flame --mode MODE --size WxH`
+// makes it: its xforms through the chaos game, framed by its camera (moved to the page's view).
+StudioImage flame_chaos_image(const StudioRender& r, StillJob job) {
+  flame::Flame f = r.flame->flame;
+  f.camera = studio_camera(f.camera, r.size, r.options.sampling.view);
+  job.options.sampling.view.reset();  // the camera frames it
+  const std::uint64_t seed = job.options.sampling.seed;
+  StillResult still = render_still(engine::Drawing{f}, job);
+  StudioImage out{.image = std::move(still.image), .view = camera_view(f.camera)};
+  out.write.metadata = {{"ifsfx:flame", f.name},
+                        {"ifsfx:mode", to_string(r.mode)},
+                        {"ifsfx:seed", std::to_string(seed)},
+                        {"ImageDescription", fmt::format("ifsfx render {} --mode {} --seed {}",
+                                                         f.name, to_string(r.mode), seed)}};
+  return out;
+}
+
 }  // namespace
 
 StudioImage studio_image(const StudioRender& r, CancelToken cancel, bool alpha) {
-  if (r.flame) return flame_image(r, cancel, alpha);
+  if (r.flame && r.mode == RenderMode::measure) return flame_image(r, cancel, alpha);
   StillJob job{.mode = r.mode,
                .size = r.size,
                .options = r.options,
@@ -242,6 +267,7 @@ StudioImage studio_image(const StudioRender& r, CancelToken cancel, bool alpha) 
                .colouring = r.colouring};
   job.options.sampling.cancel = cancel;
   if (render_mode_info(r.mode).source) job.source = read_image(r.source).pixels;
+  if (r.flame) return flame_chaos_image(r, std::move(job));
   StillResult still = render_still(r.preset.ifs, job);
   StudioImage out{.image = std::move(still.image), .view = still.stats.view};
   out.write.metadata =

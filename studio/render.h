@@ -61,6 +61,9 @@ nlohmann::json preset_to_json(const IfsPreset& preset);
 // badly shaped field and Error{invalid_ifs} for the wrong count or an IFS that does not contract
 // on average.
 std::optional<Ifs> colouring_from_json(const nlohmann::json& body, const Ifs& F);
+// The same for `maps` maps, the count's rule naming what each map is for ("xform of the flame").
+std::optional<Ifs> colouring_from_json(const nlohmann::json& body, std::size_t maps,
+                                       const std::string& per);
 
 // The colouring of a request as a preset of its own (the TOML that save writes beside the
 // preset), named `name`; nullopt without one.
@@ -76,20 +79,22 @@ struct StudioRender {
   cv::Size size{768, 768};
   RenderMode mode = RenderMode::tops;
   RenderOptions options;         // `ifsfx render`'s defaults but for what the request sets
-  bool exact = true;             // tops/steal: exact descent (--exact) or the chaos game (--chaos)
+  bool exact = true;             // tops/steal: exact descent (--exact) or the chaos game (--chaos);
+                                 // a flame's default is the chaos game
   std::filesystem::path source;  // steal mode: the source image
   std::optional<Ifs> colouring;  // steal mode: G fitted to the unit square; none: the default
   PictureFormat format = PictureFormat::png;
   // A fractal flame instead of `preset` (the request had "flame"), rendered as `ifsfx render
-  // FILE.flame` renders it (flame/render.h) at `size`, framed on options.sampling.view when
-  // given; its quality is the request's when given.
+  // FILE.flame --mode MODE` renders it at `size` — measure: the flame look (flame/render.h);
+  // attractor, tops, steal: its xforms through the chaos game (flame/flame_chaos.h) — framed on
+  // options.sampling.view when given; its quality is the request's when given.
   std::optional<StudioFlame> flame;
   int flame_depth = CV_8U;  // the flame's pixels: CV_8U, CV_16U or CV_32F (a still's file)
 };
 
 // The one place where the page's settings become library options. `source_path` turns the request's
 // "source" into a readable file or throws Error{invalid_argument}. Throws Error{parse} or
-// Error{invalid_argument} for a bad field, naming it (a flame in another mode than measure too).
+// Error{invalid_argument} for a bad field, naming it.
 StudioRender studio_render_from_json(
     const nlohmann::json& body,
     const std::function<std::filesystem::path(const std::string&)>& source_path);

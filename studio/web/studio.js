@@ -203,7 +203,6 @@ function restore(from, to) {
     view.rect = frameRect && !doc.flame ? frameRect.slice() : null;
     picture = null;
   }
-  kindChanged();
   changed();
 }
 const undo = () => restore(undoStack, redoStack);
@@ -274,7 +273,12 @@ const kFlamePreviewQuality = 10;
 
 function requestBody() {
   if (doc.flame) {
-    const body = { name: doc.name, maps: doc.maps, flame: doc.flame, mode: 'measure' };
+    // measure: the flame look; attractor, tops, steal: its xforms through the chaos game.
+    const body = { name: doc.name, maps: doc.maps, flame: doc.flame, mode: $('mode').value };
+    if (body.mode === 'steal') {
+      body.source = $('source').value || 'sample';
+      if (doc.colouring) body.colouring = doc.colouring;
+    }
     // Framed by its camera until panned or zoomed: the picture `ifsfx render NAME.flame` makes.
     if (view.framed && view.text() !== (flameView && flameView.join(','))) body.view = view.text();
     return body;
@@ -452,7 +456,7 @@ async function upload(file) {
   try {
     const saved = await uploadImage(file);
     await listSources(saved);
-    if (!doc.flame) $('mode').value = 'steal';  // a flame renders in measure mode only
+    $('mode').value = 'steal';
     status(`${saved}: saved in the folder; it is the source now`);
     modeChanged();
   } catch (e) { status(e.message, true); }
@@ -466,10 +470,10 @@ function saveName(name, flame) {
   return file === openedFile ? `${plain}-2.${flame ? 'flame' : 'toml'}` : file;
 }
 
-// A flame renders in measure mode only (its look); an IFS in any.
-function kindChanged() {
-  for (const o of $('mode').options) o.disabled = Boolean(doc.flame) && o.value !== 'measure';
-  if (doc.flame && $('mode').value !== 'measure') {
+// A flame opens in measure mode, its look as flam3 renders it; its attractor, tops and steal
+// draw its xforms through the chaos game. An IFS keeps the mode chosen.
+function kindChanged(opened) {
+  if (opened && doc.flame && $('mode').value !== 'measure') {
     $('mode').value = 'measure';
     $('source-label').hidden = true;
   }
@@ -488,7 +492,7 @@ function open(preset) {
   openedFile = preset.origin_file || null;
   $('file').value = saveName(preset.name, Boolean(doc.flame));
   if (preset.warnings && preset.warnings.length) status(preset.warnings.join('; '));
-  kindChanged();
+  kindChanged(true);
   changed();
 }
 

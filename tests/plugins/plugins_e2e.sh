@@ -72,7 +72,7 @@ ffmpeg_flame)
   # A fractal flame as the preset (docs/flames.md): the plugin through FFmpeg is `ifsfx filter
   # --preset FILE.flame`, bit for bit, fixed and drifting.
   cat > spiral.flame <<'XML'
-<flame name="spiral" size="80 60" center="0 0" scale="20">
+<flame name="spiral" size="80 60" center="0 0" scale="20" palette="7">
   <xform weight="0.5" color="0" linear="0.8" swirl="0.2" coefs="0.6 0.2 -0.2 0.6 0.5 0"/>
   <xform weight="0.5" color="1" spherical="1" coefs="0.5 0 0 0.5 -0.5 0.2"/>
   <finalxform color="0.5" linear="1" coefs="1 0 0 1 0 0"/>

@@ -10,10 +10,10 @@
 //   contract shows the server's error in the page; two tabs edit at once without disturbing each
 //   other; a flame of a .flame file of the folder opened (its xforms as maps, the palette strip,
 //   the variations table), a map's corner dragged and a variation's weight and parameter changed,
-//   saved as NAME.flame (which `ifsfx render` renders) and reopened as it was saved; `--source
-//   IMAGE` (relative, found in --folder) is the source selected at start. Screenshots are kept in
-//   WORK (studio.png, studio-zoomed.png, studio-measure.png, studio-steal.png, studio-flame.png,
-//   studio-source.png). The drag-to-pixels latency is bench/studio_latency.mjs's,
+//   saved as NAME.flame (which `ifsfx render` renders) and reopened as it was saved, then drawn in
+//   steal mode; `--source IMAGE` (relative, found in --folder) is the source selected at start.
+//   Screenshots are kept in WORK (studio.png, studio-zoomed.png, studio-measure.png,
+//   studio-steal.png, studio-flame.png, studio-flame-steal.png, studio-source.png). The drag-to-pixels latency is bench/studio_latency.mjs's,
 //   not measured here.
 // Usage: node studio_browser_test.mjs IFSFX WORK NODE_MODULES
 import { spawn, execFileSync } from 'node:child_process';
@@ -341,7 +341,7 @@ try {
   // coefs 0.7 0.3 -0.3 0.7 0.2 0.1 (flam3's order, y down) is [0.7, 0.3, -0.3, 0.7, 0.2, -0.1] in the editor.
   check(JSON.stringify(s.maps[0]) === '[0.7,0.3,-0.3,0.7,0.2,-0.1]', `the pre-affine map in the editor plane (${s.maps[0]})`);
   check(await page.evaluate(() => document.getElementById('mode').value === 'measure' &&
-                            document.querySelector('#mode option[value=tops]').disabled), 'a flame renders in measure mode only');
+                            !document.querySelector('#mode option[value=tops]').disabled), 'a flame opens in measure mode, the other modes offered');
   check(await page.evaluate(() => !document.getElementById('flame-panel').hidden &&
                             document.querySelectorAll('#variations tbody tr').length === 2), 'the flame panel lists xform 1\'s two variations');
   const strip = await page.evaluate(() => {
@@ -407,6 +407,14 @@ try {
         JSON.stringify(reopened.flame) === JSON.stringify(edited.flame),
         'the saved flame reopens as it was saved');
   check(await picturePixels(page) === editedPicture, '... with the same picture');
+  // Its xforms through the chaos game: colours stolen from the sample (a picture of its own).
+  await page.selectOption('#mode', 'steal');
+  await settled(page);
+  const stealPicture = await picturePixels(page);
+  check(stealPicture !== editedPicture, 'the flame in steal mode draws another picture');
+  await page.screenshot({ path: path.join(work, 'studio-flame-steal.png') });
+  await page.selectOption('#mode', 'measure');
+  await settled(page);
   check(await page.evaluate((n) => window.studio.errors === n, errorsBefore), 'no flame render failed');
 
   // `--source IMAGE`, a relative name found in --folder (not in the current folder): the page

@@ -286,11 +286,14 @@ cp "$work/body" "$work/spiral.json"
 [[ $(json "d['maps'][0], d['flame']['xforms'][1]['variations'], d['flame']['final']['coefs'], d['flame']['palette']['colours'][1]") == \
    "[0.6, 0.2, -0.2, 0.6, 0.3, 0.1] [{'name': 'spherical', 'params': {}, 'weight': 1.0}] [1.1, 0.0, 0.0, 1.1, 0.0, 0.0] [0.00392156862745098, 0.996078431372549, 0.01568627450980392, 1.0]" ]] &&
   pass "a flame's document: the editor-plane map, variations, final xform, palette" || fail "spiral: $(head -c 600 "$work/body")"
-# flame_pixels DOC SIZE CLI_SPEC WHAT: the studio's pixels of DOC are `ifsfx render CLI_SPEC`'s
+# flame_pixels DOC SIZE CLI_SPEC WHAT [MODE]: the studio's pixels of DOC (in MODE; steal: from
+# photo.png) are `ifsfx render CLI_SPEC [--mode MODE]`'s
 flame_pixels() {
-  local doc=$1 size=$2 spec=$3 what=$4 c
-  c=$(code POST /api/render "${auth[@]}" "${jsonh[@]}" --data "$("$py" -c "import json; d = json.load(open('$doc')); d.update(size='$size', format='rgba'); print(json.dumps(d))")")
-  "$ifsfx" render "$spec" --size "$size" -q -o "$work/cli-flame.png" 2>"$work/cli-flame.err" || fail "$what: ifsfx render $spec: $(cat "$work/cli-flame.err")"
+  local doc=$1 size=$2 spec=$3 what=$4 mode=${5:-measure} c
+  local cli=(--mode "$mode")
+  [[ $mode == steal ]] && cli+=(--source folder/photo.png)
+  c=$(code POST /api/render "${auth[@]}" "${jsonh[@]}" --data "$("$py" -c "import json; d = json.load(open('$doc')); d.update(size='$size', format='rgba', mode='$mode', source='photo.png'); print(json.dumps(d))")")
+  "$ifsfx" render "$spec" "${cli[@]}" --size "$size" -q -o "$work/cli-flame.png" 2>"$work/cli-flame.err" || fail "$what: ifsfx render $spec: $(cat "$work/cli-flame.err")"
   [[ $c == 200 ]] && "$py" "$png_tool" same-pixels "$work/cli-flame.png" "$work/body" "${size%x*}" "${size#*x}" &&
     pass "$what: the studio's pixels are ifsfx render's" || fail "$what: $c, not ifsfx render's pixels ($(head -c 200 "$work/body" | tr -d '\0'))"
 }
@@ -299,6 +302,10 @@ flame_pixels "$work/spiral.json" 96x72 folder/pair.flame:spiral "spiral"
   pass "the flame's view: its camera, y up" || fail "the flame's view: $(header X-Ifsfx-View)"
 code GET "/api/preset?file=pair.flame&entry=turned" "${auth[@]}" >/dev/null && cp "$work/body" "$work/turned.json"
 flame_pixels "$work/turned.json" 80x60 folder/pair.flame:turned "a turned camera and a library palette"
+# Its attractor, tops and steal: the xforms through the chaos game, as `ifsfx render --mode` draws them
+flame_pixels "$work/spiral.json" 96x72 folder/pair.flame:spiral "spiral in tops mode" tops
+flame_pixels "$work/turned.json" 80x60 folder/pair.flame:turned "turned in steal mode from photo.png" steal
+flame_pixels "$work/spiral.json" 64x48 folder/pair.flame:spiral "spiral's attractor" attractor
 # An edit (a map moved, a variation's weight and parameter), saved, renders as the page showed it
 "$py" -c "
 import json
@@ -348,7 +355,8 @@ bad_flame "a weight that is no number" "d['flame']['xforms'][1]['weight'] = 'x'"
 bad_flame "a negative weight (the reader's rule)" "d['flame']['xforms'][1]['weight'] = -1" 'xform 1: weight: must be >= 0'
 bad_flame "one xform for two maps" "d['flame']['xforms'].pop()" 'one per map'
 bad_flame "a palette of 3 colours" "d['flame']['palette']['colours'] = d['flame']['palette']['colours'][:3]" 'must be 256 colours'
-bad_flame "a flame in tops mode" "d['mode'] = 'tops'" 'a flame renders in mode measure'
+bad_flame "a flame's exact descent" "d['mode'] = 'tops'; d['exact'] = True" 'exact'
+bad_flame "a colouring of 3 maps for a flame of 2 xforms" "d['mode'] = 'steal'; d['colouring'] = [[0.5, 0, 0, 0.5, 0, 0]] * 3" 'one map per xform of the flame (got 3 for 2)'
 bad_flame "a flame saved as .toml" "d['file'] = 'spiral.toml'" 'a flame is saved as NAME.flame' save
 bad_flame "a flame saved over its file" "d['file'] = 'pair.flame'" 'pair.flame' save
 bad_flame "a flame sent to the movie filter" "d['movie'] = 'x.mp4'; d['file'] = 'x.mp4'; d['kind'] = 'filter'" 'an affine IFS is needed here' jobs
