@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
+#include "flame/flame_write.h"
 #include "flame/render.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
@@ -143,6 +144,22 @@ std::optional<Ifs> colouring_from_json(const json& body, std::size_t maps, const
     throw Error(ErrorKind::invalid_ifs,
                 fmt::format("colouring: one map per {} (got {} for {})", per, g->ifs.size(), maps));
   return fit_to_unit_square(g->ifs);  // as load_colouring does with a --colouring preset
+}
+
+engine::Drawing drawing_from_json(const json& body, std::string* text) {
+  if (body.is_object() && body.contains("flame") && !body["flame"].is_null()) {
+    flame::Flame f = flame_from_json(body).flame;
+    if (text) *text = flame::flame_xml(f);
+    return f;
+  }
+  IfsPreset preset = preset_from_json(body);
+  if (text) *text = preset.text;
+  return std::move(preset.ifs);
+}
+
+std::optional<Ifs> colouring_for_drawing(const json& body, const engine::Drawing& drawing) {
+  if (const auto* ifs = std::get_if<Ifs>(&drawing)) return colouring_from_json(body, *ifs);
+  return colouring_from_json(body, engine::map_count(drawing), "xform of the flame");
 }
 
 StudioRender studio_render_from_json(

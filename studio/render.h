@@ -27,6 +27,7 @@
 #include <nlohmann/json.hpp>
 #include <opencv2/core.hpp>
 
+#include "engine/drawing.h"
 #include "ifs/cancel.h"
 #include "ifs/image_io.h"
 #include "ifs/preset.h"
@@ -61,6 +62,15 @@ nlohmann::json preset_to_json(const IfsPreset& preset);
 // badly shaped field and Error{invalid_ifs} for the wrong count or an IFS that does not contract
 // on average.
 std::optional<Ifs> colouring_from_json(const nlohmann::json& body, const Ifs& F);
+// What a request draws as a filter or a preview: its flame ("flame", read as flame_from_json
+// reads it) or its affine preset (preset_from_json); `text` gets the file text that tells one
+// drawing from another (the preset's TOML or the flame's XML).
+engine::Drawing drawing_from_json(const nlohmann::json& body, std::string* text = nullptr);
+
+// The colouring IFS G of a request for `drawing`: one map per map of an IFS, per xform of a flame.
+std::optional<Ifs> colouring_for_drawing(const nlohmann::json& body,
+                                         const engine::Drawing& drawing);
+
 // The same for `maps` maps, the count's rule naming what each map is for ("xform of the flame").
 std::optional<Ifs> colouring_from_json(const nlohmann::json& body, std::size_t maps,
                                        const std::string& per);

@@ -73,13 +73,16 @@ int submit_still(JobQueue& jobs, const json& body, StudioContext& context) {
 }
 
 int submit_filter(JobQueue& jobs, const json& body, StudioContext& context) {
-  const IfsPreset preset = preset_from_json(body);
+  const engine::Drawing drawing = drawing_from_json(body);
+  std::optional<Ifs> colouring = colouring_for_drawing(body, drawing);  // the count checked
+  const bool is_flame = std::holds_alternative<flame::Flame>(drawing);
   const std::string movie = required_text(body, "movie");
   FilterArgs args;
   args.input = context.movie_path(movie).string();
   args.output = output_name(body, context, {".mp4", ".mkv", ".mov", ".avi", ".webm"}).string();
   args.quiet = true;
-  args.fractal.engine.exact = bool_field(body, "exact", true);
+  // A flame's steal map comes from the chaos game (its xforms have no inverse to descend).
+  args.fractal.engine.exact = bool_field(body, "exact", !is_flame);
   args.fractal.view = text_field(body, "view", "");
   args.fractal.engine.mix = number_field(body, "mix", 0, 0, 1);
   args.fractal.background = text_field(body, "background", "black");
@@ -101,10 +104,9 @@ int submit_filter(JobQueue& jobs, const json& body, StudioContext& context) {
   check_filter_args(args);
   view_option(args.fractal.view, "view");  // the page's names in the messages
   engine::parse_background(args.fractal.background, "background");
-  // The fractal as data: the editor's preset and colouring IFS G (steal mode), fitted as
+  // The fractal as data: the editor's preset or flame and colouring IFS G (steal mode), fitted as
   // `--colouring` is, with the view and background parsed as the command parses them.
-  const engine::FractalSettings fractal =
-      args.fractal.settings_of(preset.ifs, colouring_from_json(body, preset.ifs));
+  const engine::FractalSettings fractal = args.fractal.settings_of(drawing, std::move(colouring));
   OutputOptions policy{.inputs = context.inputs()};
   policy.inputs.add(args.input);
   check_output(args.output, policy);

@@ -51,13 +51,14 @@ struct FilterSettings {
 
 FilterSettings filter_settings(const json& body) {
   FilterSettings out;
-  const IfsPreset preset = preset_from_json(body);
-  // The editor's colouring IFS G, when it sends one (steal mode), fitted as `--colouring` is.
-  const std::optional<IfsPreset> colouring = colouring_preset(body, preset.ifs.name + "-colouring");
   engine::FractalSettings& s = out.engine;
-  s.drawing = preset.ifs;
-  s.colouring = colouring_from_json(body, preset.ifs);  // the count checked
-  s.exact = bool_field(body, "exact", true);
+  s.drawing = drawing_from_json(body, &out.preset_text);
+  // The editor's colouring IFS G, when it sends one (steal mode), fitted as `--colouring` is.
+  const std::optional<IfsPreset> colouring =
+      colouring_preset(body, engine::name_of(s.drawing) + "-colouring");
+  s.colouring = colouring_for_drawing(body, s.drawing);  // the count checked
+  // A flame's steal map comes from the chaos game (its xforms have no inverse to descend).
+  s.exact = bool_field(body, "exact", std::holds_alternative<Ifs>(s.drawing));
   out.view_text = text_field(body, "view", "");
   s.sampling.view = view_option(out.view_text, "view");
   s.animate = choice_field(body, "animate", "none", {"none", "drift"}) == "drift"
@@ -70,7 +71,6 @@ FilterSettings filter_settings(const json& body) {
   s.sampling.seed = static_cast<std::uint64_t>(integer_field(body, "seed", 1, 0, 1LL << 53));
   out.mix = number_field(body, "mix", 0, 0, 1);
   out.background = engine::parse_background(text_field(body, "background", "black"), "background");
-  out.preset_text = preset.text;
   if (colouring) out.colouring_text = colouring->text;
   return out;
 }

@@ -168,6 +168,22 @@ id=$(job_id)
 framemd5() { ffmpeg -v error -i "$1" -map 0:v -f framemd5 - | grep -v '^#'; }
 [[ -s folder/filtered.mp4 && $(framemd5 folder/filtered.mp4) == $(framemd5 cli-filtered.mp4) ]] &&
   pass "filter job: the frames of ifsfx filter" || fail "filter job: frames differ from ifsfx filter"
+# A flame as the filter (its xforms through the chaos game): the frames of `ifsfx filter --preset
+# FILE.flame`.
+cat >folder/swirl.flame <<'XML'
+<flame name="swirl" size="64 48" center="0 0" scale="18" palette="7">
+  <xform weight="0.6" color="0" linear="0.7" swirl="0.3" coefs="0.6 0.2 -0.2 0.6 0.4 0"/>
+  <xform weight="0.4" color="1" spherical="0.5" linear="0.5" coefs="0.5 0 0 0.5 -0.4 0.2"/>
+</flame>
+XML
+code GET "/api/preset?file=swirl.flame" "${auth[@]}" >/dev/null
+python3 -c "import json; d = json.load(open('body')); d.update(kind='filter', movie='clip.mp4', file='flame-filtered.mp4'); json.dump(d, open('flame-job.json', 'w'))"
+c=$(code POST /api/jobs "${auth[@]}" -H 'Content-Type: application/json' --data @flame-job.json)
+id=$(job_id)
+[[ $c == 202 && $(wait_job "$id") == done ]] || fail "flame filter job: $c $(cat body)"
+"$ifsfx" filter folder/clip.mp4 --preset folder/swirl.flame -q -o cli-flame-filtered.mp4
+[[ -s folder/flame-filtered.mp4 && $(framemd5 folder/flame-filtered.mp4) == $(framemd5 cli-flame-filtered.mp4) ]] &&
+  pass "a flame's filter job: the frames of ifsfx filter --preset FILE.flame" || fail "flame filter job: frames differ from ifsfx filter"
 c=$(code POST /api/jobs "${auth[@]}" --data "$(with '"kind": "filter", "movie": "clip.mp4", "file": "clip.mp4"')"); [[ $c == 400 ]] && pass "a filter over its movie: 400" || fail "filter over input: $c"
 c=$(code POST /api/jobs "${auth[@]}" --data "$(with '"kind": "filter", "movie": "clip.mp4", "file": "x.png"')"); [[ $c == 400 ]] && pass "a filter into .png: 400" || fail "filter to png: $c"
 c=$(code POST /api/jobs "${auth[@]}" --data "$(with '"kind": "filter", "movie": "clip.mp4", "file": "x.mp4", "frames": "9:2"')"); [[ $c == 400 ]] && pass "a bad frame range: 400" || fail "bad range: $c"

@@ -359,7 +359,7 @@ bad_flame "a flame's exact descent" "d['mode'] = 'tops'; d['exact'] = True" 'exa
 bad_flame "a colouring of 3 maps for a flame of 2 xforms" "d['mode'] = 'steal'; d['colouring'] = [[0.5, 0, 0, 0.5, 0, 0]] * 3" 'one map per xform of the flame (got 3 for 2)'
 bad_flame "a flame saved as .toml" "d['file'] = 'spiral.toml'" 'a flame is saved as NAME.flame' save
 bad_flame "a flame saved over its file" "d['file'] = 'pair.flame'" 'pair.flame' save
-bad_flame "a flame sent to the movie filter" "d['movie'] = 'x.mp4'; d['file'] = 'x.mp4'; d['kind'] = 'filter'" 'an affine IFS is needed here' jobs
+bad_flame "a flame's filter job with a colouring of 1 map for 2 xforms" "d['movie'] = 'x.mp4'; d['file'] = 'x.mp4'; d['kind'] = 'filter'; d['colouring'] = [[0.5, 0, 0, 0.5, 0, 0]]" 'one map per xform of the flame (got 1 for 2)' jobs
 expect 404 "a flame that is not in the file" GET "/api/preset?file=pair.flame&entry=nothing" "${auth[@]}"
 expect 400 "the unusable flame" GET "/api/preset?file=pair.flame&entry=2" "${auth[@]}"
 
