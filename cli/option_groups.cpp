@@ -27,7 +27,9 @@ void add_fractal_filter_options(CLI::App& cmd, FractalFilterArgs& args) {
   // 720p and 1080p, and without noise (bench/README.md, steal_modes_bench).
   cmd.add_flag("--exact,!--chaos", args.engine.exact,
                "Tops by exact per-pixel descent (default; no noise), or with --chaos by the chaos "
-               "game, the paper's method (--quality points per pixel)")
+               "game, the paper's method (--quality points per pixel); a flame always takes "
+               "the chaos game")
+      ->each([&args](const std::string&) { args.exact_given = true; })
       ->group(kFractal);
   cmd.add_option("--view", args.view,
                  "Plane rectangle x0,y0,x1,y1 shown on the frame (default: the attractor, "

@@ -12,6 +12,12 @@ namespace ifsfx::app {
 
 engine::FractalSettings FractalFilterArgs::settings(std::vector<std::string>* warnings) const {
   engine::Drawing F = engine::load_drawing(preset, {}, warnings);
+  // A flame's steal map always comes from the chaos game: a named --exact would do nothing.
+  if (exact_given && engine.exact && std::holds_alternative<flame::Flame>(F))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("--exact: the exact descent follows inverse maps, and a flame's xforms "
+                            "have none; a flame filters through the chaos game (got {})",
+                            preset));
   std::optional<Ifs> G;
   if (!colouring.empty()) G = engine::colouring_for(colouring, F, "colouring");
   return settings_of(std::move(F), std::move(G));

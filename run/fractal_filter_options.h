@@ -22,6 +22,7 @@ struct FractalFilterArgs {
   std::string colouring;  // G: a preset fitted to the unit square; "" = a tiling
   std::string view;
   std::string background = "black";
+  bool exact_given = false;  // --exact named on the command line: refused for a flame
 
   // The fractal engine's settings of these options: the presets loaded (their warnings, one line
   // each, added to `warnings`), view and background parsed (errors name the flags); the caller

@@ -57,6 +57,14 @@ XML
     "$ifsfx" render two.flame:spiral --mode tops --exact -o t.png 2>err.txt || rc=$?
     [ "$rc" -ne 0 ] && grep -q "^ifsfx: .*exact: the exact descent follows inverse maps" err.txt ||
       fail "--exact of a flame: rc $rc, $(cat err.txt)"
+    if command -v ffmpeg >/dev/null; then  # filter: a named --exact is refused, not ignored
+      ffmpeg -v error -y -f lavfi -i testsrc2=size=64x48:rate=25 -frames:v 3 -c:v ffv1 clip.mkv
+      rc=0
+      "$ifsfx" filter clip.mkv --preset two.flame:spiral --exact -o f.mkv 2>err.txt || rc=$?
+      [ "$rc" -ne 0 ] && grep -q "^ifsfx: --exact: the exact descent follows inverse maps" err.txt &&
+        [ ! -e f.mkv ] || fail "filter --exact of a flame: rc $rc, $(cat err.txt)"
+      "$ifsfx" filter clip.mkv --preset two.flame:spiral --chaos -q -o f.mkv || fail "filter --chaos"
+    fi
     rc=0
     "$ifsfx" render two.flame:spiral --mode steal --source src.png --colouring sierpinski-triangle \
       -o s.png 2>err.txt || rc=$?
