@@ -111,12 +111,18 @@ cv::Mat display(const FlameHistogram& pixels, const ToneMapping& tone, int chann
     for (int i = rows.start; i < rows.end; ++i)
       for (int j = 0; j < pixels.width; ++j) {
         const DisplayPixel p = display_pixel(pixels.at(i, j), tone);
-        // On the display's 0…255 scale, the background behind what is not covered.
+        // On the display's 0…255 scale, the background behind what is not covered: opaque in a
+        // picture without alpha; with alpha, the flame over the background's own alpha, its
+        // colour straight (divided by the alpha, as flam3 writes a transparent picture), so
+        // that a viewer compositing the file does not darken the flame's edges twice.
         const double under = 1 - p.alpha;
-        const double v[4] = {std::clamp(p.b + under * 255 * bg.b, 0.0, 255.0),
-                             std::clamp(p.g + under * 255 * bg.g, 0.0, 255.0),
-                             std::clamp(p.r + under * 255 * bg.r, 0.0, 255.0),
-                             255 * (p.alpha + under * bg.a)};
+        const double cover = channels == 4 ? p.alpha + under * bg.a : 1;
+        const double behind = channels == 4 ? under * bg.a : under;
+        const double straight = cover > 0 ? 1 / cover : 0;
+        const double v[4] = {std::clamp((p.b + behind * 255 * bg.b) * straight, 0.0, 255.0),
+                             std::clamp((p.g + behind * 255 * bg.g) * straight, 0.0, 255.0),
+                             std::clamp((p.r + behind * 255 * bg.r) * straight, 0.0, 255.0),
+                             255 * cover};
         for (int k = 0; k < channels; ++k) {
           if (depth == CV_8U)  // truncated, as flam3 writes its 8-bit pictures
             out.ptr<std::uint8_t>(i)[j * channels + k] = static_cast<std::uint8_t>(v[k]);

@@ -125,6 +125,23 @@ TEST(render_tone, the_display_scales_colour_by_the_gamma_of_the_density) {
   EXPECT_DOUBLE_EQ(p.g, 256 * std::sqrt(0.125));
 }
 
+TEST(render_tone, a_picture_with_alpha_has_straight_colour_over_the_backgrounds_alpha) {
+  // Density 1/4 of pure red at half strength, gamma 2: alpha √(1/4) = 1/2, display red
+  // 256·(1/2)/(1/4)·(1/8) = 64 on the 0…255 scale, premultiplied by the alpha.
+  FlameHistogram h(1, 1);
+  h.at(0, 0)[0] = 0.125;
+  h.at(0, 0)[3] = 0.25;
+  ToneMapping tone{.gamma = 2};
+  tone.background = {0, 0, 1, 0};  // blue, transparent (a file's RGB-only background)
+  EXPECT_EQ(display(h, tone, 3, CV_32F, 1).at<cv::Vec3f>(0, 0),
+            cv::Vec3f(255.0f / 2 / 255, 0, 64.0f / 255));  // opaque: half the blue behind
+  EXPECT_EQ(display(h, tone, 4, CV_32F, 1).at<cv::Vec4f>(0, 0),
+            cv::Vec4f(0, 0, 128.0f / 255, 0.5f));  // straight red 64 / (1/2), alpha 1/2
+  tone.background.a = 1;                           // an opaque background: the 3-channel colour
+  EXPECT_EQ(display(h, tone, 4, CV_32F, 1).at<cv::Vec4f>(0, 0),
+            cv::Vec4f(255.0f / 2 / 255, 0, 64.0f / 255, 1));
+}
+
 TEST(render_tone, below_gamma_threshold_the_curve_blends_into_a_line) {
   ToneMapping tone;
   tone.gamma = 2;
