@@ -70,8 +70,9 @@ def rgba_of_png(data):
 
 def luminance(path):
     w, h, rgba = rgba_of_png(open(path, "rb").read())
-    # OpenCV's BGR2GRAY weights, as bench/flame_compare.cpp reads the pictures
-    return w, h, [0.299 * rgba[i] + 0.587 * rgba[i + 1] + 0.114 * rgba[i + 2]
+    # OpenCV's BGR2GRAY weights, as bench/flame_compare.cpp reads the pictures, of the picture
+    # as it shows over black (a flame's PNG with alpha has straight colour; flam3's is opaque)
+    return w, h, [(0.299 * rgba[i] + 0.587 * rgba[i + 1] + 0.114 * rgba[i + 2]) * rgba[i + 3] / 255
                   for i in range(0, len(rgba), 4)]
 
 
