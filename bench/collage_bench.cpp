@@ -12,6 +12,12 @@
 // 2 × wall on an idle 2-core machine, less on a shared one); then the medians.
 //   build/release/bench/collage_bench [--only fish,logo,fern] [--maps 4,6,8]
 //       [--methods collage,attractor] [--max-seconds 30] [--max-evaluations N] [--previews DIR]
+//       [--truth 1]
+// --truth 1: for the drawn fractals fitted with their own number of maps, a diagnosis line for
+// the fit and for the fractal's own maps (conjugated into the working raster's frame): the
+// attractor loss at each level, as the fit cuts it and as it was cut before, and the IoUs; with
+// --previews also both attractors on the fine raster. A bench-only path: the true maps never
+// reach the fit.
 // Targets of issue 32 (at 512²): animal-like silhouettes ≥ 0.85 with 6 maps, the logo ≥ 0.75
 // with 8, the fern ≥ 0.9 with 4, each in ≤ 30 s on 2 cores. It exits non-zero when a bound fails.
 #include <algorithm>

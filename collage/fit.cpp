@@ -218,7 +218,7 @@ struct Shares {
 };
 Shares shares(FitMethod method) {
   // The attractor's stages need most of the budget: the collage only gives them starts.
-  return method == FitMethod::collage ? Shares{0.25, 0.45, 0.5} : Shares{0.15, 0.27, 0.3, 0.6};
+  return method == FitMethod::collage ? Shares{0.25, 0.45, 0.5} : Shares{0.1, 0.18, 0.2, 0.4};
 }
 
 // Searches the partitions of `target` (the first always, the next ones while less than the
