@@ -12,6 +12,12 @@
 // 2 × wall on an idle 2-core machine, less on a shared one); then the medians.
 //   build/release/bench/collage_bench [--only fish,logo,fern] [--maps 4,6,8]
 //       [--methods collage,attractor] [--max-seconds 30] [--max-evaluations N] [--previews DIR]
+//       [--truth 1]
+// --truth 1: for the drawn fractals fitted with their own number of maps, a diagnosis line for
+// the fit and for the fractal's own maps (conjugated into the working raster's frame): the
+// attractor loss at each level, as the fit cuts it and as it was cut before, and the IoUs; with
+// --previews also both attractors on the fine raster. A bench-only path: the true maps never
+// reach the fit.
 // Targets of issue 32 (at 512²): animal-like silhouettes ≥ 0.85 with 6 maps, the logo ≥ 0.75
 // with 8, the fern ≥ 0.9 with 4, each in ≤ 30 s on 2 cores. It exits non-zero when a bound fails.
 #include <algorithm>
@@ -20,13 +26,16 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 #include <sys/resource.h>
+#include <opencv2/imgproc.hpp>
 
+#include "collage/attractor_loss.h"
 #include "collage/fit.h"
 #include "collage/preview.h"
 #include "collage/target.h"
@@ -35,6 +44,8 @@
 #include "ifs/image_io.h"
 #include "ifs/preset.h"
 #include "ifs/render.h"
+#include "ifs/rng.h"
+#include "ifs/sampling.h"
 
 namespace {
 
@@ -42,7 +53,8 @@ using namespace ifsfx;
 
 struct Shape {
   std::string name;
-  cv::Mat mask;  // CV_8UC1, 255 on the shape, the picture's own size
+  cv::Mat mask;              // CV_8UC1, 255 on the shape, the picture's own size
+  std::optional<Ifs> truth;  // a fractal's own picture: the IFS that drew it
 };
 
 std::vector<std::string> split(const std::string& text) {
@@ -85,9 +97,11 @@ std::vector<Shape> shapes(const std::filesystem::path& folder,
   for (const auto& file : manifest(folder))
     if (wanted(file.stem().string()))
       out.push_back({file.stem().string(), collage::load_target(file)});
-  if (wanted("fern")) out.push_back({"fern", picture(load_ifs("barnsley-fern").ifs)});
-  if (wanted("fractaldb"))
-    out.push_back({"fractaldb", picture(fractaldb::search({.categories = 1}).front().ifs())});
+  const auto drawn = [&](const std::string& name, const Ifs& ifs) {
+    if (wanted(name)) out.push_back({name, picture(ifs), ifs});
+  };
+  drawn("fern", load_ifs("barnsley-fern").ifs);
+  drawn("fractaldb", fractaldb::search({.categories = 1}).front().ifs());
   return out;
 }
 
@@ -101,6 +115,7 @@ struct Args {
   int threads = 0;
   int size = 128;  // `ifsfx fit`'s default working raster
   std::filesystem::path previews;
+  bool truth = false;  // --truth 1: the drawn fractals' own maps scored beside each fit
 };
 
 Args parse(int argc, char** argv) {
@@ -131,10 +146,13 @@ Args parse(int argc, char** argv) {
       a.size = std::stoi(value);
     } else if (flag == "--previews") {
       a.previews = value;
+    } else if (flag == "--truth") {
+      a.truth = value != "0";
     } else {
-      throw Error(ErrorKind::parse, "unknown option " + flag +
-                                        " (--shapes, --only, --maps, --methods, --max-seconds, "
-                                        "--max-evaluations, --threads, --size, --previews)");
+      throw Error(ErrorKind::parse,
+                  "unknown option " + flag +
+                      " (--shapes, --only, --maps, --methods, --max-seconds, "
+                      "--max-evaluations, --threads, --size, --previews, --truth)");
     }
   }
   return a;
@@ -146,6 +164,45 @@ double cpu_seconds() {
   getrusage(RUSAGE_SELF, &usage);
   const auto seconds = [](const timeval& t) { return t.tv_sec + t.tv_usec * 1e-6; };
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+// The maps of `truth` in the working raster's frame of its own picture `mask` (picture(), then
+// working_raster with its default margin): T ∘ f ∘ T⁻¹, T the plane → unit square of that
+// framing (render_attractor's auto-framed view, then working_raster's square frame).
+std::vector<AffineMap> in_raster_frame(const Ifs& truth, const cv::Mat& mask) {
+  const Viewport viewport = framed_viewport(truth, mask.size(), Sampling{});
+  const cv::Rect box = cv::boundingRect(mask);
+  const double margin = collage::FrameOptions{}.margin;
+  const int side = static_cast<int>(std::ceil(std::max(box.width, box.height) / (1 - 2 * margin)));
+  const double x0 = box.x + box.width / 2 - side / 2, y0 = box.y + box.height / 2 - side / 2;
+  // Pixel (px, py) of the picture → (u, v) = ((px − x0) / side, 1 − (py − y0) / side).
+  const AffineMap to_unit{1.0 / side, 0, 0, -1.0 / side, -x0 / side, 1 + y0 / side};
+  const AffineMap t = to_unit.compose(viewport.plane_to_pixel());
+  const AffineMap back = *t.inverse();
+  std::vector<AffineMap> maps;
+  for (const AffineMap& f : truth.maps) maps.push_back(t.compose(f).compose(back));
+  return maps;
+}
+
+// One line of the diagnosis (--truth): the attractor loss of `maps` at the fit's levels, its
+// terms, and IoU(L, A) on the working raster and 4× finer, as the fit's report measures them.
+void print_diagnosis(const char* what, const cv::Mat& raster, const cv::Mat& fine,
+                     const std::vector<AffineMap>& maps) {
+  std::printf("  %-8s", what);
+  // The levels as the fit cuts them (from the fine raster, any cover) and, in brackets, as they
+  // were cut before (from the working raster, half cover).
+  for (int level : {32, 64, raster.cols}) {
+    const auto seed = stream_seed(1, static_cast<std::uint64_t>(level));
+    const auto t =
+        collage::AttractorLoss(fine, {.size = level, .seed = seed, .keep = 0}).terms(maps);
+    const auto h = collage::AttractorLoss(raster, {.size = level, .seed = seed}).terms(maps);
+    std::printf(" | L%d %.3f iou %.3f [%.3f %.3f]", level, t.value, t.iou, h.value, h.iou);
+  }
+  Ifs ifs;
+  ifs.maps = maps;
+  ifs.probabilities = default_probabilities(maps);
+  std::printf(" | IoU %.3f IoU4x %.3f s %.3f\n", collage::attractor_iou(raster, ifs, {256, 1, 0}),
+              collage::attractor_iou(fine, ifs, {64, 1, 0}), ifs.contraction());
 }
 
 struct Row {
@@ -176,6 +233,24 @@ Row fit_one(const Args& args, const Shape& shape, int maps, const std::string& m
   if (!args.previews.empty())
     write_image(args.previews / fmt::format("{}-{}-{}.png", shape.name, maps, method),
                 collage::fit_preview(raster, result.ifs, {.threads = args.threads}));
+  if (!args.previews.empty() && args.truth)
+    write_image(args.previews / fmt::format("{}-{}-{}-fine.png", shape.name, maps, method),
+                collage::fit_preview(options.fine_target, result.ifs, {.threads = args.threads}));
+  if (args.truth && shape.truth && static_cast<int>(shape.truth->maps.size()) == maps) {
+    std::printf("\n");
+    print_diagnosis(method.c_str(), raster, options.fine_target, result.ifs.maps);
+    const auto truth = in_raster_frame(*shape.truth, shape.mask);
+    print_diagnosis("truth", raster, options.fine_target, truth);
+    if (!args.previews.empty()) {
+      Ifs ifs;
+      ifs.maps = truth;
+      ifs.probabilities = default_probabilities(truth);
+      write_image(args.previews / fmt::format("{}-{}-truth.png", shape.name, maps),
+                  collage::fit_preview(raster, ifs, {.threads = args.threads}));
+      write_image(args.previews / fmt::format("{}-{}-truth-fine.png", shape.name, maps),
+                  collage::fit_preview(options.fine_target, ifs, {.threads = args.threads}));
+    }
+  }
   return row;
 }
 

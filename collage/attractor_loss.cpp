@@ -22,12 +22,13 @@ namespace {
 constexpr std::size_t kBurnIn = 24;
 constexpr std::size_t kLanes = 8;
 
-// L resampled to R×R by area, a pixel kept where L covers half of it.
-cv::Mat level_raster(const cv::Mat& target, int size) {
+// L resampled to R×R by area, a pixel kept where L covers more than `keep` of it.
+cv::Mat level_raster(const cv::Mat& target, int size, double keep) {
   if (size == target.cols) return target.clone();
   cv::Mat coverage, raster;
   cv::resize(target, coverage, {size, size}, 0, 0, cv::INTER_AREA);
-  cv::threshold(coverage, raster, 127, 255, cv::THRESH_BINARY);
+  // INTER_AREA rounds a mean of 0/255 values: any cover of at least 1/510 shows as ≥ 1.
+  cv::threshold(coverage, raster, std::floor(keep * 255), 255, cv::THRESH_BINARY);
   return raster;
 }
 
@@ -62,6 +63,9 @@ AttractorLoss::AttractorLoss(const cv::Mat& target, const AttractorLossOptions& 
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("attractor loss: the level's size must be in 8..{} (got {})",
                             target.cols, options.size));
+  if (!(options.keep >= 0 && options.keep < 1))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("attractor loss: keep must be in [0, 1) (got {})", options.keep));
   if (!(options.points > 0))
     throw Error(
         ErrorKind::invalid_argument,
@@ -69,7 +73,7 @@ AttractorLoss::AttractorLoss(const cv::Mat& target, const AttractorLossOptions& 
   size_ = options.size;
   pad_ = size_ / 4;
   side_ = size_ + 2 * pad_;
-  target_ = level_raster(target, size_);
+  target_ = level_raster(target, size_, options.keep);
   if (cv::countNonZero(target_) == 0)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("attractor loss: the target vanishes on a {}² raster", size_));

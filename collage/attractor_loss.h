@@ -34,6 +34,11 @@ struct AttractorLossOptions {
   double soft_factor = 0.85;  // s_soft: contraction above which the penalty starts
   double contraction = 2;     // w_s
   std::uint64_t seed = 1;     // the common random numbers
+  // A pixel of the level is part of L where L covers more than this fraction of it. 0.5 suits
+  // a solid shape; 0 (any part) is what A's raster means — a pixel is A's when any point lands
+  // in it — and keeps the thin parts of a finer target that half cover would drop (a fern's
+  // fronds are a pixel wide at 512², a quarter of a pixel at 128²).
+  double keep = 0.5;
 };
 
 struct AttractorTerms {
@@ -47,7 +52,8 @@ struct AttractorTerms {
 // The loss of one target at one level. Build once; evaluation is const and thread-safe.
 class AttractorLoss {
  public:
-  // `target`: the working raster (target.h); it is resampled to R by area, kept at half cover.
+  // `target`: the working raster (target.h) or a finer raster of its frame; it is resampled to R
+  // by area and kept where it covers more than options.keep of a pixel.
   // Throws Error{invalid_argument} for R outside 8..target side or a target that vanishes at R.
   AttractorLoss(const cv::Mat& target, const AttractorLossOptions& options = {});
 

@@ -71,11 +71,12 @@ CollageReport assess(const cv::Mat& target, const Ifs& ifs, const AssessOptions&
 
 // What the fit optimises after its start.
 enum class FitMethod {
-  // Issue 32: the attractor itself. The collage stages below run on 60% of the budget; then
+  // Issue 32: the attractor itself. The collage stages below run on 40% of the budget; then
   // the best attractor so far, the maps searched on a cut partition (cut_partition.h) and the
   // best distinct runs are refined by CMA-ES on the attractor loss (attractor_loss.h) over all
-  // maps at once, coarse to fine (32², 64², the working raster), with perturb-and-accept
-  // escapes between (attractor_fit.h) and ICP last.
+  // maps at once, coarse to fine (32², 64², the working raster; cut from fine_target when given),
+  // with perturb-and-accept escapes between (attractor_fit.h) and ICP last; fine_target picks
+  // among the best few candidates last.
   attractor,
   // Issues 14–15: the collage objective W(L) against L, then a polish on W^k(L); the attractor
   // is only rendered to choose between candidates.
@@ -153,7 +154,8 @@ struct FitOptions {
   int partitions = 4;
   SearchOptions search;
   // Optional: the target on a finer raster of the same frame (working_raster of the same mask at
-  // a larger size, e.g. 4S); the report's fine_iou is measured there.
+  // a larger size, e.g. 4S); the report's fine_iou is measured there, FitMethod::attractor cuts
+  // its loss's levels from it (thin parts count) and it picks among the best few candidates.
   cv::Mat fine_target;
   // Called after every CMA-ES generation and at every change of phase, on the calling thread
   // (the library never prints).

@@ -37,11 +37,16 @@ class Stages {
         total_evaluations_(std::max(0L, budget_.evaluations_left())),
         run_(run),
         centre_(fitting.objective.centroid()) {
+    // The levels are cut from the finest picture of L there is, kept where L covers any part
+    // of a pixel, as A's raster is (attractor_loss.h): a half-covered coarse target drops a
+    // fern's fronds, and its loss is lower for a wrong fern than for the true one (0.21
+    // against 0.30 on 32², 0.14 against 0.18 on 64²).
+    const cv::Mat& source = options_.fine_target.empty() ? fitting.target : options_.fine_target;
     const int size = fitting.target.cols;
     for (int level : {std::min(32, size), std::min(64, size), size})
       levels_.emplace_back(
-          fitting.target,
-          AttractorLossOptions{.size = level, .seed = stream_seed(options_.seed, level)});
+          source, AttractorLossOptions{
+                      .size = level, .seed = stream_seed(options_.seed, level), .keep = 0});
   }
 
   // CMA-ES at `level` from `start` with the evaluations left before `fraction` of the stages'

@@ -64,6 +64,18 @@ TEST(attractor_loss, the_raster_is_what_the_points_hit) {
   EXPECT_GE(cv::countNonZero(a & loss.target()), 0.97 * cv::countNonZero(loss.target()));
 }
 
+TEST(attractor_loss, a_thin_part_is_kept_at_any_cover_and_dropped_at_half) {
+  // A line one pixel wide on 128² covers a quarter of each pixel it crosses on 32²: half cover
+  // drops it (the target vanishes), any cover keeps all 32 of them, as A's raster would.
+  cv::Mat line(128, 128, CV_8UC1, cv::Scalar(0));
+  line.col(64).setTo(255);
+  EXPECT_THROW(AttractorLoss(line, {.size = 32}), Error);
+  const AttractorLoss any(line, {.size = 32, .keep = 0});
+  EXPECT_EQ(cv::countNonZero(any.target()), 32);
+  EXPECT_EQ(cv::countNonZero(any.target().col(16)), 32);
+  EXPECT_THROW(AttractorLoss(line, {.size = 32, .keep = 1}), Error);
+}
+
 TEST(attractor_loss, a_level_outside_eight_to_the_target_side_is_refused) {
   EXPECT_THROW(AttractorLoss(testing::framed_square(), {.size = 4}), Error);
   EXPECT_THROW(AttractorLoss(testing::framed_square(), {.size = 128}), Error);

@@ -311,10 +311,11 @@ TEST(fit, a_stop_request_keeps_the_best_so_far) {
 
 // The attractor of the shipped barnsley-fern preset, rendered 512² and taken as a picture, fitted
 // with its own 4 maps (issue 32 item 5). Issue 32 asks for IoU ≥ 0.9 on the 512² raster of the
-// picture's frame; this fit reaches 0.675 there (0.805 on the 128² working raster, against 0.62
-// and 0.71 for FitMethod::collage), so the test guards what is reached: the fern's structure —
-// one large copy of the whole (the preset's is 0.85) — and the fine IoU. A fixed evaluation count
-// (no clock) makes it the same on any machine; about 20 CPU seconds in Release.
+// picture's frame (the preset's own maps score 0.95 there); this fit reaches 0.723, so the test
+// guards what is reached. The attractor loss cuts its levels from the 512² raster at any cover,
+// so the fronds count, and the 128² IoU (half cover, no fronds) is lower than it was (0.731, was
+// 0.805) while the 512² one rose (from 0.675). A fixed evaluation count (no clock) makes it the
+// same on any machine; about 20 CPU seconds in Release.
 TEST(fit, fern_comes_back_from_its_own_picture_with_its_large_copy) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "about 20 CPU seconds in Release, many times that under the sanitizers; the "
@@ -331,8 +332,8 @@ TEST(fit, fern_comes_back_from_its_own_picture_with_its_large_copy) {
   for (const auto& f : result.ifs.maps) largest = std::max(largest, f.contraction());
   EXPECT_GE(largest, 0.75);
   EXPECT_LE(largest, 0.95);
-  EXPECT_GE(result.report.iou, 0.78);
-  EXPECT_GE(result.report.fine_iou, 0.65) << "issue 32 asks for 0.9";
+  EXPECT_GE(result.report.iou, 0.72);
+  EXPECT_GE(result.report.fine_iou, 0.72) << "issue 32 asks for 0.9";
   expect_bound_holds(result.report);
 }
 
