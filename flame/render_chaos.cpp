@@ -258,7 +258,7 @@ void plot(const Plan& plan, const Step& from, double c, std::size_t at, Bins& bi
   for (std::size_t k = 0; k < 4; ++k) bins.add(at + k, (e0[k] * (256 - w) + e1[k] * w) >> 8);
 }
 
-// Plots the points whose `at` is not kOff, their bins fetched ahead: a step's 64 random
+// Plots the points whose `at` is not kOff, their bins fetched ahead: a step's 128 random
 // writes overlap their cache misses.
 void plot_all(const Plan& plan, const std::array<std::size_t, kN>& at,
               const std::array<std::uint32_t, kN>& k, const std::array<double, kN>& c,
