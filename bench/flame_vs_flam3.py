@@ -16,6 +16,9 @@ spread: SSIM ≥ flam3's − 0.02 and colour distance ≤ flam3's + 1.0.
 
   bench/flame_vs_flam3.py [--genomes 20] [--size 256] [--quality 50] [--threads 2]
                           [--bin build/release/bench] [--keep DIR] [DIR_OR_FILE ...]
+
+--keep DIR keeps each line's three pictures and the flame as rendered (NAME.flame, resized),
+for bench/flame_ab.sh.
 """
 import argparse
 import os
@@ -137,6 +140,7 @@ def one(name, flame, args, work):
     if args.keep:
         for p, tag in zip(pics, ("flam3-1", "flam3-2", "ifsfx")):
             shutil.copy(p, os.path.join(args.keep, f"{name.replace(':', '_')}-{tag}.png"))
+        shutil.copy(path, os.path.join(args.keep, f"{name.replace(':', '_')}.flame"))
     return dict(name=name, s_ff=s_ff, c_ff=c_ff, s_if=s_if, c_if=c_if, ok=ok, t_f=times[0], t_i=cpu_ifsfx)
 
 

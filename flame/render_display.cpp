@@ -91,6 +91,8 @@ DisplayPixel display_pixel(const double* rgba, const ToneMapping& tone) {
   const double alpha = gamma_curve(a, g, tone.gamma_threshold);
   const double ls = tone.vibrancy * 256 * alpha / a;
   Rgb3 c = highlight({rgba[0], rgba[1], rgba[2]}, ls, tone.highlight_power);
+  // Full vibrancy (the usual 1) adds 0·(…): skipping the three pow calls keeps the bits.
+  if (tone.vibrancy == 1) return {c[0], c[1], c[2], std::clamp(alpha, 0.0, 1.0)};
   for (int k = 0; k < 3; ++k)
     c[static_cast<std::size_t>(k)] +=
         (1 - tone.vibrancy) * 256 * std::pow(std::max(rgba[k], 0.0), g);

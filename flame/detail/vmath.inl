@@ -68,11 +68,14 @@ inline VSinCos vsincos(V x) {
   pc = z * pc - 1.38888888888741095749e-03;
   pc = z * pc + 4.16666666666666019037e-02;
   const V c = (1.0 - 0.5 * z) + z * z * pc;
-  const V q = k - 4.0 * vfloor(k * 0.25);  // 0, 1, 2, 3
-  const M odd = (q == 1.0) | (q == 3.0);
+  // The quadrant k mod 4 is the low two bits of k + 1.5·2^52 (|k| < 2^17 here; wilder x below):
+  // odd quadrants swap sin and cos, quadrants 2 and 3 negate sin, 1 and 2 negate cos (the sign
+  // bit flipped, as −x does).
+  const I q = as_bits(k + kVMagic);
+  const M odd = (q & 1) != 0;
   V sn = sel(odd, c, s), cs = sel(odd, s, c);
-  sn = sel(q >= 2.0, -sn, sn);
-  cs = sel((q == 1.0) | (q == 2.0), -cs, cs);
+  sn = from_bits(as_bits(sn) ^ ((q & 2) << 62));
+  cs = from_bits(as_bits(cs) ^ (((q ^ (q >> 1)) & 1) << 63));
   const M wild = (vabs(x) > 1e5) | (x != x);
   if (any(wild)) {
     for (std::size_t i = 0; i < kW; ++i) {

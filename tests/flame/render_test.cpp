@@ -13,6 +13,7 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "flame/detail/render_chaos.h"
 #include "flame/flame_file.h"
 #include "flame/render_camera.h"
 #include "flame/render_tone.h"
@@ -106,6 +107,45 @@ TEST(render_flame, the_same_seed_gives_the_same_bytes_for_any_thread_count) {
   }
   EXPECT_GT(cv::norm(one, render_flame(f, {.seed = 10, .threads = 1}), cv::NORM_L1), 0)
       << "another seed draws other points";
+}
+
+// A flame of affine xforms only (linear terms, a post map) is walked point by point without the
+// term arrays (flame/render_chaos.cpp); a term of weight 0 adds nothing but sends the same
+// flame down the arrays: the two walks must give the same bytes.
+TEST(render_flame, an_affine_only_flame_gives_the_bytes_of_the_general_walk) {
+  Flame f = two_points();
+  f.filtering = {.supersample = 2, .filter_radius = 0.6, .estimator_radius = 4};
+  f.xforms[0].pre = {0.5, 0.1, -0.2, 0.5, 0.3, 0.1};
+  f.xforms[0].variations = {term("linear", 0.7), term("linear", 0.4)};
+  f.xforms[1].pre = {0.6, 0, 0, 0.6, -0.4, 0};
+  f.xforms[1].post = AffineMap{0.9, 0.2, -0.1, 0.8, 0.05, 0};
+  f.xforms[1].colour_speed = 0.3;
+  f.quality = 200;
+  Flame general = f;
+  for (Xform& xf : general.xforms) xf.variations.push_back(term("spherical", 0));
+  for (int threads : {1, 2}) {
+    const cv::Mat fast = render_flame(f, {.seed = 4, .threads = threads});
+    EXPECT_GT(cv::countNonZero(fast.reshape(1)), 100);
+    EXPECT_EQ(cv::norm(fast, render_flame(general, {.seed = 4, .threads = threads}), cv::NORM_INF),
+              0)
+        << threads << " threads";
+  }
+}
+
+// A bin's 32-bit sums wrap after 2^16 hits of full colour: two constant maps, 150 000 hits
+// each, still count every hit.
+TEST(render_flame, a_bin_of_more_than_65536_hits_counts_every_hit) {
+  const Flame f = two_points();
+  const std::uint64_t points = 300000;
+  const detail::ChaosResult r = detail::run_chaos_game(
+      {.flame = &f, .raster = flame_raster(f.camera, 1, 0), .points = points, .threads = 2});
+  double hits = 0, most = 0;
+  for (std::size_t i = 3; i < r.histogram.rgba.size(); i += 4) {
+    hits += r.histogram.rgba[i];
+    most = std::max(most, r.histogram.rgba[i]);
+  }
+  EXPECT_EQ(hits, static_cast<double>(points));
+  EXPECT_GT(most, 2 * 65536.0);
 }
 
 TEST(render_tone, the_display_scales_colour_by_the_gamma_of_the_density) {

@@ -210,7 +210,7 @@ std::vector<double> run_batch(const detail::BatchVariation& b, const std::vector
   return out;
 }
 
-// Every batch form (the 64-walker chaos game's, flame/detail/batch_variations.h) gives its
+// Every batch form (the 128-walker chaos game's, flame/detail/batch_variations.h) gives its
 // registry function's value to 1e-9 at random points and parameters, drawing the same random
 // numbers; and the AVX2 level gives the scalar level's bits.
 TEST(variations, batch_forms_equal_the_registry_and_every_level_the_scalar_bits) {
