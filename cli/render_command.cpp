@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <map>
 #include <string>
 #include <vector>
@@ -195,15 +196,21 @@ void run_render(const RenderArgs& args) {
   if (!args.quiet) print_summary(preset.ifs.name, image.size(), args, stats);
 }
 
+// What a flame file brings itself (its camera, its tone mapping) is not taken from a flag: a given
+// one is refused, naming the flame.
+void refuse_flame_flags(const RenderArgs& args, std::initializer_list<const char*> flags) {
+  for (const char* flag : flags)
+    if (args.was_given(flag))
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("{}: a flame brings its own (got {})", flag, args.preset));
+}
+
 // `ifsfx render FILE.flame[:NAME] -o OUT`: the flame as flam3 renders it (flame/render.h), at
 // its own size and quality unless --size and --quality are given.
 void run_flame_render(const RenderArgs& args) {
   check_flame_mode(args.mode, "--mode");
-  for (const char* flag : {"--view", "--margin", "--supersample", "--gamma", "--brightness",
-                           "--seamless", "--tiles", "--tile-offset", "--allow-expansive"})
-    if (args.was_given(flag))
-      throw Error(ErrorKind::invalid_argument,
-                  fmt::format("{}: a flame brings its own (got {})", flag, args.preset));
+  refuse_flame_flags(args, {"--view", "--margin", "--supersample", "--gamma", "--brightness",
+                            "--seamless", "--tiles", "--tile-offset", "--allow-expansive"});
   StopSignals signals;
   const OutputOptions output = checked_outputs(args);
   const flame::Flame f = flame::read_flame(args.preset);
@@ -249,11 +256,8 @@ void run_flame_render(const RenderArgs& args) {
 // given; --chaos is implied, --exact refused (a flame's xforms have no inverse).
 void run_flame_chaos_render(const RenderArgs& args) {
   check_mode_options(args);
-  for (const char* flag :
-       {"--view", "--margin", "--seamless", "--tiles", "--tile-offset", "--allow-expansive"})
-    if (args.was_given(flag))
-      throw Error(ErrorKind::invalid_argument,
-                  fmt::format("{}: a flame brings its own (got {})", flag, args.preset));
+  refuse_flame_flags(
+      args, {"--view", "--margin", "--seamless", "--tiles", "--tile-offset", "--allow-expansive"});
   StopSignals signals;
   const OutputOptions output = checked_outputs(args);
   const flame::Flame f = flame::read_flame(args.preset);

@@ -12,6 +12,7 @@
 
 #include "flame/render_camera.h"
 #include "flame/xform_eval.h"
+#include "flame/xform_pickers.h"
 #include "ifs/detail/address_raster.h"
 #include "ifs/detail/preconditions.h"
 #include "ifs/detail/walkers.h"
@@ -45,34 +46,6 @@ Camera sized_camera(const Flame& flame, cv::Size size) {
   return camera;
 }
 
-// Picks the next xform: [0] by the weights alone, [1 + i] after xform i by weight × chaos row i
-// (a row of zeros falls back to the weights), as the renderer picks them.
-std::vector<MapPicker> pickers_of(const Flame& flame) {
-  std::vector<double> weights;
-  bool xaos = false;
-  double total = 0;
-  for (const Xform& xf : flame.xforms) {
-    weights.push_back(xf.weight);
-    total += xf.weight;
-    for (double c : xf.chaos) xaos = xaos || c != 1;
-  }
-  // Normalised as effective_probabilities normalises an IFS's, so that an affine flame's table
-  // is its IFS's to the bit.
-  for (double& w : weights) w /= total;
-  std::vector<MapPicker> out{MapPicker(weights)};
-  if (!xaos) return out;
-  for (const Xform& from : flame.xforms) {
-    std::vector<double> row = weights;
-    double sum = 0;
-    for (std::size_t j = 0; j < row.size(); ++j) {
-      if (j < from.chaos.size()) row[j] *= from.chaos[j];
-      sum += row[j];
-    }
-    out.emplace_back(sum > 0 ? row : weights);
-  }
-  return out;
-}
-
 // The walkers of one flame on one viewport: the affine kernels' lanes (ifs/detail/walkers.h) —
 // each lane starts at a uniform point of [0, 1)² from its own xoshiro256+, picks every xform
 // with one draw of it, burns in, then plots — with the xform's step in place of the affine map.
@@ -83,7 +56,7 @@ class FlameWalk {
  public:
   FlameWalk(const Flame& flame, const Viewport& viewport, const std::optional<AffineMap>& turn,
             int burn_in)
-      : flame_(flame), pickers_(pickers_of(flame)), turn_(turn), burn_in_(burn_in) {
+      : flame_(flame), pickers_(xform_pickers(flame, true)), turn_(turn), burn_in_(burn_in) {
     const AffineMap to_pixel = viewport.plane_to_pixel();
     sx_ = to_pixel.a, ox_ = to_pixel.e, sy_ = to_pixel.d, oy_ = to_pixel.f;
     width_ = viewport.size.width;
@@ -287,7 +260,8 @@ std::optional<Ifs> affine_ifs(const Flame& flame) {
       return std::nullopt;
     const AffineMap& A = xf.pre;
     ifs.maps.push_back({A.a, -A.b, -A.c, A.d, A.e, -A.f});  // S∘A∘S
-    // Unnormalised: effective_probabilities divides by their sum as pickers_of does.
+    // Unnormalised: effective_probabilities divides by their sum as xform_pickers(flame, true)
+    // does.
     ifs.probabilities.push_back(xf.weight);
   }
   return ifs;

@@ -9,6 +9,7 @@
 #include "flame/detail/batch_variations.h"
 #include "flame/detail/render_chaos.h"
 #include "flame/variations.h"
+#include "flame/xform_pickers.h"
 #include "ifs/parallel.h"
 #include "ifs/rng.h"
 
@@ -178,29 +179,6 @@ Step step_of(const Xform& xf, const Palette& palette, CpuLevel level) {
                     static_cast<std::uint32_t>(std::lround(k))};
   }
   return s;
-}
-
-// The xform pickers: [0] by the weights alone, [1 + i] after xform i by weight × chaos row i
-// (a row of zeros falls back to the weights).
-std::vector<MapPicker> pickers_of(const Flame& flame) {
-  std::vector<double> weights;
-  bool xaos = false;
-  for (const Xform& xf : flame.xforms) {
-    weights.push_back(xf.weight);
-    for (double c : xf.chaos) xaos = xaos || c != 1;
-  }
-  std::vector<MapPicker> out{MapPicker(weights)};
-  if (!xaos) return out;
-  for (const Xform& from : flame.xforms) {
-    std::vector<double> row = weights;
-    double sum = 0;
-    for (std::size_t j = 0; j < row.size(); ++j) {
-      if (j < from.chaos.size()) row[j] *= from.chaos[j];
-      sum += row[j];
-    }
-    out.emplace_back(sum > 0 ? row : weights);
-  }
-  return out;
 }
 
 struct Plan {
@@ -396,7 +374,7 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster) {
   const CpuLevel level = cpu_level();
   for (const Xform& xf : flame.xforms) plan.steps.push_back(step_of(xf, flame.palette, level));
   if (flame.final_xform) plan.final_step = step_of(*flame.final_xform, flame.palette, level);
-  plan.pickers = pickers_of(flame);
+  plan.pickers = xform_pickers(flame, false);
   plan.affine_only = std::all_of(plan.steps.begin(), plan.steps.end(),
                                  [](const Step& s) { return s.affine_only; });
   plan.linear_palette = flame.palette.mode == PaletteMode::linear;
