@@ -235,11 +235,7 @@ void run_flame_render(const RenderArgs& args) {
   write_image(image_file, image,
               {.bits = args.bits,
                .smallest = args.smallest,
-               .metadata = {{"ifsfx:flame", args.preset},
-                            {"ifsfx:mode", "measure"},
-                            {"ifsfx:seed", std::to_string(options.seed)},
-                            {"ImageDescription", fmt::format("ifsfx render {} --seed {}",
-                                                             args.preset, options.seed)}}});
+               .metadata = flame_render_metadata(args.preset, "measure", options.seed)});
   staged.push_back(std::move(image_file));
   commit_together(staged);
   if (!args.quiet)
@@ -274,17 +270,12 @@ void run_flame_chaos_render(const RenderArgs& args) {
     write_file(file, flame::flame_xml(f));
     staged.push_back(std::move(file));
   }
-  const std::string seed = std::to_string(options.sampling.seed);
   OutputFile image_file(args.output, output);
-  write_image(
-      image_file, still.image,
-      {.bits = args.bits,
-       .smallest = args.smallest,
-       .metadata = {{"ifsfx:flame", args.preset},
-                    {"ifsfx:mode", to_string(args.mode)},
-                    {"ifsfx:seed", seed},
-                    {"ImageDescription", fmt::format("ifsfx render {} --mode {} --seed {}",
-                                                     args.preset, to_string(args.mode), seed)}}});
+  write_image(image_file, still.image,
+              {.bits = args.bits,
+               .smallest = args.smallest,
+               .metadata = flame_render_metadata(args.preset, to_string(args.mode),
+                                                 options.sampling.seed)});
   staged.push_back(std::move(image_file));
   commit_together(staged);
   if (!args.quiet)

@@ -18,4 +18,14 @@ std::vector<std::pair<std::string, std::string>> render_metadata(const IfsPreset
   };
 }
 
+std::vector<std::pair<std::string, std::string>> flame_render_metadata(const std::string& name,
+                                                                       const std::string& mode,
+                                                                       std::uint64_t seed) {
+  const std::string mode_flag = mode == "measure" ? "" : fmt::format(" --mode {}", mode);
+  return {{"ifsfx:flame", name},
+          {"ifsfx:mode", mode},
+          {"ifsfx:seed", std::to_string(seed)},
+          {"ImageDescription", fmt::format("ifsfx render {}{} --seed {}", name, mode_flag, seed)}};
+}
+
 }  // namespace ifsfx::app

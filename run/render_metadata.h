@@ -19,4 +19,11 @@ std::vector<std::pair<std::string, std::string>> render_metadata(const IfsPreset
                                                                  std::uint64_t seed,
                                                                  const Box& view);
 
+// A flame's picture (`name`: the flame's spec or name): the flame, the mode's name, the seed, and
+// the command that makes it ("ifsfx render NAME --seed S", with --mode MODE but for the measure,
+// which is the flame's default).
+std::vector<std::pair<std::string, std::string>> flame_render_metadata(const std::string& name,
+                                                                       const std::string& mode,
+                                                                       std::uint64_t seed);
+
 }  // namespace ifsfx::app

@@ -246,11 +246,7 @@ StudioImage flame_image(const StudioRender& r, CancelToken cancel, bool alpha) {
                                           .channels = alpha ? 4 : 3,
                                           .depth = r.flame_depth};
   StudioImage out{.image = flame::render_flame(f, options), .view = camera_view(f.camera)};
-  out.write.metadata = {
-      {"ifsfx:flame", f.name},
-      {"ifsfx:mode", "measure"},
-      {"ifsfx:seed", std::to_string(seed)},
-      {"ImageDescription", fmt::format("ifsfx render {} --seed {}", f.name, seed)}};
+  out.write.metadata = flame_render_metadata(f.name, "measure", seed);
   return out;
 }
 
@@ -260,14 +256,9 @@ StudioImage flame_chaos_image(const StudioRender& r, StillJob job) {
   flame::Flame f = r.flame->flame;
   f.camera = studio_camera(f.camera, r.size, r.options.sampling.view);
   job.options.sampling.view.reset();  // the camera frames it
-  const std::uint64_t seed = job.options.sampling.seed;
   StillResult still = render_still(engine::Drawing{f}, job);
   StudioImage out{.image = std::move(still.image), .view = camera_view(f.camera)};
-  out.write.metadata = {{"ifsfx:flame", f.name},
-                        {"ifsfx:mode", to_string(r.mode)},
-                        {"ifsfx:seed", std::to_string(seed)},
-                        {"ImageDescription", fmt::format("ifsfx render {} --mode {} --seed {}",
-                                                         f.name, to_string(r.mode), seed)}};
+  out.write.metadata = flame_render_metadata(f.name, to_string(r.mode), job.options.sampling.seed);
   return out;
 }
 
