@@ -53,63 +53,55 @@ cv::Mat steal_still(const engine::Drawing& F, const StillJob& job, StillResult& 
   return image;
 }
 
-// A flame's still: its xforms through the chaos game (flame/flame_chaos.h) for the attractor,
-// tops and steal; its measure is the flame look (render_flame, float BGR as the IFS measure).
-StillResult flame_still(const flame::Flame& F, const StillJob& job) {
-  // Only tops and steal follow addresses, where the exact descent would need inverse maps.
-  const bool descent = job.exact && render_mode_info(job.mode).map_method;
-  flame::check_flame_chaos(job.options.sampling, descent);
-  StillResult result;
-  switch (job.mode) {
-    case RenderMode::attractor:
-      result.image = flame::flame_attractor(F, job.size, job.options.sampling, &result.stats);
-      break;
-    case RenderMode::measure: {
-      const auto start = std::chrono::steady_clock::now();
-      flame::FlameRenderStats stats;
-      result.image = flame::render_flame(F,
-                                         {.size = job.size,
-                                          .quality = job.options.sampling.quality,
-                                          .seed = job.options.sampling.seed,
-                                          .threads = job.options.sampling.threads,
-                                          .cancel = job.options.sampling.cancel,
-                                          .depth = CV_32F},
-                                         &stats);
-      result.stats = {.points = stats.points,
-                      .seconds = seconds_since(start),
-                      .coverage = stats.coverage,
-                      .view = flame::flame_viewport(F, job.size).view};
-      break;
-    }
-    case RenderMode::tops:
-      result.image = tops_still(F, job, result.stats);
-      break;
-    case RenderMode::steal:
-      result.image = steal_still(F, job, result);
-      break;
-  }
-  return result;
+// A flame's measure: the flame look (render_flame), float BGR as the IFS measure.
+cv::Mat flame_measure(const flame::Flame& F, const StillJob& job, RenderStats& stats) {
+  const auto start = std::chrono::steady_clock::now();
+  flame::FlameRenderStats flame_stats;
+  cv::Mat image = flame::render_flame(F,
+                                      {.size = job.size,
+                                       .quality = job.options.sampling.quality,
+                                       .seed = job.options.sampling.seed,
+                                       .threads = job.options.sampling.threads,
+                                       .cancel = job.options.sampling.cancel,
+                                       .depth = CV_32F},
+                                      &flame_stats);
+  stats = {.points = flame_stats.points,
+           .seconds = seconds_since(start),
+           .coverage = flame_stats.coverage,
+           .view = flame::flame_viewport(F, job.size).view};
+  return image;
 }
 
 }  // namespace
 
 StillResult render_still(const engine::Drawing& drawing, const StillJob& job) {
-  if (const auto* f = std::get_if<flame::Flame>(&drawing)) return flame_still(*f, job);
-  const Ifs& F = std::get<Ifs>(drawing);
+  // A flame draws its attractor, tops and steal through the chaos game (flame/flame_chaos.h);
+  // only tops and steal follow addresses, where the exact descent would need inverse maps.
+  const auto* as_flame = std::get_if<flame::Flame>(&drawing);
+  if (as_flame)
+    flame::check_flame_chaos(job.options.sampling,
+                             job.exact && render_mode_info(job.mode).map_method);
   StillResult result;
   switch (job.mode) {
     case RenderMode::attractor:
       result.image =
-          laid_out(render_attractor(F, job.size, job.options, &result.stats), job.layout);
+          as_flame
+              ? flame::flame_attractor(*as_flame, job.size, job.options.sampling, &result.stats)
+              : laid_out(
+                    render_attractor(std::get<Ifs>(drawing), job.size, job.options, &result.stats),
+                    job.layout);
       break;
     case RenderMode::measure:
-      result.image = laid_out(render_measure(F, job.size, job.options, &result.stats), job.layout);
+      result.image = as_flame ? flame_measure(*as_flame, job, result.stats)
+                              : laid_out(render_measure(std::get<Ifs>(drawing), job.size,
+                                                        job.options, &result.stats),
+                                         job.layout);
       break;
     case RenderMode::tops:
-      result.image = tops_still(F, job, result.stats);
+      result.image = tops_still(drawing, job, result.stats);
       break;
     case RenderMode::steal:
-      result.image = steal_still(F, job, result);
+      result.image = steal_still(drawing, job, result);
       break;
   }
   return result;
