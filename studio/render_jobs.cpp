@@ -75,14 +75,12 @@ int submit_still(JobQueue& jobs, const json& body, StudioContext& context) {
 int submit_filter(JobQueue& jobs, const json& body, StudioContext& context) {
   const engine::Drawing drawing = drawing_from_json(body);
   std::optional<Ifs> colouring = colouring_for_drawing(body, drawing);  // the count checked
-  const bool is_flame = std::holds_alternative<flame::Flame>(drawing);
   const std::string movie = required_text(body, "movie");
   FilterArgs args;
   args.input = context.movie_path(movie).string();
   args.output = output_name(body, context, {".mp4", ".mkv", ".mov", ".avi", ".webm"}).string();
   args.quiet = true;
-  // A flame's steal map comes from the chaos game (its xforms have no inverse to descend).
-  args.fractal.engine.exact = bool_field(body, "exact", !is_flame);
+  args.fractal.engine.exact = bool_field(body, "exact", true);  // a flame: the chaos game
   args.fractal.view = text_field(body, "view", "");
   args.fractal.engine.mix = number_field(body, "mix", 0, 0, 1);
   args.fractal.background = text_field(body, "background", "black");

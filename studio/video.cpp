@@ -57,8 +57,7 @@ FilterSettings filter_settings(const json& body) {
   const std::optional<IfsPreset> colouring =
       colouring_preset(body, engine::name_of(s.drawing) + "-colouring");
   s.colouring = colouring_for_drawing(body, s.drawing);  // the count checked
-  // A flame's steal map comes from the chaos game (its xforms have no inverse to descend).
-  s.exact = bool_field(body, "exact", std::holds_alternative<Ifs>(s.drawing));
+  s.exact = bool_field(body, "exact", true);  // a flame: the chaos game (engine/drawing.h)
   out.view_text = text_field(body, "view", "");
   s.sampling.view = view_option(out.view_text, "view");
   s.animate = choice_field(body, "animate", "none", {"none", "drift"}) == "drift"
