@@ -10,14 +10,17 @@
 
 namespace ifsfx::app {
 
+void refuse_named_exact(const engine::Drawing& drawing, bool exact, bool named,
+                        std::string_view name) {
+  if (named && exact && std::holds_alternative<flame::Flame>(drawing))
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: the exact descent follows inverse maps, and a flame's xforms "
+                            "have none; a flame filters through the chaos game (got {})",
+                            name, engine::name_of(drawing)));
+}
+
 engine::FractalSettings FractalFilterArgs::settings(std::vector<std::string>* warnings) const {
   engine::Drawing F = engine::load_drawing(preset, {}, warnings);
-  // A flame's steal map always comes from the chaos game: a named --exact would do nothing.
-  if (exact_given && engine.exact && std::holds_alternative<flame::Flame>(F))
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("--exact: the exact descent follows inverse maps, and a flame's xforms "
-                            "have none; a flame filters through the chaos game (got {})",
-                            preset));
   std::optional<Ifs> G;
   if (!colouring.empty()) G = engine::colouring_for(colouring, F, "colouring");
   return settings_of(std::move(F), std::move(G));
@@ -25,6 +28,7 @@ engine::FractalSettings FractalFilterArgs::settings(std::vector<std::string>* wa
 
 engine::FractalSettings FractalFilterArgs::settings_of(engine::Drawing drawing,
                                                        std::optional<Ifs> colouring_ifs) const {
+  refuse_named_exact(drawing, engine.exact, exact_given, exact_name);
   engine::FractalSettings s = engine;
   s.drawing = std::move(drawing);
   s.colouring = std::move(colouring_ifs);

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "engine/fractal_engine.h"
@@ -22,14 +23,24 @@ struct FractalFilterArgs {
   std::string colouring;  // G: a preset fitted to the unit square; "" = a tiling
   std::string view;
   std::string background = "black";
-  bool exact_given = false;  // --exact named on the command line: refused for a flame
+  // The exact descent asked for by name (`--exact` on the command line, "exact" in a studio job):
+  // refused for a flame, whose steal map always comes from the chaos game. `exact_name` is the
+  // flag or field the message names.
+  bool exact_given = false;
+  std::string exact_name = "--exact";
 
   // The fractal engine's settings of these options: the presets loaded (their warnings, one line
   // each, added to `warnings`), view and background parsed (errors name the flags); the caller
   // adds its own (the stop flag, animation, interpolation). The engine checks the rest.
   engine::FractalSettings settings(std::vector<std::string>* warnings = nullptr) const;
   // The same with F and G given as data (a door that holds them: the studio), the presets unread.
+  // Both refuse a named exact descent for a flame.
   engine::FractalSettings settings_of(engine::Drawing drawing, std::optional<Ifs> colouring) const;
 };
+
+// A flame's steal map always comes from the chaos game, so an exact descent asked for by name
+// (`named`: the flag or field was given) would do nothing: refused, the message naming `name`.
+void refuse_named_exact(const engine::Drawing& drawing, bool exact, bool named,
+                        std::string_view name);
 
 }  // namespace ifsfx::app

@@ -80,7 +80,9 @@ int submit_filter(JobQueue& jobs, const json& body, StudioContext& context) {
   args.input = context.movie_path(movie).string();
   args.output = output_name(body, context, {".mp4", ".mkv", ".mov", ".avi", ".webm"}).string();
   args.quiet = true;
-  args.fractal.engine.exact = bool_field(body, "exact", true);  // a flame: the chaos game
+  args.fractal.engine.exact = bool_field(body, "exact", true);
+  args.fractal.exact_given = body.contains("exact");  // refused for a flame (settings_of)
+  args.fractal.exact_name = "exact";
   args.fractal.view = text_field(body, "view", "");
   args.fractal.engine.mix = number_field(body, "mix", 0, 0, 1);
   args.fractal.background = text_field(body, "background", "black");

@@ -15,6 +15,7 @@
 #include "ifs/error.h"
 #include "ifs/output_file.h"
 #include "run/arguments.h"
+#include "run/fractal_filter_options.h"
 #include "studio/fields.h"
 #include "studio/http.h"
 #include "studio/render.h"
@@ -57,7 +58,8 @@ FilterSettings filter_settings(const json& body) {
   const std::optional<IfsPreset> colouring =
       colouring_preset(body, engine::name_of(s.drawing) + "-colouring");
   s.colouring = colouring_for_drawing(body, s.drawing);  // the count checked
-  s.exact = bool_field(body, "exact", true);  // a flame: the chaos game (engine/drawing.h)
+  s.exact = bool_field(body, "exact", true);
+  refuse_named_exact(s.drawing, s.exact, body.contains("exact"), "exact");  // as the job does
   out.view_text = text_field(body, "view", "");
   s.sampling.view = view_option(out.view_text, "view");
   s.animate = choice_field(body, "animate", "none", {"none", "drift"}) == "drift"

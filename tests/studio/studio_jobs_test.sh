@@ -184,6 +184,14 @@ id=$(job_id)
 "$ifsfx" filter folder/clip.mp4 --preset folder/swirl.flame -q -o cli-flame-filtered.mp4
 [[ -s folder/flame-filtered.mp4 && $(framemd5 folder/flame-filtered.mp4) == $(framemd5 cli-flame-filtered.mp4) ]] &&
   pass "a flame's filter job: the frames of ifsfx filter --preset FILE.flame" || fail "flame filter job: frames differ from ifsfx filter"
+# A named exact descent does nothing for a flame (its steal map comes from the chaos game): the
+# job and the preview frame refuse it, as `ifsfx filter --exact` does.
+python3 -c "import json; d = json.load(open('flame-job.json')); d.update(exact=True, file='flame-exact.mp4'); json.dump(d, open('flame-exact.json', 'w')); d.pop('kind'); d.pop('file'); d.update(frame=1); json.dump(d, open('flame-exact-frame.json', 'w'))"
+c=$(code POST /api/jobs "${auth[@]}" -H 'Content-Type: application/json' --data @flame-exact.json)
+[[ $c == 400 ]] && grep -q "exact: the exact descent follows inverse maps" body && [[ ! -e folder/flame-exact.mp4 ]] &&
+  pass "a flame filter job with exact: 400 ($(cat body))" || fail "flame job with exact: $c $(cat body)"
+c=$(code POST /api/video/frame "${auth[@]}" -H 'Content-Type: application/json' --data @flame-exact-frame.json)
+[[ $c == 400 ]] && grep -q "exact: the exact descent" body && pass "a flame's preview frame with exact: 400" || fail "flame frame with exact: $c $(cat body)"
 c=$(code POST /api/jobs "${auth[@]}" --data "$(with '"kind": "filter", "movie": "clip.mp4", "file": "clip.mp4"')"); [[ $c == 400 ]] && pass "a filter over its movie: 400" || fail "filter over input: $c"
 c=$(code POST /api/jobs "${auth[@]}" --data "$(with '"kind": "filter", "movie": "clip.mp4", "file": "x.png"')"); [[ $c == 400 ]] && pass "a filter into .png: 400" || fail "filter to png: $c"
 c=$(code POST /api/jobs "${auth[@]}" --data "$(with '"kind": "filter", "movie": "clip.mp4", "file": "x.mp4", "frames": "9:2"')"); [[ $c == 400 ]] && pass "a bad frame range: 400" || fail "bad range: $c"
