@@ -161,7 +161,8 @@ quality: exact=False: chaos-game points per pixel, default {}.
 mix: weight of the original frame blended over the fractal, 0..1, default {}.
 background: where the attractor does not reach: "black" (default), "white", "original",
     "#rrggbb", "R,G,B" or (R, G, B).
-exact: the exact per-pixel descent (default True) or the chaos game (False).
+exact: the exact per-pixel descent (default None: True for an IFS; a flame always takes the
+    chaos game, and refuses exact=True) or the chaos game (False).
 seed: default {}. threads: default 0 = all cores; the frames never depend on it.
 interpolation: "bilinear" (default) or "nearest".
 animate: "none" (default, or None: one fixed map), "drift" (the maps wander by fBm noise) or
@@ -183,12 +184,15 @@ missing preset file. Preparing the maps releases the GIL and stops on Ctrl-C.)do
 }
 
 // ifsfx.Filter(...): the keywords as the engine's settings, then the engine made.
-std::unique_ptr<Filter> make_filter(
-    const py::object& preset, const py::object& colouring, const py::object& view, double margin,
-    double quality, double mix, const py::object& background, bool exact, std::uint64_t seed,
-    int threads, const std::string& interpolation, const py::object& animate, double drift_amount,
-    double drift_speed, int keyframe_interval, const py::object& superifs, int buffers,
-    std::int64_t loop, const py::object& size, const py::object& frame_size, double fps, bool rgb) {
+std::unique_ptr<Filter> make_filter(const py::object& preset, const py::object& colouring,
+                                    const py::object& view, double margin, double quality,
+                                    double mix, const py::object& background,
+                                    const py::object& exact, std::uint64_t seed, int threads,
+                                    const std::string& interpolation, const py::object& animate,
+                                    double drift_amount, double drift_speed, int keyframe_interval,
+                                    const py::object& superifs, int buffers, std::int64_t loop,
+                                    const py::object& size, const py::object& frame_size,
+                                    double fps, bool rgb) {
   const engine::FractalSettings settings =
       fractal_settings({.preset = preset,
                         .colouring = colouring,
@@ -222,7 +226,7 @@ void bind_filter(py::module_& m) {
       .def(py::init(&make_filter), py::arg("preset") = engine::kDefaultPreset, py::kw_only(),
            py::arg("colouring") = py::none(), py::arg("view") = py::none(),
            py::arg("margin") = d.sampling.margin, py::arg("quality") = d.sampling.quality,
-           py::arg("mix") = d.mix, py::arg("background") = "black", py::arg("exact") = d.exact,
+           py::arg("mix") = d.mix, py::arg("background") = "black", py::arg("exact") = py::none(),
            py::arg("seed") = d.sampling.seed, py::arg("threads") = d.sampling.threads,
            py::arg("interpolation") = "bilinear", py::arg("animate") = "none",
            py::arg("drift_amount") = d.drift_amount, py::arg("drift_speed") = d.drift_speed,

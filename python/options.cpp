@@ -10,6 +10,7 @@
 
 #include "ifs/error.h"
 #include "run/filter_options.h"
+#include "run/fractal_filter_options.h"
 #include "run/picture_options.h"
 
 namespace ifsfx::python {
@@ -94,22 +95,24 @@ engine::Animate animate_arg(const py::object& animate) {
 }  // namespace
 
 engine::FractalSettings fractal_settings(const FilterKeywords& k) {
-  engine::FractalSettings s{.exact = k.exact,
-                            .sampling = {.view = view_arg(k.view),
-                                         .margin = k.margin,
-                                         .quality = k.quality,
-                                         .seed = k.seed,
-                                         .threads = k.threads},
-                            .mix = k.mix,
-                            .background = filter_background_arg(k.background),
-                            .interpolation = interpolation_arg(k.interpolation),
-                            .animate = animate_arg(k.animate),
-                            .drift_amount = k.drift_amount,
-                            .drift_speed = k.drift_speed,
-                            .keyframe_interval = k.keyframe_interval,
-                            .superifs = k.superifs,
-                            .buffers = k.buffers,
-                            .loop = k.loop};
+  const bool named_exact = !k.exact.is_none();
+  engine::FractalSettings s{
+      .exact = named_exact ? k.exact.cast<bool>() : engine::FractalSettings{}.exact,
+      .sampling = {.view = view_arg(k.view),
+                   .margin = k.margin,
+                   .quality = k.quality,
+                   .seed = k.seed,
+                   .threads = k.threads},
+      .mix = k.mix,
+      .background = filter_background_arg(k.background),
+      .interpolation = interpolation_arg(k.interpolation),
+      .animate = animate_arg(k.animate),
+      .drift_amount = k.drift_amount,
+      .drift_speed = k.drift_speed,
+      .keyframe_interval = k.keyframe_interval,
+      .superifs = k.superifs,
+      .buffers = k.buffers,
+      .loop = k.loop};
   // The command's rule (check_filter_rules), in the keywords' words.
   app::check_loop_rule(
       s.loop, s.animate,
@@ -118,6 +121,7 @@ engine::FractalSettings fractal_settings(const FilterKeywords& k) {
   // Fractint entry that contracts only on average a UserWarning); a superIFS brings its own.
   if (s.animate != engine::Animate::superifs) {
     engine::Drawing F = drawing_arg(k.preset);
+    app::refuse_named_exact(F, s.exact, named_exact, "exact");  // as `ifsfx filter --exact`
     const std::string colouring = spec_arg(k.colouring, "colouring");
     if (!colouring.empty()) s.colouring = engine::colouring_for(colouring, F, "colouring");
     s.drawing = std::move(F);

@@ -46,7 +46,7 @@ struct FilterKeywords {
   py::object preset, colouring, view, background, animate;
   std::string interpolation;
   double margin, quality, mix, drift_amount, drift_speed;
-  bool exact;
+  py::object exact;  // None: the engine's default; True is refused for a flame
   std::uint64_t seed;
   int threads, keyframe_interval, buffers;
   std::string superifs;

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
+#include "flame/flame_chaos.h"
 #include "flame/flame_file.h"
 #include "flame/render.h"
 #include "ifs/error.h"
@@ -50,18 +51,26 @@ py::array render_flame(const std::string& spec, const py::object& size, const py
   return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
 }
 
+// `size`, `quality` and `exact` are None unless given, as the command tells a flag given from its
+// default: a flame is drawn at its own size (and its measure at its own quality), and an exact
+// descent asked for by name is refused for a flame, whose xforms have no inverse.
 py::array render(const py::object& preset, const std::string& mode_name, const py::object& size,
-                 const py::object& view, double margin, double quality, int supersample,
-                 double gamma, double brightness, std::uint64_t seed, int threads, bool exact,
-                 bool second_symbol, const py::object& source, const py::object& colouring,
-                 const py::object& background, bool alpha, const py::object& dtype,
-                 bool allow_expansive, bool rgb) {
+                 const py::object& view, double margin, const py::object& quality_arg,
+                 int supersample, double gamma, double brightness, std::uint64_t seed, int threads,
+                 const py::object& exact_arg, bool second_symbol, const py::object& source,
+                 const py::object& colouring, const py::object& background, bool alpha,
+                 const py::object& dtype, bool allow_expansive, bool rgb) {
   const app::RenderMode mode = app::parse_render_mode(mode_name);
-  const cv::Size pixels = size_arg(size);
   const engine::Drawing F = drawing_arg(preset, allow_expansive);
   const auto* as_flame = std::get_if<flame::Flame>(&F);
+  const app::StillJob defaults{};
+  const cv::Size pixels = !size.is_none() ? size_arg(size)
+                          : as_flame ? cv::Size{as_flame->camera.width, as_flame->camera.height}
+                                     : defaults.size;
+  const std::optional<double> quality =
+      quality_arg.is_none() ? std::nullopt : std::optional(quality_arg.cast<double>());
   if (as_flame && mode == app::RenderMode::measure) {
-    // A flame's measure draws as flam3 does, at `size` and `quality`.
+    // A flame's measure draws as flam3 does, at its own quality unless given.
     const cv::Mat image = run_released([&](const CancelToken& cancel) {
       return flame::render_flame(*as_flame, {.size = pixels,
                                              .quality = quality,
@@ -72,8 +81,11 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
     });
     return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
   }
-  const Keywords k =
-      keywords(view, margin, quality, supersample, gamma, brightness, seed, threads, exact);
+  if (as_flame && !exact_arg.is_none() && exact_arg.cast<bool>())
+    flame::check_flame_chaos({}, true);  // the command's refusal and message
+  const bool exact = exact_arg.is_none() ? defaults.exact : exact_arg.cast<bool>();
+  const Keywords k = keywords(view, margin, quality.value_or(Sampling{}.quality), supersample,
+                              gamma, brightness, seed, threads, exact);
   app::check_mode_options(mode,
                           {.source = {"source", !source.is_none()},
                            .colouring = {"colouring", !colouring.is_none()},
@@ -82,8 +94,7 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
   const bool steal = mode == app::RenderMode::steal;
   app::StillJob job{.mode = mode,
                     .size = pixels,
-                    // A flame's xforms have no inverse: the chaos game, whatever `exact` says.
-                    .exact = k.exact && !as_flame,
+                    .exact = k.exact && !as_flame,  // a flame: the chaos game
                     .second_symbol = second_symbol,
                     .background = colour_arg(background),
                     .alpha = alpha};
@@ -151,13 +162,12 @@ void bind_render(py::module_& m) {
   const app::StillJob job{};  // the still's defaults, as the command's
   m.def(
       "render", &render, py::arg("preset"), py::kw_only(),
-      py::arg("mode") = app::to_string(job.mode),
-      py::arg("size") = py::make_tuple(job.size.width, job.size.height),
+      py::arg("mode") = app::to_string(job.mode), py::arg("size") = py::none(),
       py::arg("view") = py::none(), py::arg("margin") = sampled.margin,
-      py::arg("quality") = sampled.quality, py::arg("supersample") = defaults.supersample,
+      py::arg("quality") = py::none(), py::arg("supersample") = defaults.supersample,
       py::arg("gamma") = defaults.gamma, py::arg("brightness") = defaults.brightness,
       py::arg("seed") = sampled.seed, py::arg("threads") = sampled.threads,
-      py::arg("exact") = job.exact, py::arg("second_symbol") = job.second_symbol,
+      py::arg("exact") = py::none(), py::arg("second_symbol") = job.second_symbol,
       py::arg("source") = py::none(), py::arg("colouring") = py::none(),
       py::arg("background") = "black", py::arg("alpha") = job.alpha, py::arg("dtype") = "uint8",
       py::arg("allow_expansive") = false, py::arg("rgb") = false,
@@ -167,20 +177,22 @@ pixels (BGR order, like cv2). The GIL is released while it works; Ctrl-C stops i
 
 preset: a shipped name, a .toml/.ifs path, "FILE.ifs:NAME", an Ifs, or a flame ("art.flame",
     "art.flame:NAME" or an ifsfx.Flame): its measure as flam3 draws it, the other modes
-    through the chaos game (exact is then ignored: a flame's xforms have no inverse).
+    through the chaos game (exact=True is refused: a flame's xforms have no inverse).
 mode: "attractor" (the set: H×W, 255 on it), "measure" (log-density of the invariant
     measure, coloured by map: H×W×3), "tops" (each pixel coloured by the first symbol of its
     top address: H×W×4, or ×3 with alpha=False), "steal" (colours stolen from `source`:
     its channels, plus alpha).
-size: (width, height) or "WxH", default (1024, 1024).
+size: (width, height) or "WxH", default None: (1024, 1024), or a flame's own size.
 view: plane rectangle (x0, y0, x1, y1) shown, default None: the attractor, auto-framed
     with `margin` (default 0.05, fraction of the larger side).
-quality: chaos-game points per output pixel, default 64.
+quality: chaos-game points per output pixel, default None: 64, or a flame measure's own
+    quality (flam3's samples per pixel).
 supersample: measure mode: render at K times the size and box-filter down, default 1.
 gamma, brightness: measure mode's tone map, defaults 2.2 and 4.
 seed: default 1; the same seed gives the same array for any thread count.
 threads: default 0 = all cores.
-exact: tops and steal: the exact per-pixel descent (default True) or the chaos game (False).
+exact: tops and steal: the exact per-pixel descent (default None: True for an IFS, the chaos
+    game for a flame) or the chaos game (False).
 second_symbol: tops mode: mix in the second symbol's colour, default False.
 source: steal mode: the image (an H×W×C uint8/uint16/float32 array, or a path).
 colouring: steal mode: colouring IFS preset with as many maps, default None: a tiling.

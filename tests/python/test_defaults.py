@@ -5,6 +5,8 @@
 # default as `ifsfx fit --help` and `ifsfx filter --help` show.
 import re
 
+import numpy as np
+
 import ifsfx
 from conftest import run_cli
 
@@ -28,9 +30,19 @@ def keyword_defaults(function):
 def test_render_keywords_default_as_the_command_line(cli):
     cli_render = help_defaults(cli, "render")
     py = keyword_defaults(ifsfx.render)
-    for key in ("margin", "quality", "supersample", "gamma", "brightness", "seed", "threads"):
+    for key in ("margin", "supersample", "gamma", "brightness", "seed", "threads"):
         assert float(py[key]) == cli_render[key], key
-    assert py["exact"] == "True"
+    # size, quality and exact are None unless given (a flame has its own size and quality, and
+    # refuses a named exact descent): for an IFS, None is the command's default.
+    assert py["size"] == py["quality"] == py["exact"] == "None"
+    small = {"size": (24, 24), "seed": 3}
+    np.testing.assert_array_equal(ifsfx.render("sierpinski-triangle", **small),
+                                  ifsfx.render("sierpinski-triangle", quality=cli_render["quality"],
+                                               **small))
+    np.testing.assert_array_equal(ifsfx.render("sierpinski-triangle", mode="tops", **small),
+                                  ifsfx.render("sierpinski-triangle", mode="tops", exact=True,
+                                               **small))
+    assert ifsfx.render("sierpinski-triangle", quality=1).shape == (1024, 1024, 3)
     steal = keyword_defaults(ifsfx.steal_map)
     for key in ("margin", "quality", "seed", "threads"):
         assert float(steal[key]) == cli_render[key], key
@@ -83,5 +95,5 @@ def test_filter_keywords_default_as_the_filter_command(cli):
     for flag in flags:
         key = flag.replace("-", "_")
         assert same(py[key], cli_filter[flag]), (flag, py[key], cli_filter[flag])
-    assert py["exact"] == "True" and py["view"] == "None" and py["colouring"] == "None"
+    assert py["exact"] == "None" and py["view"] == "None" and py["colouring"] == "None"
     assert py["size"] == "None"  # the frame's, as --size

@@ -61,3 +61,23 @@ def test_every_mode_of_a_flame_equals_the_cli_and_load_preset_gives_a_flame(cli,
     np.testing.assert_array_equal(a, b)
     with pytest.raises(ValueError, match="must have as many maps as spiral"):
         ifsfx.render(flame_file, mode="steal", source=path, colouring="sierpinski-triangle")
+
+
+def test_render_of_a_flame_takes_its_own_size_and_quality_unless_given(cli, tmp_path, flame_file):
+    # The measure at the file's 80x60 and quality 4, as `ifsfx render FILE.flame` with no flags;
+    # the other modes at its size too (an IFS stays at 1024x1024).
+    a = ifsfx.render(flame_file, seed=2, alpha=True)
+    np.testing.assert_array_equal(a, cli_image(cli, tmp_path, "render", flame_file, "--seed", "2"))
+    tops = ifsfx.render(flame_file, mode="tops", quality=2)
+    assert tops.shape == (60, 80, 4)
+    np.testing.assert_array_equal(tops, cli_image(cli, tmp_path, "render", flame_file, "--mode",
+                                                  "tops", "--quality", "2", name="tops.png"))
+
+
+def test_an_exact_descent_asked_of_a_flame_is_refused(flame_file):
+    with pytest.raises(ValueError, match="exact: the exact descent follows inverse maps"):
+        ifsfx.render(flame_file, mode="tops", exact=True, size=(16, 12))
+    with pytest.raises(ValueError, match="exact: the exact descent follows inverse maps"):
+        ifsfx.Filter(flame_file, exact=True)
+    assert ifsfx.render(flame_file, mode="tops", exact=False, size=(16, 12)).shape == (12, 16, 4)
+    ifsfx.Filter(flame_file)  # the default: the chaos game, no refusal
