@@ -106,7 +106,9 @@ struct ToneMapping {
   double vibrancy = 1;
   double highlight_power = -1;  // < 0: flam3's original clipping
   double contrast = 1;
-  Rgba background{0, 0, 0, 0};  // RGB of the empty plane; a = 0 where files give only RGB
+  // The empty plane: opaque unless the file says otherwise (a 4th number, JWildfire's
+  // bg_transparency), as flam3-render draws it without its transparency option.
+  Rgba background{0, 0, 0, 1};
   friend bool operator==(const ToneMapping&, const ToneMapping&) = default;
 };
 

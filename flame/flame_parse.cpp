@@ -51,8 +51,13 @@ void read_tone(const Where& at, const pugi::xml_node& f, ToneMapping& t) {
     const std::vector<double> b = numbers(at, "background", a.value());
     if (b.size() != 3 && b.size() != 4)
       at.fail("background", "3 numbers (RGB in [0, 1]) are needed", a.value());
-    t.background = {b[0], b[1], b[2], b.size() == 4 ? b[3] : 0.0};
+    // Three numbers: opaque, as flam3-render (transparency=0), Apophysis and JWildfire render by
+    // default; a fourth is the background's alpha (Ember).
+    t.background = {b[0], b[1], b[2], b.size() == 4 ? b[3] : 1.0};
   }
+  // JWildfire's transparent background.
+  const std::string_view clear = f.attribute("bg_transparency").value();
+  if (clear == "1" || clear == "true") t.background.a = 0;
 }
 
 void read_filtering(const Where& at, const pugi::xml_node& f, Flame& flame) {

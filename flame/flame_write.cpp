@@ -131,11 +131,14 @@ std::string flame_attributes(const Flame& f) {
       escaped(f.name), c.width, c.height, num(c.center.x), num(c.center.y), num(c.scale),
       num(c.zoom), num(c.rotate), s.supersample, num(s.filter_radius), escaped(s.filter_shape),
       num(f.quality));
+  // A fourth number only for a background that is not opaque (flam3 reads three).
+  std::string alpha;
+  if (t.background.a != 1) alpha = fmt::format(" {}", num(t.background.a));
   out += fmt::format(
-      " background=\"{} {} {}\" brightness=\"{}\" gamma=\"{}\" gamma_threshold=\"{}\" "
+      " background=\"{} {} {}{}\" brightness=\"{}\" gamma=\"{}\" gamma_threshold=\"{}\" "
       "vibrancy=\"{}\" highlight_power=\"{}\" contrast=\"{}\" estimator_radius=\"{}\" "
       "estimator_minimum=\"{}\" estimator_curve=\"{}\" palette_mode=\"{}\"",
-      num(t.background.r), num(t.background.g), num(t.background.b), num(t.brightness),
+      num(t.background.r), num(t.background.g), num(t.background.b), alpha, num(t.brightness),
       num(t.gamma), num(t.gamma_threshold), num(t.vibrancy), num(t.highlight_power),
       num(t.contrast), num(s.estimator_radius), num(s.estimator_minimum), num(s.estimator_curve),
       f.palette.mode == PaletteMode::linear ? "linear" : "step");

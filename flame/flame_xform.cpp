@@ -86,6 +86,38 @@ bool parameter_of_any(std::string_view n) {
   return false;
 }
 
+// JWildfire's motion curves: a value V (an xform's weightCurve, colorCurve, xyCoeff00Curve, …; a
+// term's NAME_amountCurve; a parameter NAME_PARAM itself) may carry a curve over an animation's
+// frames, written as V_enabled, V_view_xmin, …, V_point_count and the points V_x0, V_y0, …. The
+// base V of such an attribute, or "" when `n` is not one.
+std::string_view motion_curve_base(std::string_view n) {
+  for (std::string_view suffix :
+       {"_enabled", "_view_xmin", "_view_xmax", "_view_ymin", "_view_ymax", "_interpolation",
+        "_selected_idx", "_locked", "_point_count"})
+    if (n.ends_with(suffix)) return n.substr(0, n.size() - suffix.size());
+  const std::size_t digits = n.find_last_not_of("0123456789");
+  if (digits == std::string_view::npos || digits + 1 == n.size() || digits < 2) return {};
+  if (n.substr(digits - 1, 2) != "_x" && n.substr(digits - 1, 2) != "_y") return {};
+  return n.substr(0, digits - 1);
+}
+
+// True when `n` belongs to a motion curve of a value this xform has (a Curve of the xform or of a
+// term, or a parameter read): a curve that is not enabled changes nothing in a still; an enabled
+// one animates its value, which is refused rather than drawn at the static value.
+bool disabled_motion_curve(const Where& at, const std::string& what, const pugi::xml_node& node,
+                           std::string_view n, const std::set<std::string>& used) {
+  const std::string_view base = motion_curve_base(n);
+  if (base.empty() || !(base.ends_with("Curve") || used.contains(std::string(base)))) return false;
+  const std::string enabled = std::string(base) + "_enabled";
+  const std::string_view on = node.attribute(enabled.c_str()).value();
+  if (!on.empty() && on != "false" && on != "0")
+    at.fail(what + ": " + enabled,
+            "a JWildfire motion curve animates this value over frames; ifsfx reads stills of "
+            "flames without enabled curves",
+            on);
+  return true;
+}
+
 AffineMap affine(const Where& at, const std::string& what, const pugi::xml_attribute& a) {
   const std::vector<double> k = numbers(at, what + ": " + a.name(), a.value(), 6);
   return from_flam3_coefs({k[0], k[1], k[2], k[3], k[4], k[5]});
@@ -163,7 +195,9 @@ void read_variations(const Where& at, const std::string& what, const pugi::xml_n
   }
   std::vector<std::string> unknown;
   for (const std::string& n : rest)
-    if (!used.contains(n) && !parameter_of_any(n)) unknown.push_back(n);
+    if (!used.contains(n) && !parameter_of_any(n) &&
+        !disabled_motion_curve(at, what, node, n, used))
+      unknown.push_back(n);
   if (!unknown.empty()) refuse_unknown(at, what, unknown, found);
 }
 

@@ -32,7 +32,8 @@ struct FlameRenderOptions {
   // Called with the fraction done, in [0, 1], from the calling thread or a worker (at most one
   // call at a time); it must be cheap.
   std::function<void(double fraction)> progress;
-  int channels = 3;   // 3: BGR over the flame's background; 4: BGRA, alpha = the flame's cover
+  int channels = 3;   // 3: BGR over the flame's background; 4: BGRA, the flame over the
+                      // background's alpha (opaque unless the file makes it transparent)
   int depth = CV_8U;  // CV_8U, CV_16U or CV_32F (float in [0, 1])
   int burn_in = 15;   // iterations each walker discards before plotting (flam3's fuse)
 };

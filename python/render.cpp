@@ -27,7 +27,7 @@
 namespace ifsfx::python {
 namespace {
 
-// A flame file's flame (flame/render.h) as an array: BGR, or BGRA with its cover as alpha.
+// A flame file's flame (flame/render.h) as an array: BGR, or BGRA over its background's alpha.
 cv::Mat flame_picture(const std::string& spec, std::optional<cv::Size> size,
                       std::optional<double> quality, std::uint64_t seed, int threads, bool alpha) {
   const flame::Flame f = flame::read_flame(spec);
@@ -211,7 +211,8 @@ files.)doc");
         py::arg("alpha") = false, py::arg("dtype") = "uint8", py::arg("rgb") = false,
         R"doc(A fractal flame of flam3, Apophysis, JWildfire or Fractorium ("art.flame",
 "art.flame:NAME" or "art.flame:INDEX") as `ifsfx render art.flame:NAME -o OUT.png` renders it,
-as flam3-render does: H×W×3 (BGR over the flame's background), or ×4 with alpha=True (its cover).
+as flam3-render does: H×W×3 (BGR over the flame's background), or ×4 with alpha=True (opaque
+unless the file's background is transparent: then the flame's cover).
 size: (width, height) or "WxH", default None: the flame's own (the framing kept).
 quality: samples per pixel, default None: the flame's own.
 seed: default 1; the same seed gives the same array for any thread count. threads: 0 = all.

@@ -83,7 +83,7 @@ TEST(flame_file, reads_every_attribute_of_a_flam3_flame) {
   EXPECT_EQ(f.filtering.estimator_minimum, 1);
   EXPECT_EQ(f.filtering.estimator_curve, 0.6);
   EXPECT_EQ(f.quality, 20);
-  EXPECT_EQ(f.tone.background, (Rgba{0.1, 0.2, 0.3, 0}));
+  EXPECT_EQ(f.tone.background, (Rgba{0.1, 0.2, 0.3, 1}));  // RGB only: opaque, as flam3
   EXPECT_EQ(f.tone.brightness, 3);
   EXPECT_EQ(f.tone.gamma, 2.5);
   EXPECT_EQ(f.tone.highlight_power, 1);
@@ -135,6 +135,45 @@ TEST(flame_file, pre_and_post_terms_take_their_prefixed_parameters) {
   EXPECT_EQ(variation(x.post_variations[0].id).name, "curl");
   EXPECT_EQ(x.post_variations[0].weight, 0.2);
   EXPECT_EQ(x.post_variations[0].params, (std::vector<double>{0.3, 0.4}));
+}
+
+TEST(flame_file, jwildfires_motion_curves_are_read_when_off_and_refused_when_on) {
+  // JWildfire writes a curve over an animation's frames for the xform's values, each term's
+  // amount and each parameter: off, it changes nothing in a still.
+  const std::string curves =
+      "julian_fx_priority=\"0\" julian_power_enabled=\"false\" julian_power_view_xmin=\"0\" "
+      "julian_power_interpolation=\"SPLINE\" julian_power_point_count=\"1\" "
+      "julian_power_x0=\"1\" julian_power_y0=\"2.0\" julian_amountCurve_enabled=\"false\" "
+      "weightCurve_enabled=\"false\" weightCurve_locked=\"false\" weightCurve_x0=\"1\" "
+      "xyCoeff00Curve_enabled=\"false\" xyCoeff00Curve_y0=\"1.0\"";
+  const Flame f = parse_flames(flam3_flame("m", curves), "t.flame")[0];
+  EXPECT_EQ(f.xforms[0].variations[0].params, (std::vector<double>{3, 1}));
+  std::string on = curves;
+  const std::string off = "julian_power_enabled=\"false";
+  on.replace(on.find(off), off.size(), "julian_power_enabled=\"true");
+  EXPECT_STREQ(parse_error(flam3_flame("m", on)).what(),
+               "t.flame: flame \"m\": xform 0: julian_power_enabled: a JWildfire motion curve "
+               "animates this value over frames; ifsfx reads stills of flames without enabled "
+               "curves (got \"true\")");
+  // A curve's attributes of a value the xform does not have are still unknown.
+  EXPECT_STREQ(parse_error(flam3_flame("m", "swirl_power_enabled=\"false\"")).what(),
+               "t.flame: flame \"m\": xform 0: unknown variation \"swirl_power_enabled\"");
+}
+
+TEST(flame_file, a_background_is_opaque_unless_the_file_makes_it_transparent) {
+  const auto background = [](const std::string& attributes) {
+    std::string xml = flam3_flame("b");
+    const std::string given = "background=\"0.1 0.2 0.3\"";
+    xml.replace(xml.find(given), given.size(), attributes);
+    return parse_flames(xml, "t.flame")[0].tone.background;
+  };
+  EXPECT_EQ(background("background=\"0.1 0.2 0.3\""), (Rgba{0.1, 0.2, 0.3, 1}));  // flam3's
+  EXPECT_EQ(background("background=\"0.1 0.2 0.3 0.25\""), (Rgba{0.1, 0.2, 0.3, 0.25}));
+  EXPECT_EQ(background("background=\"0.8 0.8 0.8\" bg_transparency=\"1\""),
+            (Rgba{0.8, 0.8, 0.8, 0}));  // JWildfire's
+  EXPECT_EQ(background("background=\"0.8 0.8 0.8\" bg_transparency=\"0\""),
+            (Rgba{0.8, 0.8, 0.8, 1}));
+  EXPECT_EQ(background(""), (Rgba{0, 0, 0, 1}));
 }
 
 TEST(flame_file, symmetry_adds_flam3s_rotations_and_reflection_before_the_xforms) {

@@ -70,7 +70,11 @@ TEST(render_flame, gives_bgra_and_16_bit_and_float_pictures) {
   const cv::Mat f = render_flame(two_points(), {.channels = 4, .depth = CV_32F});
   ASSERT_EQ(f.type(), CV_32FC4);
   EXPECT_EQ(f.at<cv::Vec4f>(16, 48), cv::Vec4f(0, 0, 1, 1));
-  EXPECT_EQ(f.at<cv::Vec4f>(0, 0), cv::Vec4f(0, 0, 0, 0));  // uncovered: transparent
+  EXPECT_EQ(f.at<cv::Vec4f>(0, 0), cv::Vec4f(0, 0, 0, 1));  // uncovered: the opaque background
+  Flame clear = two_points();
+  clear.tone.background.a = 0;  // a transparent background (JWildfire's bg_transparency)
+  EXPECT_EQ(render_flame(clear, {.channels = 4, .depth = CV_32F}).at<cv::Vec4f>(0, 0),
+            cv::Vec4f(0, 0, 0, 0));
   const cv::Mat w = render_flame(two_points(), {.depth = CV_16U});
   ASSERT_EQ(w.type(), CV_16UC3);
   EXPECT_EQ(w.at<cv::Vec3w>(42, 16), cv::Vec3w(0, 65535, 0));
@@ -172,7 +176,7 @@ TEST(render_tone, a_picture_with_alpha_has_straight_colour_over_the_backgrounds_
   h.at(0, 0)[0] = 0.125;
   h.at(0, 0)[3] = 0.25;
   ToneMapping tone{.gamma = 2};
-  tone.background = {0, 0, 1, 0};  // blue, transparent (a file's RGB-only background)
+  tone.background = {0, 0, 1, 0};  // blue, transparent (JWildfire's bg_transparency)
   EXPECT_EQ(display(h, tone, 3, CV_32F, 1).at<cv::Vec3f>(0, 0),
             cv::Vec3f(255.0f / 2 / 255, 0, 64.0f / 255));  // opaque: half the blue behind
   EXPECT_EQ(display(h, tone, 4, CV_32F, 1).at<cv::Vec4f>(0, 0),
