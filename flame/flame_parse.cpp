@@ -29,6 +29,11 @@ void read_camera(const Where& at, const pugi::xml_node& f, Camera& cam) {
   }
   cam.scale = number_or(at, f, "scale", cam.scale);
   if (cam.scale <= 0) at.fail("scale", "must be > 0", f.attribute("scale").value());
+  // JWildfire's camera zoom multiplies the pixels per unit (its density normalisation uses the
+  // product too), so it is a scale.
+  const double cam_zoom = number_or(at, f, "cam_zoom", 1);
+  if (cam_zoom <= 0) at.fail("cam_zoom", "must be > 0", f.attribute("cam_zoom").value());
+  cam.scale *= cam_zoom;
   cam.zoom = number_or(at, f, "zoom", 0);
   if (std::abs(cam.zoom) > 50) at.fail("zoom", "must be in [-50, 50]", f.attribute("zoom").value());
   cam.rotate = number_or(at, f, "rotate", 0);

@@ -118,6 +118,21 @@ bool disabled_motion_curve(const Where& at, const std::string& what, const pugi:
   return true;
 }
 
+// JWildfire's affine maps of the yz and zx planes: the identity leaves a planar flame alone;
+// any other moves points out of the plane (or into it from z), which a flame drawn in the plane
+// cannot show, so it is refused rather than dropped.
+void refuse_3d_affine(const Where& at, const std::string& what, const pugi::xml_node& node) {
+  for (const char* name : {"yzCoefs", "zxCoefs", "yzPostCoefs", "zxPostCoefs"}) {
+    const auto a = node.attribute(name);
+    if (!a) continue;
+    if (numbers(at, what + ": " + name, a.value(), 6) != std::vector<double>{1, 0, 0, 1, 0, 0})
+      at.fail(what + ": " + name,
+              "a 3-D affine map (JWildfire) moves points out of the plane; ifsfx draws flames in "
+              "the plane, where only the identity leaves them",
+              a.value());
+  }
+}
+
 AffineMap affine(const Where& at, const std::string& what, const pugi::xml_attribute& a) {
   const std::vector<double> k = numbers(at, what + ": " + a.name(), a.value(), 6);
   return from_flam3_coefs({k[0], k[1], k[2], k[3], k[4], k[5]});
@@ -221,6 +236,7 @@ Xform parse_xform(const Where& at, const pugi::xml_node& node, const std::string
     for (double c : xf.chaos)
       if (c < 0) at.fail(what + ": chaos", "xaos weights must be >= 0", chaos.value());
   }
+  refuse_3d_affine(at, what, node);
   read_variations(at, what, node, xf);
   return xf;
 }

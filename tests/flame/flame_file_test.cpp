@@ -160,6 +160,20 @@ TEST(flame_file, jwildfires_motion_curves_are_read_when_off_and_refused_when_on)
                "t.flame: flame \"m\": xform 0: unknown variation \"swirl_power_enabled\"");
 }
 
+TEST(flame_file, jwildfires_camera_zoom_scales_and_its_3d_affine_maps_must_be_the_identity) {
+  std::string zoomed = flam3_flame("z");
+  zoomed.replace(zoomed.find("scale=\"80\""), 10, "scale=\"80\" cam_zoom=\"2.5\"");
+  EXPECT_EQ(parse_flames(zoomed, "t.flame")[0].camera.scale, 200);
+  const Flame flat = parse_flames(
+      flam3_flame("y", "yzCoefs=\"1.0 0.0 0.0 1.0 0.0 0.0\" zxPostCoefs=\"1 0 0 1 0 0\""),
+      "t.flame")[0];
+  EXPECT_EQ(flat.xforms.size(), 2u);
+  EXPECT_STREQ(parse_error(flam3_flame("y", "yzCoefs=\"1 0 0 0.5 0 0.2\"")).what(),
+               "t.flame: flame \"y\": xform 0: yzCoefs: a 3-D affine map (JWildfire) moves "
+               "points out of the plane; ifsfx draws flames in the plane, where only the identity "
+               "leaves them (got \"1 0 0 0.5 0 0.2\")");
+}
+
 TEST(flame_file, a_background_is_opaque_unless_the_file_makes_it_transparent) {
   const auto background = [](const std::string& attributes) {
     std::string xml = flam3_flame("b");
