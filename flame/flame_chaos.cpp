@@ -152,6 +152,13 @@ Plan plan_of(const Flame& flame, cv::Size size, const Sampling& sampling) {
   return plan;
 }
 
+// Points a chunk of the walk plots: an affine IFS's chunks (its pictures are then the affine
+// chaos game's, byte for byte), smaller ones for a flame's slower steps, so that the workers
+// share a picture of a few million points.
+std::uint64_t chunk_points(const Plan& plan) {
+  return plan.affine ? detail::kChunkPoints : detail::kSlowChunkPoints;
+}
+
 void check_inputs(const Flame& flame, cv::Size size, const Sampling& sampling, bool exact) {
   check_flame_chaos(sampling, exact);
   if (flame.xforms.empty())
@@ -189,6 +196,7 @@ detail::AddressRaster flame_keys(const Flame& flame, const Plan& plan, const Sam
       .run64 = [run](std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
                      std::uint64_t* cells) { run(cells, seed, chunk, points); },
       .bits = bits,
+      .chunk_points = chunk_points(plan),
       .affine = plan.affine ? &*plan.affine : nullptr};
   return detail::chaos_tops(keys, plan.viewport,
                             {.quality = sampling.quality,
@@ -276,14 +284,14 @@ cv::Mat flame_attractor(const Flame& flame, cv::Size size, const Sampling& sampl
                        plan.affine ? default_burn_in(*plan.affine) : kFlameBurnIn);
   const auto points =
       static_cast<std::uint64_t>(std::ceil(sampling.quality * size.width * double(size.height)));
-  const std::uint64_t chunks = detail::chunk_count(points);
+  const std::uint64_t chunks = detail::chunk_count(points, chunk_points(plan));
   const int workers = worker_count(chunks, sampling.threads);
   std::vector<cv::Mat> hits(static_cast<std::size_t>(workers));
   parallel_for(chunks, workers, [&](std::size_t chunk, int worker) {
     sampling.cancel.check("render");
     cv::Mat& mask = hits[static_cast<std::size_t>(worker)];
     if (mask.empty()) mask = cv::Mat::zeros(size, CV_8UC1);
-    walk.walk(sampling.seed, chunk, detail::chunk_size(points, chunk),
+    walk.walk(sampling.seed, chunk, detail::chunk_size(points, chunk, chunk_points(plan)),
               [&mask](long pixel, std::uint64_t) { mask.data[pixel] = 255; });
   });
   cv::Mat out = cv::Mat::zeros(size, CV_8UC1);

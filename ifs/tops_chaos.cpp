@@ -234,16 +234,15 @@ std::vector<std::uint64_t> run_policy(const KeyWalk& walkers, const Viewport& vi
     const double per_pixel = round == 0 ? options.quality : options.quality / 4;
     const auto points = static_cast<std::uint64_t>(
         std::max(1.0, std::ceil(per_pixel * static_cast<double>(pixels))));
-    const std::uint64_t chunks = (points + kChunkPoints - 1) / kChunkPoints;
+    const std::uint64_t chunks = chunk_count(points, walkers.chunk_points);
     const std::uint64_t first = next_chunk;
     next_chunk += chunks;
     parallel_for(chunks, threads, [&](std::size_t chunk, int worker) {
       options.cancel.check("chaos game");
       auto& buffer = buffers[static_cast<std::size_t>(worker)];
       if (buffer.empty()) buffer.assign(pixels, 0);
-      const std::uint64_t begin = chunk * kChunkPoints;
-      run_chunk<Cell>(walkers, options.seed, first + chunk, std::min(kChunkPoints, points - begin),
-                      buffer.data());
+      run_chunk<Cell>(walkers, options.seed, first + chunk,
+                      chunk_size(points, chunk, walkers.chunk_points), buffer.data());
     });
     s.points += points;
     s.rounds = round + 1;

@@ -17,6 +17,7 @@
 #include <opencv2/core.hpp>
 
 #include "ifs/cancel.h"
+#include "ifs/detail/walkers.h"
 #include "ifs/ifs.h"
 #include "ifs/sampling.h"
 #include "ifs/tops.h"
@@ -90,7 +91,8 @@ struct KeyWalk {
   std::function<void(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
                      std::uint64_t* cells)>
       run64;
-  int bits = 1;  // b = ceil(log2 N)
+  int bits = 1;                               // b = ceil(log2 N)
+  std::uint64_t chunk_points = kChunkPoints;  // points a chunk of the walk plots (walkers.h)
   // The Hutchinson passes step every pixel's point by these maps, in the viewport's plane: the
   // walk's own maps when they are affine and contract; none skips the passes (a flame's xforms
   // have no contraction bound that would keep a rebuilt point on the attractor).

@@ -20,13 +20,19 @@ namespace ifsfx::detail {
 // every chunk is seeded from (seed, chunk): results never depend on the thread count.
 inline constexpr std::uint64_t kChunkPoints = std::uint64_t{1} << 22;
 
-inline std::uint64_t chunk_count(std::uint64_t points) {
-  return std::max<std::uint64_t>(1, (points + kChunkPoints - 1) / kChunkPoints);
+// A walk two orders of magnitude slower per point than the affine kernels (a flame's xforms,
+// flame/flame_chaos.h) takes chunks this much smaller, so that a picture is still many chunks
+// for the workers to share.
+inline constexpr std::uint64_t kSlowChunkPoints = std::uint64_t{1} << 16;
+
+inline std::uint64_t chunk_count(std::uint64_t points, std::uint64_t per_chunk = kChunkPoints) {
+  return std::max<std::uint64_t>(1, (points + per_chunk - 1) / per_chunk);
 }
 
-inline std::uint64_t chunk_size(std::uint64_t points, std::uint64_t chunk) {
-  const std::uint64_t begin = chunk * kChunkPoints;
-  return begin >= points ? 0 : std::min(kChunkPoints, points - begin);
+inline std::uint64_t chunk_size(std::uint64_t points, std::uint64_t chunk,
+                                std::uint64_t per_chunk = kChunkPoints) {
+  const std::uint64_t begin = chunk * per_chunk;
+  return begin >= points ? 0 : std::min(per_chunk, points - begin);
 }
 
 // The tables of one walk — the IFS's maps as structure of arrays, its alias tables (MapPicker),

@@ -139,6 +139,24 @@ TEST(flame_chaos, a_final_spherical_xform_inverts_the_attractor_and_the_steal_ma
   EXPECT_GE(covered_inside, inside - inside / 100);
 }
 
+TEST(flame_chaos, a_flame_of_many_chunks_gives_the_same_bytes_for_any_thread_count) {
+  // 48² pixels at quality 64: 147 456 points, three of a flame's chunks (2¹⁶ points each).
+  const Flame flame = inverted_square();
+  const cv::Size size{48, 48};
+  const auto sampled = [](int threads) {
+    return Sampling{.quality = 64, .seed = 7, .threads = threads};
+  };
+  const cv::Mat one = flame_attractor(flame, size, sampled(1));
+  const TopSymbols tops = flame_top_symbols(flame, size, {.sampling = sampled(1), .exact = false});
+  for (const int threads : {2, 3}) {
+    EXPECT_TRUE(testing::same_bytes(one, flame_attractor(flame, size, sampled(threads))));
+    const TopSymbols again =
+        flame_top_symbols(flame, size, {.sampling = sampled(threads), .exact = false});
+    EXPECT_TRUE(testing::same_bytes(tops.first, again.first));
+    EXPECT_TRUE(testing::same_bytes(tops.second, again.second));
+  }
+}
+
 TEST(flame_chaos, what_needs_inverse_maps_or_a_map_per_xform_is_refused) {
   const Flame flame = inverted_square();
   const auto message = [](auto&& f) {
