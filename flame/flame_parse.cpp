@@ -3,6 +3,7 @@
 // <symmetry kind=N> expanded as flam3 does, and the checks a renderer relies on.
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -44,6 +45,27 @@ void read_camera(const Where& at, const pugi::xml_node& f, Camera& cam) {
   cam.depth_blur = number_or(at, f, "cam_dof", 0);
 }
 
+// JWildfire's gradient backgrounds (background_type GRADIENT_2X2, GRADIENT_2X2_C): corner
+// colours (and a centre one) blended over the picture. One colour throughout is the background;
+// a gradient is refused rather than drawn as one colour.
+void read_jwildfire_gradient(const Where& at, const pugi::xml_node& f, ToneMapping& t) {
+  const std::string_view type = f.attribute("background_type").value();
+  if (!type.starts_with("GRADIENT")) return;
+  std::optional<std::vector<double>> first;
+  for (const char* name :
+       {"background_ul", "background_ur", "background_ll", "background_lr", "background_cc"}) {
+    const auto a = f.attribute(name);
+    if (!a) continue;
+    const std::vector<double> c = numbers(at, name, a.value(), 3);
+    if (!first) first = c;
+    if (c != *first)
+      at.fail("background_type",
+              "a gradient background (JWildfire) is not drawn; one colour in every corner is",
+              std::string(type) + ", " + name + " " + a.value());
+  }
+  if (first) t.background = {(*first)[0], (*first)[1], (*first)[2], t.background.a};
+}
+
 void read_tone(const Where& at, const pugi::xml_node& f, ToneMapping& t) {
   t.brightness = number_or(at, f, "brightness", t.brightness);
   t.gamma = number_or(at, f, "gamma", t.gamma);
@@ -60,6 +82,7 @@ void read_tone(const Where& at, const pugi::xml_node& f, ToneMapping& t) {
     // default; a fourth is the background's alpha (Ember).
     t.background = {b[0], b[1], b[2], b.size() == 4 ? b[3] : 1.0};
   }
+  read_jwildfire_gradient(at, f, t);
   // JWildfire's transparent background.
   const std::string_view clear = f.attribute("bg_transparency").value();
   if (clear == "1" || clear == "true") t.background.a = 0;

@@ -188,6 +188,17 @@ TEST(flame_file, a_background_is_opaque_unless_the_file_makes_it_transparent) {
   EXPECT_EQ(background("background=\"0.8 0.8 0.8\" bg_transparency=\"0\""),
             (Rgba{0.8, 0.8, 0.8, 1}));
   EXPECT_EQ(background(""), (Rgba{0, 0, 0, 1}));
+  const std::string corners =
+      "background_type=\"GRADIENT_2X2_C\" background_ul=\"0.2 0.2 0.2\" "
+      "background_ur=\"0.2 0.2 0.2\" background_cc=\"";
+  EXPECT_EQ(background(corners + "0.2 0.2 0.2\""), (Rgba{0.2, 0.2, 0.2, 1}));  // one colour
+  std::string xml = flam3_flame("g");
+  const std::string given = "background=\"0.1 0.2 0.3\"";
+  xml.replace(xml.find(given), given.size(), corners + "0.5 0 0\"");
+  EXPECT_STREQ(parse_error(xml).what(),
+               "t.flame: flame \"g\": background_type: a gradient background (JWildfire) is not "
+               "drawn; one colour in every corner is (got \"GRADIENT_2X2_C, background_cc 0.5 0 "
+               "0\")");
 }
 
 TEST(flame_file, symmetry_adds_flam3s_rotations_and_reflection_before_the_xforms) {
