@@ -125,6 +125,11 @@ struct FitOptions {
   FitMethod method = FitMethod::attractor;
   // FitMethod::attractor: the distinct starts taken from the collage search's runs.
   int starts = 3;
+  // FitMethod::attractor: further starts from the self-similarity scan (similarity_scan.h): the
+  // copies of L inside itself, N of them chosen by greedy set cover (similarity_cover.h), this
+  // many distinct covers. It costs a fixed number of evaluations (scan_cost, about 5300: 2% of
+  // the default budget) and is skipped when that is over a tenth of max_evaluations. 0 = none.
+  int similarity_starts = 2;
   // moments: CMA-ES runs after the first, each from a seeded k-means++ split. search: runs
   // after the first that start from the next-best choice of maps from the pool; later runs
   // kick the best maps so far, for as long as the budget lasts.
