@@ -306,7 +306,15 @@ std::vector<std::vector<AffineMap>> similarity_starts(Fitting& fitting) {
   fitting.report(FitPhase::search, fitting.chooser.result.runs, fitting.best_objective);
   const std::vector<SelfCopy> copies = scan_self_similarity(source, scan);
   fitting.budget.evaluations += scan_cost(scan);
-  return greedy_covers(source, copies, {.maps = options.maps, .covers = options.similarity_starts});
+  std::vector<std::vector<AffineMap>> covers =
+      greedy_covers(source, copies, {.maps = options.maps, .covers = options.similarity_starts});
+  for (auto& cover : covers) {
+    cover = refine_icp(source, std::move(cover),
+                       {options.refine_iterations, options.objective.max_factor,
+                        fitting.budget.at(0.45), options.cancel});
+    fitting.chooser.consider(cover);
+  }
+  return covers;
 }
 
 // A start for a later run: the best maps so far with one or two of them swapped for pool maps
