@@ -8,12 +8,15 @@
 // Template matching of L against scaled, turned copies of itself: for every linear part of a
 // fixed grid, A = s · R(θ) · diag(1, a) · R(φ) · F^r (a scale s, a turn θ, an anisotropy a along
 // the axis φ, a reflection F = diag(1, −1)), the copy A(L) is drawn about L's centroid c and
-// cross-correlated with L (grown by a pixel, so that a copy that is exact up to the raster
-// still counts as inside): at every translation t at once this gives |w(L) ∩ L| for
-// w(x) = A (x − c) + c + t, hence the precision |w(L) ∩ L| / |w(L)| — 1 when the copy lies in L
-// — and the area it covers. The best few translations of each linear part whose precision is
-// near 1 are kept, and among them the largest copies that are not near one kept before
-// (non-maximum suppression over the maps).
+// cross-correlated by FFT with L grown by a pixel, on a coarse raster (64²): at every translation
+// t at once this gives |w(L) ∩ L| for w(x) = A (x − c) + c + t, hence the precision
+// |w(L) ∩ L| / |w(L)| — 1 when the copy lies in L — and the area it covers. The kernel also
+// charges what of L lies just outside the copy (a ring two pixels out), so that a copy whose edge
+// is L's edge, a part of L, beats one that merely lies inside a solid region. The best few
+// translations of each linear part are kept, each scale and anisotropy its share, and polished
+// by a compass search on 128² and then 256², where thin parts are apart and only the true copies
+// keep their points in L (similarity_polish.h); those that do are returned, largest first, one
+// of each near group (non-maximum suppression over the maps). docs/design.md §6.
 #pragma once
 
 #include <chrono>
