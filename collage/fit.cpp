@@ -19,6 +19,8 @@
 #include "collage/optimise.h"
 #include "collage/refine.h"
 #include "collage/search.h"
+#include "collage/similarity_cover.h"
+#include "collage/similarity_scan.h"
 #include "ifs/error.h"
 #include "ifs/parallel.h"
 #include "ifs/render.h"
@@ -285,6 +287,36 @@ std::optional<std::vector<AffineMap>> cut_start(Fitting& fitting, const cv::Mat&
   return descended.maps;
 }
 
+// FitMethod::attractor's starts from the self-similarity scan: covers of L by N copies of itself
+// (similarity_scan.h, similarity_cover.h), searched on the finest picture of L there is — on the
+// working raster a fern's fronds are one solid leaf, in which any smaller leaf fits. The scan's
+// cost is counted, whatever the clock; its linear parts stop at 45% of the time. Nothing below
+// 10 times its cost in evaluations.
+std::vector<std::vector<AffineMap>> similarity_starts(Fitting& fitting) {
+  const FitOptions& options = fitting.options;
+  const cv::Mat& source = options.fine_target.empty() ? fitting.target : options.fine_target;
+  SimilarityScanOptions scan;
+  // A fixed cost: more than a tenth of a small budget would leave the refinement too little.
+  if (options.similarity_starts < 1 || source.cols < scan.size ||
+      10 * scan_cost(scan) > options.max_evaluations)
+    return {};
+  scan.threads = options.threads;
+  scan.cancel = options.cancel;
+  scan.deadline = fitting.budget.at(0.45);
+  fitting.report(FitPhase::search, fitting.chooser.result.runs, fitting.best_objective);
+  const std::vector<SelfCopy> copies = scan_self_similarity(source, scan);
+  fitting.budget.evaluations += scan_cost(scan);
+  std::vector<std::vector<AffineMap>> covers =
+      greedy_covers(source, copies, {.maps = options.maps, .covers = options.similarity_starts});
+  for (auto& cover : covers) {
+    cover = refine_icp(source, std::move(cover),
+                       {options.refine_iterations, options.objective.max_factor,
+                        fitting.budget.at(0.45), options.cancel});
+    fitting.chooser.consider(cover);
+  }
+  return covers;
+}
+
 // A start for a later run: the best maps so far with one or two of them swapped for pool maps
 // drawn from (seed, run) — an iterated local search's kick.
 std::vector<AffineMap> kicked(const std::vector<AffineMap>& best, const Pool& pool,
@@ -478,9 +510,10 @@ void fit_from_search(Fitting& fitting) {
   polish_attractor(fitting, pool, descent, runs.run);
   budget.uncap();
   if (options.method != FitMethod::attractor || fitting.chooser.result.ifs.maps.empty()) return;
-  // The attractor's own stages, from the best attractor so far, the cut start and the best
-  // distinct runs.
+  // The attractor's own stages, from the best attractor so far, the self-similar covers, the cut
+  // start and the best distinct runs.
   std::vector<std::vector<AffineMap>> starts = {fitting.chooser.result.ifs.maps};
+  for (auto& cover : similarity_starts(fitting)) starts.push_back(std::move(cover));
   if (auto cut = cut_start(fitting, coarse_raster(fitting.target), descent))
     starts.push_back(std::move(*cut));
   for (const auto& [value, maps] : runs.distinct)

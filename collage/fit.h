@@ -72,11 +72,13 @@ CollageReport assess(const cv::Mat& target, const Ifs& ifs, const AssessOptions&
 // What the fit optimises after its start.
 enum class FitMethod {
   // Issue 32: the attractor itself. The collage stages below run on 40% of the budget; then
-  // the best attractor so far, the maps searched on a cut partition (cut_partition.h) and the
-  // best distinct runs are refined by CMA-ES on the attractor loss (attractor_loss.h) over all
-  // maps at once, coarse to fine (32², 64², the working raster; cut from fine_target when given),
-  // with perturb-and-accept escapes between (attractor_fit.h) and ICP last; fine_target picks
-  // among the best few candidates last.
+  // the best attractor so far, covers of L by copies of itself (similarity_scan.h,
+  // similarity_cover.h; aligned by ICP on fine_target), the maps searched on a cut partition
+  // (cut_partition.h) and the best distinct runs are refined by CMA-ES on the attractor loss
+  // (attractor_loss.h) over all maps at once, coarse to fine (32², 64², the working raster; cut
+  // from fine_target when given), with perturb-and-accept escapes between (attractor_fit.h) and
+  // ICP last (on the working raster and on fine_target); fine_target picks among the best few
+  // candidates last.
   attractor,
   // Issues 14–15: the collage objective W(L) against L, then a polish on W^k(L); the attractor
   // is only rendered to choose between candidates.
@@ -125,6 +127,11 @@ struct FitOptions {
   FitMethod method = FitMethod::attractor;
   // FitMethod::attractor: the distinct starts taken from the collage search's runs.
   int starts = 3;
+  // FitMethod::attractor: further starts from the self-similarity scan (similarity_scan.h): the
+  // copies of L inside itself, N of them chosen by greedy set cover (similarity_cover.h), this
+  // many distinct covers. It costs a fixed number of evaluations (scan_cost, about 5300: 2% of
+  // the default budget) and is skipped when that is over a tenth of max_evaluations. 0 = none.
+  int similarity_starts = 2;
   // moments: CMA-ES runs after the first, each from a seeded k-means++ split. search: runs
   // after the first that start from the next-best choice of maps from the pool; later runs
   // kick the best maps so far, for as long as the budget lasts.

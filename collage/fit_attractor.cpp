@@ -192,11 +192,14 @@ void optimise_attractor(Fitting& fitting, std::vector<std::vector<AffineMap>> st
   }
   // ICP on the collage (refine.h) aligns the maps below a pixel where L is self-similar, as a
   // fractal's own picture is (W(L) = L exactly); the chooser keeps it only if A is better.
-  if (fitting.options.refine_iterations > 0)
-    fitting.chooser.consider(
-        refine_icp(fitting.target, final_maps,
-                   {fitting.options.refine_iterations, fitting.options.objective.max_factor,
-                    fitting.budget.at(1.0, fitting.chooser.reserve()), fitting.options.cancel}));
+  if (fitting.options.refine_iterations > 0) {
+    const RefineOptions icp{fitting.options.refine_iterations, fitting.options.objective.max_factor,
+                            fitting.budget.at(1.0, fitting.chooser.reserve()),
+                            fitting.options.cancel};
+    fitting.chooser.consider(refine_icp(fitting.target, final_maps, icp));
+    if (!fitting.options.fine_target.empty())
+      fitting.chooser.consider(refine_icp(fitting.options.fine_target, final_maps, icp));
+  }
   fitting.chooser.result.runs = stages.run();
 }
 
