@@ -142,27 +142,34 @@ struct Step {
   }
 };
 
-std::vector<Term> terms_of(const std::vector<VariationTerm>& list, bool in_sum, CpuLevel level) {
+// The kernel level and lane type the batch forms run at.
+struct Kernels {
+  CpuLevel level;
+  LaneType type;
+};
+
+std::vector<Term> terms_of(const std::vector<VariationTerm>& list, bool in_sum, Kernels kernels) {
   std::vector<Term> out;
   for (const VariationTerm& t : list) {
     const Variation& v = variation(t.id);
     // z only: adds nothing to the sum, leaves the point alone in a list.
     if (v.kind == VariationKind::flat_3d) continue;
-    out.push_back({v.function, find_batch_variation(level, v.name), t.weight, t.params,
-                   !in_sum && v.assign == Assign::add, v.name == "linear"});
+    const BatchVariation* batch = find_batch_variation(kernels.level, v.name, kernels.type);
+    out.push_back({v.function, batch ? batch : find_batch_variation(kernels.level, v.name),
+                   t.weight, t.params, !in_sum && v.assign == Assign::add, v.name == "linear"});
   }
   return out;
 }
 
-Step step_of(const Xform& xf, const Palette& palette, CpuLevel level) {
+Step step_of(const Xform& xf, const Palette& palette, Kernels kernels) {
   Step s;
   s.pre = xf.pre;
   s.has_post = xf.post.has_value();
   if (s.has_post) s.post = *xf.post;
   s.has_sum = !xf.variations.empty();
-  s.pre_terms = terms_of(xf.pre_variations, false, level);
-  s.sum_terms = terms_of(xf.variations, true, level);
-  s.post_terms = terms_of(xf.post_variations, false, level);
+  s.pre_terms = terms_of(xf.pre_variations, false, kernels);
+  s.sum_terms = terms_of(xf.variations, true, kernels);
+  s.post_terms = terms_of(xf.post_variations, false, kernels);
   s.affine_only =
       s.pre_terms.empty() && s.post_terms.empty() &&
       std::all_of(s.sum_terms.begin(), s.sum_terms.end(), [](const Term& t) { return t.linear; });
@@ -369,11 +376,11 @@ std::uint64_t walk_chunk(const Plan& plan, std::uint64_t seed, std::uint64_t chu
   return reseeded;
 }
 
-Plan plan_of(const Flame& flame, const FlameRaster& raster) {
+Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   Plan plan;
-  const CpuLevel level = cpu_level();
-  for (const Xform& xf : flame.xforms) plan.steps.push_back(step_of(xf, flame.palette, level));
-  if (flame.final_xform) plan.final_step = step_of(*flame.final_xform, flame.palette, level);
+  const Kernels kernels{cpu_level(), float_lanes ? LaneType::f32 : LaneType::f64};
+  for (const Xform& xf : flame.xforms) plan.steps.push_back(step_of(xf, flame.palette, kernels));
+  if (flame.final_xform) plan.final_step = step_of(*flame.final_xform, flame.palette, kernels);
   plan.pickers = xform_pickers(flame, false);
   plan.affine_only = std::all_of(plan.steps.begin(), plan.steps.end(),
                                  [](const Step& s) { return s.affine_only; });
@@ -385,7 +392,7 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster) {
 }  // namespace
 
 ChaosResult run_chaos_game(const ChaosRun& run) {
-  const Plan plan = plan_of(*run.flame, run.raster);
+  const Plan plan = plan_of(*run.flame, run.raster, run.float_lanes);
   const std::uint64_t chunks =
       std::max<std::uint64_t>(1, (run.points + kChunkPoints - 1) / kChunkPoints);
   const int workers = worker_count(chunks, run.threads);

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The variations' batch forms (flame/detail/batch_variations.h): each is its registry function's
 // formula (flame/variations_*.cpp, where the comments cite the paper) over the lane type V of
-// flame/detail/vmath.inl, included after it. The random ones read their draws from t.u in the
-// order the registry function draws them.
+// flame/detail/vmath.inl (doubles) or flame/detail/vmath_f32.inl (floats), included after it. The
+// random ones read their draws from t.u in the order the registry function draws them. The level
+// defines add_to(double* o, V r): o[0, kW) += r, in double.
 
 using flame::detail::BatchTerm;
 using flame::detail::BatchVariation;
@@ -19,8 +20,8 @@ template <class F>
 inline void each(std::size_t n, const double* X, const double* Y, double* OX, double* OY, F f) {
   for (std::size_t i = 0; i < n; i += kW) {
     const VP r = f(load(X + i), load(Y + i), i);
-    store(OX + i, load(OX + i) + r.x);
-    store(OY + i, load(OY + i) + r.y);
+    add_to(OX + i, r.x);
+    add_to(OY + i, r.y);
   }
 }
 

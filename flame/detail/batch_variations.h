@@ -45,11 +45,17 @@ struct BatchVariation {
   int draws = 0;  // uniforms per point
 };
 
+// The arithmetic of a batch form's lanes: doubles (four a register on AVX2) or floats (eight;
+// shorter polynomials, flame/detail/vmath_f32.inl). Both take and give doubles: a float form
+// rounds its points to float, evaluates in float and adds its result to the double sums.
+enum class LaneType { f64, f32 };
+
 // The batch forms of `level` (or of the scalar level where this build has no other).
-std::span<const BatchVariation> batch_variations(CpuLevel level);
+std::span<const BatchVariation> batch_variations(CpuLevel level, LaneType type = LaneType::f64);
 
 // The batch form of the variation called `name` at `level`, or nullptr.
-const BatchVariation* find_batch_variation(CpuLevel level, std::string_view name);
+const BatchVariation* find_batch_variation(CpuLevel level, std::string_view name,
+                                           LaneType type = LaneType::f64);
 
 }  // namespace ifsfx::flame::detail
 
@@ -57,7 +63,9 @@ const BatchVariation* find_batch_variation(CpuLevel level, std::string_view name
 // that alone may hold instructions beyond baseline x86-64 (tests/ifs/kernel_isolation_test.sh).
 namespace ifsfx::detail::kernel_scalar {
 std::span<const flame::detail::BatchVariation> flame_batch_table();
-}
+std::span<const flame::detail::BatchVariation> flame_batch_table_f32();
+}  // namespace ifsfx::detail::kernel_scalar
 namespace ifsfx::detail::kernel_avx2 {
 std::span<const flame::detail::BatchVariation> flame_batch_table();
-}
+std::span<const flame::detail::BatchVariation> flame_batch_table_f32();
+}  // namespace ifsfx::detail::kernel_avx2
