@@ -118,6 +118,25 @@ struct Step {
   void operator()(std::size_t n, double* x, double* y, Scratch& w, Rng& rng) const {
     std::copy_n(x, n, w.qx.begin());
     std::copy_n(y, n, w.qy.begin());
+    const auto [sx, sy] = move_scratch(n, w, rng);
+    std::copy_n(sx, n, x);
+    std::copy_n(sy, n, y);
+  }
+  // The points x[at[i]], y[at[i]] for i in [0, n) moved through the xform, in place.
+  void operator()(std::size_t n, const std::uint32_t* at, double* x, double* y, Scratch& w,
+                  Rng& rng) const {
+    for (std::size_t i = 0; i < n; ++i) {
+      w.qx[i] = x[at[i]];
+      w.qy[i] = y[at[i]];
+    }
+    const auto [sx, sy] = move_scratch(n, w, rng);
+    for (std::size_t i = 0; i < n; ++i) {
+      x[at[i]] = sx[i];
+      y[at[i]] = sy[i];
+    }
+  }
+  // The points [0, n) of (w.qx, w.qy) through the xform; where the result is.
+  std::pair<double*, double*> move_scratch(std::size_t n, Scratch& w, Rng& rng) const {
     const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
     std::fill(w.qx.begin() + static_cast<std::ptrdiff_t>(n),
               w.qx.begin() + static_cast<std::ptrdiff_t>(padded), 0.0);
@@ -137,8 +156,7 @@ struct Step {
     }
     if (has_post) affine(post, n, sx, sy);
     chain(post_terms, n, sx, sy, w, rng);
-    std::copy_n(sx, n, x);
-    std::copy_n(sy, n, y);
+    return {sx, sy};
   }
 };
 
@@ -154,7 +172,9 @@ std::vector<Term> terms_of(const std::vector<VariationTerm>& list, bool in_sum, 
     const Variation& v = variation(t.id);
     // z only: adds nothing to the sum, leaves the point alone in a list.
     if (v.kind == VariationKind::flat_3d) continue;
-    const BatchVariation* batch = find_batch_variation(kernels.level, v.name, kernels.type);
+    // linear (an IFS's own maps) stays in double lanes: float would only round it.
+    const LaneType type = v.name == "linear" ? LaneType::f64 : kernels.type;
+    const BatchVariation* batch = find_batch_variation(kernels.level, v.name, type);
     out.push_back({v.function, batch ? batch : find_batch_variation(kernels.level, v.name),
                    t.weight, t.params, !in_sum && v.assign == Assign::add, v.name == "linear"});
   }
@@ -193,7 +213,7 @@ struct Plan {
   std::optional<Step> final_step;
   std::vector<MapPicker> pickers;
   bool linear_palette = false;
-  bool affine_only = false;  // every step affine_only: pick_and_group moves the walkers
+  bool affine_only = false;  // every step affine_only: pick() moves the walkers
   std::array<Rgba, 256> palette{};
   FlameRaster raster;
 };
@@ -254,58 +274,64 @@ void plot_all(const Plan& plan, const std::array<std::size_t, kN>& at,
     if (at[i] != kOff) plot(plan, plan.steps[k[i]], c[i], at[i], bins);
 }
 
-// The walkers of one chunk, grouped by the xform each goes through next.
-struct Lanes {
+// The walkers of one chunk. They stay in place; each step lists them by the xform they picked.
+struct Walkers {
   std::array<double, kN> x{}, y{}, c{};
   std::array<std::uint32_t, kN> k{};      // the xform that moved it last (its picker row, colours)
   std::array<std::uint64_t, kN> limit{};  // the step at which it stops plotting
 };
 
 // A walker's start: a random point in [−1, 1]², a random colour.
-void start(Lanes& a, std::size_t i, Rng& rng) {
+void start(Walkers& a, std::size_t i, Rng& rng) {
   a.x[i] = 2 * rng.uniform() - 1;
   a.y[i] = 2 * rng.uniform() - 1;
   a.c[i] = rng.uniform();
 }
 
-// `to` ← the m walkers of `from`, each having picked its next xform, grouped by it (stable);
-// first[j] is where group j starts, first[steps] = m. A plan of affine_only steps is walked
-// here too: each walker is moved by its xform as it is copied.
-void pick_and_group(const Plan& plan, const Lanes& from, std::size_t m, Lanes& to,
-                    std::vector<std::size_t>& first, std::vector<std::size_t>& next, Rng& rng) {
-  std::array<std::uint32_t, kN> pick;  // NOLINT: the first m are set below
-  std::fill(first.begin(), first.end(), 0);
+// Each of the m walkers picks its next xform (a.k ← it). A plan of affine_only steps moves each
+// walker by it here; otherwise order[first[j], first[j + 1]) lists the walkers that picked xform
+// j (next: 4 × the xform count, scratch).
+void pick(const Plan& plan, Walkers& a, std::size_t m, std::vector<std::size_t>& first,
+          std::vector<std::size_t>& next, std::array<std::uint32_t, kN>& order, Rng& rng) {
   const bool xaos = plan.pickers.size() > 1;
   for (std::size_t i = 0; i < m; ++i) {
     // MapPicker's alias draw without its branch, which a random draw mispredicts half the time.
-    const MapPicker::View v = plan.pickers[xaos ? 1 + from.k[i] : 0].view();
+    const MapPicker::View v = plan.pickers[xaos ? 1 + a.k[i] : 0].view();
     const std::uint64_t r = rng.next();
     const auto column = static_cast<std::uint32_t>(((r >> 32) * v.n) >> 32);
     const std::uint32_t alias = v.alias[column];
     const std::uint32_t own =
         0u - static_cast<std::uint32_t>(static_cast<std::uint32_t>(r) < v.threshold[column]);
-    pick[i] = alias ^ ((column ^ alias) & own);
-    ++first[pick[i] + 1];
+    a.k[i] = alias ^ ((column ^ alias) & own);
   }
-  for (std::size_t j = 1; j < first.size(); ++j) first[j] += first[j - 1];
-  std::copy(first.begin(), first.end(), next.begin());
-  for (std::size_t i = 0; i < m; ++i) {
-    const std::size_t to_i = next[pick[i]]++;
-    if (plan.affine_only) {
-      // The step of walk_chunk done here, point by point, with the same bits.
-      const Step& s = plan.steps[pick[i]];
-      const Point p = s.moved(from.x[i], from.y[i]);
-      to.x[to_i] = p.x;
-      to.y[to_i] = p.y;
-      to.c[to_i] = s.keep * from.c[i] + s.shift;
-    } else {
-      to.x[to_i] = from.x[i];
-      to.y[to_i] = from.y[i];
-      to.c[to_i] = from.c[i];
+  if (plan.affine_only) {
+    // The general walk's step (Step::operator()), point by point, with the same bits.
+    for (std::size_t i = 0; i < m; ++i) {
+      const Step& s = plan.steps[a.k[i]];
+      const Point p = s.moved(a.x[i], a.y[i]);
+      a.x[i] = p.x;
+      a.y[i] = p.y;
+      a.c[i] = s.keep * a.c[i] + s.shift;
     }
-    to.k[to_i] = pick[i];
-    to.limit[to_i] = from.limit[i];
+    return;
   }
+  // A counting sort with four rows of counters, walker i on row i mod 4, so that walkers of one
+  // xform in a row do not each wait for the last one's counter (a store to load chain).
+  const std::size_t steps = plan.steps.size();
+  std::fill(next.begin(), next.end(), 0);
+  for (std::size_t i = 0; i < m; ++i) ++next[(i & 3) * steps + a.k[i]];
+  std::size_t at = 0;
+  for (std::size_t j = 0; j < steps; ++j) {
+    first[j] = at;
+    for (std::size_t row = 0; row < 4; ++row) {
+      const std::size_t count = next[row * steps + j];
+      next[row * steps + j] = at;
+      at += count;
+    }
+  }
+  first[steps] = at;
+  for (std::size_t i = 0; i < m; ++i)
+    order[next[(i & 3) * steps + a.k[i]]++] = static_cast<std::uint32_t>(i);
 }
 
 bool escaped(double x, double y) {
@@ -314,8 +340,8 @@ bool escaped(double x, double y) {
 
 // After step `s` of every walker: escapees re-seeded, the others plotted (through the final
 // xform, when there is one, which moves the plotted copy only).
-std::uint64_t plot_lanes(const Plan& plan, Lanes& a, std::size_t m, std::uint64_t s,
-                         std::uint64_t burn_in, Scratch& w, Rng& rng, Bins& bins) {
+std::uint64_t plot_walkers(const Plan& plan, Walkers& a, std::size_t m, std::uint64_t s,
+                           std::uint64_t burn_in, Scratch& w, Rng& rng, Bins& bins) {
   std::array<bool, kN> out{};
   std::uint64_t reseeded = 0;
   for (std::size_t i = 0; i < m; ++i) {
@@ -351,27 +377,27 @@ std::uint64_t walk_chunk(const Plan& plan, std::uint64_t seed, std::uint64_t chu
   Rng rng(stream_seed(seed, chunk));
   const auto burn = static_cast<std::uint64_t>(burn_in);
   const std::size_t m = static_cast<std::size_t>((n + kWalkerPoints - 1) / kWalkerPoints);
-  auto lanes = std::make_unique<std::array<Lanes, 2>>();
-  Lanes* a = &(*lanes)[0];
-  Lanes* b = &(*lanes)[1];
+  auto walkers = std::make_unique<Walkers>();
+  Walkers& a = *walkers;
   for (std::size_t i = 0; i < m; ++i) {
-    start(*a, i, rng);
-    a->limit[i] = burn + std::min(kWalkerPoints, n - i * kWalkerPoints);
+    start(a, i, rng);
+    a.limit[i] = burn + std::min(kWalkerPoints, n - i * kWalkerPoints);
   }
   Scratch w;
-  std::vector<std::size_t> first(plan.steps.size() + 1), next(first.size());
+  std::vector<std::size_t> first(plan.steps.size() + 1), next(4 * plan.steps.size());
+  std::array<std::uint32_t, kN> order{};
   std::uint64_t reseeded = 0;
   for (std::uint64_t s = 0; s < burn + kWalkerPoints; ++s) {
-    pick_and_group(plan, *a, m, *b, first, next, rng);
-    std::swap(a, b);
+    pick(plan, a, m, first, next, order, rng);
     for (std::size_t j = 0; !plan.affine_only && j + 1 < first.size(); ++j) {
       const std::size_t lo = first[j], count = first[j + 1] - lo;
       if (count == 0) continue;
       const Step& step = plan.steps[j];
-      step(count, a->x.data() + lo, a->y.data() + lo, w, rng);
-      for (std::size_t i = lo; i < lo + count; ++i) a->c[i] = step.keep * a->c[i] + step.shift;
+      const std::uint32_t* at = order.data() + lo;
+      step(count, at, a.x.data(), a.y.data(), w, rng);
+      for (std::size_t i = 0; i < count; ++i) a.c[at[i]] = step.keep * a.c[at[i]] + step.shift;
     }
-    reseeded += plot_lanes(plan, *a, m, s, burn, w, rng, bins);
+    reseeded += plot_walkers(plan, a, m, s, burn, w, rng, bins);
   }
   return reseeded;
 }
