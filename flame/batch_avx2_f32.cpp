@@ -17,7 +17,6 @@ namespace {
 
 using F = float __attribute__((vector_size(32)));
 using I = std::uint32_t __attribute__((vector_size(32)));
-using D8 = double __attribute__((vector_size(64)));
 constexpr std::size_t kW = 8;
 
 inline F splat_f(float f) {
@@ -29,17 +28,19 @@ inline F sqrt_f(F x) {
 inline bool any_f(decltype(F{} < F{}) m) {
   return _mm256_movemask_ps((__m256)m) != 0;
 }
-// Eight doubles rounded to floats (vcvtpd2ps, to nearest, as the scalar level's cast).
+// Eight doubles rounded to floats (vcvtpd2ps, to nearest, as the scalar level's cast; written
+// with intrinsics: GCC lowers a 64-byte __builtin_convertvector to scalar conversions).
 inline F load_f(const double* p) {
-  D8 d;
-  std::memcpy(&d, p, sizeof d);
-  return __builtin_convertvector(d, F);
+  const __m128 lo = _mm256_cvtpd_ps(_mm256_loadu_pd(p));
+  const __m128 hi = _mm256_cvtpd_ps(_mm256_loadu_pd(p + 4));
+  return (F)_mm256_insertf128_ps(_mm256_castps128_ps256(lo), hi, 1);
 }
 inline void add_to_f(double* p, F f) {
-  D8 d;
-  std::memcpy(&d, p, sizeof d);
-  d += __builtin_convertvector(f, D8);
-  std::memcpy(p, &d, sizeof d);
+  const __m256 v = (__m256)f;
+  _mm256_storeu_pd(p,
+                   _mm256_add_pd(_mm256_loadu_pd(p), _mm256_cvtps_pd(_mm256_castps256_ps128(v))));
+  _mm256_storeu_pd(
+      p + 4, _mm256_add_pd(_mm256_loadu_pd(p + 4), _mm256_cvtps_pd(_mm256_extractf128_ps(v, 1))));
 }
 inline I bits_f(F f) {
   return (I)f;

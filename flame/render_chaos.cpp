@@ -56,8 +56,14 @@ void run_term(const Term& t, const AffineMap& pre, std::size_t n, const double* 
   }
   const auto draws = static_cast<std::size_t>(t.batch->draws);
   if (w.u.size() < draws * kN) w.u.resize(draws * kN);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < draws; ++j) w.u[j * kN + i] = rng.uniform();
+  // Draw by draw, each over the points (the batch form reads draw j of point i at u[j·kN + i];
+  // point by point, the strided stores and the generator's state went through memory).
+  Rng local = rng;
+  for (std::size_t j = 0; j < draws; ++j) {
+    double* u = w.u.data() + j * kN;
+    for (std::size_t i = 0; i < n; ++i) u[i] = local.uniform();
+  }
+  rng = local;
   t.batch->function({.w = t.w, .params = t.params.data(), .pre = &pre, .u = w.u.data()}, n, x, y,
                     ox, oy);
 }

@@ -39,13 +39,24 @@ inline V pow2i(V k) {
   return from_bits((as_bits(k + kVMagic) + 127u) << 23);
 }
 
+// The lanes of x that the reduction cannot take, through libm: out of line, so that vsincos
+// inlines without a call in its loop (a call would make every live register spill around it).
+[[gnu::noinline, gnu::cold]] inline void wild_sincos(V x, V& sn, V& cs) {
+  for (std::size_t i = 0; i < kW; ++i) {
+    const float xi = lane(x, i);
+    if (!(std::abs(xi) > 8192.0f || xi != xi)) continue;
+    set_lane(sn, i, std::sin(xi));
+    set_lane(cs, i, std::cos(xi));
+  }
+}
+
 struct VSinCos {
   V s, c;
 };
 
 // sin and cos: x − k·π/2 (Cephes' three-part π/2, exact products for |x| ≤ 8192), the sinf and
 // cosf polynomials on [−π/4, π/4], the quadrant k mod 4 from k's low bits as in vmath.inl.
-inline VSinCos vsincos(V x) {
+[[gnu::always_inline]] inline VSinCos vsincos(V x) {
   const V k = vround(x * 6.36619772367581382433e-01);
   V r = x - k * 1.5703125;
   r = r - k * 4.837512969970703125e-4;
@@ -63,14 +74,8 @@ inline VSinCos vsincos(V x) {
   sn = from_bits(as_bits(sn) ^ ((q & 2u) << 30));
   cs = from_bits(as_bits(cs) ^ (((q ^ (q >> 1)) & 1u) << 31));
   const M wild = (vabs(x) > 8192.0) | (x != x);
-  if (any(wild)) {
-    for (std::size_t i = 0; i < kW; ++i) {
-      const float xi = lane(x, i);
-      if (!(std::abs(xi) > 8192.0f || xi != xi)) continue;
-      set_lane(sn, i, std::sin(xi));
-      set_lane(cs, i, std::cos(xi));
-    }
-  }
+  if (any(wild)) [[unlikely]]
+    wild_sincos(x, sn, cs);
   return {sn, cs};
 }
 
