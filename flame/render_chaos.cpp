@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <mutex>
 
@@ -25,6 +26,10 @@ constexpr std::uint64_t kChunkPoints = kWalkerPoints * kBatchLanes;
 constexpr double kUnit = 65536;   // one hit of full colour, in the integer sums
 constexpr double kEscape = 1e10;  // a point beyond this (or not a number) is re-seeded
 constexpr std::size_t kN = kBatchStride;
+
+// Four 32-bit sums or colour channels (r, g, b, a) as one value: GCC's generic vectors, plain
+// SSE2 on x86-64, scalar code elsewhere.
+using U4 = std::uint32_t __attribute__((vector_size(16)));
 
 // One variation term with everything the inner loop needs resolved once.
 struct Term {
@@ -83,7 +88,7 @@ struct Step {
   bool has_post = false, has_sum = false;
   std::vector<Term> pre_terms, sum_terms, post_terms;
   double keep = 1, shift = 0;
-  std::array<std::array<std::uint32_t, 4>, 256> colours{};  // palette × opacity, in kUnit
+  std::array<U4, 256> colours{};  // palette × opacity (r, g, b, a), in kUnit
   // Only affine: no pre_/post_ terms and every term of the sum `linear` (an IFS drawn as a
   // flame), so that one point goes through it on its own without the arrays (moved()).
   bool affine_only = false;
@@ -206,10 +211,10 @@ Step step_of(const Xform& xf, const Palette& palette, Kernels kernels) {
     // Clamped to [0, 1] (flame/flame.h's range), so that an entry is at most kUnit (Bins).
     const double k = std::clamp(xf.opacity, 0.0, 1.0) * std::clamp(c.a, 0.0, 1.0) * kUnit;
     // The colour channels carry the palette's alpha too: flam3 adds the entry premultiplied.
-    s.colours[i] = {static_cast<std::uint32_t>(std::lround(c.r * k)),
-                    static_cast<std::uint32_t>(std::lround(c.g * k)),
-                    static_cast<std::uint32_t>(std::lround(c.b * k)),
-                    static_cast<std::uint32_t>(std::lround(k))};
+    s.colours[i] = U4{static_cast<std::uint32_t>(std::lround(c.r * k)),
+                      static_cast<std::uint32_t>(std::lround(c.g * k)),
+                      static_cast<std::uint32_t>(std::lround(c.b * k)),
+                      static_cast<std::uint32_t>(std::lround(k))};
   }
   return s;
 }
@@ -232,11 +237,17 @@ struct Bins {
   std::vector<std::uint32_t> lo;
   std::vector<std::size_t> carries;
   explicit Bins(const FlameRaster& r) : lo(4 * static_cast<std::size_t>(r.bins_x) * r.bins_y) {}
-  void add(std::size_t at, std::uint32_t v) {
-    const std::uint32_t s = lo[at] + v;
-    if (s < v) [[unlikely]]
-      carries.push_back(at);
-    lo[at] = s;
+  // The four sums from `at` += v, as one 16-byte read and write (integers: any order and width
+  // of the additions gives the same sums).
+  void add(std::size_t at, U4 v) {
+    U4 s;
+    std::memcpy(&s, &lo[at], sizeof s);
+    s += v;
+    std::memcpy(&lo[at], &s, sizeof s);
+    const U4 wrapped = s < v;
+    if ((wrapped[0] | wrapped[1] | wrapped[2] | wrapped[3]) != 0) [[unlikely]]
+      for (std::size_t k = 0; k < 4; ++k)
+        if (wrapped[k] != 0) carries.push_back(at + k);
   }
 };
 
@@ -253,8 +264,7 @@ void plot(const Plan& plan, const Step& from, double c, std::size_t at, Bins& bi
   c = std::clamp(c, 0.0, 1.0);
   if (!plan.linear_palette) {
     // Step palette: entry ⌊256·c⌋, the last one for c = 1.
-    const auto& e = from.colours[std::min<std::size_t>(static_cast<std::size_t>(c * 256), 255)];
-    for (std::size_t k = 0; k < 4; ++k) bins.add(at + k, e[k]);
+    bins.add(at, from.colours[std::min<std::size_t>(static_cast<std::size_t>(c * 256), 255)]);
     return;
   }
   // Linear palette: entries ⌊256·c⌋ and the next, mixed by the fraction, in 1/256 steps
@@ -264,9 +274,7 @@ void plot(const Plan& plan, const Step& from, double c, std::size_t at, Bins& bi
   const auto x = static_cast<std::uint32_t>(std::min(c * 256, 255.0) * 256);
   const std::size_t i = std::min<std::uint32_t>(x >> 8, 254);
   const std::uint32_t w = x - (static_cast<std::uint32_t>(i) << 8);
-  const auto& e0 = from.colours[i];
-  const auto& e1 = from.colours[i + 1];
-  for (std::size_t k = 0; k < 4; ++k) bins.add(at + k, (e0[k] * (256 - w) + e1[k] * w) >> 8);
+  bins.add(at, (from.colours[i] * (256 - w) + from.colours[i + 1] * w) >> 8);
 }
 
 // Plots the points whose `at` is not kOff, their bins fetched ahead: a step's 128 random
