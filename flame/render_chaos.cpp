@@ -277,7 +277,7 @@ void plot(const Plan& plan, const Step& from, double c, std::size_t at, Bins& bi
   bins.add(at, (from.colours[i] * (256 - w) + from.colours[i + 1] * w) >> 8);
 }
 
-// Plots the points whose `at` is not kOff, their bins fetched ahead: a step's 128 random
+// Plots the points whose `at` is not kOff, their bins fetched ahead: a step's 256 random
 // writes overlap their cache misses.
 void plot_all(const Plan& plan, const std::array<std::size_t, kN>& at,
               const std::array<std::uint32_t, kN>& k, const std::array<double, kN>& c,
