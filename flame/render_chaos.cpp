@@ -89,6 +89,9 @@ struct Step {
   std::vector<Term> pre_terms, sum_terms, post_terms;
   double keep = 1, shift = 0;
   std::array<U4, 256> colours{};  // palette × opacity (r, g, b, a), in kUnit
+  // Every entry 0 (opacity 0, as flames use to hide an xform's own points): its hits add
+  // nothing and are not plotted at all (flam3-render skips them too).
+  bool invisible = false;
   // Only affine: no pre_/post_ terms and every term of the sum `linear` (an IFS drawn as a
   // flame), so that one point goes through it on its own without the arrays (moved()).
   bool affine_only = false;
@@ -216,6 +219,8 @@ Step step_of(const Xform& xf, const Palette& palette, Kernels kernels) {
                       static_cast<std::uint32_t>(std::lround(c.b * k)),
                       static_cast<std::uint32_t>(std::lround(k))};
   }
+  s.invisible = std::all_of(s.colours.begin(), s.colours.end(),
+                            [](const U4& e) { return (e[0] | e[1] | e[2] | e[3]) == 0; });
   return s;
 }
 
@@ -368,7 +373,9 @@ std::uint64_t plot_walkers(const Plan& plan, Walkers& a, std::size_t m, std::uin
   std::array<std::size_t, kN> at{};
   if (!plan.final_step) {
     for (std::size_t i = 0; i < m; ++i)
-      at[i] = out[i] || s >= a.limit[i] ? kOff : bin_of(plan.raster, {a.x[i], a.y[i]});
+      at[i] = out[i] || s >= a.limit[i] || plan.steps[a.k[i]].invisible
+                  ? kOff
+                  : bin_of(plan.raster, {a.x[i], a.y[i]});
     plot_all(plan, at, a.k, a.c, m, bins);
     return reseeded;
   }
@@ -376,7 +383,8 @@ std::uint64_t plot_walkers(const Plan& plan, Walkers& a, std::size_t m, std::uin
   (*plan.final_step)(m, fx.data(), fy.data(), w, rng);
   const Step& f = *plan.final_step;
   for (std::size_t i = 0; i < m; ++i) {
-    const bool off = out[i] || s >= a.limit[i] || escaped(fx[i], fy[i]);
+    const bool off =
+        out[i] || s >= a.limit[i] || plan.steps[a.k[i]].invisible || escaped(fx[i], fy[i]);
     at[i] = off ? kOff : bin_of(plan.raster, {fx[i], fy[i]});
     fc[i] = f.keep * a.c[i] + f.shift;
   }
