@@ -2,7 +2,7 @@
 // Renders one flame with ifsfx's flame renderer (flame/render.h), for the comparisons with
 // flam3-render (bench/flame_vs_flam3.py) until `ifsfx render FILE.flame` exists:
 //   flame_render FILE.flame[:NAME|:INDEX] -o out.png [--size WxH] [--quality Q] [--seed N]
-//                [--threads N]
+//                [--threads N] [--double-lanes]
 // Prints the points, re-seeded points, seconds and coverage on stdout.
 #include <cstdio>
 #include <string>
@@ -38,6 +38,8 @@ int main(int argc, char** argv) {
         options.seed = std::stoull(value());
       else if (a == "--threads")
         options.threads = std::stoi(value());
+      else if (a == "--double-lanes")
+        options.float_lanes = false;
       else if (spec.empty())
         spec = a;
       else
@@ -46,7 +48,7 @@ int main(int argc, char** argv) {
     if (spec.empty() || out.empty())
       throw Error(ErrorKind::invalid_argument,
                   "usage: flame_render FILE.flame[:NAME] -o out.png [--size WxH] [--quality Q] "
-                  "[--seed N] [--threads N]");
+                  "[--seed N] [--threads N] [--double-lanes]");
     const flame::Flame f = flame::read_flame(spec);
     flame::FlameRenderStats stats;
     const cv::Mat image = flame::render_flame(f, options, &stats);

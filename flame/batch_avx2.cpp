@@ -29,6 +29,9 @@ inline V load(const double* p) {
 inline void store(double* p, V v) {
   std::memcpy(p, &v, sizeof v);
 }
+inline void add_to(double* p, V v) {
+  store(p, load(p) + v);
+}
 inline V sel(M m, V a, V b) {
   return (V)(((M)a & m) | ((M)b & ~m));
 }

@@ -24,6 +24,9 @@ inline V load(const double* p) {
 inline void store(double* p, V v) {
   *p = v;
 }
+inline void add_to(double* p, V v) {
+  store(p, load(p) + v);
+}
 inline V sel(M m, V a, V b) {
   return m ? a : b;
 }

@@ -6,18 +6,23 @@
 
 namespace ifsfx::flame::detail {
 
-std::span<const BatchVariation> batch_variations(CpuLevel level) {
+std::span<const BatchVariation> batch_variations(CpuLevel level, LaneType type) {
+  const bool f32 = type == LaneType::f32;
 #if IFSFX_FLAME_X86_KERNELS
-  // AVX-512 runs the AVX2 forms: four doubles a lane group is what the variations fill.
-  if (level != CpuLevel::scalar) return ifsfx::detail::kernel_avx2::flame_batch_table();
+  // AVX-512 runs the AVX2 forms: four doubles or eight floats a lane group is what the
+  // variations fill (a group of one xform in a step is 128/xforms walkers).
+  namespace avx2 = ifsfx::detail::kernel_avx2;
+  if (level != CpuLevel::scalar)
+    return f32 ? avx2::flame_batch_table_f32() : avx2::flame_batch_table();
 #else
   (void)level;
 #endif
-  return ifsfx::detail::kernel_scalar::flame_batch_table();
+  namespace scalar = ifsfx::detail::kernel_scalar;
+  return f32 ? scalar::flame_batch_table_f32() : scalar::flame_batch_table();
 }
 
-const BatchVariation* find_batch_variation(CpuLevel level, std::string_view name) {
-  const auto table = batch_variations(level);
+const BatchVariation* find_batch_variation(CpuLevel level, std::string_view name, LaneType type) {
+  const auto table = batch_variations(level, type);
   const auto it = std::find_if(table.begin(), table.end(),
                                [&](const BatchVariation& v) { return v.name == name; });
   return it == table.end() ? nullptr : &*it;

@@ -94,6 +94,7 @@ cv::Mat render_flame(const Flame& input, const FlameRenderOptions& options,
                               .seed = options.seed,
                               .threads = options.threads,
                               .burn_in = options.burn_in,
+                              .float_lanes = options.float_lanes,
                               .cancel = options.cancel,
                               .progress = progress});
   const FlameHistogram dense =

@@ -36,6 +36,10 @@ struct FlameRenderOptions {
                       // background's alpha (opaque unless the file makes it transparent)
   int depth = CV_8U;  // CV_8U, CV_16U or CV_32F (float in [0, 1])
   int burn_in = 15;   // iterations each walker discards before plotting (flam3's fuse)
+  // The variations evaluated in float lanes (eight a register on AVX2, float-accuracy
+  // polynomials; the walk, the sums and the camera stay in double) where a float batch form
+  // exists; false: double lanes (four a register), the renderer's arithmetic before 27 Nov.
+  bool float_lanes = true;
 };
 
 struct FlameRenderStats {

@@ -3,6 +3,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <mutex>
 
@@ -25,6 +26,10 @@ constexpr std::uint64_t kChunkPoints = kWalkerPoints * kBatchLanes;
 constexpr double kUnit = 65536;   // one hit of full colour, in the integer sums
 constexpr double kEscape = 1e10;  // a point beyond this (or not a number) is re-seeded
 constexpr std::size_t kN = kBatchStride;
+
+// Four 32-bit sums or colour channels (r, g, b, a) as one value: GCC's generic vectors, plain
+// SSE2 on x86-64, scalar code elsewhere.
+using U4 = std::uint32_t __attribute__((vector_size(16)));
 
 // One variation term with everything the inner loop needs resolved once.
 struct Term {
@@ -56,8 +61,14 @@ void run_term(const Term& t, const AffineMap& pre, std::size_t n, const double* 
   }
   const auto draws = static_cast<std::size_t>(t.batch->draws);
   if (w.u.size() < draws * kN) w.u.resize(draws * kN);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < draws; ++j) w.u[j * kN + i] = rng.uniform();
+  // Draw by draw, each over the points (the batch form reads draw j of point i at u[j·kN + i];
+  // point by point, the strided stores and the generator's state went through memory).
+  Rng local = rng;
+  for (std::size_t j = 0; j < draws; ++j) {
+    double* u = w.u.data() + j * kN;
+    for (std::size_t i = 0; i < n; ++i) u[i] = local.uniform();
+  }
+  rng = local;
   t.batch->function({.w = t.w, .params = t.params.data(), .pre = &pre, .u = w.u.data()}, n, x, y,
                     ox, oy);
 }
@@ -77,7 +88,10 @@ struct Step {
   bool has_post = false, has_sum = false;
   std::vector<Term> pre_terms, sum_terms, post_terms;
   double keep = 1, shift = 0;
-  std::array<std::array<std::uint32_t, 4>, 256> colours{};  // palette × opacity, in kUnit
+  std::array<U4, 256> colours{};  // palette × opacity (r, g, b, a), in kUnit
+  // Every entry 0 (opacity 0, as flames use to hide an xform's own points): its hits add
+  // nothing and are not plotted at all (flam3-render skips them too).
+  bool invisible = false;
   // Only affine: no pre_/post_ terms and every term of the sum `linear` (an IFS drawn as a
   // flame), so that one point goes through it on its own without the arrays (moved()).
   bool affine_only = false;
@@ -118,6 +132,25 @@ struct Step {
   void operator()(std::size_t n, double* x, double* y, Scratch& w, Rng& rng) const {
     std::copy_n(x, n, w.qx.begin());
     std::copy_n(y, n, w.qy.begin());
+    const auto [sx, sy] = move_scratch(n, w, rng);
+    std::copy_n(sx, n, x);
+    std::copy_n(sy, n, y);
+  }
+  // The points x[at[i]], y[at[i]] for i in [0, n) moved through the xform, in place.
+  void operator()(std::size_t n, const std::uint32_t* at, double* x, double* y, Scratch& w,
+                  Rng& rng) const {
+    for (std::size_t i = 0; i < n; ++i) {
+      w.qx[i] = x[at[i]];
+      w.qy[i] = y[at[i]];
+    }
+    const auto [sx, sy] = move_scratch(n, w, rng);
+    for (std::size_t i = 0; i < n; ++i) {
+      x[at[i]] = sx[i];
+      y[at[i]] = sy[i];
+    }
+  }
+  // The points [0, n) of (w.qx, w.qy) through the xform; where the result is.
+  std::pair<double*, double*> move_scratch(std::size_t n, Scratch& w, Rng& rng) const {
     const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
     std::fill(w.qx.begin() + static_cast<std::ptrdiff_t>(n),
               w.qx.begin() + static_cast<std::ptrdiff_t>(padded), 0.0);
@@ -137,32 +170,40 @@ struct Step {
     }
     if (has_post) affine(post, n, sx, sy);
     chain(post_terms, n, sx, sy, w, rng);
-    std::copy_n(sx, n, x);
-    std::copy_n(sy, n, y);
+    return {sx, sy};
   }
 };
 
-std::vector<Term> terms_of(const std::vector<VariationTerm>& list, bool in_sum, CpuLevel level) {
+// The kernel level and lane type the batch forms run at.
+struct Kernels {
+  CpuLevel level;
+  LaneType type;
+};
+
+std::vector<Term> terms_of(const std::vector<VariationTerm>& list, bool in_sum, Kernels kernels) {
   std::vector<Term> out;
   for (const VariationTerm& t : list) {
     const Variation& v = variation(t.id);
     // z only: adds nothing to the sum, leaves the point alone in a list.
     if (v.kind == VariationKind::flat_3d) continue;
-    out.push_back({v.function, find_batch_variation(level, v.name), t.weight, t.params,
-                   !in_sum && v.assign == Assign::add, v.name == "linear"});
+    // linear (an IFS's own maps) stays in double lanes: float would only round it.
+    const LaneType type = v.name == "linear" ? LaneType::f64 : kernels.type;
+    const BatchVariation* batch = find_batch_variation(kernels.level, v.name, type);
+    out.push_back({v.function, batch ? batch : find_batch_variation(kernels.level, v.name),
+                   t.weight, t.params, !in_sum && v.assign == Assign::add, v.name == "linear"});
   }
   return out;
 }
 
-Step step_of(const Xform& xf, const Palette& palette, CpuLevel level) {
+Step step_of(const Xform& xf, const Palette& palette, Kernels kernels) {
   Step s;
   s.pre = xf.pre;
   s.has_post = xf.post.has_value();
   if (s.has_post) s.post = *xf.post;
   s.has_sum = !xf.variations.empty();
-  s.pre_terms = terms_of(xf.pre_variations, false, level);
-  s.sum_terms = terms_of(xf.variations, true, level);
-  s.post_terms = terms_of(xf.post_variations, false, level);
+  s.pre_terms = terms_of(xf.pre_variations, false, kernels);
+  s.sum_terms = terms_of(xf.variations, true, kernels);
+  s.post_terms = terms_of(xf.post_variations, false, kernels);
   s.affine_only =
       s.pre_terms.empty() && s.post_terms.empty() &&
       std::all_of(s.sum_terms.begin(), s.sum_terms.end(), [](const Term& t) { return t.linear; });
@@ -173,11 +214,13 @@ Step step_of(const Xform& xf, const Palette& palette, CpuLevel level) {
     // Clamped to [0, 1] (flame/flame.h's range), so that an entry is at most kUnit (Bins).
     const double k = std::clamp(xf.opacity, 0.0, 1.0) * std::clamp(c.a, 0.0, 1.0) * kUnit;
     // The colour channels carry the palette's alpha too: flam3 adds the entry premultiplied.
-    s.colours[i] = {static_cast<std::uint32_t>(std::lround(c.r * k)),
-                    static_cast<std::uint32_t>(std::lround(c.g * k)),
-                    static_cast<std::uint32_t>(std::lround(c.b * k)),
-                    static_cast<std::uint32_t>(std::lround(k))};
+    s.colours[i] = U4{static_cast<std::uint32_t>(std::lround(c.r * k)),
+                      static_cast<std::uint32_t>(std::lround(c.g * k)),
+                      static_cast<std::uint32_t>(std::lround(c.b * k)),
+                      static_cast<std::uint32_t>(std::lround(k))};
   }
+  s.invisible = std::all_of(s.colours.begin(), s.colours.end(),
+                            [](const U4& e) { return (e[0] | e[1] | e[2] | e[3]) == 0; });
   return s;
 }
 
@@ -186,7 +229,7 @@ struct Plan {
   std::optional<Step> final_step;
   std::vector<MapPicker> pickers;
   bool linear_palette = false;
-  bool affine_only = false;  // every step affine_only: pick_and_group moves the walkers
+  bool affine_only = false;  // every step affine_only: pick() moves the walkers
   std::array<Rgba, 256> palette{};
   FlameRaster raster;
 };
@@ -199,11 +242,17 @@ struct Bins {
   std::vector<std::uint32_t> lo;
   std::vector<std::size_t> carries;
   explicit Bins(const FlameRaster& r) : lo(4 * static_cast<std::size_t>(r.bins_x) * r.bins_y) {}
-  void add(std::size_t at, std::uint32_t v) {
-    const std::uint32_t s = lo[at] + v;
-    if (s < v) [[unlikely]]
-      carries.push_back(at);
-    lo[at] = s;
+  // The four sums from `at` += v, as one 16-byte read and write (integers: any order and width
+  // of the additions gives the same sums).
+  void add(std::size_t at, U4 v) {
+    U4 s;
+    std::memcpy(&s, &lo[at], sizeof s);
+    s += v;
+    std::memcpy(&lo[at], &s, sizeof s);
+    const U4 wrapped = s < v;
+    if ((wrapped[0] | wrapped[1] | wrapped[2] | wrapped[3]) != 0) [[unlikely]]
+      for (std::size_t k = 0; k < 4; ++k)
+        if (wrapped[k] != 0) carries.push_back(at + k);
   }
 };
 
@@ -220,8 +269,7 @@ void plot(const Plan& plan, const Step& from, double c, std::size_t at, Bins& bi
   c = std::clamp(c, 0.0, 1.0);
   if (!plan.linear_palette) {
     // Step palette: entry ⌊256·c⌋, the last one for c = 1.
-    const auto& e = from.colours[std::min<std::size_t>(static_cast<std::size_t>(c * 256), 255)];
-    for (std::size_t k = 0; k < 4; ++k) bins.add(at + k, e[k]);
+    bins.add(at, from.colours[std::min<std::size_t>(static_cast<std::size_t>(c * 256), 255)]);
     return;
   }
   // Linear palette: entries ⌊256·c⌋ and the next, mixed by the fraction, in 1/256 steps
@@ -231,12 +279,10 @@ void plot(const Plan& plan, const Step& from, double c, std::size_t at, Bins& bi
   const auto x = static_cast<std::uint32_t>(std::min(c * 256, 255.0) * 256);
   const std::size_t i = std::min<std::uint32_t>(x >> 8, 254);
   const std::uint32_t w = x - (static_cast<std::uint32_t>(i) << 8);
-  const auto& e0 = from.colours[i];
-  const auto& e1 = from.colours[i + 1];
-  for (std::size_t k = 0; k < 4; ++k) bins.add(at + k, (e0[k] * (256 - w) + e1[k] * w) >> 8);
+  bins.add(at, (from.colours[i] * (256 - w) + from.colours[i + 1] * w) >> 8);
 }
 
-// Plots the points whose `at` is not kOff, their bins fetched ahead: a step's 128 random
+// Plots the points whose `at` is not kOff, their bins fetched ahead: a step's 256 random
 // writes overlap their cache misses.
 void plot_all(const Plan& plan, const std::array<std::size_t, kN>& at,
               const std::array<std::uint32_t, kN>& k, const std::array<double, kN>& c,
@@ -247,58 +293,64 @@ void plot_all(const Plan& plan, const std::array<std::size_t, kN>& at,
     if (at[i] != kOff) plot(plan, plan.steps[k[i]], c[i], at[i], bins);
 }
 
-// The walkers of one chunk, grouped by the xform each goes through next.
-struct Lanes {
+// The walkers of one chunk. They stay in place; each step lists them by the xform they picked.
+struct Walkers {
   std::array<double, kN> x{}, y{}, c{};
   std::array<std::uint32_t, kN> k{};      // the xform that moved it last (its picker row, colours)
   std::array<std::uint64_t, kN> limit{};  // the step at which it stops plotting
 };
 
 // A walker's start: a random point in [−1, 1]², a random colour.
-void start(Lanes& a, std::size_t i, Rng& rng) {
+void start(Walkers& a, std::size_t i, Rng& rng) {
   a.x[i] = 2 * rng.uniform() - 1;
   a.y[i] = 2 * rng.uniform() - 1;
   a.c[i] = rng.uniform();
 }
 
-// `to` ← the m walkers of `from`, each having picked its next xform, grouped by it (stable);
-// first[j] is where group j starts, first[steps] = m. A plan of affine_only steps is walked
-// here too: each walker is moved by its xform as it is copied.
-void pick_and_group(const Plan& plan, const Lanes& from, std::size_t m, Lanes& to,
-                    std::vector<std::size_t>& first, std::vector<std::size_t>& next, Rng& rng) {
-  std::array<std::uint32_t, kN> pick;  // NOLINT: the first m are set below
-  std::fill(first.begin(), first.end(), 0);
+// Each of the m walkers picks its next xform (a.k ← it). A plan of affine_only steps moves each
+// walker by it here; otherwise order[first[j], first[j + 1]) lists the walkers that picked xform
+// j (next: 4 × the xform count, scratch).
+void pick(const Plan& plan, Walkers& a, std::size_t m, std::vector<std::size_t>& first,
+          std::vector<std::size_t>& next, std::array<std::uint32_t, kN>& order, Rng& rng) {
   const bool xaos = plan.pickers.size() > 1;
   for (std::size_t i = 0; i < m; ++i) {
     // MapPicker's alias draw without its branch, which a random draw mispredicts half the time.
-    const MapPicker::View v = plan.pickers[xaos ? 1 + from.k[i] : 0].view();
+    const MapPicker::View v = plan.pickers[xaos ? 1 + a.k[i] : 0].view();
     const std::uint64_t r = rng.next();
     const auto column = static_cast<std::uint32_t>(((r >> 32) * v.n) >> 32);
     const std::uint32_t alias = v.alias[column];
     const std::uint32_t own =
         0u - static_cast<std::uint32_t>(static_cast<std::uint32_t>(r) < v.threshold[column]);
-    pick[i] = alias ^ ((column ^ alias) & own);
-    ++first[pick[i] + 1];
+    a.k[i] = alias ^ ((column ^ alias) & own);
   }
-  for (std::size_t j = 1; j < first.size(); ++j) first[j] += first[j - 1];
-  std::copy(first.begin(), first.end(), next.begin());
-  for (std::size_t i = 0; i < m; ++i) {
-    const std::size_t to_i = next[pick[i]]++;
-    if (plan.affine_only) {
-      // The step of walk_chunk done here, point by point, with the same bits.
-      const Step& s = plan.steps[pick[i]];
-      const Point p = s.moved(from.x[i], from.y[i]);
-      to.x[to_i] = p.x;
-      to.y[to_i] = p.y;
-      to.c[to_i] = s.keep * from.c[i] + s.shift;
-    } else {
-      to.x[to_i] = from.x[i];
-      to.y[to_i] = from.y[i];
-      to.c[to_i] = from.c[i];
+  if (plan.affine_only) {
+    // The general walk's step (Step::operator()), point by point, with the same bits.
+    for (std::size_t i = 0; i < m; ++i) {
+      const Step& s = plan.steps[a.k[i]];
+      const Point p = s.moved(a.x[i], a.y[i]);
+      a.x[i] = p.x;
+      a.y[i] = p.y;
+      a.c[i] = s.keep * a.c[i] + s.shift;
     }
-    to.k[to_i] = pick[i];
-    to.limit[to_i] = from.limit[i];
+    return;
   }
+  // A counting sort with four rows of counters, walker i on row i mod 4, so that walkers of one
+  // xform in a row do not each wait for the last one's counter (a store to load chain).
+  const std::size_t steps = plan.steps.size();
+  std::fill(next.begin(), next.end(), 0);
+  for (std::size_t i = 0; i < m; ++i) ++next[(i & 3) * steps + a.k[i]];
+  std::size_t at = 0;
+  for (std::size_t j = 0; j < steps; ++j) {
+    first[j] = at;
+    for (std::size_t row = 0; row < 4; ++row) {
+      const std::size_t count = next[row * steps + j];
+      next[row * steps + j] = at;
+      at += count;
+    }
+  }
+  first[steps] = at;
+  for (std::size_t i = 0; i < m; ++i)
+    order[next[(i & 3) * steps + a.k[i]]++] = static_cast<std::uint32_t>(i);
 }
 
 bool escaped(double x, double y) {
@@ -307,8 +359,8 @@ bool escaped(double x, double y) {
 
 // After step `s` of every walker: escapees re-seeded, the others plotted (through the final
 // xform, when there is one, which moves the plotted copy only).
-std::uint64_t plot_lanes(const Plan& plan, Lanes& a, std::size_t m, std::uint64_t s,
-                         std::uint64_t burn_in, Scratch& w, Rng& rng, Bins& bins) {
+std::uint64_t plot_walkers(const Plan& plan, Walkers& a, std::size_t m, std::uint64_t s,
+                           std::uint64_t burn_in, Scratch& w, Rng& rng, Bins& bins) {
   std::array<bool, kN> out{};
   std::uint64_t reseeded = 0;
   for (std::size_t i = 0; i < m; ++i) {
@@ -321,7 +373,9 @@ std::uint64_t plot_lanes(const Plan& plan, Lanes& a, std::size_t m, std::uint64_
   std::array<std::size_t, kN> at{};
   if (!plan.final_step) {
     for (std::size_t i = 0; i < m; ++i)
-      at[i] = out[i] || s >= a.limit[i] ? kOff : bin_of(plan.raster, {a.x[i], a.y[i]});
+      at[i] = out[i] || s >= a.limit[i] || plan.steps[a.k[i]].invisible
+                  ? kOff
+                  : bin_of(plan.raster, {a.x[i], a.y[i]});
     plot_all(plan, at, a.k, a.c, m, bins);
     return reseeded;
   }
@@ -329,7 +383,8 @@ std::uint64_t plot_lanes(const Plan& plan, Lanes& a, std::size_t m, std::uint64_
   (*plan.final_step)(m, fx.data(), fy.data(), w, rng);
   const Step& f = *plan.final_step;
   for (std::size_t i = 0; i < m; ++i) {
-    const bool off = out[i] || s >= a.limit[i] || escaped(fx[i], fy[i]);
+    const bool off =
+        out[i] || s >= a.limit[i] || plan.steps[a.k[i]].invisible || escaped(fx[i], fy[i]);
     at[i] = off ? kOff : bin_of(plan.raster, {fx[i], fy[i]});
     fc[i] = f.keep * a.c[i] + f.shift;
   }
@@ -344,36 +399,36 @@ std::uint64_t walk_chunk(const Plan& plan, std::uint64_t seed, std::uint64_t chu
   Rng rng(stream_seed(seed, chunk));
   const auto burn = static_cast<std::uint64_t>(burn_in);
   const std::size_t m = static_cast<std::size_t>((n + kWalkerPoints - 1) / kWalkerPoints);
-  auto lanes = std::make_unique<std::array<Lanes, 2>>();
-  Lanes* a = &(*lanes)[0];
-  Lanes* b = &(*lanes)[1];
+  auto walkers = std::make_unique<Walkers>();
+  Walkers& a = *walkers;
   for (std::size_t i = 0; i < m; ++i) {
-    start(*a, i, rng);
-    a->limit[i] = burn + std::min(kWalkerPoints, n - i * kWalkerPoints);
+    start(a, i, rng);
+    a.limit[i] = burn + std::min(kWalkerPoints, n - i * kWalkerPoints);
   }
   Scratch w;
-  std::vector<std::size_t> first(plan.steps.size() + 1), next(first.size());
+  std::vector<std::size_t> first(plan.steps.size() + 1), next(4 * plan.steps.size());
+  std::array<std::uint32_t, kN> order{};
   std::uint64_t reseeded = 0;
   for (std::uint64_t s = 0; s < burn + kWalkerPoints; ++s) {
-    pick_and_group(plan, *a, m, *b, first, next, rng);
-    std::swap(a, b);
+    pick(plan, a, m, first, next, order, rng);
     for (std::size_t j = 0; !plan.affine_only && j + 1 < first.size(); ++j) {
       const std::size_t lo = first[j], count = first[j + 1] - lo;
       if (count == 0) continue;
       const Step& step = plan.steps[j];
-      step(count, a->x.data() + lo, a->y.data() + lo, w, rng);
-      for (std::size_t i = lo; i < lo + count; ++i) a->c[i] = step.keep * a->c[i] + step.shift;
+      const std::uint32_t* at = order.data() + lo;
+      step(count, at, a.x.data(), a.y.data(), w, rng);
+      for (std::size_t i = 0; i < count; ++i) a.c[at[i]] = step.keep * a.c[at[i]] + step.shift;
     }
-    reseeded += plot_lanes(plan, *a, m, s, burn, w, rng, bins);
+    reseeded += plot_walkers(plan, a, m, s, burn, w, rng, bins);
   }
   return reseeded;
 }
 
-Plan plan_of(const Flame& flame, const FlameRaster& raster) {
+Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   Plan plan;
-  const CpuLevel level = cpu_level();
-  for (const Xform& xf : flame.xforms) plan.steps.push_back(step_of(xf, flame.palette, level));
-  if (flame.final_xform) plan.final_step = step_of(*flame.final_xform, flame.palette, level);
+  const Kernels kernels{cpu_level(), float_lanes ? LaneType::f32 : LaneType::f64};
+  for (const Xform& xf : flame.xforms) plan.steps.push_back(step_of(xf, flame.palette, kernels));
+  if (flame.final_xform) plan.final_step = step_of(*flame.final_xform, flame.palette, kernels);
   plan.pickers = xform_pickers(flame, false);
   plan.affine_only = std::all_of(plan.steps.begin(), plan.steps.end(),
                                  [](const Step& s) { return s.affine_only; });
@@ -385,7 +440,7 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster) {
 }  // namespace
 
 ChaosResult run_chaos_game(const ChaosRun& run) {
-  const Plan plan = plan_of(*run.flame, run.raster);
+  const Plan plan = plan_of(*run.flame, run.raster, run.float_lanes);
   const std::uint64_t chunks =
       std::max<std::uint64_t>(1, (run.points + kChunkPoints - 1) / kChunkPoints);
   const int workers = worker_count(chunks, run.threads);

@@ -71,9 +71,9 @@ class DeKernels {
 
 constexpr int kDeBand = 64;  // source rows per density-estimation band
 
-// Spreads the log-scaled bins of rows [r0, r1) into `out`, whose row 0 is source row r0 − reach.
+// Spreads the log-scaled bins of rows [r0, r1) into `out`, whose row 0 is source row `origin`.
 void spread_band(const FlameHistogram& h, const Filtering& f, int ss, const LogScale& scale, int r0,
-                 int r1, int reach, FlameHistogram& out) {
+                 int r1, int origin, FlameHistogram& out) {
   const double max_r = f.estimator_radius * ss, min_r = f.estimator_minimum * ss;
   DeKernels kernels(max_r);
   for (int row = r0; row < r1; ++row)
@@ -87,7 +87,7 @@ void spread_band(const FlameHistogram& h, const Filtering& f, int ss, const LogS
       for (const auto& t : kernels(std::min(radius, max_r)).taps) {
         const int y = row + t.dy, x = col + t.dx;
         if (y < 0 || y >= h.height || x < 0 || x >= h.width) continue;
-        double* o = out.at(y - (r0 - reach), x);
+        double* o = out.at(y - origin, x);
         for (int k = 0; k < 4; ++k) o[k] += t.w * v[k];
       }
     }
@@ -115,14 +115,24 @@ FlameHistogram density_estimate(const FlameHistogram& h, const Filtering& f, int
   const int bands = (h.height + kDeBand - 1) / kDeBand;
   // Each band spreads into a buffer of its own (its rows ± reach); the buffers are summed in
   // band order, so the sums do not depend on the threads.
+  FlameHistogram out(h.width, h.height);
+  if (reach == 0) {
+    // Each bin stays in its own row: the bands write disjoint rows of `out` directly (no band
+    // buffers, one raster-sized buffer less to fault in).
+    parallel_for(static_cast<std::size_t>(bands), threads, [&](std::size_t band, int) {
+      cancel.check("density estimation");
+      const int r0 = static_cast<int>(band) * kDeBand, r1 = std::min(h.height, r0 + kDeBand);
+      spread_band(h, f, ss, scale, r0, r1, 0, out);
+    });
+    return out;
+  }
   std::vector<FlameHistogram> parts(static_cast<std::size_t>(bands));
   parallel_for(static_cast<std::size_t>(bands), threads, [&](std::size_t band, int) {
     cancel.check("density estimation");
     const int r0 = static_cast<int>(band) * kDeBand, r1 = std::min(h.height, r0 + kDeBand);
     parts[band] = FlameHistogram(h.width, r1 - r0 + 2 * reach);
-    spread_band(h, f, ss, scale, r0, r1, reach, parts[band]);
+    spread_band(h, f, ss, scale, r0, r1, r0 - reach, parts[band]);
   });
-  FlameHistogram out(h.width, h.height);
   for (int band = 0; band < bands; ++band) {
     const FlameHistogram& p = parts[static_cast<std::size_t>(band)];
     const int first = band * kDeBand - reach;

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The variations' batch forms (flame/detail/batch_variations.h): each is its registry function's
 // formula (flame/variations_*.cpp, where the comments cite the paper) over the lane type V of
-// flame/detail/vmath.inl, included after it. The random ones read their draws from t.u in the
-// order the registry function draws them.
+// flame/detail/vmath.inl (doubles) or flame/detail/vmath_f32.inl (floats), included after it. The
+// random ones read their draws from t.u in the order the registry function draws them. The level
+// defines add_to(double* o, V r): o[0, kW) += r, in double.
 
 using flame::detail::BatchTerm;
 using flame::detail::BatchVariation;
@@ -19,8 +20,8 @@ template <class F>
 inline void each(std::size_t n, const double* X, const double* Y, double* OX, double* OY, F f) {
   for (std::size_t i = 0; i < n; i += kW) {
     const VP r = f(load(X + i), load(Y + i), i);
-    store(OX + i, load(OX + i) + r.x);
-    store(OY + i, load(OY + i) + r.y);
+    add_to(OX + i, r.x);
+    add_to(OY + i, r.y);
   }
 }
 
@@ -769,6 +770,21 @@ IFSFX_BATCH(elliptic) {
     return VP{w * vatan2(a, b), sel(y > 0.0, w * v, -w * v)};
   });
 }
+// acos(c) as atan2(√((1 − c)(1 + c)), c), the product form keeping its digits near c = ±1.
+IFSFX_BATCH(edisc) {
+  const double w = t.w / 11.57034632;
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V tt = x * x + y * y + 1.0, x2 = 2.0 * x;
+    const V xmax = (vsqrt(tt + x2) + vsqrt(tt - x2)) / 2.0, xm = xmax - 1.0;
+    const V a1 = vlog(xmax + vsqrt(sel(xm > 0.0, xm, splat(0.0))));
+    V c = x / xmax;
+    c = sel(c > 1.0, splat(1.0), sel(c < -1.0, splat(-1.0), c));
+    const V a2 = -vatan2(vsqrt((1.0 - c) * (1.0 + c)), c);
+    const VSinCos sc = vsincos(a1);
+    const VSinhCosh h = vsinhcosh(a2);
+    return VP{w * h.c * sc.c, w * h.s * sel(y > 0.0, -sc.s, sc.s)};
+  });
+}
 IFSFX_BATCH(sineblur) {
   const double pw = std::max(t.params[0], 0.0);
   each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
@@ -893,6 +909,7 @@ constexpr BatchVariation kTable[] = {
     {"separation", b_separation},
     {"bipolar", b_bipolar},
     {"elliptic", b_elliptic},
+    {"edisc", b_edisc},
     {"sineblur", b_sineblur, 2},
     {"blur_linear", b_blur_linear, 1},
     {"blur_zoom", b_blur_zoom, 1},

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The variations over batches of points: the chaos game walks 128 walkers in lockstep
+// The variations over batches of points: the chaos game walks 256 walkers in lockstep
 // (flame/render_chaos.cpp), and every walker that picked the same xform goes through its terms
 // together, so a variation runs over an array of points, four at a time on AVX2. The registry's
 // function (flame/variations.h) stays the definition; a batch form is the same formula written
@@ -21,9 +21,11 @@
 
 namespace ifsfx::flame::detail {
 
-// Walkers of one chunk: 128 rather than 64 puts more points in each xform's group of a step
-// (5-8 % less CPU on variation-heavy genomes); a 256-pixel quality-50 render is still 3 chunks.
-inline constexpr std::size_t kBatchLanes = 128;
+// Walkers of one chunk: 128 rather than 64 put more points in each xform's group of a step (5-8 %
+// less CPU on variation-heavy genomes in double lanes), 256 rather than 128 another 2-6 % with
+// eight float lanes; a 256-pixel quality-50 render is 2 chunks, its wall time on two threads
+// the same as with 3 (one worker had two of them).
+inline constexpr std::size_t kBatchLanes = 256;
 inline constexpr std::size_t kBatchStride = kBatchLanes + 8;  // an array's length, padded
 
 struct BatchTerm {
@@ -45,11 +47,17 @@ struct BatchVariation {
   int draws = 0;  // uniforms per point
 };
 
+// The arithmetic of a batch form's lanes: doubles (four a register on AVX2) or floats (eight;
+// shorter polynomials, flame/detail/vmath_f32.inl). Both take and give doubles: a float form
+// rounds its points to float, evaluates in float and adds its result to the double sums.
+enum class LaneType { f64, f32 };
+
 // The batch forms of `level` (or of the scalar level where this build has no other).
-std::span<const BatchVariation> batch_variations(CpuLevel level);
+std::span<const BatchVariation> batch_variations(CpuLevel level, LaneType type = LaneType::f64);
 
 // The batch form of the variation called `name` at `level`, or nullptr.
-const BatchVariation* find_batch_variation(CpuLevel level, std::string_view name);
+const BatchVariation* find_batch_variation(CpuLevel level, std::string_view name,
+                                           LaneType type = LaneType::f64);
 
 }  // namespace ifsfx::flame::detail
 
@@ -57,7 +65,9 @@ const BatchVariation* find_batch_variation(CpuLevel level, std::string_view name
 // that alone may hold instructions beyond baseline x86-64 (tests/ifs/kernel_isolation_test.sh).
 namespace ifsfx::detail::kernel_scalar {
 std::span<const flame::detail::BatchVariation> flame_batch_table();
-}
+std::span<const flame::detail::BatchVariation> flame_batch_table_f32();
+}  // namespace ifsfx::detail::kernel_scalar
 namespace ifsfx::detail::kernel_avx2 {
 std::span<const flame::detail::BatchVariation> flame_batch_table();
-}
+std::span<const flame::detail::BatchVariation> flame_batch_table_f32();
+}  // namespace ifsfx::detail::kernel_avx2

@@ -22,6 +22,7 @@ struct ChaosRun {
   std::uint64_t seed = 1;
   int threads = 0;
   int burn_in = 15;
+  bool float_lanes = true;  // FlameRenderOptions::float_lanes
   CancelToken cancel;
   std::function<void(double)> progress;  // fraction of the points done
 };

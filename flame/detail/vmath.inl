@@ -44,13 +44,24 @@ inline V pow2i(V k) {
   return from_bits((as_bits(k + kVMagic) + 1023) << 52);
 }
 
+// The lanes of x that the reduction cannot take, through libm: out of line, so that vsincos
+// inlines without a call in its loop (a call would make every live register spill around it).
+[[gnu::noinline, gnu::cold]] inline void wild_sincos(V x, V& sn, V& cs) {
+  for (std::size_t i = 0; i < kW; ++i) {
+    const double xi = lane(x, i);
+    if (!(std::abs(xi) > 1e5 || xi != xi)) continue;
+    set_lane(sn, i, std::sin(xi));
+    set_lane(cs, i, std::cos(xi));
+  }
+}
+
 struct VSinCos {
   V s, c;
 };
 
 // sin and cos: x − k·π/2 (fdlibm's three-part π/2, exact products for |k| < 2^20), then the
 // kernels' polynomials on [−π/4, π/4] and the quadrant k mod 4.
-inline VSinCos vsincos(V x) {
+[[gnu::always_inline]] inline VSinCos vsincos(V x) {
   const V k = vround(x * 6.36619772367581382433e-01);
   V r = x - k * 1.57079632673412561417e+00;
   r = r - k * 6.07710050630396597660e-11;
@@ -77,14 +88,8 @@ inline VSinCos vsincos(V x) {
   sn = from_bits(as_bits(sn) ^ ((q & 2) << 62));
   cs = from_bits(as_bits(cs) ^ (((q ^ (q >> 1)) & 1) << 63));
   const M wild = (vabs(x) > 1e5) | (x != x);
-  if (any(wild)) {
-    for (std::size_t i = 0; i < kW; ++i) {
-      const double xi = lane(x, i);
-      if (!(std::abs(xi) > 1e5 || xi != xi)) continue;
-      set_lane(sn, i, std::sin(xi));
-      set_lane(cs, i, std::cos(xi));
-    }
-  }
+  if (any(wild)) [[unlikely]]
+    wild_sincos(x, sn, cs);
   return {sn, cs};
 }
 

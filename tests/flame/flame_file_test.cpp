@@ -10,6 +10,9 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <string>
+
+#include <unistd.h>
 
 #include "flame/variations.h"
 #include "ifs/error.h"
@@ -60,7 +63,8 @@ Error parse_error(const std::string& xml) {
 }
 
 fs::path write_file(const std::string& name, const std::string& text) {
-  const fs::path p = fs::temp_directory_path() / ("ifsfx_flame_test_" + name);
+  const fs::path p =
+      fs::temp_directory_path() / ("ifsfx_flame_test_" + std::to_string(getpid()) + "_" + name);
   std::ofstream(p) << text;
   return p;
 }
@@ -395,7 +399,9 @@ TEST(flame_file, reads_flam3_genome_random_genomes) {
   if (std::system("command -v flam3-genome > /dev/null 2>&1") != 0)
     GTEST_SKIP() << "flam3-genome (flam3-utils) is not installed";
   // tries=1: no colour-improving search (it renders, seconds a genome); five genomes.
-  const fs::path p = fs::temp_directory_path() / "ifsfx_flame_genomes.flam3";
+  // The process id in the name: two test runs at once (two checkouts) wrote one file.
+  const fs::path p =
+      fs::temp_directory_path() / ("ifsfx_flame_genomes_" + std::to_string(getpid()) + ".flam3");
   const std::string cmd =
       "env seed=5 repeat=5 tries=1 flam3-genome > " + p.string() + " 2>/dev/null";
   ASSERT_EQ(std::system(cmd.c_str()), 0);

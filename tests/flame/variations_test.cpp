@@ -210,40 +210,61 @@ std::vector<double> run_batch(const detail::BatchVariation& b, const std::vector
   return out;
 }
 
-// Every batch form (the 128-walker chaos game's, flame/detail/batch_variations.h) gives its
-// registry function's value to 1e-9 at random points and parameters, drawing the same random
-// numbers; and the AVX2 level gives the scalar level's bits.
+// The values of a batch form's results further from the registry function's (drawing the same
+// random numbers) than tol·(1 + |value|).
+int far_from_registry(const detail::BatchVariation& b, const std::vector<double>& params,
+                      const AffineMap& pre, const std::vector<double>& x,
+                      const std::vector<double>& y, double tol) {
+  const Variation* v = find_variation(b.name);
+  const std::vector<double> ours = run_batch(b, params, pre, x, y, 5);
+  Rng rng(5);
+  int far = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const Point r = v->function({.p = {x[i], y[i]}, .w = 0.7, .params = params, .pre = &pre}, rng);
+    for (const auto& [got, want] : {std::pair{ours[2 * i], r.x}, std::pair{ours[2 * i + 1], r.y}})
+      far += !(std::abs(got - want) <= tol * (1 + std::abs(want)));
+  }
+  return far;
+}
+
+// Every batch form (the chaos game's, flame/detail/batch_variations.h) gives its registry
+// function's value at random points and parameters, drawing the same random numbers — to 1e-9 in
+// double lanes, to 2e-4 in float lanes (their polynomials and the point's rounding to float) —
+// and every level gives the scalar level's bits for each lane type. In float lanes 2 % of a
+// form's values may be further: near its singular points a float rounding of the point moves the
+// value by more (popcorn's and popcorn2's sin(tan(k·y)) near tan's poles, where sec²(k·y) > 3000
+// on about 1.2 % of the points; cross's 1/|x² − y²| near x = ±y). A wrong form misses on most.
+int far_allowed(detail::LaneType type, std::size_t values) {
+  return type == detail::LaneType::f32 ? static_cast<int>(values / 50) : 0;
+}
+
 TEST(variations, batch_forms_equal_the_registry_and_every_level_the_scalar_bits) {
-  const auto scalar = detail::batch_variations(CpuLevel::scalar);
-  ASSERT_GE(scalar.size(), 40u);
   Rng pick(99);
   const AffineMap pre{0.8, -0.3, 0.4, 0.9, 0.35, -0.6};
-  for (const detail::BatchVariation& b : scalar) {
-    const Variation* v = find_variation(b.name);
-    ASSERT_NE(v, nullptr) << b.name;
-    std::vector<double> params = default_parameters(*v);
-    for (double& p : params) p += 0.25 + 0.5 * pick.uniform();
-    std::vector<double> x, y;
-    for (std::size_t i = 0; i < detail::kBatchLanes; ++i) {
-      x.push_back(6 * pick.uniform() - 3);
-      y.push_back(6 * pick.uniform() - 3);
-    }
-    const std::vector<double> ours = run_batch(b, params, pre, x, y, 5);
-    Rng rng(5);
-    int far = 0;
-    for (std::size_t i = 0; i < x.size(); ++i) {
-      const Point r =
-          v->function({.p = {x[i], y[i]}, .w = 0.7, .params = params, .pre = &pre}, rng);
-      for (const auto& [got, want] : {std::pair{ours[2 * i], r.x}, std::pair{ours[2 * i + 1], r.y}})
-        far += !(std::abs(got - want) <= 1e-9 * (1 + std::abs(want)));
-    }
-    EXPECT_EQ(far, 0) << b.name;
-    for (CpuLevel level : supported_cpu_levels()) {
-      const detail::BatchVariation* other = detail::find_batch_variation(level, b.name);
-      ASSERT_NE(other, nullptr) << b.name << " at " << to_string(level);
-      const std::vector<double> theirs = run_batch(*other, params, pre, x, y, 5);
-      EXPECT_EQ(0, std::memcmp(theirs.data(), ours.data(), ours.size() * sizeof(double)))
-          << b.name << " at " << to_string(level);
+  for (const auto type : {detail::LaneType::f64, detail::LaneType::f32}) {
+    const auto scalar = detail::batch_variations(CpuLevel::scalar, type);
+    ASSERT_GE(scalar.size(), 40u);
+    const double tol = type == detail::LaneType::f64 ? 1e-9 : 2e-4;
+    for (const detail::BatchVariation& b : scalar) {
+      const Variation* v = find_variation(b.name);
+      ASSERT_NE(v, nullptr) << b.name;
+      std::vector<double> params = default_parameters(*v);
+      for (double& p : params) p += 0.25 + 0.5 * pick.uniform();
+      std::vector<double> x, y;
+      for (std::size_t i = 0; i < detail::kBatchLanes; ++i) {
+        x.push_back(6 * pick.uniform() - 3);
+        y.push_back(6 * pick.uniform() - 3);
+      }
+      EXPECT_LE(far_from_registry(b, params, pre, x, y, tol), far_allowed(type, 2 * x.size()))
+          << b.name << (type == detail::LaneType::f32 ? " in float lanes" : "");
+      const std::vector<double> ours = run_batch(b, params, pre, x, y, 5);
+      for (CpuLevel level : supported_cpu_levels()) {
+        const detail::BatchVariation* other = detail::find_batch_variation(level, b.name, type);
+        ASSERT_NE(other, nullptr) << b.name << " at " << to_string(level);
+        const std::vector<double> theirs = run_batch(*other, params, pre, x, y, 5);
+        EXPECT_EQ(0, std::memcmp(theirs.data(), ours.data(), ours.size() * sizeof(double)))
+            << b.name << " at " << to_string(level);
+      }
     }
   }
 }
