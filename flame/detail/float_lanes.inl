@@ -18,17 +18,19 @@ struct V {
 template <class S>
 concept LaneScalar = std::is_arithmetic_v<S>;
 
-#define IFSFX_F32_OP(op)                       \
-  inline auto operator op(V a, V b) {          \
-    return wrap(a.v op b.v);                   \
-  }                                            \
-  template <LaneScalar S>                      \
-  inline auto operator op(V a, S b) {          \
-    return wrap(a.v op static_cast<float>(b)); \
-  }                                            \
-  template <LaneScalar S>                      \
-  inline auto operator op(S a, V b) {          \
-    return wrap(static_cast<float>(a) op b.v); \
+// [[gnu::const]]: no side effects, so that the scalar level's masks (bool) combine with & and |
+// without clang taking the call for one (-Wbitwise-instead-of-logical).
+#define IFSFX_F32_OP(op)                             \
+  [[gnu::const]] inline auto operator op(V a, V b) { \
+    return wrap(a.v op b.v);                         \
+  }                                                  \
+  template <LaneScalar S>                            \
+  [[gnu::const]] inline auto operator op(V a, S b) { \
+    return wrap(a.v op static_cast<float>(b));       \
+  }                                                  \
+  template <LaneScalar S>                            \
+  [[gnu::const]] inline auto operator op(S a, V b) { \
+    return wrap(static_cast<float>(a) op b.v);       \
   }
 
 // An arithmetic result is a lane again; a comparison's mask stays a mask.
