@@ -64,6 +64,7 @@ class AttractorLoss {
   cv::Mat raster(std::span<const AffineMap> maps) const;
 
   int size() const { return size_; }
+  double points() const { return options_.points; }
   const cv::Mat& target() const { return target_; }  // L at R, CV_8UC1 0/255
 
  private:

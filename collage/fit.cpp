@@ -30,7 +30,6 @@
 namespace ifsfx::collage {
 
 using detail::Budget;
-using detail::Chooser;
 using detail::Clock;
 using detail::Fitting;
 
@@ -521,25 +520,6 @@ void fit_from_search(Fitting& fitting) {
   optimise_attractor(fitting, std::move(starts), fitting.chooser.result.runs);
 }
 
-// The finalists (best first on the working raster) judged on the finer raster of the target's
-// frame: the one with the best fine IoU is the result. The first is kept on a tie.
-void choose_on_fine_raster(FitResult& result, const std::vector<Chooser::Finalist>& finalists,
-                           const CollageObjective& objective, const FitOptions& options) {
-  const AssessOptions assess{options.quality / 4, options.seed, options.threads};
-  result.report.fine_iou = attractor_iou(options.fine_target, result.ifs, assess);
-  for (const auto& f : finalists) {
-    if (f.ifs.maps == result.ifs.maps) continue;
-    const double fine = attractor_iou(options.fine_target, f.ifs, assess);
-    if (fine > result.report.fine_iou) {
-      result.ifs = f.ifs;
-      result.report = f.report;
-      result.report.fine_iou = fine;
-      result.objective = objective(result.ifs.maps);
-    }
-  }
-  result.report.fine_size = options.fine_target.cols;
-}
-
 }  // namespace
 
 FitResult fit(const cv::Mat& target, const FitOptions& options) {
@@ -571,12 +551,16 @@ FitResult fit(const cv::Mat& target, const FitOptions& options) {
   }
 
   FitResult result = std::move(fitting.chooser.result);
+  // Every candidate was judged on the fine raster too, when there is one: its best is the answer.
+  if (fitting.chooser.judges_fine()) {
+    result.ifs = std::move(fitting.chooser.fine_best.ifs);
+    result.report = std::move(fitting.chooser.fine_best.report);
+    result.objective = fitting.objective(result.ifs.maps);
+  }
   if (result.ifs.maps.empty())
     throw Error(ErrorKind::invalid_argument,
                 "fit: no contractive IFS was found within the budget (raise max_seconds)");
   result.interrupted = interrupted;
-  if (!options.fine_target.empty() && cv::countNonZero(options.fine_target) > 0 && !interrupted)
-    choose_on_fine_raster(result, fitting.chooser.finalists, fitting.objective, options);
   result.evaluations = fitting.budget.evaluations;
   result.time_capped = fitting.budget.capped;
   result.seconds = fitting.budget.seconds();

@@ -77,8 +77,8 @@ enum class FitMethod {
   // (cut_partition.h) and the best distinct runs are refined by CMA-ES on the attractor loss
   // (attractor_loss.h) over all maps at once, coarse to fine (32², 64², the working raster; cut
   // from fine_target when given), with perturb-and-accept escapes between (attractor_fit.h) and
-  // ICP last (on the working raster and on fine_target); fine_target picks among the best few
-  // candidates last.
+  // ICP last (on the working raster and on fine_target); with fine_target, every candidate is
+  // judged on it too, and its best is moved by CMA-ES on the loss cut at its size last.
   attractor,
   // Issues 14–15: the collage objective W(L) against L, then a polish on W^k(L); the attractor
   // is only rendered to choose between candidates.
@@ -162,7 +162,8 @@ struct FitOptions {
   SearchOptions search;
   // Optional: the target on a finer raster of the same frame (working_raster of the same mask at
   // a larger size, e.g. 4S); the report's fine_iou is measured there, FitMethod::attractor cuts
-  // its loss's levels from it (thin parts count) and it picks among the best few candidates.
+  // its loss's levels from it (thin parts count) and finishes on it, and every candidate is
+  // judged on it too: the best there is the result.
   cv::Mat fine_target;
   // Called after every CMA-ES generation and at every change of phase, on the calling thread
   // (the library never prints).

@@ -311,14 +311,15 @@ TEST(fit, a_stop_request_keeps_the_best_so_far) {
 
 // The attractor of the shipped barnsley-fern preset, rendered 512² and taken as a picture, fitted
 // with its own 4 maps (issue 32 item 5). Issue 32 asks for IoU ≥ 0.9 on the 512² raster of the
-// picture's frame (the preset's own maps score 0.95 there); this fit reaches 0.883 (0.723 before
-// the self-similarity scan's starts and the ICP on the fine raster), so the test guards what is
-// reached. The scan finds the large copy (0.84 of the whole) and both leaflets (0.34, 0.38 in the
-// preset); the fourth map sits at the foot of the stem. A fixed evaluation count (no clock) makes
-// it the same on any machine; about 25 CPU seconds in Release.
+// picture's frame (the preset's own maps score 0.95 there); this fit reaches 0.908 (0.723 before
+// the self-similarity scan's starts and the ICP on the fine raster, 0.883 before the last rounds
+// of CMA-ES and ICP on the fine raster). The scan finds the large copy (0.84 of the
+// whole) and both leaflets (0.34, 0.38 in the preset); the fourth map sits at the foot of the stem.
+// A fixed evaluation count (no clock) makes it the same on any machine; about 30 CPU seconds in
+// Release.
 TEST(fit, fern_comes_back_from_its_own_picture_with_its_large_copy) {
 #if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "about 25 CPU seconds in Release, many times that under the sanitizers; the "
+  GTEST_SKIP() << "about 30 CPU seconds in Release, many times that under the sanitizers; the "
                   "attractor's stages run there in the other fit tests";
 #endif
   const cv::Mat picture = render_attractor(load_ifs("barnsley-fern").ifs, {512, 512});
@@ -338,7 +339,7 @@ TEST(fit, fern_comes_back_from_its_own_picture_with_its_large_copy) {
   EXPECT_LE(largest, 0.9);
   EXPECT_EQ(leaflets, 2) << "the two leaflets";
   EXPECT_GE(result.report.iou, 0.8);
-  EXPECT_GE(result.report.fine_iou, 0.86) << "issue 32 asks for 0.9";
+  EXPECT_GE(result.report.fine_iou, 0.9) << "issue 32's done-when line";
   expect_bound_holds(result.report);
 }
 
