@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "collage/distance.h"
+#include "collage/target.h"
 #include "ifs/error.h"
 #include "ifs/ifs.h"
 #include "ifs/rng.h"
@@ -21,16 +22,6 @@ namespace {
 // square's size away from A at worst.
 constexpr std::size_t kBurnIn = 24;
 constexpr std::size_t kLanes = 8;
-
-// L resampled to R×R by area, a pixel kept where L covers more than `keep` of it.
-cv::Mat level_raster(const cv::Mat& target, int size, double keep) {
-  if (size == target.cols) return target.clone();
-  cv::Mat coverage, raster;
-  cv::resize(target, coverage, {size, size}, 0, 0, cv::INTER_AREA);
-  // INTER_AREA rounds a mean of 0/255 values: any cover of at least 1/510 shows as ≥ 1.
-  cv::threshold(coverage, raster, std::floor(keep * 255), 255, cv::THRESH_BINARY);
-  return raster;
-}
 
 // The distance at continuous pixel point (x, y) of the canvas, bilinear between pixel centres;
 // outside the centres' square, the nearest centre's distance plus the way to it (an upper bound).
@@ -73,7 +64,7 @@ AttractorLoss::AttractorLoss(const cv::Mat& target, const AttractorLossOptions& 
   size_ = options.size;
   pad_ = size_ / 4;
   side_ = size_ + 2 * pad_;
-  target_ = level_raster(target, size_, options.keep);
+  target_ = resampled_mask(target, size_, options.keep);
   if (cv::countNonZero(target_) == 0)
     throw Error(ErrorKind::invalid_argument,
                 fmt::format("attractor loss: the target vanishes on a {}² raster", size_));

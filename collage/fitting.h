@@ -119,7 +119,7 @@ class Chooser {
   // the start of the later stages. One rendering of 4S² at a quarter of the quality per
   // candidate (4 times a working raster's): time, not evaluations, so `max_seconds = 0` fits
   // are the same with it.
-  bool judges_fine() const { return !options_.fine_target.empty() && fine_has_pixels_; }
+  bool judges_fine() const { return fine_has_pixels_; }
   AssessOptions fine_assess() const {
     return {options_.quality / 4, options_.seed, options_.threads};
   }

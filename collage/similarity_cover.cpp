@@ -8,6 +8,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "collage/collage.h"
+#include "collage/target.h"
 #include "ifs/error.h"
 
 namespace ifsfx::collage {
@@ -62,7 +63,7 @@ std::vector<std::vector<AffineMap>> greedy_covers(const cv::Mat& target,
                     "{}, {})",
                     options.maps, options.covers, options.spill, options.overlap));
   if (std::ssize(copies) < options.maps) return {};
-  const cv::Mat l = scan_raster(target, std::min(options.size, target.cols));
+  const cv::Mat l = resampled_mask(target, std::min(options.size, target.cols));
   const std::vector<Image> all = images(l, copies);
   std::vector<std::vector<std::size_t>> seen;
   std::vector<std::vector<AffineMap>> covers;

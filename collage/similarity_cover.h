@@ -19,7 +19,7 @@ namespace ifsfx::collage {
 struct CoverOptions {
   int maps = 4;      // N, the copies of each cover (≥ 1)
   int covers = 3;    // cover k starts from the k-th best first copy; alike covers are dropped
-  int size = 256;    // the raster the covers are counted on (scan_raster; at most the target's)
+  int size = 256;    // the raster the covers are counted on (resampled_mask; at most the target's)
   double spill = 1;  // the cost of a pixel of w(L) outside L, against one of L newly covered
   // ... and of one of L covered before: overlapping copies fill a solid shape, but the pieces
   // of a fractal's own picture hardly overlap.
@@ -29,7 +29,7 @@ struct CoverOptions {
 // Up to options.covers distinct sets of N maps from `copies` (as scan_self_similarity returns
 // them for `target`), best first; none when there are fewer than N copies. A step's gain is
 // |w(L) ∩ L \ covered| − spill · |w(L) \ L₁| − overlap · |w(L) ∩ covered|, L₁ L grown
-// by a pixel, on scan_raster(target,
+// by a pixel, on resampled_mask(target,
 // size); ties go to the earlier copy.
 //   auto starts = greedy_covers(raster, scan_self_similarity(raster), {.maps = 4});
 std::vector<std::vector<AffineMap>> greedy_covers(const cv::Mat& target,

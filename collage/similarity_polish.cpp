@@ -40,10 +40,6 @@ Polished scored(const FineScene& scene, const AffineMap& w) {
   return {w, p, (std::abs(w.det()) + 0.01) * (10 * p - 9)};
 }
 
-}  // namespace
-
-namespace {
-
 // Compass direction k of 16 from w: each coefficient of the linear part ± `linear` (k < 8), the
 // image of the centre ± `shift` along x and y (k < 12), the linear part scaled by 1 ± `linear`
 // and turned by ± `linear` radians (a copy a few degrees or per cent off moves along one axis,

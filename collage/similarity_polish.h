@@ -17,7 +17,7 @@ namespace ifsfx::collage::detail {
 // L on the fine raster, and the points of L that score a copy.
 class FineScene {
  public:
-  // `fine`: L at any cover on the fine raster (scan_raster); at most `samples` of its pixel
+  // `fine`: L at any cover on the fine raster (resampled_mask); at most `samples` of its pixel
   // centres, evenly strided, score a copy.
   FineScene(const cv::Mat& fine, int samples);
 

@@ -9,6 +9,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "collage/similarity_polish.h"
+#include "collage/target.h"
 #include "ifs/error.h"
 #include "ifs/parallel.h"
 
@@ -101,7 +102,7 @@ struct Scene {
 Scene scene(const cv::Mat& target, int size) {
   Scene sc;
   sc.size = size;
-  sc.inside = scan_raster(target, size);
+  sc.inside = resampled_mask(target, size);
   sc.area = cv::countNonZero(sc.inside);
   if (sc.area == 0)
     throw Error(ErrorKind::invalid_argument,
@@ -231,12 +232,6 @@ AffineMap on_plane(const Scene& sc, const AffineMap& linear, cv::Point2d shift) 
 
 }  // namespace
 
-cv::Mat scan_raster(const cv::Mat& target, int size) {
-  cv::Mat resampled = target;
-  if (size != target.cols) cv::resize(target, resampled, {size, size}, 0, 0, cv::INTER_AREA);
-  return resampled > 0;
-}
-
 int linear_part_count(const SimilarityScanOptions& options) {
   return static_cast<int>(grid(options).size());
 }
@@ -291,8 +286,8 @@ std::vector<SelfCopy> scan_self_similarity(const cv::Mat& target,
   // On 128² first, where a copy a few pixels off still keeps most of its points in L, then on
   // the fine raster, where only the true copies do.
   const int fine_size = std::min(options.fine_size, target.cols);
-  const detail::FineScene middle(scan_raster(target, std::min(128, fine_size)), options.samples);
-  const detail::FineScene fine(scan_raster(target, fine_size), options.samples);
+  const detail::FineScene middle(resampled_mask(target, std::min(128, fine_size)), options.samples);
+  const detail::FineScene fine(resampled_mask(target, fine_size), options.samples);
   const Point c = sc.plane_centroid();
   const double bound = options.max_scale + 0.03;
   const int steps = options.polish_evaluations / 2;

@@ -72,10 +72,6 @@ struct SelfCopy {
   double area = 0;       // |det w| = |w(L)| / |L|
 };
 
-// L as the scan sees it: `target` resampled to `size` by area, a pixel kept where L covers any
-// part of it (a fern's fronds are thinner than a pixel at 64²), CV_8UC1 0/255.
-cv::Mat scan_raster(const cv::Mat& target, int size);
-
 // The number of linear parts the scan tries with these options (each one correlation).
 int linear_part_count(const SimilarityScanOptions& options);
 

@@ -147,4 +147,13 @@ cv::Mat working_raster(const cv::Mat& mask, const FrameOptions& options) {
   return raster;
 }
 
+cv::Mat resampled_mask(const cv::Mat& mask, int size, double keep) {
+  if (size == mask.cols) return mask > 0;
+  cv::Mat coverage, raster;
+  cv::resize(mask, coverage, {size, size}, 0, 0, cv::INTER_AREA);
+  // INTER_AREA rounds a mean of 0/255 values: any cover of at least 1/510 shows as ≥ 1.
+  cv::threshold(coverage, raster, std::floor(keep * 255), 255, cv::THRESH_BINARY);
+  return raster;
+}
+
 }  // namespace ifsfx::collage

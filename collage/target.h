@@ -47,4 +47,8 @@ struct FrameOptions {
 // Throws Error{invalid_argument} when nothing of the shape survives the resampling.
 cv::Mat working_raster(const cv::Mat& mask, const FrameOptions& options = {});
 
+// A 0/255 mask at size × size by area, a pixel kept where the mask covers more than `keep` of
+// it (0: any part of it, so that parts thinner than a pixel stay), CV_8UC1 0/255.
+cv::Mat resampled_mask(const cv::Mat& mask, int size, double keep = 0);
+
 }  // namespace ifsfx::collage
