@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: Apache-2.0
-// A flame's 256 colours: inline (<palette count="256" format="RGB|RGBA">hex</palette>, flam3
+// A flame's 256 colours: inline (<palette count="N" format="RGB|RGBA">hex</palette>, flam3
 // 2.x's <colors count="256" data="00RRGGBB…"/>, or one <color index="i" rgb="r g b"/> per entry),
 // else palette="N" of flam3's library (flam3-palettes.xml, entries <palette number="N"
-// data="00RRGGBB…"/>) rotated in hue by `hue` turns.
+// data="00RRGGBB…"/>) rotated in hue by `hue` turns. Ember's palettes of other lengths are
+// resampled onto 256 entries (docs/flames.md, "Palettes of other lengths").
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -34,36 +36,78 @@ std::optional<std::string> hex_digits(std::string_view text) {
   return out;
 }
 
-// 256 colours of `per` hex digits each: RGB (6), RGBA (8), or flam3's 00RRGGBB (8, skip 2).
-std::optional<std::array<Rgba, 256>> decode(std::string_view text, int per, bool leading_pad) {
+// `n` colours of `per` hex digits each: RGB (6), RGBA (8), or flam3's 00RRGGBB (8, skip 2).
+std::optional<std::vector<Rgba>> decode(std::string_view text, std::size_t n, int per,
+                                        bool leading_pad) {
   const std::optional<std::string> d = hex_digits(text);
-  if (!d || d->size() != 256u * per) return std::nullopt;
+  if (!d || d->size() != n * per) return std::nullopt;
   auto byte = [&](std::size_t i) {
     return (hex_digit((*d)[i]) * 16 + hex_digit((*d)[i + 1])) / 255.0;
   };
-  std::array<Rgba, 256> c{};
-  for (std::size_t k = 0; k < 256; ++k) {
+  std::vector<Rgba> c(n);
+  for (std::size_t k = 0; k < n; ++k) {
     const std::size_t o = k * per + (leading_pad ? 2 : 0);
     c[k] = {byte(o), byte(o + 2), byte(o + 4), per == 8 && !leading_pad ? byte(o + 6) : 1.0};
   }
   return c;
 }
 
-std::array<Rgba, 256> palette_element(const Where& at, const pugi::xml_node& p) {
+std::array<Rgba, 256> first_256(const std::vector<Rgba>& c) {
+  std::array<Rgba, 256> out{};
+  std::copy_n(c.begin(), 256, out.begin());
+  return out;
+}
+
+// Ember's colour of a palette of N entries at colour coordinate c: index c·(N − 1) (Ember's
+// Renderer::Accumulate), the entry below it (step) or the two around it mixed (linear).
+Rgba ember_colour(const std::vector<Rgba>& e, double c, PaletteMode mode) {
+  const double at = std::clamp(c, 0.0, 1.0) * static_cast<double>(e.size() - 1);
+  const std::size_t i = std::min(static_cast<std::size_t>(at), e.size() - 1);
+  if (mode == PaletteMode::step || i + 1 == e.size()) return e[i];
+  const double f = at - static_cast<double>(i);
+  const Rgba &a = e[i], &b = e[i + 1];
+  return {a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b),
+          a.a + f * (b.a - a.a)};
+}
+
+// A palette of N ≠ 256 entries onto the renderer's 256 (flam3's index ⌊256·c⌋): entry k is the
+// mean of Ember's colour over its coordinates c ∈ [k/256, (k + 1)/256), taken at 16 points,
+// which is what a histogram bin sums when the coordinate is spread over that interval.
+std::array<Rgba, 256> resample(const std::vector<Rgba>& e, PaletteMode mode) {
+  constexpr int kSamples = 16;
+  std::array<Rgba, 256> out{};
+  for (std::size_t k = 0; k < 256; ++k) {
+    Rgba sum{0, 0, 0, 0};
+    for (int j = 0; j < kSamples; ++j) {
+      const Rgba c = ember_colour(e, (static_cast<double>(k) + (j + 0.5) / kSamples) / 256, mode);
+      sum = {sum.r + c.r, sum.g + c.g, sum.b + c.b, sum.a + c.a};
+    }
+    out[k] = {sum.r / kSamples, sum.g / kSamples, sum.b / kSamples, sum.a / kSamples};
+  }
+  return out;
+}
+
+// <palette count="N" format="RGB|RGBA">hex</palette>: flam3 and Apophysis write 256 colours,
+// Ember and Fractorium any count (512, 1024, ...); no count means 256.
+std::array<Rgba, 256> palette_element(const Where& at, const pugi::xml_node& p, PaletteMode mode) {
   const std::string_view format = p.attribute("format").value();
-  if (const auto count = p.attribute("count");
-      count && number(at, "palette: count", count.value()) != 256)
-    at.fail("palette: count", "256 colours are needed", count.value());
+  std::size_t n = 256;
+  if (const auto count = p.attribute("count")) {
+    const double c = number(at, "palette: count", count.value());
+    if (c < 2 || c > 65536 || c != std::floor(c))
+      at.fail("palette: count", "a whole number of colours in [2, 65536] is needed", count.value());
+    n = static_cast<std::size_t>(c);
+  }
   const int per = format == "RGBA" || format == "rgba" ? 8 : 6;
   if (!format.empty() && per == 6 && format != "RGB" && format != "rgb")
     at.fail("palette: format", "RGB or RGBA is needed", format);
   const std::optional<std::string> digits = hex_digits(p.child_value());
   if (!digits) at.fail("palette", "hex digits are needed", p.child_value());
-  const std::optional<std::array<Rgba, 256>> c = decode(*digits, per, false);
+  const std::optional<std::vector<Rgba>> c = decode(*digits, n, per, false);
   if (!c)
-    at.fail("palette", fmt::format("256 colours of {} hex digits are needed (got {} digits)", per,
+    at.fail("palette", fmt::format("{} colours of {} hex digits are needed (got {} digits)", n, per,
                                    digits->size()));
-  return *c;
+  return n == 256 ? first_256(*c) : resample(*c, mode);
 }
 
 std::array<Rgba, 256> color_elements(const Where& at, const pugi::xml_node& flame) {
@@ -120,13 +164,13 @@ Palette parse_palette(const Where& at, const pugi::xml_node& flame,
                  : PaletteMode::step;
   pal.hue = number_or(at, flame, "hue", 0);
   if (const pugi::xml_node p = flame.child("palette")) {
-    pal.colours = palette_element(at, p);
+    pal.colours = palette_element(at, p, pal.mode);
   } else if (const pugi::xml_node p2 = flame.child("colors")) {
-    const std::optional<std::array<Rgba, 256>> c = decode(p2.attribute("data").value(), 8, true);
+    const std::optional<std::vector<Rgba>> c = decode(p2.attribute("data").value(), 256, 8, true);
     if (!c)
       at.fail("colors: data", "256 colours of 8 hex digits are needed",
               p2.attribute("data").value());
-    pal.colours = *c;
+    pal.colours = first_256(*c);
   } else if (flame.child("color")) {
     pal.colours = color_elements(at, flame);
   } else if (const auto n = flame.attribute("palette")) {
@@ -164,12 +208,12 @@ std::array<Rgba, 256> library_palette(const std::string& palette_file, int numbe
   const std::string key = std::to_string(number);
   for (const pugi::xml_node p : doc.child("palettes").children("palette")) {
     if (key != p.attribute("number").value()) continue;
-    const auto c = detail::decode(p.attribute("data").value(), 8, true);
+    const auto c = detail::decode(p.attribute("data").value(), 256, 8, true);
     if (!c)
       throw Error(ErrorKind::parse, fmt::format("{}: palette {}: 256 colours of 8 hex digits "
                                                 "are needed",
                                                 palette_file, number));
-    std::array<Rgba, 256> out = *c;
+    std::array<Rgba, 256> out = detail::first_256(*c);
     if (hue != 0)
       for (Rgba& e : out) e = detail::rotate_hue(e, hue);
     return out;

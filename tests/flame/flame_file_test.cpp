@@ -175,6 +175,49 @@ TEST(flame_file, reads_palettes_as_rgba_hex_colors_data_and_color_elements) {
   EXPECT_EQ(c.palette.colours[51], (Rgba{0.2, 0, 1, 1}));
 }
 
+// Ember's palettes of N ≠ 256 entries: colour index c·(N − 1), resampled onto the renderer's 256
+// entries as the mean over each entry's 1/256 of c (16 points at (k + (j + ½)/16)/256).
+TEST(flame_file, reads_embers_palettes_of_other_lengths_by_their_colour_index) {
+  const std::string head =
+      "<flame name=\"p\" palette_mode=\"MODE\"><xform weight=\"1\" "
+      "linear=\"1\" coefs=\"1 0 0 1 0 0\"/><palette count=\"N\" format=\"RGB\">";
+  auto flame = [&](const std::string& mode, int n, const std::string& hex) {
+    std::string xml = head;
+    xml.replace(xml.find("MODE"), 4, mode);
+    xml.replace(xml.find("\"N\""), 3, "\"" + std::to_string(n) + "\"");
+    return parse_flames(xml + hex + "</palette></flame>", "t.flame")[0];
+  };
+  // 512 entries, 0..255 black, 256..511 white; step: white from c ≥ 256/511. Entry 128's points
+  // c = (128 + (j + ½)/16)/256 reach it from j = 4: 12 of 16 white.
+  std::string halves;
+  for (int i = 0; i < 512; ++i) halves += i < 256 ? "000000" : "FFFFFF";
+  const Flame a = flame("step", 512, halves);
+  EXPECT_EQ(a.palette.colours[127], (Rgba{0, 0, 0, 1}));
+  EXPECT_NEAR(a.palette.colours[128].g, 0.75, 1e-12);
+  EXPECT_EQ(a.palette.colours[129], (Rgba{1, 1, 1, 1}));
+  // 2 entries, black and white, linear: Ember's colour is c itself; entry k the mean
+  // (k + ½)/256 of its interval.
+  const Flame b = flame("linear", 2, "000000FFFFFF");
+  EXPECT_NEAR(b.palette.colours[0].r, 0.5 / 256, 1e-12);
+  EXPECT_NEAR(b.palette.colours[200].b, 200.5 / 256, 1e-12);
+  EXPECT_STREQ(parse_error(head.substr(0, head.find("MODE")) +
+                           "step\"><xform weight=\"1\" "
+                           "linear=\"1\" coefs=\"1 0 0 1 0 0\"/><palette count=\"2.5\">"
+                           "000000FFFFFF</palette></flame>")
+                   .what(),
+               "t.flame: flame \"p\": palette: count: a whole number of colours in [2, 65536] is "
+               "needed (got \"2.5\")");
+  std::string short_hex = halves.substr(0, 6 * 511);
+  try {
+    flame("step", 512, short_hex);
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_STREQ(e.what(),
+                 "t.flame: flame \"p\": palette: 512 colours of 6 hex digits are "
+                 "needed (got 3066 digits)");
+  }
+}
+
 TEST(flame_file, numbered_palettes_come_from_flam3s_library_with_their_hue) {
   if (!fs::exists(kDefaultPaletteFile)) GTEST_SKIP() << "flam3-palette is not installed";
   const std::string xml =
