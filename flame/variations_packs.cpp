@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The next variations beyond flam3's set by their count in Fractorium's example packs
 // (docs/flames.md): the Apophysis 7X plugins falloff2, bwraps, unpolar, glynnia, tile_log,
-// tile_hlp and curl3D's z = 0 slice, each from the formula as docs/flames.md states it (what
-// each parameter means, the order of the random draws, the conventions chosen).
+// tile_hlp, curl3D's z = 0 slice, twoface, hypertile2 and Ember's gaussian, each from the formula
+// as docs/flames.md states it (what each parameter means, the order of the random draws, the
+// conventions chosen).
 #include <algorithm>
 #include <cmath>
 
@@ -127,6 +128,38 @@ Point curl_3d(const VariationInput& in, Rng&) {
   return {r * (x + k[0] * r2), r * (y - k[1] * r2)};
 }
 
+// twoface: spherical on the half-plane x > 0, linear on the other.
+Point twoface(const VariationInput& in, Rng&) {
+  const double r2 = polar(in).r2();
+  const double k = in.p.x > 0 ? in.w / (r2 == 0 ? kEps : r2) : in.w;
+  return {k * in.p.x, k * in.p.y};
+}
+
+// hypertile2: a Möbius map of the Poincaré disc, z ↦ (z + R)/(R·z + 1), then a turn by a random
+// multiple k of 2π/p (k = ⌊32767·Ψ⌋, as the plugin draws it), R = 1/√(1 − (cos a − 1)/(cos a +
+// cos(2π/q))), a = 2π/p (R = 1 when the root's argument is not positive): the {p, q} tiling.
+constexpr VariationParameter kHypertile2[] = {{"hypertile2_p", 3}, {"hypertile2_q", 7}};
+Point hypertile2(const VariationInput& in, Rng& rng) {
+  const double p = in.params[0] == 0 ? kEps : in.params[0];
+  const double q = in.params[1] == 0 ? kEps : in.params[1];
+  const double pa = 2 * kPi / p, cs = std::cos(pa);
+  const double r2 = 1 - (cs - 1) / (cs + std::cos(2 * kPi / q));
+  const double big_r = r2 > 0 ? 1 / std::sqrt(r2) : 1.0;
+  const auto [x, y] = in.p;
+  const double a = x + big_r, b = y, c = big_r * x + 1, d = big_r * y;
+  const double u = a * c + b * d, v = b * c - a * d;
+  const double den = c * c + d * d, vr = in.w / (den == 0 ? kEps : den);
+  const double t = std::floor(32767 * psi(rng)) * pa, sn = std::sin(t), cn = std::cos(t);
+  return {vr * (u * cn + v * sn), vr * (v * cn - u * sn)};
+}
+
+// gaussian (Ember's): p plus a random offset of radius w·(Ψ1 + Ψ2 + Ψ3 + Ψ4 − 2) in a random
+// direction (the direction drawn first); unlike gaussian_blur, the point itself is kept.
+Point gaussian(const VariationInput& in, Rng& rng) {
+  const double angle = 2 * kPi * psi(rng), r = in.w * sum_of_four(rng);
+  return {in.p.x + r * std::cos(angle), in.p.y + r * std::sin(angle)};
+}
+
 }  // namespace
 
 void add_pack_variations(std::vector<Variation>& out) {
@@ -139,6 +172,9 @@ void add_pack_variations(std::vector<Variation>& out) {
       {.name = "tile_log", .parameters = kTileLog, .function = tile_log, .kind = K::random},
       {.name = "tile_hlp", .parameters = kTileHlp, .function = tile_hlp, .kind = K::random},
       {.name = "curl3D", .parameters = kCurl3D, .function = curl_3d},
+      {.name = "twoface", .function = twoface},
+      {.name = "hypertile2", .parameters = kHypertile2, .function = hypertile2, .kind = K::random},
+      {.name = "gaussian", .function = gaussian, .kind = K::random},
   };
   out.insert(out.end(), std::begin(rows), std::end(rows));
 }

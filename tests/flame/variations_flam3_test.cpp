@@ -234,5 +234,24 @@ TEST(variations_packs, tile_log_and_tile_hlp_move_whole_tiles) {
   EXPECT_EQ(hlp.size(), 2u);
 }
 
+TEST(variations_packs, twoface_hypertile2_gaussian) {
+  EXPECT_POINT_NEAR(eval("twoface", {2, 0}), 0.5, 0);     // x > 0: (x, y)/r²
+  EXPECT_POINT_NEAR(eval("twoface", {-2, 1}, 2), -4, 2);  // x ≤ 0: w·p
+  // p 3, q 7: a = 2π/3, cos a = −½, R = 1/√(1 + 1.5/(cos(2π/7) − ½)); 0 ↦ R, turned by −k·a
+  const double big_r = 1 / std::sqrt(1 + 1.5 / (std::cos(2 * kPi / 7) - 0.5));
+  std::set<long> turns;
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    const Point h = eval("hypertile2", {0, 0}, 1, {}, {}, seed);
+    EXPECT_NEAR(std::hypot(h.x, h.y), big_r, 1e-9);
+    const double k = std::atan2(h.y, h.x) / (2 * kPi / 3);
+    EXPECT_NEAR(k, std::round(k), 1e-9);
+    turns.insert(std::lround(k));
+    const Point g = eval("gaussian", {3, 4}, 0.5, {}, {}, seed);  // p + offset ≤ 2w
+    EXPECT_LE(std::hypot(g.x - 3, g.y - 4), 1 + 1e-12);
+  }
+  EXPECT_EQ(turns.size(), 3u);  // −1, 0, 1: the three turns of the triangle
+  EXPECT_POINT_NEAR(eval("gaussian", {3, 4}, 0), 3, 4);
+}
+
 }  // namespace
 }  // namespace ifsfx::flame
