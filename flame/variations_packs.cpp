@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // The next variations beyond flam3's set by their count in Fractorium's example packs
 // (docs/flames.md): the Apophysis 7X plugins falloff2, bwraps, unpolar, glynnia, tile_log,
-// tile_hlp, curl3D's z = 0 slice, twoface, hypertile2 and Ember's gaussian, each from the formula
-// as docs/flames.md states it (what each parameter means, the order of the random draws, the
-// conventions chosen).
+// tile_hlp, curl3D's z = 0 slice, twoface, hypertile2, Ember's gaussian and bTransform, each from
+// the formula as docs/flames.md states it (what each parameter means, the order of the random
+// draws, the conventions chosen).
 #include <algorithm>
 #include <cmath>
 
@@ -160,6 +160,28 @@ Point gaussian(const VariationInput& in, Rng& rng) {
   return {in.p.x + r * std::cos(angle), in.p.y + r * std::sin(angle)};
 }
 
+// bTransform: the point in bipolar coordinates (foci ±1): τ = ln(|z + 1|/|z − 1|), σ = π −
+// arg(z + 1) − arg(1 − z); τ/power + move (± split by the sign of x), σ turned by `rotate`,
+// divided by `power` and put on a random one of its `power` branches; back to the plane,
+// w·(sinh τ, sin σ)/(cosh τ − cos σ). Power 1 and no offsets give the identity.
+constexpr VariationParameter kBTransform[] = {{"bTransform_rotate", 0},
+                                              {"bTransform_power", 1},
+                                              {"bTransform_move", 0},
+                                              {"bTransform_split", 0}};
+Point b_transform(const VariationInput& in, Rng& rng) {
+  const auto& k = in.params;
+  const auto [x, y] = in.p;
+  const double power = k[1] == 0 ? kEps : k[1];
+  const double ln_ratio = std::log((x + 1) * (x + 1) + y * y) - std::log((x - 1) * (x - 1) + y * y);
+  double tau = 0.5 * ln_ratio / power + k[2];
+  double sigma = kPi - std::atan2(y, x + 1) - std::atan2(y, 1 - x) + k[0];
+  sigma = sigma / power + 2 * kPi / power * std::floor(psi(rng) * power);
+  tau += x >= 0 ? k[3] : -k[3];
+  double den = std::cosh(tau) - std::cos(sigma);
+  if (den == 0) den = kEps;
+  return {in.w * std::sinh(tau) / den, in.w * std::sin(sigma) / den};
+}
+
 }  // namespace
 
 void add_pack_variations(std::vector<Variation>& out) {
@@ -175,6 +197,7 @@ void add_pack_variations(std::vector<Variation>& out) {
       {.name = "twoface", .function = twoface},
       {.name = "hypertile2", .parameters = kHypertile2, .function = hypertile2, .kind = K::random},
       {.name = "gaussian", .function = gaussian, .kind = K::random},
+      {.name = "bTransform", .parameters = kBTransform, .function = b_transform, .kind = K::random},
   };
   out.insert(out.end(), std::begin(rows), std::end(rows));
 }

@@ -253,5 +253,25 @@ TEST(variations_packs, twoface_hypertile2_gaussian) {
   EXPECT_POINT_NEAR(eval("gaussian", {3, 4}, 0), 3, 4);
 }
 
+TEST(variations_packs, bTransform_is_the_identity_through_bipolar_coordinates_at_power_1) {
+  // (0, 1): τ = ½(ln 2 − ln 2) = 0, σ = π − π/4 − π/4 = π/2: (sinh 0, sin π/2)/(cosh 0 − 0)
+  EXPECT_POINT_NEAR(eval("bTransform", {0, 1}), 0, 1);
+  // (0.5, 0): τ = ½ ln(2.25/0.25) = ln 3, σ = π: sinh(ln 3)/(cosh(ln 3) + 1) = (4/3)/(8/3)
+  EXPECT_POINT_NEAR(eval("bTransform", {0.5, 0}), 0.5, 0);
+  // move ln 2 at (0, 1): τ = ln 2, sinh τ = 0.75, cosh τ = 1.25: (0.75, 1)/1.25
+  EXPECT_POINT_NEAR(eval("bTransform", {0, 1}, 1, {0, 1, std::log(2.0), 0}), 0.6, 0.8);
+  // power 2 at (0, 1): τ = 0, σ = π/4 or 5π/4: y = sin σ/(1 − cos σ) = 1 + √2 or 1 − √2
+  std::set<long> branches;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Point b = eval("bTransform", {0, 1}, 1, {0, 2, 0, 0}, {}, seed);
+    EXPECT_NEAR(b.x, 0, 1e-12);
+    EXPECT_TRUE(std::abs(b.y - 1 - std::sqrt(2.0)) < 1e-9 ||
+                std::abs(b.y - 1 + std::sqrt(2.0)) < 1e-9)
+        << b.y;
+    branches.insert(b.y > 0);
+  }
+  EXPECT_EQ(branches.size(), 2u);
+}
+
 }  // namespace
 }  // namespace ifsfx::flame
