@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The next variations beyond flam3's set by their count in Fractorium's example packs
 // (docs/flames.md): the Apophysis 7X plugins falloff2, bwraps, unpolar, glynnia, tile_log,
-// tile_hlp, curl3D's z = 0 slice, twoface, hypertile2, Ember's gaussian and bTransform, each from
-// the formula as docs/flames.md states it (what each parameter means, the order of the random
+// tile_hlp, curl3D's z = 0 slice, twoface, hypertile2, Ember's gaussian, bTransform and crop, each
+// from the formula as docs/flames.md states it (what each parameter means, the order of the random
 // draws, the conventions chosen).
 #include <algorithm>
 #include <cmath>
@@ -182,6 +182,31 @@ Point b_transform(const VariationInput& in, Rng& rng) {
   return {in.w * std::sinh(tau) / den, in.w * std::sin(sigma) / den};
 }
 
+// crop: the rectangle [left, right] × [top, bottom] (either order); a point outside it goes to
+// the origin with `zero`, else each coordinate outside is put back inside, at the edge moved
+// in by Ψ·scatter_area·(half the side) — the x draw first, a draw only for a coordinate outside.
+constexpr VariationParameter kCrop[] = {{"crop_scatter_area", 0}, {"crop_left", -1},
+                                        {"crop_right", 1},        {"crop_top", -1},
+                                        {"crop_bottom", 1},       {"crop_zero", 0}};
+Point crop(const VariationInput& in, Rng& rng) {
+  const auto& k = in.params;
+  const double x0 = std::min(k[1], k[2]), x1 = std::max(k[1], k[2]);
+  const double y0 = std::min(k[3], k[4]), y1 = std::max(k[3], k[4]);
+  auto [x, y] = in.p;
+  const bool outside = x < x0 || x > x1 || y < y0 || y > y1;
+  if (outside && k[5] != 0) return {0, 0};
+  const double w = (x1 - x0) * 0.5 * k[0], h = (y1 - y0) * 0.5 * k[0];
+  if (x < x0)
+    x = x0 + psi(rng) * w;
+  else if (x > x1)
+    x = x1 - psi(rng) * w;
+  if (y < y0)
+    y = y0 + psi(rng) * h;
+  else if (y > y1)
+    y = y1 - psi(rng) * h;
+  return scaled(in.w, x, y);
+}
+
 }  // namespace
 
 void add_pack_variations(std::vector<Variation>& out) {
@@ -197,6 +222,7 @@ void add_pack_variations(std::vector<Variation>& out) {
       {.name = "twoface", .function = twoface},
       {.name = "hypertile2", .parameters = kHypertile2, .function = hypertile2, .kind = K::random},
       {.name = "gaussian", .function = gaussian, .kind = K::random},
+      {.name = "crop", .parameters = kCrop, .function = crop, .kind = K::random},
       {.name = "bTransform", .parameters = kBTransform, .function = b_transform, .kind = K::random},
   };
   out.insert(out.end(), std::begin(rows), std::end(rows));

@@ -273,5 +273,17 @@ TEST(variations_packs, bTransform_is_the_identity_through_bipolar_coordinates_at
   EXPECT_EQ(branches.size(), 2u);
 }
 
+TEST(variations_packs, crop_puts_points_back_into_its_rectangle) {
+  EXPECT_POINT_NEAR(eval("crop", {0.5, 0.5}, 2), 1, 1);  // inside [−1, 1]²: w·p
+  EXPECT_POINT_NEAR(eval("crop", {3, 0.5}), 1, 0.5);     // scatter 0: onto the edge x = 1
+  EXPECT_POINT_NEAR(eval("crop", {3, 0.5}, 1, {0, -1, 1, -1, 1, 1}), 0, 0);  // zero: the origin
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    // scatter 1: moved in from the edge by Ψ·(half the side) = Ψ·1
+    const Point c = eval("crop", {3, -5}, 1, {1, -1, 1, -1, 1, 0}, {}, seed);
+    EXPECT_TRUE(c.x > 0 && c.x <= 1) << c.x;
+    EXPECT_TRUE(c.y >= -1 && c.y < 0) << c.y;
+  }
+}
+
 }  // namespace
 }  // namespace ifsfx::flame
