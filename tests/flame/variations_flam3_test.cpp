@@ -4,6 +4,7 @@
 // the functions themselves: w·f(z) at z = 0.5 + 0.25i).
 #include <cmath>
 #include <numbers>
+#include <set>
 
 #include "variation_check.h"
 
@@ -150,6 +151,137 @@ TEST(variations_more, julia3D_epispiral_and_the_blurs) {
     const Point z = eval("blur_zoom", {1, 2}, 1, {1, 0, 0}, {}, seed);  // (1, 2)·[1, 2)
     EXPECT_NEAR(z.y, 2 * z.x, 1e-12);
     EXPECT_TRUE(z.x >= 1 && z.x < 2);
+  }
+}
+
+TEST(variations_packs, falloff2_leaves_points_within_mindist_and_blurs_by_distance) {
+  // (0.3, 0.4): d = 0.5 = mindist, dist = 0: w·p whatever the type and the draws
+  for (double type : {0, 1, 2})
+    EXPECT_POINT_NEAR(eval("falloff2", {0.3, 0.4}, 2, {1, 0.5, 1, 1, 0, 0, 0, 0, 0, 0, type}), 0.6,
+                      0.8);
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    // (3, 4), type 0: dist = (5 − 0.5)·0.04 = 0.18, each coordinate moved by u·0.18, |u| ≤ ½
+    const Point l = eval("falloff2", {3, 4}, 1, {}, {}, seed);
+    EXPECT_LE(std::abs(l.x - 3), 0.09 + 1e-12);
+    EXPECT_LE(std::abs(l.y - 4), 0.09 + 1e-12);
+    // type 1, mul_x 0: the radius stays 5, the angle moves by at most 0.09
+    const Point r = eval("falloff2", {3, 4}, 1, {1, 0.5, 0, 1, 0, 0, 0, 0, 0, 0, 1}, {}, seed);
+    EXPECT_NEAR(std::hypot(r.x, r.y), 5, 1e-9);
+    EXPECT_LE(std::abs(std::atan2(r.y, r.x) - std::atan2(4.0, 3.0)), 0.09 + 1e-12);
+    // invert at the origin, mindist 0: dist = max(1 − 0, 0)·0.04, offsets within ±0.02
+    const Point i = eval("falloff2", {0, 0}, 1, {1, 0, 1, 1, 0, 0, 0, 0, 0, 1, 0}, {}, seed);
+    EXPECT_LE(std::max(std::abs(i.x), std::abs(i.y)), 0.02 + 1e-12);
+  }
+}
+
+TEST(variations_packs, bwraps_magnifies_a_bubble_about_each_cell_centre) {
+  // cellsize 1, space 0: bubbles of radius ½ about (k + ½, l + ½); g² = 1 + 10⁻⁶
+  EXPECT_POINT_NEAR(eval("bwraps", {2.5, -0.5}), 2.5, -0.5);    // a centre stays
+  EXPECT_POINT_NEAR(eval("bwraps", {0.95, 0.95}), 0.95, 0.95);  // |l|² = 0.405 > ¼: outside
+  // (0.7, 0.5): l = (0.2, 0); max bubble m = g²/2/(g⁴/16 + 1), f = ½/m/((0.2g²)²/4 + 1)
+  const double g2 = 1 + 1e-6, m = g2 / 2 / (g2 * g2 / 16 + 1);
+  const double lx = 0.2 * g2 * 0.5 / m / (0.01 * g2 * g2 + 1);
+  EXPECT_POINT_NEAR(eval("bwraps", {0.7, 0.5}), 0.5 + lx, 0.5);
+  // inner twist π/2: θ = π/2·(1 − lx²/¼), l turned clockwise by θ
+  const double th = kPi / 2 * (1 - 4 * lx * lx);
+  EXPECT_POINT_NEAR(eval("bwraps", {0.7, 0.5}, 1, {1, 0, 1, kPi / 2, 0}), 0.5 + std::cos(th) * lx,
+                    0.5 - std::sin(th) * lx);
+  EXPECT_POINT_NEAR(eval("bwraps", {0.7, 0.5}, 2, {0}), 1.4, 1);  // cellsize 0: w·p
+}
+
+TEST(variations_packs, unpolar_and_curl3D) {
+  // w/(2π)·e^y·(sin x, cos x)
+  EXPECT_POINT_NEAR(eval("unpolar", {kPi / 2, 0}), 1 / (2 * kPi), 0);
+  EXPECT_POINT_NEAR(eval("unpolar", {0, std::log(2.0)}, 2), 0, 2 / kPi);
+  // cx 1 at (1, 0): (1 + 1)/(1 + 2 + 1); cy 1 at (0, −1): (−1 − 1)/(1 + 2 + 1)
+  EXPECT_POINT_NEAR(eval("curl3D", {1, 0}, 1, {1, 0, 0}), 0.5, 0);
+  EXPECT_POINT_NEAR(eval("curl3D", {0, -1}, 1, {0, 1, 0}), 0, -0.5);
+  EXPECT_POINT_NEAR(eval("curl3D", {1, 0}, 1, {0, 0, 1}), 0.5, 0);  // cz: 1/(r²·1 + 1)
+}
+
+TEST(variations_packs, glynnia_takes_one_of_its_two_roots) {
+  // (2, 0), r = 2 > 1: √(r + x)·√2/2 = √2, or (r + x)/√(r·(r + x)²) = 1/√2
+  // (0.5, 0), r ≤ 1, x mirrored: −√2/2, or −1/√(0.5) = −√2
+  std::set<long> seen;
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    const Point a = eval("glynnia", {2, 0}, 1, {}, {}, seed);
+    EXPECT_TRUE(std::abs(a.x - std::sqrt(2.0)) < 1e-9 || std::abs(a.x - std::sqrt(0.5)) < 1e-9)
+        << a.x;
+    const Point b = eval("glynnia", {0.5, 0}, 1, {}, {}, seed);
+    EXPECT_TRUE(std::abs(b.x + std::sqrt(0.5)) < 1e-9 || std::abs(b.x + std::sqrt(2.0)) < 1e-9)
+        << b.x;
+    EXPECT_NEAR(a.y, 0, 1e-12);
+    seen.insert(std::lround(a.x * 1000));
+  }
+  EXPECT_EQ(seen.size(), 2u);
+}
+
+TEST(variations_packs, tile_log_and_tile_hlp_move_whole_tiles) {
+  std::set<long> tiles, hlp;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const Point t = eval("tile_log", {0.25, 3}, 1, {}, {}, seed);  // x + round(±ln U)
+    EXPECT_NEAR(t.x - 0.25, std::round(t.x - 0.25), 1e-12);
+    EXPECT_NEAR(t.y, 3, 1e-12);
+    tiles.insert(std::lround(t.x - 0.25));
+    EXPECT_POINT_NEAR(eval("tile_log", {0.25, 3}, 1, {0}, {}, seed), 0.25, 3);  // spread 0
+    // width 1 at x = ½: cos(π/2) = 0 < 2Ψ − 1 half the time: ½ or ½ − 1
+    const Point h = eval("tile_hlp", {0.5, 2}, 1, {}, {}, seed);
+    EXPECT_TRUE(std::abs(h.x - 0.5) < 1e-12 || std::abs(h.x + 0.5) < 1e-12) << h.x;
+    hlp.insert(std::lround(h.x * 2));
+    EXPECT_POINT_NEAR(eval("tile_hlp", {-2, 2}, 1, {}, {}, seed), -2, 2);  // f = 0: never
+  }
+  EXPECT_GE(tiles.size(), 3u);  // 0 and tiles on both sides
+  EXPECT_EQ(hlp.size(), 2u);
+}
+
+TEST(variations_packs, twoface_hypertile2_gaussian) {
+  EXPECT_POINT_NEAR(eval("twoface", {2, 0}), 0.5, 0);     // x > 0: (x, y)/r²
+  EXPECT_POINT_NEAR(eval("twoface", {-2, 1}, 2), -4, 2);  // x ≤ 0: w·p
+  // p 3, q 7: a = 2π/3, cos a = −½, R = 1/√(1 + 1.5/(cos(2π/7) − ½)); 0 ↦ R, turned by −k·a
+  const double big_r = 1 / std::sqrt(1 + 1.5 / (std::cos(2 * kPi / 7) - 0.5));
+  std::set<long> turns;
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    const Point h = eval("hypertile2", {0, 0}, 1, {}, {}, seed);
+    EXPECT_NEAR(std::hypot(h.x, h.y), big_r, 1e-9);
+    const double k = std::atan2(h.y, h.x) / (2 * kPi / 3);
+    EXPECT_NEAR(k, std::round(k), 1e-9);
+    turns.insert(std::lround(k));
+    const Point g = eval("gaussian", {3, 4}, 0.5, {}, {}, seed);  // p + offset ≤ 2w
+    EXPECT_LE(std::hypot(g.x - 3, g.y - 4), 1 + 1e-12);
+  }
+  EXPECT_EQ(turns.size(), 3u);  // −1, 0, 1: the three turns of the triangle
+  EXPECT_POINT_NEAR(eval("gaussian", {3, 4}, 0), 3, 4);
+}
+
+TEST(variations_packs, bTransform_is_the_identity_through_bipolar_coordinates_at_power_1) {
+  // (0, 1): τ = ½(ln 2 − ln 2) = 0, σ = π − π/4 − π/4 = π/2: (sinh 0, sin π/2)/(cosh 0 − 0)
+  EXPECT_POINT_NEAR(eval("bTransform", {0, 1}), 0, 1);
+  // (0.5, 0): τ = ½ ln(2.25/0.25) = ln 3, σ = π: sinh(ln 3)/(cosh(ln 3) + 1) = (4/3)/(8/3)
+  EXPECT_POINT_NEAR(eval("bTransform", {0.5, 0}), 0.5, 0);
+  // move ln 2 at (0, 1): τ = ln 2, sinh τ = 0.75, cosh τ = 1.25: (0.75, 1)/1.25
+  EXPECT_POINT_NEAR(eval("bTransform", {0, 1}, 1, {0, 1, std::log(2.0), 0}), 0.6, 0.8);
+  // power 2 at (0, 1): τ = 0, σ = π/4 or 5π/4: y = sin σ/(1 − cos σ) = 1 + √2 or 1 − √2
+  std::set<long> branches;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Point b = eval("bTransform", {0, 1}, 1, {0, 2, 0, 0}, {}, seed);
+    EXPECT_NEAR(b.x, 0, 1e-12);
+    EXPECT_TRUE(std::abs(b.y - 1 - std::sqrt(2.0)) < 1e-9 ||
+                std::abs(b.y - 1 + std::sqrt(2.0)) < 1e-9)
+        << b.y;
+    branches.insert(b.y > 0);
+  }
+  EXPECT_EQ(branches.size(), 2u);
+}
+
+TEST(variations_packs, crop_puts_points_back_into_its_rectangle) {
+  EXPECT_POINT_NEAR(eval("crop", {0.5, 0.5}, 2), 1, 1);  // inside [−1, 1]²: w·p
+  EXPECT_POINT_NEAR(eval("crop", {3, 0.5}), 1, 0.5);     // scatter 0: onto the edge x = 1
+  EXPECT_POINT_NEAR(eval("crop", {3, 0.5}, 1, {0, -1, 1, -1, 1, 1}), 0, 0);  // zero: the origin
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    // scatter 1: moved in from the edge by Ψ·(half the side) = Ψ·1
+    const Point c = eval("crop", {3, -5}, 1, {1, -1, 1, -1, 1, 0}, {}, seed);
+    EXPECT_TRUE(c.x > 0 && c.x <= 1) << c.x;
+    EXPECT_TRUE(c.y >= -1 && c.y < 0) << c.y;
   }
 }
 
