@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <initializer_list>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -63,16 +64,18 @@ struct RenderArgs {
   }
 };
 
-// The tops/steal options are refused in the modes that would ignore them (run/render_modes.h).
-void check_mode_options(const RenderArgs& args) {
-  app::check_mode_options(args.mode,
-                          {.source = {"--source", !args.source.empty()},
-                           .colouring = {"--colouring", !args.colouring.empty()},
-                           .save_map = {"--save-map", !args.save_map.empty()},
-                           .second_symbol = {"--second-symbol", args.second_symbol},
-                           .map_method = {"--exact/--chaos", args.map_method_given},
-                           .background = {"--background", !args.background.empty()}},
-                          "--mode");
+// The tops/steal options are refused in the modes that would ignore them (run/render_modes.h);
+// `background_taken`: --background is checked by the caller (a flame's measure takes one).
+void check_mode_options(const RenderArgs& args, bool background_taken = false) {
+  app::check_mode_options(
+      args.mode,
+      {.source = {"--source", !args.source.empty()},
+       .colouring = {"--colouring", !args.colouring.empty()},
+       .save_map = {"--save-map", !args.save_map.empty()},
+       .second_symbol = {"--second-symbol", args.second_symbol},
+       .map_method = {"--exact/--chaos", args.map_method_given},
+       .background = {"--background", !background_taken && !args.background.empty()}},
+      "--mode");
 }
 
 // The output policy: no output replaces an input, the two outputs differ, and both are checked
@@ -209,11 +212,22 @@ void refuse_flame_flags(const RenderArgs& args, std::initializer_list<const char
 // its own size and quality unless --size and --quality are given.
 void run_flame_render(const RenderArgs& args) {
   check_flame_mode(args.mode, "--mode");
+  check_mode_options(args, true);
   refuse_flame_flags(args, {"--view", "--margin", "--supersample", "--gamma", "--brightness",
                             "--seamless", "--tiles", "--tile-offset", "--allow-expansive"});
+  std::optional<flame::Rgba> background;  // --background: in place of the file's
+  if (!args.background.empty()) {
+    background = flame_background_option(args.background);
+    if (background->a == 0 && !format_has_alpha(args.output))
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("--background transparent: needs an output that keeps alpha (.png, "
+                              ".tif, .tiff, .exr; got {})",
+                              args.output));
+  }
   StopSignals signals;
   const OutputOptions output = checked_outputs(args);
-  const flame::Flame f = flame::read_flame(args.preset);
+  flame::Flame f = flame::read_flame(args.preset);
+  if (background) f.tone.background = *background;
   flame::FlameRenderOptions options{.seed = args.options.sampling.seed,
                                     .threads = args.options.sampling.threads,
                                     .cancel = output.cancel,
@@ -320,7 +334,9 @@ CLI::Option* add_per_mode_options(CLI::App& cmd, RenderArgs& args) {
                  "and Fractorium open, drawing its measure framed as this picture");
   cmd.add_option("--background", args.background,
                  "tops/steal modes: colour off the attractor in formats without alpha "
-                 "(black, white, #rrggbb, R,G,B); PNG/TIFF/EXR get a transparent background")
+                 "(black, white, #rrggbb, R,G,B); PNG/TIFF/EXR get a transparent background. "
+                 "A flame's measure: in place of the flame's own background, or 'transparent' "
+                 "(alpha from the density, as flam3-render's transparency=1)")
       ->default_str("black");
   return map_method;
 }

@@ -84,6 +84,7 @@ def render_flame(
     seed: int = 1,
     threads: int = 0,
     alpha: bool = False,
+    background: str | None = None,
     dtype: _DType = "uint8",
     rgb: bool = False,
 ) -> _Image: ...

@@ -21,6 +21,7 @@
 #include "python/errors.h"
 #include "python/options.h"
 #include "python/presets.h"
+#include "run/picture_options.h"
 #include "run/render_modes.h"
 #include "run/render_still.h"
 
@@ -29,8 +30,15 @@ namespace {
 
 // A flame file's flame (flame/render.h) as an array: BGR, or BGRA over its background's alpha.
 cv::Mat flame_picture(const std::string& spec, std::optional<cv::Size> size,
-                      std::optional<double> quality, std::uint64_t seed, int threads, bool alpha) {
-  const flame::Flame f = flame::read_flame(spec);
+                      std::optional<double> quality, std::uint64_t seed, int threads, bool alpha,
+                      const py::object& background) {
+  flame::Flame f = flame::read_flame(spec);
+  if (!background.is_none()) {  // as the command's --background for a flame
+    f.tone.background = app::flame_background_option(background.cast<std::string>(), "background");
+    if (f.tone.background.a == 0 && !alpha)
+      throw Error(ErrorKind::invalid_argument,
+                  "background: \"transparent\" needs alpha=True (got alpha=False)");
+  }
   return run_released([&](const CancelToken& cancel) {
     return flame::render_flame(f, {.size = size,
                                    .quality = quality,
@@ -42,12 +50,12 @@ cv::Mat flame_picture(const std::string& spec, std::optional<cv::Size> size,
 }
 
 py::array render_flame(const std::string& spec, const py::object& size, const py::object& quality,
-                       std::uint64_t seed, int threads, bool alpha, const py::object& dtype,
-                       bool rgb) {
+                       std::uint64_t seed, int threads, bool alpha, const py::object& background,
+                       const py::object& dtype, bool rgb) {
   const cv::Mat image =
       flame_picture(spec, size.is_none() ? std::nullopt : std::optional(size_arg(size)),
                     quality.is_none() ? std::nullopt : std::optional(quality.cast<double>()), seed,
-                    threads, alpha);
+                    threads, alpha, background);
   return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
 }
 
@@ -208,7 +216,8 @@ files.)doc");
 
   m.def("render_flame", &render_flame, py::arg("spec"), py::kw_only(), py::arg("size") = py::none(),
         py::arg("quality") = py::none(), py::arg("seed") = 1, py::arg("threads") = 0,
-        py::arg("alpha") = false, py::arg("dtype") = "uint8", py::arg("rgb") = false,
+        py::arg("alpha") = false, py::arg("background") = py::none(), py::arg("dtype") = "uint8",
+        py::arg("rgb") = false,
         R"doc(A fractal flame of flam3, Apophysis, JWildfire or Fractorium ("art.flame",
 "art.flame:NAME" or "art.flame:INDEX") as `ifsfx render art.flame:NAME -o OUT.png` renders it,
 as flam3-render does: H×W×3 (BGR over the flame's background), or ×4 with alpha=True (opaque
@@ -216,6 +225,9 @@ unless the file's background is transparent: then the flame's cover).
 size: (width, height) or "WxH", default None: the flame's own (the framing kept).
 quality: samples per pixel, default None: the flame's own.
 seed: default 1; the same seed gives the same array for any thread count. threads: 0 = all.
+background: default None: the flame's own; a colour ("black", "white", "#rrggbb", "R,G,B") in
+    its place, or "transparent" (with alpha=True: the cover as alpha, as flam3-render's
+    transparency=1), as the command's --background.
 dtype: "uint8" (default), "uint16" or "float32". rgb: True for RGB order.
 ifsfx.render(spec, mode="measure", ...) draws the same at its size and quality.)doc");
   bind_image_files(m);

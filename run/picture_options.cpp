@@ -49,4 +49,19 @@ bool format_has_alpha(const std::string& path) {
   return ext == ".png" || ext == ".tif" || ext == ".tiff" || ext == ".exr";
 }
 
+flame::Rgba flame_background_option(const std::string& text, const std::string& what) {
+  std::string t = text;
+  for (auto& ch : t) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (t == "transparent") return {0, 0, 0, 0};
+  try {
+    const Rgb c = colour_option(text, what);
+    return {c.r, c.g, c.b, 1};
+  } catch (const Error&) {
+    throw Error(ErrorKind::parse,
+                fmt::format("{}: a flame's background is transparent, black, white, #rrggbb or "
+                            "R,G,B with 0..255 (got '{}')",
+                            what, text));
+  }
+}
+
 }  // namespace ifsfx::app

@@ -70,6 +70,22 @@ XML
       -o s.png 2>err.txt || rc=$?
     [ "$rc" -ne 0 ] && grep -q "sierpinski-triangle must have as many maps as spiral (got 3 for 2)" err.txt ||
       fail "--colouring of 3 maps for 2 xforms: rc $rc, $(cat err.txt)"
+    # --background: in place of the flame's own; transparent keeps alpha (flam3's transparency=1)
+    # and needs an output that can; the paper modes' flags are refused in the flame look.
+    # (python.flames checks the pixels.)
+    "$ifsfx" render two.flame:spiral -q -o opaque.png
+    for bg in transparent white; do
+      "$ifsfx" render two.flame:spiral --background $bg -q -o $bg.png
+      ! cmp -s opaque.png $bg.png || fail "--background $bg changed nothing"
+    done
+    for bad in "--background transparent -o clear.jpg" "--source src.png -o x.png" \
+      "--chaos -o x.png"; do
+      rc=0
+      # shellcheck disable=SC2086
+      "$ifsfx" render two.flame:spiral $bad 2>err.txt || rc=$?
+      [ "$rc" -ne 0 ] && [ "$(wc -l <err.txt)" -eq 1 ] || fail "$bad: rc $rc, $(cat err.txt)"
+    done
+    grep -q "^ifsfx: --exact/--chaos: only with --mode" err.txt || fail "--chaos: $(cat err.txt)"
     rc=0
     "$ifsfx" render two.flame -o t.png 2>err.txt || rc=$?
     [ "$rc" -ne 0 ] && grep -q 'spiral' err.txt || fail "no pick in a file of two: rc $rc, $(cat err.txt)"

@@ -81,3 +81,21 @@ def test_an_exact_descent_asked_of_a_flame_is_refused(flame_file):
         ifsfx.Filter(flame_file, exact=True)
     assert ifsfx.render(flame_file, mode="tops", exact=False, size=(16, 12)).shape == (12, 16, 4)
     ifsfx.Filter(flame_file)  # the default: the chaos game, no refusal
+
+
+def test_a_flames_background_given_replaces_its_own_as_the_cli_does(cli, tmp_path, flame_file):
+    # "transparent" is flam3-render's transparency=1: the empty plane clear, the cover as alpha;
+    # a colour is opaque, and shows where nothing lands.
+    clear = ifsfx.render_flame(flame_file, seed=2, alpha=True, background="transparent")
+    np.testing.assert_array_equal(clear, cli_image(cli, tmp_path, "render", flame_file, "--seed",
+                                                   "2", "--background", "transparent"))
+    own = ifsfx.render_flame(flame_file, seed=2, alpha=True)
+    assert (own[:, :, 3] == 255).all()
+    empty = clear[:, :, 3] == 0  # (a density that rounds to alpha 0 shows a trace of colour)
+    assert empty.mean() > 0.1 and (clear[:, :, 3] == 255).any()
+    white = ifsfx.render_flame(flame_file, seed=2, background="white")
+    assert (white[empty] >= 250).all() and (own[empty][:, :3] <= 5).all()
+    with pytest.raises(ValueError, match='background: "transparent" needs alpha=True'):
+        ifsfx.render_flame(flame_file, background="transparent")
+    with pytest.raises(ValueError, match="background: a flame's background is transparent"):
+        ifsfx.render_flame(flame_file, background="mauve")
