@@ -70,7 +70,7 @@ def render(
     second_symbol: bool = False,
     source: _Image | _Path | None = None,
     colouring: str | None = None,
-    background: _Colour = "black",
+    background: _Colour | None = None,
     alpha: bool = True,
     dtype: _DType = "uint8",
     allow_expansive: bool = False,

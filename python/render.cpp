@@ -28,17 +28,27 @@
 namespace ifsfx::python {
 namespace {
 
+// A flame measure's background keyword, as the command's --background for a flame: None keeps
+// the file's; "transparent" (with alpha only) or a colour as colour_arg reads it replaces it.
+void set_flame_background(flame::Flame& f, const py::object& background, bool alpha) {
+  if (background.is_none()) return;
+  if (py::isinstance<py::str>(background)) {
+    f.tone.background = app::flame_background_option(background.cast<std::string>(), "background");
+  } else {
+    const Rgb c = colour_arg(background);
+    f.tone.background = {c.r, c.g, c.b, 1};
+  }
+  if (f.tone.background.a == 0 && !alpha)
+    throw Error(ErrorKind::invalid_argument,
+                "background: \"transparent\" needs alpha=True (got alpha=False)");
+}
+
 // A flame file's flame (flame/render.h) as an array: BGR, or BGRA over its background's alpha.
 cv::Mat flame_picture(const std::string& spec, std::optional<cv::Size> size,
                       std::optional<double> quality, std::uint64_t seed, int threads, bool alpha,
                       const py::object& background) {
   flame::Flame f = flame::read_flame(spec);
-  if (!background.is_none()) {  // as the command's --background for a flame
-    f.tone.background = app::flame_background_option(background.cast<std::string>(), "background");
-    if (f.tone.background.a == 0 && !alpha)
-      throw Error(ErrorKind::invalid_argument,
-                  "background: \"transparent\" needs alpha=True (got alpha=False)");
-  }
+  set_flame_background(f, background, alpha);
   return run_released([&](const CancelToken& cancel) {
     return flame::render_flame(f, {.size = size,
                                    .quality = quality,
@@ -59,6 +69,22 @@ py::array render_flame(const std::string& spec, const py::object& size, const py
   return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
 }
 
+// The keywords a flame's measure takes from its file: a view, or a margin, supersampling, gamma or
+// brightness other than the defaults, is refused naming the keyword.
+void refuse_flame_keywords(const py::object& view, double margin, int supersample, double gamma,
+                           double brightness) {
+  const RenderOptions d;
+  const auto refuse = [](const char* name, const std::string& got) {
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("{}: a flame's measure takes its own from the file (got {})", name, got));
+  };
+  if (!view.is_none()) refuse("view", py::str(view).cast<std::string>());
+  if (margin != d.sampling.margin) refuse("margin", fmt::format("{}", margin));
+  if (supersample != d.supersample) refuse("supersample", fmt::format("{}", supersample));
+  if (gamma != d.gamma) refuse("gamma", fmt::format("{}", gamma));
+  if (brightness != d.brightness) refuse("brightness", fmt::format("{}", brightness));
+}
+
 // `size`, `quality` and `exact` are None unless given, as the command tells a flag given from its
 // default: a flame is drawn at its own size (and its measure at its own quality), and an exact
 // descent asked for by name is refused for a flame, whose xforms have no inverse.
@@ -77,10 +103,20 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
                                      : defaults.size;
   const std::optional<double> quality =
       quality_arg.is_none() ? std::nullopt : std::optional(quality_arg.cast<double>());
+  app::check_mode_options(mode,
+                          {.source = {"source", !source.is_none()},
+                           .colouring = {"colouring", !colouring.is_none()},
+                           .second_symbol = {"second_symbol", second_symbol}},
+                          "mode");
   if (as_flame && mode == app::RenderMode::measure) {
-    // A flame's measure draws as flam3 does, at its own quality unless given.
+    // A flame's measure draws as flam3 does, at its own quality unless given; its camera and
+    // tone mapping are the file's, so a keyword that would change them is refused (as the
+    // command refuses the flags), not ignored.
+    refuse_flame_keywords(view, margin, supersample, gamma, brightness);
+    flame::Flame f = *as_flame;
+    set_flame_background(f, background, alpha);
     const cv::Mat image = run_released([&](const CancelToken& cancel) {
-      return flame::render_flame(*as_flame, {.size = pixels,
+      return flame::render_flame(f, {.size = pixels,
                                              .quality = quality,
                                              .seed = seed,
                                              .threads = threads,
@@ -94,17 +130,12 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
   const bool exact = exact_arg.is_none() ? defaults.exact : exact_arg.cast<bool>();
   const Keywords k = keywords(view, margin, quality.value_or(Sampling{}.quality), supersample,
                               gamma, brightness, seed, threads, exact);
-  app::check_mode_options(mode,
-                          {.source = {"source", !source.is_none()},
-                           .colouring = {"colouring", !colouring.is_none()},
-                           .second_symbol = {"second_symbol", second_symbol}},
-                          "mode");
   const bool steal = mode == app::RenderMode::steal;
   app::StillJob job{.mode = mode,
                     .size = pixels,
                     .exact = k.exact && !as_flame,  // a flame: the chaos game
                     .second_symbol = second_symbol,
-                    .background = colour_arg(background),
+                    .background = colour_arg(background.is_none() ? py::str("black") : background),
                     .alpha = alpha};
   py::object keep;
   if (steal) {
@@ -177,15 +208,17 @@ void bind_render(py::module_& m) {
       py::arg("seed") = sampled.seed, py::arg("threads") = sampled.threads,
       py::arg("exact") = py::none(), py::arg("second_symbol") = job.second_symbol,
       py::arg("source") = py::none(), py::arg("colouring") = py::none(),
-      py::arg("background") = "black", py::arg("alpha") = job.alpha, py::arg("dtype") = "uint8",
+      py::arg("background") = py::none(), py::arg("alpha") = job.alpha, py::arg("dtype") = "uint8",
       py::arg("allow_expansive") = false, py::arg("rgb") = false,
       R"doc(An IFS rendered as `ifsfx render PRESET -o OUT.png` renders it, as an array equal to the PNG's
 pixels (BGR order, like cv2). The GIL is released while it works; Ctrl-C stops it
 (KeyboardInterrupt).
 
 preset: a shipped name, a .toml/.ifs path, "FILE.ifs:NAME", an Ifs, or a flame ("art.flame",
-    "art.flame:NAME" or an ifsfx.Flame): its measure as flam3 draws it, the other modes
-    through the chaos game (exact=True is refused: a flame's xforms have no inverse).
+    "art.flame:NAME" or an ifsfx.Flame): its measure as flam3 draws it, with the file's
+    camera and tone mapping (view, margin, supersample, gamma or brightness other than the
+    defaults are refused), the other modes through the chaos game (exact=True is refused: a
+    flame's xforms have no inverse).
 mode: "attractor" (the set: H×W, 255 on it), "measure" (log-density of the invariant
     measure, coloured by map: H×W×3), "tops" (each pixel coloured by the first symbol of its
     top address: H×W×4, or ×3 with alpha=False), "steal" (colours stolen from `source`:
@@ -205,7 +238,8 @@ second_symbol: tops mode: mix in the second symbol's colour, default False.
 source: steal mode: the image (an H×W×C uint8/uint16/float32 array, or a path).
 colouring: steal mode: colouring IFS preset with as many maps, default None: a tiling.
 background: tops and steal: colour off the attractor ("black", "white", "#rrggbb" or
-    (R, G, B)), default "black"; alpha is 0 there.
+    (R, G, B)), default None: black; alpha is 0 there. A flame's measure: None keeps the
+    file's, a colour or "transparent" (with alpha=True) replaces it, as render_flame.
 alpha: tops and steal: keep the coverage as an alpha channel (as PNG), default True.
 dtype: "uint8" (default, as an 8-bit PNG), "uint16" (as a 16-bit PNG) or "float32" (in [0, 1]).
 rgb: False (default): arrays in and out in BGR(A) order, like cv2; True: RGB(A).

@@ -99,3 +99,13 @@ def test_a_flames_background_given_replaces_its_own_as_the_cli_does(cli, tmp_pat
         ifsfx.render_flame(flame_file, background="transparent")
     with pytest.raises(ValueError, match="background: a flame's background is transparent"):
         ifsfx.render_flame(flame_file, background="mauve")
+    # ifsfx.render of a flame's measure takes the same keyword; its camera and tone mapping are
+    # the file's, so keywords that would change them are refused, not ignored.
+    np.testing.assert_array_equal(ifsfx.render(flame_file, seed=2, background="transparent"),
+                                  clear)
+    for keyword, value in (("gamma", 3.0), ("brightness", 8.0), ("supersample", 2),
+                           ("margin", 0.2), ("view", (0, 0, 1, 1))):
+        with pytest.raises(ValueError, match=f"{keyword}: a flame's measure takes its own"):
+            ifsfx.render(flame_file, **{keyword: value})
+    with pytest.raises(ValueError, match="source: only with mode steal"):
+        ifsfx.render(flame_file, source=np.zeros((4, 4, 3), np.uint8))
