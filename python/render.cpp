@@ -103,12 +103,15 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
                                      : defaults.size;
   const std::optional<double> quality =
       quality_arg.is_none() ? std::nullopt : std::optional(quality_arg.cast<double>());
-  app::check_mode_options(mode,
-                          {.source = {"source", !source.is_none()},
-                           .colouring = {"colouring", !colouring.is_none()},
-                           .second_symbol = {"second_symbol", second_symbol}},
-                          "mode");
-  if (as_flame && mode == app::RenderMode::measure) {
+  const bool flame_measure = as_flame && mode == app::RenderMode::measure;
+  app::check_mode_options(
+      mode,
+      {.source = {"source", !source.is_none()},
+       .colouring = {"colouring", !colouring.is_none()},
+       .second_symbol = {"second_symbol", second_symbol},
+       .background = {"background", !flame_measure && !background.is_none()}},
+      "mode");
+  if (flame_measure) {
     // A flame's measure draws as flam3 does, at its own quality unless given; its camera and
     // tone mapping are the file's, so a keyword that would change them is refused (as the
     // command refuses the flags), not ignored.

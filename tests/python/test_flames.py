@@ -109,3 +109,5 @@ def test_a_flames_background_given_replaces_its_own_as_the_cli_does(cli, tmp_pat
             ifsfx.render(flame_file, **{keyword: value})
     with pytest.raises(ValueError, match="source: only with mode steal"):
         ifsfx.render(flame_file, source=np.zeros((4, 4, 3), np.uint8))
+    with pytest.raises(ValueError, match="background: only with mode tops or steal"):
+        ifsfx.render(flame_file, mode="attractor", background="white")
