@@ -315,7 +315,8 @@ int main(int argc, char** argv) try {
   for (const auto& shape : all)
     if (const double b = holeless_bound(shape.mask); b < 0.995)
       bounds += fmt::format(" {} {:.3f}", shape.name, b);
-  if (!bounds.empty()) std::printf("holes: a fit without holes reaches at most IoU%s\n", bounds.c_str());
+  if (!bounds.empty())
+    std::printf("holes: a fit without holes reaches at most IoU%s\n", bounds.c_str());
   if (!all_hold) std::printf("collage_bench: a collage bound FAILED\n");
   return all_hold ? 0 : 1;
 } catch (const std::exception& e) {

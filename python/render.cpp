@@ -75,8 +75,9 @@ void refuse_flame_keywords(const py::object& view, double margin, int supersampl
                            double brightness) {
   const RenderOptions d;
   const auto refuse = [](const char* name, const std::string& got) {
-    throw Error(ErrorKind::invalid_argument,
-                fmt::format("{}: a flame's measure takes its own from the file (got {})", name, got));
+    throw Error(
+        ErrorKind::invalid_argument,
+        fmt::format("{}: a flame's measure takes its own from the file (got {})", name, got));
   };
   if (!view.is_none()) refuse("view", py::str(view).cast<std::string>());
   if (margin != d.sampling.margin) refuse("margin", fmt::format("{}", margin));
@@ -104,13 +105,12 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
   const std::optional<double> quality =
       quality_arg.is_none() ? std::nullopt : std::optional(quality_arg.cast<double>());
   const bool flame_measure = as_flame && mode == app::RenderMode::measure;
-  app::check_mode_options(
-      mode,
-      {.source = {"source", !source.is_none()},
-       .colouring = {"colouring", !colouring.is_none()},
-       .second_symbol = {"second_symbol", second_symbol},
-       .background = {"background", !flame_measure && !background.is_none()}},
-      "mode");
+  app::check_mode_options(mode,
+                          {.source = {"source", !source.is_none()},
+                           .colouring = {"colouring", !colouring.is_none()},
+                           .second_symbol = {"second_symbol", second_symbol},
+                           .background = {"background", !flame_measure && !background.is_none()}},
+                          "mode");
   if (flame_measure) {
     // A flame's measure draws as flam3 does, at its own quality unless given; its camera and
     // tone mapping are the file's, so a keyword that would change them is refused (as the
@@ -120,11 +120,11 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
     set_flame_background(f, background, alpha);
     const cv::Mat image = run_released([&](const CancelToken& cancel) {
       return flame::render_flame(f, {.size = pixels,
-                                             .quality = quality,
-                                             .seed = seed,
-                                             .threads = threads,
-                                             .cancel = cancel,
-                                             .channels = alpha ? 4 : 3});
+                                     .quality = quality,
+                                     .seed = seed,
+                                     .threads = threads,
+                                     .cancel = cancel,
+                                     .channels = alpha ? 4 : 3});
     });
     return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
   }

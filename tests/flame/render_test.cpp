@@ -57,6 +57,24 @@ std::vector<cv::Point> lit(const cv::Mat& bgr) {
   return out;
 }
 
+// `xml` (a <flame> element) written to TEMP/ifsfx_render_NAME.flame and rendered there by
+// flam3-render with seed 1 (its picture: an empty Mat where it failed); `flame` gets the file.
+cv::Mat flam3_picture(const std::string& name, const std::string& xml, fs::path& flame) {
+  const fs::path dir = fs::temp_directory_path();
+  flame = dir / ("ifsfx_render_" + name + ".flame");
+  const fs::path out = dir / ("ifsfx_render_" + name + ".png");
+  std::FILE* file = std::fopen(flame.c_str(), "w");
+  if (file == nullptr) return {};
+  std::fputs(xml.c_str(), file);
+  std::fclose(file);
+  const std::string cmd =
+      "env out=" + out.string() +
+      " seed=1 isaac_seed=1 format=png verbose=0 transparency=0 flam3-render < " + flame.string() +
+      " > /dev/null 2>&1";
+  if (std::system(cmd.c_str()) != 0) return {};
+  return read_image(out).pixels;
+}
+
 TEST(render_flame, a_point_lands_where_the_camera_formula_puts_it) {
   // x_pix = (x − cx)·ppu + W/2: (0.5 − 0.1)·40 + 32 = 48, (−0.25 + 0.05)·40 + 24 = 16.
   const cv::Mat img = render_flame(two_points(), {.seed = 3});
@@ -274,16 +292,9 @@ TEST(render_flame, draws_an_asymmetric_flame_as_flam3_render_does) {
     text += "<color index=\"" + std::to_string(i) + "\" rgb=\"" +
             (i < 192 ? "0 255 0" : "0 0 255") + "\"/>";
   text += "</flame>";
-  const fs::path dir = fs::temp_directory_path();
-  const fs::path in = dir / "ifsfx_render_L.flame", out = dir / "ifsfx_render_L.png";
-  std::FILE* file = std::fopen(in.c_str(), "w");
-  ASSERT_NE(file, nullptr);
-  std::fputs(text.c_str(), file);
-  std::fclose(file);
-  const std::string cmd = "env out=" + out.string() + " format=png verbose=0 flam3-render < " +
-                          in.string() + " > /dev/null 2>&1";
-  ASSERT_EQ(std::system(cmd.c_str()), 0);
-  cv::Mat theirs = read_image(out).pixels;
+  fs::path in;
+  cv::Mat theirs = flam3_picture("L", text, in);
+  ASSERT_FALSE(theirs.empty());
   if (theirs.channels() == 4) cv::cvtColor(theirs, theirs, cv::COLOR_BGRA2BGR);
   cv::Mat theirs8;
   theirs.convertTo(theirs8, CV_8U);
@@ -306,18 +317,11 @@ TEST(render_flame, spreads_a_lone_bin_as_flam3_render_does) {
   for (int i = 0; i < 256; ++i)
     text += "<color index=\"" + std::to_string(i) + "\" rgb=\"255 255 255\"/>";
   text += "</flame>";
-  const fs::path dir = fs::temp_directory_path();
-  const fs::path in = dir / "ifsfx_render_dot.flame", out = dir / "ifsfx_render_dot.png";
-  std::FILE* file = std::fopen(in.c_str(), "w");
-  ASSERT_NE(file, nullptr);
-  std::fputs(text.c_str(), file);
-  std::fclose(file);
-  const std::string cmd = "env out=" + out.string() +
-                          " seed=1 isaac_seed=1 format=png verbose=0 transparency=0 flam3-render < " +
-                          in.string() + " > /dev/null 2>&1";
-  ASSERT_EQ(std::system(cmd.c_str()), 0);
+  fs::path in;
+  const cv::Mat picture = flam3_picture("dot", text, in);
+  ASSERT_FALSE(picture.empty());
   cv::Mat theirs, ours;
-  cv::cvtColor(read_image(out).pixels, theirs, cv::COLOR_BGRA2GRAY);
+  cv::cvtColor(picture, theirs, cv::COLOR_BGRA2GRAY);
   cv::cvtColor(render_flame(read_flame(in.string())), ours, cv::COLOR_BGR2GRAY);
   ASSERT_EQ(theirs.size(), ours.size());
   ASSERT_GT(theirs.at<std::uint8_t>(16, 16), 20);
