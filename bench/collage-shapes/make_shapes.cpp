@@ -237,6 +237,42 @@ cv::Mat key() {
   return tilted > 127;
 }
 
+// A cat sitting, seen from the side: body and haunch, a neck into a round head with two pointed
+// ears, two front legs, a tail curling up behind (added after the fitter's work on issue 32, to
+// check it on animals it was not tuned to).
+cv::Mat cat() {
+  cv::Mat m(330, 300, CV_8UC1, cv::Scalar(0));
+  const cv::Scalar on(255);
+  cv::ellipse(m, {150, 222}, {66, 80}, 0, 0, 360, on, cv::FILLED, cv::LINE_AA);   // body
+  cv::ellipse(m, {178, 262}, {58, 52}, 0, 0, 360, on, cv::FILLED, cv::LINE_AA);   // haunch
+  cv::ellipse(m, {128, 160}, {38, 44}, 20, 0, 360, on, cv::FILLED, cv::LINE_AA);  // neck
+  cv::circle(m, {118, 108}, 46, on, cv::FILLED, cv::LINE_AA);                     // head
+  const std::vector<std::vector<cv::Point>> ears = {{{80, 88}, {84, 36}, {112, 68}},
+                                                    {{124, 64}, {152, 30}, {158, 82}}};
+  cv::fillPoly(m, ears, on, cv::LINE_AA);
+  stroke(m, {112, 236}, {108, 312}, 22);  // front legs
+  stroke(m, {142, 246}, {142, 312}, 20);
+  stroke(m, {222, 296}, {262, 260}, 16);  // tail
+  stroke(m, {262, 260}, {272, 200}, 14);
+  stroke(m, {272, 200}, {256, 160}, 12);
+  return m > 127;
+}
+
+// A bird in flight, wings raised: body, head and beak, two wings and a forked tail.
+cv::Mat bird() {
+  cv::Mat m(250, 340, CV_8UC1, cv::Scalar(0));
+  const cv::Scalar on(255);
+  cv::ellipse(m, {170, 150}, {72, 28}, -8, 0, 360, on, cv::FILLED, cv::LINE_AA);  // body
+  cv::circle(m, {242, 132}, 23, on, cv::FILLED, cv::LINE_AA);                     // head
+  const std::vector<std::vector<cv::Point>> parts = {
+      {{260, 124}, {296, 134}, {260, 142}},            // beak
+      {{128, 142}, {58, 36}, {112, 58}, {176, 134}},   // far wing
+      {{168, 136}, {204, 22}, {222, 56}, {206, 140}},  // near wing
+      {{108, 152}, {44, 122}, {66, 156}, {46, 186}}};  // forked tail
+  cv::fillPoly(m, parts, on, cv::LINE_AA);
+  return m > 127;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
@@ -256,6 +292,8 @@ int main(int argc, char** argv) try {
   write_shape(out, "hand", hand());
   write_shape(out, "tree", tree());
   write_shape(out, "key", key());
+  write_shape(out, "cat", cat());
+  write_shape(out, "bird", bird());
   return 0;
 } catch (const std::exception& e) {
   std::fprintf(stderr, "make_collage_shapes: %s\n", e.what());
