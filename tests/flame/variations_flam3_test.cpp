@@ -6,6 +6,7 @@
 #include <numbers>
 #include <set>
 
+#include "flame/detail/simplex_noise.h"
 #include "variation_check.h"
 
 namespace ifsfx::flame {
@@ -283,6 +284,115 @@ TEST(variations_packs, crop_puts_points_back_into_its_rectangle) {
     EXPECT_TRUE(c.x > 0 && c.x <= 1) << c.x;
     EXPECT_TRUE(c.y >= -1 && c.y < 0) << c.y;
   }
+}
+
+// crackle reads no point: it draws u = b·(sin θ, cos θ), b = (Ψ1 + Ψ2)/2 + (Ψ3 − ½)/4, θ = 2πΨ4,
+// from the walker's generator, which the test replays with the same seed.
+Point crackle_draw(std::uint64_t seed) {
+  Rng rng(seed);
+  const double u1 = rng.uniform(), u2 = rng.uniform(), u3 = rng.uniform(), u4 = rng.uniform();
+  const double b = (u1 + u2) / 2 + (u3 - 0.5) / 4, theta = 2 * kPi * u4;
+  return {b * std::sin(theta), b * std::cos(theta)};
+}
+
+TEST(variations_packs2, crackle_moves_its_draw_within_square_cells_without_distortion) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Point u = crackle_draw(seed);
+    // power 1, scale 1: L^1/L = 1, u itself whatever the cells; w = 2 doubles it
+    EXPECT_POINT_NEAR(eval("crackle", {9, 9}, 2, {1, 1, 0.7, 1, 0}, {}, seed), 2 * u.x, 2 * u.y);
+    // cellsize 1, distort 0: centres on the lattice s·(i, j), s = ½, the cells squares of side
+    // ½ about them. Scale 0: the centre nearest u, round(2u)/2.
+    const Point c{std::round(2 * u.x) / 2, std::round(2 * u.y) / 2};
+    EXPECT_POINT_NEAR(eval("crackle", {9, 9}, 1, {1, 0.2, 0, 0, 0}, {}, seed), c.x, c.y);
+    // Power 0, scale 1: u − c divided by its level L = 2·max(|dx|, |dy|)/s (the nearest
+    // neighbour's bisector at s/2): onto the cell's edge, on the ray from c through u.
+    const double dx = u.x - c.x, dy = u.y - c.y, level = 4 * std::max(std::abs(dx), std::abs(dy));
+    EXPECT_POINT_NEAR(eval("crackle", {9, 9}, 1, {1, 0, 0, 1, 0}, {}, seed), c.x + dx / level,
+                      c.y + dy / level);
+  }
+  EXPECT_POINT_NEAR(eval("crackle", {9, 9}, 1, {0}), 0, 0);  // cellsize 0: no cells, nothing
+}
+
+TEST(variations_packs2, crackle_distorts_its_centres_by_a_bounded_noise) {
+  // The simplex noise is 0 at a lattice corner (its own offset 0, the other corners' offsets
+  // |d|² = (5/6)² + 2·(1/6)² = 0.75 > 0.6 out of reach) and stays within [−1, 1].
+  EXPECT_EQ(detail::simplex_noise(0, 0, 0), 0);
+  EXPECT_EQ(detail::simplex_noise(1, 2, -3), 0);  // skewed: (1, 2, −3) + 0 is a corner too
+  double lo = 0, hi = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const double n = detail::simplex_noise(0.37 * i, 0.11 * i - 5, 0.05 * i);
+    lo = std::min(lo, n);
+    hi = std::max(hi, n);
+  }
+  EXPECT_TRUE(lo > -1.1 && lo < -0.3 && hi < 1.1 && hi > 0.3) << lo << " " << hi;
+  // distort 1, scale 0: the centre of u's cell, s·(i + n(2.5i, 2.5j, 0), j + n(2.5j + 30.2,
+  // 2.5i − 12.1, 19.8)), s = ½, of the cell (i, j) whose centre is the nearest to u
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Point u = crackle_draw(seed);
+    const Point got = eval("crackle", {9, 9}, 1, {1, 0.2, 1, 0, 0}, {}, seed);
+    double best = 1e9;
+    Point nearest{};
+    for (int i = -6; i <= 6; ++i)
+      for (int j = -6; j <= 6; ++j) {
+        const Point c{(i + detail::simplex_noise(2.5 * i, 2.5 * j, 0)) / 2,
+                      (j + detail::simplex_noise(2.5 * j + 30.2, 2.5 * i - 12.1, 19.8)) / 2};
+        const double d = std::hypot(c.x - u.x, c.y - u.y);
+        if (d < best) best = d, nearest = c;
+      }
+    EXPECT_POINT_NEAR(got, nearest.x, nearest.y);
+  }
+}
+
+TEST(variations_packs2, hexes_scales_and_turns_within_hexagonal_cells) {
+  // cellsize 1: centres (3/2·(a − b), √3/2·(a + b)), six neighbours √3 away; at (0.3, 0) in the
+  // cell of the origin, the level is 2·(0.3·1.5)/3 = 0.3 (the neighbours (1.5, ±√3/2)).
+  EXPECT_POINT_NEAR(eval("hexes", {0.3, 0}, 1, {1, 1, 0, 1}), 0.3, 0);   // power 1: p
+  EXPECT_POINT_NEAR(eval("hexes", {0.3, 0}, 1, {1, 2, 0, 1}), 0.09, 0);  // level 0.3²
+  EXPECT_POINT_NEAR(eval("hexes", {0.2, 0}, 2, {1, 1, 0, 2}), 0.8, 0);   // scale 2, w 2
+  const double r3 = std::sqrt(3.0);
+  EXPECT_POINT_NEAR(eval("hexes", {1.6, r3 / 2 - 0.1}, 1, {1, 1, 0, 1}), 1.6, r3 / 2 - 0.1);
+  // rotate ¼: a quarter turn clockwise about the centre, (0.1, 0) → (0, −0.1); levels 0.1 and
+  // 2·(0.1·√3)/3 < ½, so the scale is L1^1/L1 = 1
+  EXPECT_POINT_NEAR(eval("hexes", {0.1, 0}, 1, {1, 1, 0.25, 1}), 0, -0.1);
+  // about the centre (0, √3) of cell (1, 1): (0.1, √3) → (0, √3 − 0.1)
+  EXPECT_POINT_NEAR(eval("hexes", {0.1, r3}, 1, {1, 1, 0.25, 1}), 0, r3 - 0.1);
+}
+
+TEST(variations_packs2, smartcrop_cuts_to_a_polygon_and_puts_cut_points_on_its_border) {
+  // power 4, radius 1: the square [−1, 1]² (apothem 1, its sides' middles at −π, −π/2, 0, π/2)
+  EXPECT_POINT_NEAR(eval("smartcrop", {0.5, -0.5}, 2), 1, -1);  // inside: w·p
+  EXPECT_POINT_NEAR(eval("smartcrop", {2, 0}), 1, 0);           // onto the border, same angle
+  EXPECT_POINT_NEAR(eval("smartcrop", {2, 2}), 1, 1);           // a corner: 1/cos(π/4)
+  EXPECT_POINT_NEAR(eval("smartcrop", {3, 1}), 1, 1.0 / 3);     // the side x = 1
+  EXPECT_POINT_NEAR(eval("smartcrop", {-3, -4}, 1, {4, 1, 0, 1, 0}), -0.6, -0.8);  // circle
+  // offset ½ (scatter 0): outside the border by coeff·½; crop mode 0: the origin
+  EXPECT_POINT_NEAR(eval("smartcrop", {2, 0}, 1, {4, 1, 0, 1, 1, 0, 0, 0.5}), 1.5, 0);
+  EXPECT_POINT_NEAR(eval("smartcrop", {2, 0}, 1, {4, 1, 0, 1, 1, 0, 0, 0, 0, 0}), 0, 0);
+  // crop mode −1, rotation 1: the radius kept, turned by α = π/2
+  EXPECT_POINT_NEAR(eval("smartcrop", {2, 0}, 1, {4, 1, 0, 1, 1, 0, 0, 0, 1, -1}), 0, 2);
+  // radius −½: the inside cut, (0.1, 0) put out on x = ½, (2, 0) kept
+  EXPECT_POINT_NEAR(eval("smartcrop", {0.1, 0}, 1, {4, -0.5}), 0.5, 0);
+  EXPECT_POINT_NEAR(eval("smartcrop", {2, 0}, 1, {4, -0.5}), 2, 0);
+  // roundstr 1: the corner at π/4 pulled in to coeff = (1 − c)·√2 + c, c = 2/(4·sin(π/4)) =
+  // 1/√2, i.e. to (1.5 − 1/√2)·(1, 1)
+  const double k = 1.5 - 1 / std::sqrt(2.0);
+  EXPECT_POINT_NEAR(eval("smartcrop", {3, 3}, 1, {4, 1, 1}), k, k);
+  // crop mode 2 (onto the last point kept, a state): not a number, the walker starts again
+  EXPECT_TRUE(std::isnan(eval("smartcrop", {2, 0}, 1, {4, 1, 0, 1, 1, 0, 0, 0, 0, 2}).x));
+}
+
+TEST(variations_packs2, smartcrop_below_power_2_cuts_a_sector) {
+  // power 1, radius 1: the upper half plane [0, π] kept; a cut point keeps its radius and goes
+  // to one of the two edges of the sector, angle 0 or π
+  std::set<long> ends;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    EXPECT_POINT_NEAR(eval("smartcrop", {0.3, 2}, 1, {1, 1}, {}, seed), 0.3, 2);
+    const Point c = eval("smartcrop", {0, -2}, 1, {1, 1}, {}, seed);
+    EXPECT_NEAR(std::abs(c.x), 2, 1e-12);
+    EXPECT_NEAR(c.y, 0, 1e-12);
+    ends.insert(std::lround(c.x));
+  }
+  EXPECT_EQ(ends.size(), 2u);
 }
 
 }  // namespace
