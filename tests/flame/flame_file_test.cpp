@@ -372,8 +372,9 @@ TEST(flame_file, picks_a_flame_by_name_or_index_and_needs_a_pick_among_several) 
 }
 
 TEST(flame_file, lists_each_flame_with_the_reason_it_cannot_be_rendered) {
-  const fs::path p = write_file(
-      "list.flame", flam3_flame("good") + flam3_flame("bad", "no_such_one=\"1\"") + flam3_flame(""));
+  const fs::path p =
+      write_file("list.flame",
+                 flam3_flame("good") + flam3_flame("bad", "no_such_one=\"1\"") + flam3_flame(""));
   const std::vector<FlameEntry> list = list_flames(p.string());
   ASSERT_EQ(list.size(), 3u);
   EXPECT_EQ(list[0].name, "good");
