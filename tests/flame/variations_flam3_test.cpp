@@ -395,5 +395,104 @@ TEST(variations_packs2, smartcrop_below_power_2_cuts_a_sector) {
   EXPECT_EQ(ends.size(), 2u);
 }
 
+TEST(variations_packs3, mirrors_and_rotations_are_planar_slices) {
+  std::set<long> signs;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    // ±|x|, y; the weight only switches it on (0.05 as one of the packs' flames writes)
+    const Point m = eval("mirror_x", {-3, 2}, 0.05, {}, {}, seed);
+    EXPECT_NEAR(std::abs(m.x), 3, 1e-12);
+    EXPECT_NEAR(m.y, 2, 1e-12);
+    signs.insert(std::lround(m.x));
+    const Point n = eval("mirror_y", {-3, 2}, 1, {}, {}, seed);
+    EXPECT_POINT_NEAR(n, -3, m.x > 0 ? 2 : -2);  // the same draw: the same sign
+  }
+  EXPECT_EQ(signs.size(), 2u);
+  // the turn by w·π/2 about x (y) at z = 0: y (x) times cos(w·π/2); w = ⅔: cos(π/3) = ½
+  EXPECT_POINT_NEAR(eval("rotate_x", {2, 3}, 2.0 / 3), 2, 1.5);
+  EXPECT_POINT_NEAR(eval("rotate_y", {2, 3}, 2.0 / 3), 1, 3);
+  EXPECT_POINT_NEAR(eval("rotate_y", {2, 3}, 1), 0, 3);  // a quarter turn: x seen edge on
+}
+
+TEST(variations_packs3, circlecrop_and_bcircle_keep_a_disc) {
+  EXPECT_POINT_NEAR(eval("circlecrop", {0.3, 0.4}, 2), 0.6, 0.8);  // inside: w·p
+  EXPECT_POINT_NEAR(eval("circlecrop", {3, 4}), 0, 0);             // outside, zero: the origin
+  // centre (1, 1), zero 0, scatter 0: d = (3, 4) → w·1·(0.6, 0.8) + (1, 1)
+  EXPECT_POINT_NEAR(eval("circlecrop", {4, 5}, 1, {1, 1, 1, 0, 0}), 1.6, 1.8);
+  // bcircle scale 2: (0.3, 0.4) → (0.6, 0.8), on the unit circle: kept
+  EXPECT_POINT_NEAR(eval("bcircle", {0.3, 0.4}, 1, {2, 0}), 0.6, 0.8);
+  EXPECT_POINT_NEAR(eval("bcircle", {3, 4}, 1, {1, 0}), 0, 0);  // no border: the origin
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    // scatter 1: radius 1 + Ψ/2 on d's ray; bcircle border 5: 1 + Ψ on q's ray
+    const Point c = eval("circlecrop", {4, 5}, 1, {1, 1, 1, 1, 0}, {}, seed);
+    const double rc = std::hypot(c.x - 1, c.y - 1);
+    EXPECT_TRUE(rc >= 1 && rc < 1.5) << rc;
+    EXPECT_NEAR((c.y - 1) / (c.x - 1), 4.0 / 3, 1e-9);
+    const Point b = eval("bcircle", {3, 4}, 1, {1, 5}, {}, seed);
+    const double rb = std::hypot(b.x, b.y);
+    EXPECT_TRUE(rb >= 1 && rb < 2) << rb;
+    EXPECT_NEAR(b.y / b.x, 4.0 / 3, 1e-9);
+  }
+}
+
+TEST(variations_packs3, shredlin_gnarly_bubble2_wdisc) {
+  // x = 1.25: n = 1, f = ¼: ¼·½ + 1 + ½·½ = 1.375; y = −¼: n = 0, f = −¼: −⅛ − ¼
+  EXPECT_POINT_NEAR(eval("shredlin", {1.25, -0.25}), 1.375, -0.375);
+  EXPECT_POINT_NEAR(eval("shredlin", {1.25, -0.25}, 1, {1, 1, 1, 1}), 1.25, -0.25);  // width 1
+  // gnarly: a cell's centre and its rim stay; (0.75, 0.5), l = (¼, 0) about (½, ½), |l|²/¼ =
+  // ¼: turned clockwise by ln ¼, i.e. anticlockwise by ln 4
+  EXPECT_POINT_NEAR(eval("gnarly", {0.5, 0.5}), 0.5, 0.5);
+  EXPECT_POINT_NEAR(eval("gnarly", {1, 0.5}), 1, 0.5);
+  const double t = std::log(4.0);
+  EXPECT_POINT_NEAR(eval("gnarly", {0.75, 0.5}), 0.5 + 0.25 * std::cos(t),
+                    0.5 + 0.25 * std::sin(t));
+  // bubble2: w·(x·bx, y·by)/(r²/4 + 1)
+  EXPECT_POINT_NEAR(eval("bubble2", {2, 0}), 1, 0);
+  EXPECT_POINT_NEAR(eval("bubble2", {2, 2}, 1, {3, 0.5, 0}), 2, 1.0 / 3);
+  // wdisc: radius φ/π, angle π/(r + 1), π minus it for φ > 0
+  EXPECT_POINT_NEAR(eval("wdisc", {-1, 0}), 0, 1);     // φ = π: 1·(cos π/2, sin π/2)
+  EXPECT_POINT_NEAR(eval("wdisc", {0, -1}), 0, -0.5);  // φ = −π/2: −½·(cos π/2, sin π/2)
+  EXPECT_POINT_NEAR(eval("wdisc", {3, 0}, 2), 0, 0);   // φ = 0
+}
+
+TEST(variations_packs3, blur3D_and_rblur_replay_their_draws) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    Rng rng(seed);
+    double u[6];
+    for (double& v : u) v = rng.uniform();
+    // blur3D, w = 2: ρ = 2·(u1 + u2 + u3 + u4 − 2), α = 2πu0, β = πu5: ρ·sin β·(cos α, sin α)
+    const double rho = 2 * (u[1] + u[2] + u[3] + u[4] - 2), a = 2 * kPi * u[0];
+    EXPECT_POINT_NEAR(eval("blur3D", {7, 7}, 2, {}, {}, seed),
+                      rho * std::sin(kPi * u[5]) * std::cos(a),
+                      rho * std::sin(kPi * u[5]) * std::sin(a));
+    // rblur at (3, 4): ρ = 2·1·(5 − 1) = 8, p + (u0 − ½, u1 − ½)·8; within offset: p
+    EXPECT_POINT_NEAR(eval("rblur", {3, 4}, 1, {}, {}, seed), 3 + (u[0] - 0.5) * 8,
+                      4 + (u[1] - 0.5) * 8);
+    EXPECT_POINT_NEAR(eval("rblur", {0.3, 0.4}, 2, {}, {}, seed), 0.6, 0.8);
+  }
+}
+
+TEST(variations_packs3, hypertile1_and_eJulia_take_their_branches) {
+  // hypertile1 p 3, q 7 at 0: w·ρ̄, |ρ| = R (hypertile2's), at a multiple of 2π/3
+  const double big_r = 1 / std::sqrt(1 + 1.5 / (std::cos(2 * kPi / 7) - 0.5));
+  std::set<long> turns, roots;
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    const Point h = eval("hypertile1", {0, 0}, 1, {}, {}, seed);
+    EXPECT_NEAR(std::hypot(h.x, h.y), big_r, 1e-9);
+    const double k = std::atan2(h.y, h.x) / (2 * kPi / 3);
+    EXPECT_NEAR(k, std::round(k), 1e-9);
+    turns.insert(std::lround(k));
+    // eJulia power 2 at z = i: cosh(w/2)² = (1 + cosh w)/2, so out² = (1 + i)/2
+    const Point e = eval("eJulia", {0, 1}, 1, {2}, {}, seed);
+    EXPECT_NEAR(e.x * e.x - e.y * e.y, 0.5, 1e-9);
+    EXPECT_NEAR(2 * e.x * e.y, 0.5, 1e-9);
+    roots.insert(e.x > 0);
+  }
+  EXPECT_EQ(turns.size(), 3u);
+  EXPECT_EQ(roots.size(), 2u);
+  // power 1: cosh(acosh(z)) = z, one branch
+  EXPECT_POINT_NEAR(eval("eJulia", {0.5, 0.25}, 1, {1}), 0.5, 0.25);
+  EXPECT_POINT_NEAR(eval("eJulia", {-2, -0.5}, 2, {1}), -4, -1);
+}
+
 }  // namespace
 }  // namespace ifsfx::flame
