@@ -182,33 +182,39 @@ Point smartcrop_sector(const SmartcropParams& k, const VariationInput& in, Rng& 
   return scaled(in.w * r, std::cos(to), std::sin(to));
 }
 
-// |power| ≥ 2: a regular polygon of n = |power| sides, apothem |radius|, the middles of its
-// sides at angles −π + k·α (α = 2π/n): the border's radius at angle φ is |radius|·coeff(φ),
-// coeff = 1/cos(t·α) with t the distance of (φ + π)/α from the nearest whole number, bent by
-// the rounding and raised to `distortion` (0: a circle). `edge` jitters that radius by
-// edge·(Ψ − ½) (drawn only when edge ≠ 0). A cut point goes to the origin (crop mode 0), keeps
-// its radius (−1), or goes onto the border moved out by coeff·(Ψ·scatter + offset) (1), its
-// angle turned by rotation·α.
+// zy0rg's regular polygon of n sides (α = 2π/n), as a multiple of its apothem: the border's
+// radius at the angle t·α from the middle of a side (t ∈ [0, ½]) is 1/cos(t·α), bent by the
+// rounding (roundstr ≠ 0: m = (2t)^roundwidth · 2·roundstr/(n·sin(α/2)), coeff ← |(1 − m)·coeff
+// + m|: the corners rounded, dimpled for larger roundstr) and raised to `distortion` (0: a
+// circle). smartcrop and smartshape share it.
+double polygon_border(double t, double n, double roundstr, double roundwidth, double distortion) {
+  if (distortion == 0) return 1;
+  const double alpha = 2 * kPi / n;
+  double coeff = 1 / std::cos(t * alpha);
+  if (roundstr != 0) {
+    double round_coeff = std::sin(alpha / 2);
+    if (round_coeff == 0) round_coeff = kEps;
+    round_coeff = roundstr / round_coeff / n * 2;
+    const double width = (roundwidth != 1 ? std::pow(2 * t, roundwidth) : 2 * t) * round_coeff;
+    coeff = std::abs((1 - width) * coeff + width);
+  }
+  return distortion != 1 ? std::pow(coeff, distortion) : coeff;
+}
+
+// |power| ≥ 2: the polygon of n = |power| sides, apothem |radius|, the middles of its sides at
+// angles −π + k·α (α = 2π/n): the border's radius at angle φ is |radius|·coeff, coeff =
+// polygon_border(t), t the distance of (φ + π)/α from the nearest whole number. `edge` jitters
+// that radius by edge·(Ψ − ½) (drawn only when edge ≠ 0). A cut point goes to the origin (crop
+// mode 0), keeps its radius (−1), or goes onto the border moved out by coeff·(Ψ·scatter +
+// offset) (1), its angle turned by rotation·α.
 Point smartcrop_polygon(const SmartcropParams& k, const VariationInput& in, Rng& rng) {
   const auto [x, y] = in.p;
   const double phi = std::atan2(y, x), r = std::hypot(x, y), n = std::abs(k.power);
   const double alpha = 2 * kPi / n;
-  double coeff = 1;
-  if (k.distortion != 0) {
-    double t = (phi + kPi) / alpha;
-    t -= std::trunc(t);
-    t = std::min(t, 1 - t);
-    coeff = 1 / std::cos(t * alpha);
-    if (k.roundstr != 0) {
-      double round_coeff = std::sin(alpha / 2);
-      if (round_coeff == 0) round_coeff = kEps;
-      round_coeff = k.roundstr / round_coeff / n * 2;
-      const double width =
-          (k.roundwidth != 1 ? std::pow(2 * t, k.roundwidth) : 2 * t) * round_coeff;
-      coeff = std::abs((1 - width) * coeff + width);
-    }
-    if (k.distortion != 1) coeff = std::pow(coeff, k.distortion);
-  }
+  double t = (phi + kPi) / alpha;
+  t -= std::trunc(t);
+  const double coeff =
+      polygon_border(std::min(t, 1 - t), n, k.roundstr, k.roundwidth, k.distortion);
   const double radius = std::abs(k.radius) + (k.edge != 0 ? k.edge * (psi(rng) - 0.5) : 0.0);
   const double border = coeff * radius;
   if ((r > border) != k.cut_outside()) return scaled(in.w, x, y);
@@ -232,6 +238,29 @@ Point smartcrop(const VariationInput& in, Rng& rng) {
   return std::abs(k.power) < 2 ? smartcrop_sector(k, in, rng) : smartcrop_polygon(k, in, rng);
 }
 
+// smartshape: the plane stretched radially so that circles about the origin become zy0rg's
+// polygon (n = max(power, 2) sides, apothem r): w·r·coeff at the angle φ, coeff = polygon_border
+// at φ's distance t from the nearest side's middle. With `compensation` > 0 (and distortion ≥ 1)
+// the angle is first remapped, t ← atan(2·tan(α/2)·t)/α, so that the points spread evenly along
+// each side.
+constexpr VariationParameter kSmartshape[] = {{"smartshape_power", 4},
+                                              {"smartshape_roundstr", 0},
+                                              {"smartshape_roundwidth", 1},
+                                              {"smartshape_distortion", 1},
+                                              {"smartshape_compensation", 0}};
+Point smartshape(const VariationInput& in, Rng&) {
+  const auto& k = in.params;
+  const double n = std::max(k[0], 2.0), alpha = 2 * kPi / n;
+  const double turns = (polar(in).phi() + kPi) / alpha, whole = std::floor(turns);
+  const double f = turns - whole;
+  const bool upper = f > 0.5;
+  double t = upper ? 1 - f : f;
+  if (k[4] > 0 && k[3] >= 1) t = std::atan(t * 2 * std::tan(alpha / 2)) / alpha;
+  const double coeff = polygon_border(t, n, k[1], k[2], k[3]);
+  const double a = (upper ? whole + 1 - t : whole + t) * alpha - kPi;
+  return scaled(in.w * coeff * polar(in).r(), std::cos(a), std::sin(a));
+}
+
 }  // namespace
 
 void add_pack2_variations(std::vector<Variation>& out) {
@@ -240,6 +269,7 @@ void add_pack2_variations(std::vector<Variation>& out) {
       {.name = "crackle", .parameters = kCrackle, .function = crackle, .kind = K::random},
       {.name = "hexes", .parameters = kHexes, .function = hexes},
       {.name = "smartcrop", .parameters = kSmartcrop, .function = smartcrop, .kind = K::random},
+      {.name = "smartshape", .parameters = kSmartshape, .function = smartshape},
   };
   out.insert(out.end(), std::begin(rows), std::end(rows));
 }

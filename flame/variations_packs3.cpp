@@ -170,6 +170,30 @@ Point e_julia(const VariationInput& in, Rng& rng) {
   return {in.w * std::cosh(mu) * std::cos(nu), in.w * std::sinh(mu) * std::sin(nu)};
 }
 
+// circleblur: a point uniform in the disc of radius w: √Ψ1·(cos 2πΨ2, sin 2πΨ2)·w (the area
+// grows as the square of the radius). Added to the point in pre_/post_ lists (Ember's rule).
+Point circleblur(const VariationInput& in, Rng& rng) {
+  const double rho = in.w * std::sqrt(psi(rng)), a = 2 * kPi * psi(rng);
+  return {rho * std::cos(a), rho * std::sin(a)};
+}
+
+// pow_block: z^(n/d) with its d branches: w·r^P·(cos θ, sin θ), θ = n·(φ + root·2π·⌊Ψ·d⌋)/d,
+// P = n/(d·correctn/correctd) (the radius' power may be corrected apart from the angle's).
+constexpr VariationParameter kPowBlock[] = {{"pow_block_numerator", 3},
+                                            {"pow_block_denominator", 2},
+                                            {"pow_block_root", 1},
+                                            {"pow_block_correctn", 1},
+                                            {"pow_block_correctd", 1}};
+Point pow_block(const VariationInput& in, Rng& rng) {
+  const auto& k = in.params;
+  const double d = k[1] == 0 ? kEps : k[1];
+  double p_den = d * k[3] / k[4];
+  if (p_den == 0) p_den = kEps;
+  const double rho = in.w * std::pow(polar(in).r2(), 0.5 * k[0] / p_den);
+  const double theta = (polar(in).phi() / d + k[2] * 2 * kPi * std::floor(psi(rng) * d) / d) * k[0];
+  return {rho * std::cos(theta), rho * std::sin(theta)};
+}
+
 }  // namespace
 
 void add_pack3_variations(std::vector<Variation>& out) {
@@ -189,6 +213,8 @@ void add_pack3_variations(std::vector<Variation>& out) {
       {.name = "bubble2", .parameters = kBubble2, .function = bubble2},
       {.name = "wdisc", .function = wdisc},
       {.name = "eJulia", .parameters = kEJulia, .function = e_julia, .kind = K::random},
+      {.name = "circleblur", .function = circleblur, .kind = K::random, .assign = Assign::add},
+      {.name = "pow_block", .parameters = kPowBlock, .function = pow_block, .kind = K::random},
   };
   out.insert(out.end(), std::begin(rows), std::end(rows));
 }

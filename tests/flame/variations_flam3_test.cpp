@@ -494,5 +494,43 @@ TEST(variations_packs3, hypertile1_and_eJulia_take_their_branches) {
   EXPECT_POINT_NEAR(eval("eJulia", {-2, -0.5}, 2, {1}), -4, -1);
 }
 
+TEST(variations_packs3, smartshape_maps_circles_onto_the_polygon) {
+  // power 4: the unit circle onto the square [−1, 1]², each point on its own ray
+  EXPECT_POINT_NEAR(eval("smartshape", {1, 0}), 1, 0);  // a side's middle: coeff 1
+  const double h = std::sqrt(0.5);
+  EXPECT_POINT_NEAR(eval("smartshape", {h, h}), 1, 1);  // a corner: coeff √2
+  EXPECT_POINT_NEAR(eval("smartshape", {3 / std::sqrt(10.0), 1 / std::sqrt(10.0)}), 1, 1.0 / 3);
+  EXPECT_POINT_NEAR(eval("smartshape", {0.3, 0.4}, 2, {4, 0, 1, 0, 0}), 0.6, 0.8);  // circle
+  // compensation: the angle π/8, half way to the corner, goes half way along the side:
+  // t = ¼ → atan(2·tan(π/4)·¼)/(π/2), the angle atan ½, on the side x = 1: (1, ½)
+  EXPECT_POINT_NEAR(eval("smartshape", {std::cos(kPi / 8), std::sin(kPi / 8)}, 1, {4, 0, 1, 1, 1}),
+                    1, 0.5);
+}
+
+TEST(variations_packs3, circleblur_and_pow_block) {
+  std::set<long> branches;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    Rng rng(seed);
+    const double u0 = rng.uniform(), u1 = rng.uniform();
+    // w·√u0·(cos 2πu1, sin 2πu1)
+    EXPECT_POINT_NEAR(eval("circleblur", {5, 5}, 2, {}, {}, seed),
+                      2 * std::sqrt(u0) * std::cos(2 * kPi * u1),
+                      2 * std::sqrt(u0) * std::sin(2 * kPi * u1));
+    // 4^(3/2) = 8 at angle 0 or 3π (the two square roots, cubed)
+    const Point p = eval("pow_block", {4, 0}, 1, {}, {}, seed);
+    EXPECT_NEAR(std::abs(p.x), 8, 1e-9);
+    EXPECT_NEAR(p.y, 0, 1e-9);
+    branches.insert(std::lround(p.x));
+    // i^(3/2): angle 3π/4 (+ 3π): ±(−√½, √½)
+    const Point q = eval("pow_block", {0, 1}, 1, {}, {}, seed);
+    EXPECT_NEAR(q.x, -q.y, 1e-9);
+    EXPECT_NEAR(std::hypot(q.x, q.y), 1, 1e-9);
+    // correctn 2: the radius' power 3/(2·2): |16^0.75| = 8
+    const Point c = eval("pow_block", {16, 0}, 1, {3, 2, 1, 2, 1}, {}, seed);
+    EXPECT_NEAR(std::hypot(c.x, c.y), 8, 1e-9);
+  }
+  EXPECT_EQ(branches.size(), 2u);
+}
+
 }  // namespace
 }  // namespace ifsfx::flame
