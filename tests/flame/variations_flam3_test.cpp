@@ -532,5 +532,56 @@ TEST(variations_packs3, circleblur_and_pow_block) {
   EXPECT_EQ(branches.size(), 2u);
 }
 
+TEST(variations_packs4, y_sums_its_shapes_and_puts_the_point_at_w_T2_over_r) {
+  //           hypergon  n  r_h  star  n  slope  lituus  a  super  m  n1 n2 n3
+  // lituus, a = 1: T = |φ/π + 1|⁻¹; at (0, 2), φ = π/2: T = ⅔, T²/r = (4/9)/2
+  EXPECT_POINT_NEAR(eval("y", {1, 0}, 1, {0, 4, 1, 0, 5, 2, 1, 1}), 1, 0);
+  EXPECT_POINT_NEAR(eval("y", {0, 2}, 1, {0, 4, 1, 0, 5, 2, 1, 1}), 0, 2.0 / 9);
+  // super, m = 0: T = (1 + 0)^(−1) = 1 at (3, 4): (1/5)·(0.6, 0.8)
+  EXPECT_POINT_NEAR(eval("y", {3, 4}, 1, {0, 4, 1, 0, 5, 2, 0, 1, 1, 0, 1, 1, 1}), 0.12, 0.16);
+  // hypergon n 4, r_h 1 at φ = π/4: a = 0, s = 1 < d² = 2: T = √2 − 1; T²/√2 on the diagonal
+  const double h = (3 - 2 * std::sqrt(2.0)) / 2;
+  EXPECT_POINT_NEAR(eval("y", {1, 1}, 1, {1, 4, 1}), h, h);
+  // star n 4, slope π/4 at φ = π/4: b = 0: T = √(1·1)/(0 + 1) = 1: (1/√2)·(1/√2, 1/√2)
+  EXPECT_POINT_NEAR(eval("y", {1, 1}, 1, {0, 4, 1, 1, 4, kPi / 4}), 0.5, 0.5);
+}
+
+TEST(variations_packs4, falloff3_blurs_by_the_distance_beyond_min_distance) {
+  for (double type : {0, 1, 2})  // d = 0.5 = min_distance: dist 0, w·p
+    EXPECT_POINT_NEAR(eval("falloff3", {0.3, 0.4}, 2, {type}), 0.6, 0.8);
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    Rng rng(seed);
+    double u[3];
+    for (double& v : u) v = rng.uniform() - 0.5;
+    // centre (0, 0, 3) at (4, 0): d = 5, dist = (5 − 0.5)·0.04 = 0.18
+    const double dist = 0.18;
+    // Gaussian: (4, 0) + dist·u_x·cos(2π·dist·u_y)·(cos(π·dist·u_z), sin(π·dist·u_z))
+    const double g = dist * u[0] * std::cos(2 * kPi * dist * u[1]);
+    EXPECT_POINT_NEAR(eval("falloff3", {4, 0}, 1, {0, 0, 1, 0.5, 0, 1, 1, 0, 0, 0, 0, 3}, {}, seed),
+                      4 + g * std::cos(kPi * dist * u[2]), g * std::sin(kPi * dist * u[2]));
+    // radial: radius 4 + u_x·dist, angle u_y·dist
+    const double r = 4 + u[0] * dist, a = u[1] * dist;
+    EXPECT_POINT_NEAR(eval("falloff3", {4, 0}, 1, {1, 0, 1, 0.5, 0, 1, 1, 0, 0, 0, 0, 3}, {}, seed),
+                      r * std::cos(a), r * std::sin(a));
+    // logarithmic, alpha 0: (4, 0) + L(1)·S(u)·dist, L(1) = (e + 1)/4, S(u) = ln(e(|u| +
+    // 1))/e·sign u; square shape: d = max(4, 0, 3) = 4, dist = 3.5·0.04
+    const double e = std::numbers::e, l1 = (e + 1) / 4, d2 = 3.5 * 0.04;
+    const auto s = [&](double v) { return std::log(e * (std::abs(v) + 1)) / e * (v < 0 ? -1 : 1); };
+    EXPECT_POINT_NEAR(eval("falloff3", {4, 0}, 1, {2, 1, 1, 0.5, 0, 1, 1, 0, 0, 0, 0, 3}, {}, seed),
+                      4 + l1 * s(u[0]) * d2, l1 * s(u[1]) * d2);
+  }
+}
+
+TEST(variations_packs4, hypertile3D2_is_hypertile2_at_z0) {
+  // p 4, q 5: R = 1/√(1 + 1/cos(2π/5)) (cos(2π/4) = 0); 0 ↦ R turned by a multiple of π/2
+  const double big_r = 1 / std::sqrt(1 + 1 / std::cos(2 * kPi / 5));
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const Point h = eval("hypertile3D2", {0, 0}, 1, {4, 5}, {}, seed);
+    EXPECT_NEAR(std::hypot(h.x, h.y), big_r, 1e-9);
+    const Point a = eval("hypertile3D2", {0.3, -0.2}, 0.7, {4, 5}, {}, seed);
+    EXPECT_POINT_NEAR(eval("hypertile2", {0.3, -0.2}, 0.7, {4, 5}, {}, seed), a.x, a.y);
+  }
+}
+
 }  // namespace
 }  // namespace ifsfx::flame
