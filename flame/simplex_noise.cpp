@@ -16,11 +16,12 @@ struct Vec3 {
 };
 
 constexpr std::size_t kGradients = 256;
+using Gradients = std::array<Vec3, kGradients>;
 
 // kGradients unit vectors, uniform on the sphere (z = 2u − 1 and a uniform angle about z: the
 // sphere's area is uniform in z, Archimedes' hat-box theorem), from a fixed seed.
-std::array<Vec3, kGradients> make_gradients() {
-  std::array<Vec3, kGradients> g{};
+Gradients make_gradients() {
+  Gradients g{};
   Rng rng(0x5eed'c4ac'c1e0ULL);
   for (Vec3& v : g) {
     const double z = 2 * rng.uniform() - 1, a = 2 * std::numbers::pi * rng.uniform();
@@ -31,49 +32,58 @@ std::array<Vec3, kGradients> make_gradients() {
 }
 
 // Built once, never changed: constant data, like a table in the source.
-const std::array<Vec3, kGradients>& gradients() {
-  static const std::array<Vec3, kGradients> g = make_gradients();
+const Gradients& gradients() {
+  static const Gradients g = make_gradients();
   return g;
 }
 
-// The gradient of lattice corner (i, j, k).
-const Vec3& gradient(std::int64_t i, std::int64_t j, std::int64_t k) {
+// Lattice corner (i, j, k)'s kernel at the offset d from it: (0.6 − |d|²)⁴·(g·d), g its
+// gradient (the table's entry a hash of the corner picks), 0 beyond |d|² = 0.6.
+double corner(const Gradients& table, Vec3 d, std::int64_t i, std::int64_t j, std::int64_t k) {
+  double f = 0.6 - d.x * d.x - d.y * d.y - d.z * d.z;
+  if (f <= 0) return 0;
   const auto u = [](std::int64_t v) { return static_cast<std::uint64_t>(v); };
   const std::uint64_t h = mix64(u(i) * 0x9e3779b97f4a7c15ULL ^ u(j) * 0xc2b2ae3d27d4eb4fULL ^
                                 u(k) * 0x165667b19e3779f9ULL);
-  return gradients()[h % kGradients];
+  const Vec3& g = table[h % kGradients];
+  f *= f;
+  return f * f * (g.x * d.x + g.y * d.y + g.z * d.z);
 }
 
 }  // namespace
 
 double simplex_noise(double x, double y, double z) {
-  constexpr double kSkew = 1.0 / 3, kUnskew = 1.0 / 6;
-  const double s = (x + y + z) * kSkew;
-  const auto i = static_cast<std::int64_t>(std::floor(x + s));
-  const auto j = static_cast<std::int64_t>(std::floor(y + s));
-  const auto k = static_cast<std::int64_t>(std::floor(z + s));
-  const double t = static_cast<double>(i + j + k) * kUnskew;
-  const Vec3 d0{x - (static_cast<double>(i) - t), y - (static_cast<double>(j) - t),
-                z - (static_cast<double>(k) - t)};
-  // The tetrahedron: the corners are visited along the axes in the order of d0's components,
-  // largest first.
-  const int ax = d0.x >= d0.y ? (d0.x >= d0.z ? 0 : 2) : (d0.y >= d0.z ? 1 : 2);
-  const int az = d0.x < d0.y ? (d0.x < d0.z ? 0 : 2) : (d0.y < d0.z ? 1 : 2);
-  std::array<int, 3> step1{}, step2{1, 1, 1};
-  step1[static_cast<std::size_t>(ax)] = 1;
-  step2[static_cast<std::size_t>(az)] = 0;
-  const std::array<std::array<int, 3>, 4> corner{{{0, 0, 0}, step1, step2, {1, 1, 1}}};
-  double n = 0;
-  for (std::size_t c = 0; c < 4; ++c) {
-    const double back = static_cast<double>(c) * kUnskew;
-    const Vec3 d{d0.x - corner[c][0] + back, d0.y - corner[c][1] + back,
-                 d0.z - corner[c][2] + back};
-    double f = 0.6 - d.x * d.x - d.y * d.y - d.z * d.z;
-    if (f <= 0) continue;
-    const Vec3& g = gradient(i + corner[c][0], j + corner[c][1], k + corner[c][2]);
-    f *= f;
-    n += f * f * (g.x * d.x + g.y * d.y + g.z * d.z);
+  constexpr double kUnskew = 1.0 / 6;
+  const double s = (x + y + z) / 3;
+  const double fi = std::floor(x + s), fj = std::floor(y + s), fk = std::floor(z + s);
+  const double t = (fi + fj + fk) * kUnskew;
+  const double x0 = x - (fi - t), y0 = y - (fj - t), z0 = z - (fk - t);
+  // The tetrahedron holding (x0, y0, z0): its second corner is one step along the axis of the
+  // largest component, its third one step along all but the smallest (Gustavson's table).
+  int i1 = 0, j1 = 0, k1 = 0, i2 = 1, j2 = 1, k2 = 1;
+  if (x0 >= y0) {
+    if (y0 >= z0) {
+      i1 = 1, k2 = 0;  // x ≥ y ≥ z
+    } else if (x0 >= z0) {
+      i1 = 1, j2 = 0;  // x ≥ z > y
+    } else {
+      k1 = 1, j2 = 0;  // z > x ≥ y
+    }
+  } else if (y0 < z0) {
+    k1 = 1, i2 = 0;  // z > y > x
+  } else if (x0 < z0) {
+    j1 = 1, i2 = 0;  // y ≥ z > x
+  } else {
+    j1 = 1, k2 = 0;  // y > x ≥ z
   }
+  const auto i = static_cast<std::int64_t>(fi), j = static_cast<std::int64_t>(fj),
+             k = static_cast<std::int64_t>(fk);
+  const Gradients& g = gradients();
+  double n = corner(g, {x0, y0, z0}, i, j, k);
+  n += corner(g, {x0 - i1 + kUnskew, y0 - j1 + kUnskew, z0 - k1 + kUnskew}, i + i1, j + j1, k + k1);
+  n += corner(g, {x0 - i2 + 2 * kUnskew, y0 - j2 + 2 * kUnskew, z0 - k2 + 2 * kUnskew}, i + i2,
+              j + j2, k + k2);
+  n += corner(g, {x0 - 0.5, y0 - 0.5, z0 - 0.5}, i + 1, j + 1, k + 1);
   return 32 * n;
 }
 

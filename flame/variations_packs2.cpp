@@ -53,6 +53,7 @@ struct CrackleCells {
   double s, distort, z;
 
   Point centre(double i, double j) const {
+    if (distort == 0) return {i * s, j * s};
     const double a = 2.5 * i, b = 2.5 * j, c = 2.5 * z;
     return {(i + distort * simplex_noise(a, b, c)) * s,
             (j + distort * simplex_noise(b + 30.2, a - 12.1, c + 19.8)) * s};
@@ -63,6 +64,20 @@ struct CrackleCells {
     std::array<Point, 9> p{};
     for (std::size_t q = 0; q < 9; ++q)
       p[q] = centre(i + static_cast<double>(q / 3) - 1, j + static_cast<double>(q % 3) - 1);
+    return p;
+  }
+  // The block about (i, j), the middle of `old` (the block about (i − di, j − dj)) moved by
+  // (di, dj): the centres the two share are taken from `old` (the noise is the cost).
+  std::array<Point, 9> moved(const std::array<Point, 9>& old, double i, double j, int di,
+                             int dj) const {
+    std::array<Point, 9> p{};
+    for (int q = 0; q < 9; ++q) {
+      const int a = q / 3 + di, b = q % 3 + dj;
+      p[static_cast<std::size_t>(q)] =
+          a >= 0 && a <= 2 && b >= 0 && b <= 2
+              ? old[static_cast<std::size_t>(a * 3 + b)]
+              : centre(i + static_cast<double>(q / 3 - 1), j + static_cast<double>(q % 3 - 1));
+    }
     return p;
   }
 };
@@ -88,9 +103,10 @@ Point crackle(const VariationInput& in, Rng& rng) {
   // The nearest of the nine need not be the middle one: the block is made again about it so
   // that its cell is surrounded.
   if (const std::size_t q = nearest(p, u); q != 4) {
-    i += static_cast<double>(q / 3) - 1;
-    j += static_cast<double>(q % 3) - 1;
-    p = cells.block(i, j);
+    const int di = static_cast<int>(q / 3) - 1, dj = static_cast<int>(q % 3) - 1;
+    i += di;
+    j += dj;
+    p = cells.moved(p, i, j, di, dj);
   }
   double level = cell_level(p, 4, u);
   if (level == 0) level = kEps;
