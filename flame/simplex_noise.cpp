@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "flame/detail/simplex_noise.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -76,8 +77,13 @@ double simplex_noise(double x, double y, double z) {
   } else {
     j1 = 1, k2 = 0;  // y > x ≥ z
   }
-  const auto i = static_cast<std::int64_t>(fi), j = static_cast<std::int64_t>(fj),
-             k = static_cast<std::int64_t>(fk);
+  // The corner's whole coordinates, for its hash only: beyond ±2⁶² (a noise read at 10¹⁹ and
+  // more, or not a number) the noise means nothing anyway; the clamp keeps the conversion
+  // defined.
+  const auto whole = [](double v) {
+    return std::isnan(v) ? 0 : static_cast<std::int64_t>(std::clamp(v, -0x1p62, 0x1p62));
+  };
+  const std::int64_t i = whole(fi), j = whole(fj), k = whole(fk);
   const Gradients& g = gradients();
   double n = corner(g, {x0, y0, z0}, i, j, k);
   n += corner(g, {x0 - i1 + kUnskew, y0 - j1 + kUnskew, z0 - k1 + kUnskew}, i + i1, j + j1, k + k1);

@@ -30,7 +30,7 @@ Point falloff2(const VariationInput& in, Rng& rng) {
   const double d = std::sqrt((x - k[6]) * (x - k[6]) + (y - k[7]) * (y - k[7]) + k[8] * k[8]);
   const double db = k[9] != 0 ? std::max(1 - d, 0.0) : d;
   const double dist = std::max((db - k[1]) * 0.04 * k[0], 0.0);
-  const int type = static_cast<int>(k[10]);
+  const int type = mode_of(k[10]);
   if (type == 0) return scaled(in.w, x + k[2] * ux * dist, y + k[3] * uy * dist);
   if (type == 1) {
     if (x == 0 && y == 0) return {0, 0};

@@ -171,7 +171,7 @@ struct SmartcropParams {
         scatter(k[6]),
         offset(k[7]),
         rotation(k[8]),
-        cropmode(static_cast<int>(k[9])) {}
+        cropmode(mode_of(k[9])) {}
   // Which side is cut: the outside when power and radius have the same sign, else the inside.
   bool cut_outside() const { return (power > 0) == (radius > 0); }
 };

@@ -87,7 +87,7 @@ Point falloff3(const VariationInput& in, Rng& rng) {
                              : std::max({std::abs(dx), std::abs(dy), std::abs(dz)});
   const double rmax = 0.04 * k[2];
   const double dist = std::max(((k[4] != 0 ? std::max(1 - d, 0.0) : d) - k[3]) * rmax, 0.0);
-  const int type = static_cast<int>(k[0]);
+  const int type = mode_of(k[0]);
   if (type == 0) {
     const double sigma = dist * uy * 2 * kPi, phi = dist * uz * kPi, rad = dist * ux;
     return scaled(in.w, x + k[5] * rad * std::cos(sigma) * std::cos(phi),

@@ -3,6 +3,7 @@
 // Reckase, appendix, "Catalog of Variations": r, θ, φ, Ω, Λ, Ψ).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -48,6 +49,13 @@ inline double lambda(Rng& rng) {
 inline double sum_of_four(Rng& rng) {
   const double a = psi(rng), b = psi(rng), c = psi(rng), d = psi(rng);
   return a + b + c + d - 2.0;
+}
+
+// A parameter that picks a mode (a type, a crop mode) as a whole number: truncated, and kept
+// within int's range so that any finite value a file holds converts without undefined
+// behaviour (the fuzzer's sanitizers check it).
+inline int mode_of(double v) {
+  return std::isnan(v) ? 0 : static_cast<int>(std::clamp(std::trunc(v), -1e9, 1e9));
 }
 
 inline Point scaled(double w, double x, double y) {
