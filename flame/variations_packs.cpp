@@ -30,7 +30,7 @@ Point falloff2(const VariationInput& in, Rng& rng) {
   const double d = std::sqrt((x - k[6]) * (x - k[6]) + (y - k[7]) * (y - k[7]) + k[8] * k[8]);
   const double db = k[9] != 0 ? std::max(1 - d, 0.0) : d;
   const double dist = std::max((db - k[1]) * 0.04 * k[0], 0.0);
-  const int type = static_cast<int>(k[10]);
+  const int type = mode_of(k[10]);
   if (type == 0) return scaled(in.w, x + k[2] * ux * dist, y + k[3] * uy * dist);
   if (type == 1) {
     if (x == 0 && y == 0) return {0, 0};
@@ -139,6 +139,8 @@ Point twoface(const VariationInput& in, Rng&) {
 // multiple k of 2π/p (k = ⌊32767·Ψ⌋, as the plugin draws it), R = 1/√(1 − (cos a − 1)/(cos a +
 // cos(2π/q))), a = 2π/p (R = 1 when the root's argument is not positive): the {p, q} tiling.
 constexpr VariationParameter kHypertile2[] = {{"hypertile2_p", 3}, {"hypertile2_q", 7}};
+// hypertile3D2 at z = 0 is hypertile2's map (its 3-D form of the same Möbius map, z = 0).
+constexpr VariationParameter kHypertile3D2[] = {{"hypertile3D2_p", 3}, {"hypertile3D2_q", 7}};
 Point hypertile2(const VariationInput& in, Rng& rng) {
   const double p = in.params[0] == 0 ? kEps : in.params[0];
   const double q = in.params[1] == 0 ? kEps : in.params[1];
@@ -221,6 +223,10 @@ void add_pack_variations(std::vector<Variation>& out) {
       {.name = "curl3D", .parameters = kCurl3D, .function = curl_3d},
       {.name = "twoface", .function = twoface},
       {.name = "hypertile2", .parameters = kHypertile2, .function = hypertile2, .kind = K::random},
+      {.name = "hypertile3D2",
+       .parameters = kHypertile3D2,
+       .function = hypertile2,
+       .kind = K::random},
       {.name = "gaussian", .function = gaussian, .kind = K::random},
       {.name = "crop", .parameters = kCrop, .function = crop, .kind = K::random},
       {.name = "bTransform", .parameters = kBTransform, .function = b_transform, .kind = K::random},

@@ -3,6 +3,7 @@
 // Reckase, appendix, "Catalog of Variations": r, θ, φ, Ω, Λ, Ψ).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -50,6 +51,13 @@ inline double sum_of_four(Rng& rng) {
   return a + b + c + d - 2.0;
 }
 
+// A parameter that picks a mode (a type, a crop mode) as a whole number: truncated, and kept
+// within int's range so that any finite value a file holds converts without undefined
+// behaviour (the fuzzer's sanitizers check it).
+inline int mode_of(double v) {
+  return std::isnan(v) ? 0 : static_cast<int>(std::clamp(std::trunc(v), -1e9, 1e9));
+}
+
 inline Point scaled(double w, double x, double y) {
   return {w * x, w * y};
 }
@@ -60,6 +68,9 @@ void add_flam3_variations(std::vector<Variation>& out);
 void add_complex_variations(std::vector<Variation>& out);
 void add_more_variations(std::vector<Variation>& out);
 void add_pack_variations(std::vector<Variation>& out);
+void add_pack2_variations(std::vector<Variation>& out);
+void add_pack3_variations(std::vector<Variation>& out);
+void add_pack4_variations(std::vector<Variation>& out);
 
 // The Möbius map w·(a·z + b)/(c·z + d) of complex a, b, c, d given as params[0..7] (re a, im a,
 // re b, ..., im d): flam3's mobius and Apophysis' Mobius plugin, under different parameter names.

@@ -336,8 +336,8 @@ TEST(flame_file, errors_name_the_file_the_flame_and_the_attribute) {
   bad_coef.replace(bad_coef.find("coefs=\"1 2 3"), 14, "coefs=\"1 2 inf");
   EXPECT_STREQ(parse_error(bad_coef).what(),
                "t.flame: flame \"c\": xform 0: coefs: a finite number is needed (got \"inf\")");
-  EXPECT_STREQ(parse_error(flam3_flame("u", "crackle=\"0.5\" crackle_cellsize=\"1\"")).what(),
-               "t.flame: flame \"u\": xform 0: unknown variation \"crackle\"");
+  EXPECT_STREQ(parse_error(flam3_flame("u", "no_such_one=\"0.5\" no_such_one_size=\"1\"")).what(),
+               "t.flame: flame \"u\": xform 0: unknown variation \"no_such_one\"");
   EXPECT_STREQ(parse_error(flam3_flame("q", "julian_foo=\"1\"")).what(),
                "t.flame: flame \"q\": xform 0: unknown parameter \"julian_foo\" of variation "
                "\"julian\"");
@@ -372,15 +372,16 @@ TEST(flame_file, picks_a_flame_by_name_or_index_and_needs_a_pick_among_several) 
 }
 
 TEST(flame_file, lists_each_flame_with_the_reason_it_cannot_be_rendered) {
-  const fs::path p = write_file(
-      "list.flame", flam3_flame("good") + flam3_flame("bad", "crackle=\"1\"") + flam3_flame(""));
+  const fs::path p =
+      write_file("list.flame",
+                 flam3_flame("good") + flam3_flame("bad", "no_such_one=\"1\"") + flam3_flame(""));
   const std::vector<FlameEntry> list = list_flames(p.string());
   ASSERT_EQ(list.size(), 3u);
   EXPECT_EQ(list[0].name, "good");
   EXPECT_EQ(list[0].xforms, 2u);
   EXPECT_TRUE(list[0].problem.empty());
   EXPECT_EQ(list[1].problem,
-            p.string() + ": flame \"bad\": xform 0: unknown variation \"crackle\"");
+            p.string() + ": flame \"bad\": xform 0: unknown variation \"no_such_one\"");
   EXPECT_EQ(list[2].index, 2u);
 }
 

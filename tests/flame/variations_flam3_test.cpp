@@ -6,6 +6,7 @@
 #include <numbers>
 #include <set>
 
+#include "flame/detail/simplex_noise.h"
 #include "variation_check.h"
 
 namespace ifsfx::flame {
@@ -282,6 +283,303 @@ TEST(variations_packs, crop_puts_points_back_into_its_rectangle) {
     const Point c = eval("crop", {3, -5}, 1, {1, -1, 1, -1, 1, 0}, {}, seed);
     EXPECT_TRUE(c.x > 0 && c.x <= 1) << c.x;
     EXPECT_TRUE(c.y >= -1 && c.y < 0) << c.y;
+  }
+}
+
+// crackle reads no point: it draws u = b·(sin θ, cos θ), b = (Ψ1 + Ψ2)/2 + (Ψ3 − ½)/4, θ = 2πΨ4,
+// from the walker's generator, which the test replays with the same seed.
+Point crackle_draw(std::uint64_t seed) {
+  Rng rng(seed);
+  const double u1 = rng.uniform(), u2 = rng.uniform(), u3 = rng.uniform(), u4 = rng.uniform();
+  const double b = (u1 + u2) / 2 + (u3 - 0.5) / 4, theta = 2 * kPi * u4;
+  return {b * std::sin(theta), b * std::cos(theta)};
+}
+
+TEST(variations_packs2, crackle_moves_its_draw_within_square_cells_without_distortion) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Point u = crackle_draw(seed);
+    // power 1, scale 1: L^1/L = 1, u itself whatever the cells; w = 2 doubles it
+    EXPECT_POINT_NEAR(eval("crackle", {9, 9}, 2, {1, 1, 0.7, 1, 0}, {}, seed), 2 * u.x, 2 * u.y);
+    // cellsize 1, distort 0: centres on the lattice s·(i, j), s = ½, the cells squares of side
+    // ½ about them. Scale 0: the centre nearest u, round(2u)/2.
+    const Point c{std::round(2 * u.x) / 2, std::round(2 * u.y) / 2};
+    EXPECT_POINT_NEAR(eval("crackle", {9, 9}, 1, {1, 0.2, 0, 0, 0}, {}, seed), c.x, c.y);
+    // Power 0, scale 1: u − c divided by its level L = 2·max(|dx|, |dy|)/s (the nearest
+    // neighbour's bisector at s/2): onto the cell's edge, on the ray from c through u.
+    const double dx = u.x - c.x, dy = u.y - c.y, level = 4 * std::max(std::abs(dx), std::abs(dy));
+    EXPECT_POINT_NEAR(eval("crackle", {9, 9}, 1, {1, 0, 0, 1, 0}, {}, seed), c.x + dx / level,
+                      c.y + dy / level);
+  }
+  EXPECT_POINT_NEAR(eval("crackle", {9, 9}, 1, {0}), 0, 0);  // cellsize 0: no cells, nothing
+}
+
+TEST(variations_packs2, crackle_distorts_its_centres_by_a_bounded_noise) {
+  // The simplex noise is 0 at a lattice corner (its own offset 0, the other corners' offsets
+  // |d|² = (5/6)² + 2·(1/6)² = 0.75 > 0.6 out of reach) and stays within [−1, 1].
+  EXPECT_EQ(detail::simplex_noise(0, 0, 0), 0);
+  EXPECT_EQ(detail::simplex_noise(1, 2, -3), 0);  // skewed: (1, 2, −3) + 0 is a corner too
+  double lo = 0, hi = 0;
+  for (int i = 0; i < 2000; ++i) {
+    const double n = detail::simplex_noise(0.37 * i, 0.11 * i - 5, 0.05 * i);
+    lo = std::min(lo, n);
+    hi = std::max(hi, n);
+  }
+  EXPECT_TRUE(lo > -1.1 && lo < -0.3 && hi < 1.1 && hi > 0.3) << lo << " " << hi;
+  // distort 1, scale 0: the centre of u's cell, s·(i + n(2.5i, 2.5j, 0), j + n(2.5j + 30.2,
+  // 2.5i − 12.1, 19.8)), s = ½, of the cell (i, j) whose centre is the nearest to u
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const Point u = crackle_draw(seed);
+    const Point got = eval("crackle", {9, 9}, 1, {1, 0.2, 1, 0, 0}, {}, seed);
+    double best = 1e9;
+    Point nearest{};
+    for (int i = -6; i <= 6; ++i)
+      for (int j = -6; j <= 6; ++j) {
+        const Point c{(i + detail::simplex_noise(2.5 * i, 2.5 * j, 0)) / 2,
+                      (j + detail::simplex_noise(2.5 * j + 30.2, 2.5 * i - 12.1, 19.8)) / 2};
+        const double d = std::hypot(c.x - u.x, c.y - u.y);
+        if (d < best) best = d, nearest = c;
+      }
+    EXPECT_POINT_NEAR(got, nearest.x, nearest.y);
+  }
+}
+
+TEST(variations_packs2, hexes_scales_and_turns_within_hexagonal_cells) {
+  // cellsize 1: centres (3/2·(a − b), √3/2·(a + b)), six neighbours √3 away; at (0.3, 0) in the
+  // cell of the origin, the level is 2·(0.3·1.5)/3 = 0.3 (the neighbours (1.5, ±√3/2)).
+  EXPECT_POINT_NEAR(eval("hexes", {0.3, 0}, 1, {1, 1, 0, 1}), 0.3, 0);   // power 1: p
+  EXPECT_POINT_NEAR(eval("hexes", {0.3, 0}, 1, {1, 2, 0, 1}), 0.09, 0);  // level 0.3²
+  EXPECT_POINT_NEAR(eval("hexes", {0.2, 0}, 2, {1, 1, 0, 2}), 0.8, 0);   // scale 2, w 2
+  const double r3 = std::sqrt(3.0);
+  EXPECT_POINT_NEAR(eval("hexes", {1.6, r3 / 2 - 0.1}, 1, {1, 1, 0, 1}), 1.6, r3 / 2 - 0.1);
+  // rotate ¼: a quarter turn clockwise about the centre, (0.1, 0) → (0, −0.1); levels 0.1 and
+  // 2·(0.1·√3)/3 < ½, so the scale is L1^1/L1 = 1
+  EXPECT_POINT_NEAR(eval("hexes", {0.1, 0}, 1, {1, 1, 0.25, 1}), 0, -0.1);
+  // about the centre (0, √3) of cell (1, 1): (0.1, √3) → (0, √3 − 0.1)
+  EXPECT_POINT_NEAR(eval("hexes", {0.1, r3}, 1, {1, 1, 0.25, 1}), 0, r3 - 0.1);
+}
+
+TEST(variations_packs2, smartcrop_cuts_to_a_polygon_and_puts_cut_points_on_its_border) {
+  // power 4, radius 1: the square [−1, 1]² (apothem 1, its sides' middles at −π, −π/2, 0, π/2)
+  EXPECT_POINT_NEAR(eval("smartcrop", {0.5, -0.5}, 2), 1, -1);  // inside: w·p
+  EXPECT_POINT_NEAR(eval("smartcrop", {2, 0}), 1, 0);           // onto the border, same angle
+  EXPECT_POINT_NEAR(eval("smartcrop", {2, 2}), 1, 1);           // a corner: 1/cos(π/4)
+  EXPECT_POINT_NEAR(eval("smartcrop", {3, 1}), 1, 1.0 / 3);     // the side x = 1
+  EXPECT_POINT_NEAR(eval("smartcrop", {-3, -4}, 1, {4, 1, 0, 1, 0}), -0.6, -0.8);  // circle
+  // offset ½ (scatter 0): outside the border by coeff·½; crop mode 0: the origin
+  EXPECT_POINT_NEAR(eval("smartcrop", {2, 0}, 1, {4, 1, 0, 1, 1, 0, 0, 0.5}), 1.5, 0);
+  EXPECT_POINT_NEAR(eval("smartcrop", {2, 0}, 1, {4, 1, 0, 1, 1, 0, 0, 0, 0, 0}), 0, 0);
+  // crop mode −1, rotation 1: the radius kept, turned by α = π/2
+  EXPECT_POINT_NEAR(eval("smartcrop", {2, 0}, 1, {4, 1, 0, 1, 1, 0, 0, 0, 1, -1}), 0, 2);
+  // radius −½: the inside cut, (0.1, 0) put out on x = ½, (2, 0) kept
+  EXPECT_POINT_NEAR(eval("smartcrop", {0.1, 0}, 1, {4, -0.5}), 0.5, 0);
+  EXPECT_POINT_NEAR(eval("smartcrop", {2, 0}, 1, {4, -0.5}), 2, 0);
+  // roundstr 1: the corner at π/4 pulled in to coeff = (1 − c)·√2 + c, c = 2/(4·sin(π/4)) =
+  // 1/√2, i.e. to (1.5 − 1/√2)·(1, 1)
+  const double k = 1.5 - 1 / std::sqrt(2.0);
+  EXPECT_POINT_NEAR(eval("smartcrop", {3, 3}, 1, {4, 1, 1}), k, k);
+  // crop mode 2 (onto the last point kept, a state): not a number, the walker starts again
+  EXPECT_TRUE(std::isnan(eval("smartcrop", {2, 0}, 1, {4, 1, 0, 1, 1, 0, 0, 0, 0, 2}).x));
+}
+
+TEST(variations_packs2, smartcrop_below_power_2_cuts_a_sector) {
+  // power 1, radius 1: the upper half plane [0, π] kept; a cut point keeps its radius and goes
+  // to one of the two edges of the sector, angle 0 or π
+  std::set<long> ends;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    EXPECT_POINT_NEAR(eval("smartcrop", {0.3, 2}, 1, {1, 1}, {}, seed), 0.3, 2);
+    const Point c = eval("smartcrop", {0, -2}, 1, {1, 1}, {}, seed);
+    EXPECT_NEAR(std::abs(c.x), 2, 1e-12);
+    EXPECT_NEAR(c.y, 0, 1e-12);
+    ends.insert(std::lround(c.x));
+  }
+  EXPECT_EQ(ends.size(), 2u);
+}
+
+TEST(variations_packs3, mirrors_and_rotations_are_planar_slices) {
+  std::set<long> signs;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    // ±|x|, y; the weight only switches it on (0.05 as one of the packs' flames writes)
+    const Point m = eval("mirror_x", {-3, 2}, 0.05, {}, {}, seed);
+    EXPECT_NEAR(std::abs(m.x), 3, 1e-12);
+    EXPECT_NEAR(m.y, 2, 1e-12);
+    signs.insert(std::lround(m.x));
+    const Point n = eval("mirror_y", {-3, 2}, 1, {}, {}, seed);
+    EXPECT_POINT_NEAR(n, -3, m.x > 0 ? 2 : -2);  // the same draw: the same sign
+  }
+  EXPECT_EQ(signs.size(), 2u);
+  // the turn by w·π/2 about x (y) at z = 0: y (x) times cos(w·π/2); w = ⅔: cos(π/3) = ½
+  EXPECT_POINT_NEAR(eval("rotate_x", {2, 3}, 2.0 / 3), 2, 1.5);
+  EXPECT_POINT_NEAR(eval("rotate_y", {2, 3}, 2.0 / 3), 1, 3);
+  EXPECT_POINT_NEAR(eval("rotate_y", {2, 3}, 1), 0, 3);  // a quarter turn: x seen edge on
+}
+
+TEST(variations_packs3, circlecrop_and_bcircle_keep_a_disc) {
+  EXPECT_POINT_NEAR(eval("circlecrop", {0.3, 0.4}, 2), 0.6, 0.8);  // inside: w·p
+  EXPECT_POINT_NEAR(eval("circlecrop", {3, 4}), 0, 0);             // outside, zero: the origin
+  // centre (1, 1), zero 0, scatter 0: d = (3, 4) → w·1·(0.6, 0.8) + (1, 1)
+  EXPECT_POINT_NEAR(eval("circlecrop", {4, 5}, 1, {1, 1, 1, 0, 0}), 1.6, 1.8);
+  // bcircle scale 2: (0.3, 0.4) → (0.6, 0.8), on the unit circle: kept
+  EXPECT_POINT_NEAR(eval("bcircle", {0.3, 0.4}, 1, {2, 0}), 0.6, 0.8);
+  EXPECT_POINT_NEAR(eval("bcircle", {3, 4}, 1, {1, 0}), 0, 0);  // no border: the origin
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    // scatter 1: radius 1 + Ψ/2 on d's ray; bcircle border 5: 1 + Ψ on q's ray
+    const Point c = eval("circlecrop", {4, 5}, 1, {1, 1, 1, 1, 0}, {}, seed);
+    const double rc = std::hypot(c.x - 1, c.y - 1);
+    EXPECT_TRUE(rc >= 1 && rc < 1.5) << rc;
+    EXPECT_NEAR((c.y - 1) / (c.x - 1), 4.0 / 3, 1e-9);
+    const Point b = eval("bcircle", {3, 4}, 1, {1, 5}, {}, seed);
+    const double rb = std::hypot(b.x, b.y);
+    EXPECT_TRUE(rb >= 1 && rb < 2) << rb;
+    EXPECT_NEAR(b.y / b.x, 4.0 / 3, 1e-9);
+  }
+}
+
+TEST(variations_packs3, shredlin_gnarly_bubble2_wdisc) {
+  // x = 1.25: n = 1, f = ¼: ¼·½ + 1 + ½·½ = 1.375; y = −¼: n = 0, f = −¼: −⅛ − ¼
+  EXPECT_POINT_NEAR(eval("shredlin", {1.25, -0.25}), 1.375, -0.375);
+  EXPECT_POINT_NEAR(eval("shredlin", {1.25, -0.25}, 1, {1, 1, 1, 1}), 1.25, -0.25);  // width 1
+  // gnarly: a cell's centre and its rim stay; (0.75, 0.5), l = (¼, 0) about (½, ½), |l|²/¼ =
+  // ¼: turned clockwise by ln ¼, i.e. anticlockwise by ln 4
+  EXPECT_POINT_NEAR(eval("gnarly", {0.5, 0.5}), 0.5, 0.5);
+  EXPECT_POINT_NEAR(eval("gnarly", {1, 0.5}), 1, 0.5);
+  const double t = std::log(4.0);
+  EXPECT_POINT_NEAR(eval("gnarly", {0.75, 0.5}), 0.5 + 0.25 * std::cos(t),
+                    0.5 + 0.25 * std::sin(t));
+  // bubble2: w·(x·bx, y·by)/(r²/4 + 1)
+  EXPECT_POINT_NEAR(eval("bubble2", {2, 0}), 1, 0);
+  EXPECT_POINT_NEAR(eval("bubble2", {2, 2}, 1, {3, 0.5, 0}), 2, 1.0 / 3);
+  // wdisc: radius φ/π, angle π/(r + 1), π minus it for φ > 0
+  EXPECT_POINT_NEAR(eval("wdisc", {-1, 0}), 0, 1);     // φ = π: 1·(cos π/2, sin π/2)
+  EXPECT_POINT_NEAR(eval("wdisc", {0, -1}), 0, -0.5);  // φ = −π/2: −½·(cos π/2, sin π/2)
+  EXPECT_POINT_NEAR(eval("wdisc", {3, 0}, 2), 0, 0);   // φ = 0
+}
+
+TEST(variations_packs3, blur3D_and_rblur_replay_their_draws) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    Rng rng(seed);
+    double u[6];
+    for (double& v : u) v = rng.uniform();
+    // blur3D, w = 2: ρ = 2·(u1 + u2 + u3 + u4 − 2), α = 2πu0, β = πu5: ρ·sin β·(cos α, sin α)
+    const double rho = 2 * (u[1] + u[2] + u[3] + u[4] - 2), a = 2 * kPi * u[0];
+    EXPECT_POINT_NEAR(eval("blur3D", {7, 7}, 2, {}, {}, seed),
+                      rho * std::sin(kPi * u[5]) * std::cos(a),
+                      rho * std::sin(kPi * u[5]) * std::sin(a));
+    // rblur at (3, 4): ρ = 2·1·(5 − 1) = 8, p + (u0 − ½, u1 − ½)·8; within offset: p
+    EXPECT_POINT_NEAR(eval("rblur", {3, 4}, 1, {}, {}, seed), 3 + (u[0] - 0.5) * 8,
+                      4 + (u[1] - 0.5) * 8);
+    EXPECT_POINT_NEAR(eval("rblur", {0.3, 0.4}, 2, {}, {}, seed), 0.6, 0.8);
+  }
+}
+
+TEST(variations_packs3, hypertile1_and_eJulia_take_their_branches) {
+  // hypertile1 p 3, q 7 at 0: w·ρ̄, |ρ| = R (hypertile2's), at a multiple of 2π/3
+  const double big_r = 1 / std::sqrt(1 + 1.5 / (std::cos(2 * kPi / 7) - 0.5));
+  std::set<long> turns, roots;
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    const Point h = eval("hypertile1", {0, 0}, 1, {}, {}, seed);
+    EXPECT_NEAR(std::hypot(h.x, h.y), big_r, 1e-9);
+    const double k = std::atan2(h.y, h.x) / (2 * kPi / 3);
+    EXPECT_NEAR(k, std::round(k), 1e-9);
+    turns.insert(std::lround(k));
+    // eJulia power 2 at z = i: cosh(w/2)² = (1 + cosh w)/2, so out² = (1 + i)/2
+    const Point e = eval("eJulia", {0, 1}, 1, {2}, {}, seed);
+    EXPECT_NEAR(e.x * e.x - e.y * e.y, 0.5, 1e-9);
+    EXPECT_NEAR(2 * e.x * e.y, 0.5, 1e-9);
+    roots.insert(e.x > 0);
+  }
+  EXPECT_EQ(turns.size(), 3u);
+  EXPECT_EQ(roots.size(), 2u);
+  // power 1: cosh(acosh(z)) = z, one branch
+  EXPECT_POINT_NEAR(eval("eJulia", {0.5, 0.25}, 1, {1}), 0.5, 0.25);
+  EXPECT_POINT_NEAR(eval("eJulia", {-2, -0.5}, 2, {1}), -4, -1);
+}
+
+TEST(variations_packs3, smartshape_maps_circles_onto_the_polygon) {
+  // power 4: the unit circle onto the square [−1, 1]², each point on its own ray
+  EXPECT_POINT_NEAR(eval("smartshape", {1, 0}), 1, 0);  // a side's middle: coeff 1
+  const double h = std::sqrt(0.5);
+  EXPECT_POINT_NEAR(eval("smartshape", {h, h}), 1, 1);  // a corner: coeff √2
+  EXPECT_POINT_NEAR(eval("smartshape", {3 / std::sqrt(10.0), 1 / std::sqrt(10.0)}), 1, 1.0 / 3);
+  EXPECT_POINT_NEAR(eval("smartshape", {0.3, 0.4}, 2, {4, 0, 1, 0, 0}), 0.6, 0.8);  // circle
+  // compensation: the angle π/8, half way to the corner, goes half way along the side:
+  // t = ¼ → atan(2·tan(π/4)·¼)/(π/2), the angle atan ½, on the side x = 1: (1, ½)
+  EXPECT_POINT_NEAR(eval("smartshape", {std::cos(kPi / 8), std::sin(kPi / 8)}, 1, {4, 0, 1, 1, 1}),
+                    1, 0.5);
+}
+
+TEST(variations_packs3, circleblur_and_pow_block) {
+  std::set<long> branches;
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    Rng rng(seed);
+    const double u0 = rng.uniform(), u1 = rng.uniform();
+    // w·√u0·(cos 2πu1, sin 2πu1)
+    EXPECT_POINT_NEAR(eval("circleblur", {5, 5}, 2, {}, {}, seed),
+                      2 * std::sqrt(u0) * std::cos(2 * kPi * u1),
+                      2 * std::sqrt(u0) * std::sin(2 * kPi * u1));
+    // 4^(3/2) = 8 at angle 0 or 3π (the two square roots, cubed)
+    const Point p = eval("pow_block", {4, 0}, 1, {}, {}, seed);
+    EXPECT_NEAR(std::abs(p.x), 8, 1e-9);
+    EXPECT_NEAR(p.y, 0, 1e-9);
+    branches.insert(std::lround(p.x));
+    // i^(3/2): angle 3π/4 (+ 3π): ±(−√½, √½)
+    const Point q = eval("pow_block", {0, 1}, 1, {}, {}, seed);
+    EXPECT_NEAR(q.x, -q.y, 1e-9);
+    EXPECT_NEAR(std::hypot(q.x, q.y), 1, 1e-9);
+    // correctn 2: the radius' power 3/(2·2): |16^0.75| = 8
+    const Point c = eval("pow_block", {16, 0}, 1, {3, 2, 1, 2, 1}, {}, seed);
+    EXPECT_NEAR(std::hypot(c.x, c.y), 8, 1e-9);
+  }
+  EXPECT_EQ(branches.size(), 2u);
+}
+
+TEST(variations_packs4, y_sums_its_shapes_and_puts_the_point_at_w_T2_over_r) {
+  //           hypergon  n  r_h  star  n  slope  lituus  a  super  m  n1 n2 n3
+  // lituus, a = 1: T = |φ/π + 1|⁻¹; at (0, 2), φ = π/2: T = ⅔, T²/r = (4/9)/2
+  EXPECT_POINT_NEAR(eval("y", {1, 0}, 1, {0, 4, 1, 0, 5, 2, 1, 1}), 1, 0);
+  EXPECT_POINT_NEAR(eval("y", {0, 2}, 1, {0, 4, 1, 0, 5, 2, 1, 1}), 0, 2.0 / 9);
+  // super, m = 0: T = (1 + 0)^(−1) = 1 at (3, 4): (1/5)·(0.6, 0.8)
+  EXPECT_POINT_NEAR(eval("y", {3, 4}, 1, {0, 4, 1, 0, 5, 2, 0, 1, 1, 0, 1, 1, 1}), 0.12, 0.16);
+  // hypergon n 4, r_h 1 at φ = π/4: a = 0, s = 1 < d² = 2: T = √2 − 1; T²/√2 on the diagonal
+  const double h = (3 - 2 * std::sqrt(2.0)) / 2;
+  EXPECT_POINT_NEAR(eval("y", {1, 1}, 1, {1, 4, 1}), h, h);
+  // star n 4, slope π/4 at φ = π/4: b = 0: T = √(1·1)/(0 + 1) = 1: (1/√2)·(1/√2, 1/√2)
+  EXPECT_POINT_NEAR(eval("y", {1, 1}, 1, {0, 4, 1, 1, 4, kPi / 4}), 0.5, 0.5);
+}
+
+TEST(variations_packs4, falloff3_blurs_by_the_distance_beyond_min_distance) {
+  for (double type : {0, 1, 2})  // d = 0.5 = min_distance: dist 0, w·p
+    EXPECT_POINT_NEAR(eval("falloff3", {0.3, 0.4}, 2, {type}), 0.6, 0.8);
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    Rng rng(seed);
+    double u[3];
+    for (double& v : u) v = rng.uniform() - 0.5;
+    // centre (0, 0, 3) at (4, 0): d = 5, dist = (5 − 0.5)·0.04 = 0.18
+    const double dist = 0.18;
+    // Gaussian: (4, 0) + dist·u_x·cos(2π·dist·u_y)·(cos(π·dist·u_z), sin(π·dist·u_z))
+    const double g = dist * u[0] * std::cos(2 * kPi * dist * u[1]);
+    EXPECT_POINT_NEAR(eval("falloff3", {4, 0}, 1, {0, 0, 1, 0.5, 0, 1, 1, 0, 0, 0, 0, 3}, {}, seed),
+                      4 + g * std::cos(kPi * dist * u[2]), g * std::sin(kPi * dist * u[2]));
+    // radial: radius 4 + u_x·dist, angle u_y·dist
+    const double r = 4 + u[0] * dist, a = u[1] * dist;
+    EXPECT_POINT_NEAR(eval("falloff3", {4, 0}, 1, {1, 0, 1, 0.5, 0, 1, 1, 0, 0, 0, 0, 3}, {}, seed),
+                      r * std::cos(a), r * std::sin(a));
+    // logarithmic, alpha 0: (4, 0) + L(1)·S(u)·dist, L(1) = (e + 1)/4, S(u) = ln(e(|u| +
+    // 1))/e·sign u; square shape: d = max(4, 0, 3) = 4, dist = 3.5·0.04
+    const double e = std::numbers::e, l1 = (e + 1) / 4, d2 = 3.5 * 0.04;
+    const auto s = [&](double v) { return std::log(e * (std::abs(v) + 1)) / e * (v < 0 ? -1 : 1); };
+    EXPECT_POINT_NEAR(eval("falloff3", {4, 0}, 1, {2, 1, 1, 0.5, 0, 1, 1, 0, 0, 0, 0, 3}, {}, seed),
+                      4 + l1 * s(u[0]) * d2, l1 * s(u[1]) * d2);
+  }
+}
+
+TEST(variations_packs4, hypertile3D2_is_hypertile2_at_z0) {
+  // p 4, q 5: R = 1/√(1 + 1/cos(2π/5)) (cos(2π/4) = 0); 0 ↦ R turned by a multiple of π/2
+  const double big_r = 1 / std::sqrt(1 + 1 / std::cos(2 * kPi / 5));
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const Point h = eval("hypertile3D2", {0, 0}, 1, {4, 5}, {}, seed);
+    EXPECT_NEAR(std::hypot(h.x, h.y), big_r, 1e-9);
+    const Point a = eval("hypertile3D2", {0.3, -0.2}, 0.7, {4, 5}, {}, seed);
+    EXPECT_POINT_NEAR(eval("hypertile2", {0.3, -0.2}, 0.7, {4, 5}, {}, seed), a.x, a.y);
   }
 }
 
