@@ -28,4 +28,13 @@ const BatchVariation* find_batch_variation(CpuLevel level, std::string_view name
   return it == table.end() ? nullptr : &*it;
 }
 
+BinFunction bin_function(CpuLevel level) {
+#if IFSFX_FLAME_X86_KERNELS
+  if (level != CpuLevel::scalar) return ifsfx::detail::kernel_avx2::flame_bin_numbers;
+#else
+  (void)level;
+#endif
+  return ifsfx::detail::kernel_scalar::flame_bin_numbers;
+}
+
 }  // namespace ifsfx::flame::detail

@@ -7,10 +7,13 @@
 #include <memory>
 #include <mutex>
 
+#include <fmt/format.h>
+
 #include "flame/detail/batch_variations.h"
 #include "flame/detail/render_chaos.h"
 #include "flame/variations.h"
 #include "flame/xform_pickers.h"
+#include "ifs/error.h"
 #include "ifs/parallel.h"
 #include "ifs/rng.h"
 
@@ -23,8 +26,7 @@ namespace {
 // its variations together (flame/detail/batch_variations.h).
 constexpr std::uint64_t kWalkerPoints = 10000;
 constexpr std::uint64_t kChunkPoints = kWalkerPoints * kBatchLanes;
-constexpr double kUnit = 65536;   // one hit of full colour, in the integer sums
-constexpr double kEscape = 1e10;  // a point beyond this (or not a number) is re-seeded
+constexpr double kUnit = 65536;  // one hit of full colour, in the integer sums
 constexpr std::size_t kN = kBatchStride;
 
 // Four 32-bit sums or colour channels (r, g, b, a) as one value: GCC's generic vectors, plain
@@ -231,7 +233,10 @@ struct Plan {
   bool linear_palette = false;
   bool affine_only = false;  // every step affine_only: pick() moves the walkers
   std::array<Rgba, 256> palette{};
-  FlameRaster raster;
+  BinGrid grid;
+  BinFunction bin_numbers = nullptr;    // the kernel level's
+  std::vector<std::uint8_t> invisible;  // steps[k].invisible, compact for the walk's lookup
+  bool any_invisible = false;
 };
 
 // The histogram of one worker: r, g, b, a integer sums per bin, 32 bits each so that a bin is
@@ -256,15 +261,7 @@ struct Bins {
   }
 };
 
-constexpr std::size_t kOff = SIZE_MAX;  // a point off the raster
-
-// The first of the four sums of p's bin, or kOff.
-std::size_t bin_of(const FlameRaster& r, Point p) {
-  const Point b = r.to_bins(p);
-  if (!(b.x >= 0 && b.x < r.bins_x && b.y >= 0 && b.y < r.bins_y)) return kOff;
-  return 4 * (static_cast<std::size_t>(b.y) * r.bins_x + static_cast<std::size_t>(b.x));
-}
-
+// One hit of colour coordinate c, coloured by the xform `from`, into the four sums from `at`.
 void plot(const Plan& plan, const Step& from, double c, std::size_t at, Bins& bins) {
   c = std::clamp(c, 0.0, 1.0);
   if (!plan.linear_palette) {
@@ -282,15 +279,15 @@ void plot(const Plan& plan, const Step& from, double c, std::size_t at, Bins& bi
   bins.add(at, (from.colours[i] * (256 - w) + from.colours[i + 1] * w) >> 8);
 }
 
-// Plots the points whose `at` is not kOff, their bins fetched ahead: a step's 256 random
+// Plots the points whose bin `at` is not kOffBin, their bins fetched ahead: a step's 256 random
 // writes overlap their cache misses.
-void plot_all(const Plan& plan, const std::array<std::size_t, kN>& at,
+void plot_all(const Plan& plan, const std::array<std::uint32_t, kN>& at,
               const std::array<std::uint32_t, kN>& k, const std::array<double, kN>& c,
               std::size_t m, Bins& bins) {
   for (std::size_t i = 0; i < m; ++i)
-    if (at[i] != kOff) __builtin_prefetch(&bins.lo[at[i]], 1);
+    if (at[i] != kOffBin) __builtin_prefetch(&bins.lo[4 * std::size_t{at[i]}], 1);
   for (std::size_t i = 0; i < m; ++i)
-    if (at[i] != kOff) plot(plan, plan.steps[k[i]], c[i], at[i], bins);
+    if (at[i] != kOffBin) plot(plan, plan.steps[k[i]], c[i], 4 * std::size_t{at[i]}, bins);
 }
 
 // The walkers of one chunk. They stay in place; each step lists them by the xform they picked.
@@ -298,6 +295,7 @@ struct Walkers {
   std::array<double, kN> x{}, y{}, c{};
   std::array<std::uint32_t, kN> k{};      // the xform that moved it last (its picker row, colours)
   std::array<std::uint64_t, kN> limit{};  // the step at which it stops plotting
+  std::uint64_t first_limit = 0;          // the smallest limit
 };
 
 // A walker's start: a random point in [−1, 1]², a random colour.
@@ -357,35 +355,50 @@ bool escaped(double x, double y) {
   return !(std::abs(x) < kEscape && std::abs(y) < kEscape);
 }
 
+// Walkers that no longer plot (past their limit, or last moved by an invisible xform) off.
+void unplotted(const Plan& plan, const Walkers& a, std::size_t m, std::uint64_t s,
+               std::array<std::uint32_t, kN>& at) {
+  if (s < a.first_limit && !plan.any_invisible) return;
+  for (std::size_t i = 0; i < m; ++i)
+    if (s >= a.limit[i] || plan.invisible[a.k[i]] != 0) at[i] = kOffBin;
+}
+
+// Walkers that escaped re-seeded (in walker order, as the generator's draws must be); how many.
+std::uint64_t reseed(Walkers& a, std::size_t m, std::array<bool, kN>* out, Rng& rng) {
+  std::uint64_t reseeded = 0;
+  for (std::size_t i = 0; i < m; ++i) {
+    if (!escaped(a.x[i], a.y[i])) continue;
+    if (out) (*out)[i] = true;
+    start(a, i, rng);
+    ++reseeded;
+  }
+  return reseeded;
+}
+
 // After step `s` of every walker: escapees re-seeded, the others plotted (through the final
 // xform, when there is one, which moves the plotted copy only).
 std::uint64_t plot_walkers(const Plan& plan, Walkers& a, std::size_t m, std::uint64_t s,
                            std::uint64_t burn_in, Scratch& w, Rng& rng, Bins& bins) {
-  std::array<bool, kN> out{};
-  std::uint64_t reseeded = 0;
-  for (std::size_t i = 0; i < m; ++i) {
-    if (!escaped(a.x[i], a.y[i])) continue;
-    out[i] = true;
-    start(a, i, rng);
-    ++reseeded;
-  }
-  if (s < burn_in) return reseeded;
-  std::array<std::size_t, kN> at{};
+  std::array<std::uint32_t, kN> at;
   if (!plan.final_step) {
-    for (std::size_t i = 0; i < m; ++i)
-      at[i] = out[i] || s >= a.limit[i] || plan.steps[a.k[i]].invisible
-                  ? kOff
-                  : bin_of(plan.raster, {a.x[i], a.y[i]});
+    // The bins first: an escaped walker's is kOffBin, and its new start is not plotted.
+    const std::size_t gone = plan.bin_numbers(plan.grid, m, a.x.data(), a.y.data(), at.data());
+    const std::uint64_t reseeded = gone == 0 ? 0 : reseed(a, m, nullptr, rng);
+    if (s < burn_in) return reseeded;
+    unplotted(plan, a, m, s, at);
     plot_all(plan, at, a.k, a.c, m, bins);
     return reseeded;
   }
+  std::array<bool, kN> out{};
+  const std::uint64_t reseeded = reseed(a, m, &out, rng);
+  if (s < burn_in) return reseeded;
   std::array<double, kN> fx = a.x, fy = a.y, fc{};
   (*plan.final_step)(m, fx.data(), fy.data(), w, rng);
   const Step& f = *plan.final_step;
+  plan.bin_numbers(plan.grid, m, fx.data(), fy.data(), at.data());
+  unplotted(plan, a, m, s, at);
   for (std::size_t i = 0; i < m; ++i) {
-    const bool off =
-        out[i] || s >= a.limit[i] || plan.steps[a.k[i]].invisible || escaped(fx[i], fy[i]);
-    at[i] = off ? kOff : bin_of(plan.raster, {fx[i], fy[i]});
+    if (out[i]) at[i] = kOffBin;
     fc[i] = f.keep * a.c[i] + f.shift;
   }
   plot_all(plan, at, a.k, fc, m, bins);
@@ -405,6 +418,8 @@ std::uint64_t walk_chunk(const Plan& plan, std::uint64_t seed, std::uint64_t chu
     start(a, i, rng);
     a.limit[i] = burn + std::min(kWalkerPoints, n - i * kWalkerPoints);
   }
+  a.first_limit =
+      *std::min_element(a.limit.begin(), a.limit.begin() + static_cast<std::ptrdiff_t>(m));
   Scratch w;
   std::vector<std::size_t> first(plan.steps.size() + 1), next(4 * plan.steps.size());
   std::array<std::uint32_t, kN> order{};
@@ -433,7 +448,18 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   plan.affine_only = std::all_of(plan.steps.begin(), plan.steps.end(),
                                  [](const Step& s) { return s.affine_only; });
   plan.linear_palette = flame.palette.mode == PaletteMode::linear;
-  plan.raster = raster;
+  // A bin's number and kOffBin fit 32 bits (a raster that large would need 64 GiB a worker).
+  const std::uint64_t bins = std::uint64_t{static_cast<std::uint32_t>(raster.bins_x)} *
+                             static_cast<std::uint32_t>(raster.bins_y);
+  if (bins >= kOffBin)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("flame raster: at most {} bins (got {})", kOffBin - 1, bins));
+  plan.grid = {raster.to_bins, static_cast<std::uint32_t>(raster.bins_x),
+               static_cast<std::uint32_t>(raster.bins_y)};
+  plan.bin_numbers = bin_function(cpu_level());
+  for (const Step& s : plan.steps) plan.invisible.push_back(s.invisible ? 1 : 0);
+  plan.any_invisible =
+      std::any_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return s.invisible; });
   return plan;
 }
 

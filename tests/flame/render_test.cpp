@@ -13,13 +13,16 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "flame/detail/batch_variations.h"
 #include "flame/detail/render_chaos.h"
 #include "flame/flame_file.h"
 #include "flame/render_camera.h"
 #include "flame/render_tone.h"
 #include "flame/variations.h"
+#include "ifs/cpu.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
+#include "ifs/rng.h"
 
 namespace ifsfx::flame {
 namespace {
@@ -150,6 +153,57 @@ TEST(render_flame, a_bin_of_more_than_65536_hits_counts_every_hit) {
   }
   EXPECT_EQ(hits, static_cast<double>(points));
   EXPECT_GT(most, 2 * 65536.0);
+}
+
+// The walk's bin numbering (flame/detail/batch_variations.h): known bins at a rotated camera's
+// corners and edges, points off the raster and escaped ones, and every kernel level the scalar
+// level's numbers on random points around the raster, with a count not a multiple of four.
+TEST(render_flame, bin_numbers_are_the_cameras_bins_at_every_kernel_level) {
+  const detail::BinGrid g{.to_bins = {2, 0.5, -0.5, 2, 10, 20}, .bins_x = 30, .bins_y = 40};
+  // (bx, by) = (2x + 0.5y + 10, −0.5x + 2y + 20)
+  const std::vector<double> x = {0, -5, 9.99, 0, 0, 0, 1e10, NAN, 0, -5.001, 1};
+  const std::vector<double> y = {0, 0, 0, 9.99, -10, 10, 0, 0, -1e10, 0, 1};
+  const std::vector<std::uint32_t> want = {20 * 30 + 10,     // the centre (10, 20)
+                                           22 * 30 + 0,      // bx = 0: the first column
+                                           15 * 30 + 29,     // bx = 29.98: the last
+                                           39 * 30 + 14,     // by = 39.98: the last row
+                                           0 * 30 + 5,       // by = 0: the first
+                                           detail::kOffBin,  // by = 40: below the raster
+                                           detail::kOffBin,  // |x| = 10^10: escaped
+                                           detail::kOffBin,  // not a number: escaped
+                                           detail::kOffBin,  // |y| = 10^10: escaped
+                                           detail::kOffBin,  // bx = −0.002
+                                           21 * 30 + 12};    // (12.5, 21.5)
+  const std::size_t n = x.size();
+  for (CpuLevel level : supported_cpu_levels()) {
+    std::vector<std::uint32_t> at(n + 4, 7);
+    std::vector<double> px = x, py = y;
+    px.resize(n + 4, 0);
+    py.resize(n + 4, 0);
+    EXPECT_EQ(detail::bin_function(level)(g, n, px.data(), py.data(), at.data()), 3u)
+        << to_string(level);
+    for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(at[i], want[i]) << to_string(level) << " " << i;
+  }
+  Rng rng(3);
+  const std::size_t m = 1003;
+  std::vector<double> rx(m + 4), ry(m + 4);
+  for (std::size_t i = 0; i < m; ++i) {
+    rx[i] = 40 * rng.uniform() - 20;
+    ry[i] = 40 * rng.uniform() - 20;
+  }
+  rx[17] = INFINITY;
+  ry[18] = -1e11;
+  std::vector<std::uint32_t> ref(m + 4);
+  const std::size_t gone =
+      detail::bin_function(CpuLevel::scalar)(g, m, rx.data(), ry.data(), ref.data());
+  EXPECT_EQ(gone, 2u);
+  EXPECT_GT(std::count(ref.begin(), ref.begin() + m, detail::kOffBin), 100);
+  EXPECT_LT(std::count(ref.begin(), ref.begin() + m, detail::kOffBin), 900);
+  for (CpuLevel level : supported_cpu_levels()) {
+    std::vector<std::uint32_t> at(m + 4);
+    EXPECT_EQ(detail::bin_function(level)(g, m, rx.data(), ry.data(), at.data()), gone);
+    EXPECT_TRUE(std::equal(ref.begin(), ref.begin() + m, at.begin())) << to_string(level);
+  }
 }
 
 TEST(render_tone, the_display_scales_colour_by_the_gamma_of_the_density) {
