@@ -105,4 +105,15 @@ std::size_t flame_bin_numbers(const flame::detail::BinGrid& g, std::size_t n, co
   return escaped;
 }
 
+namespace {
+using U4 = std::uint32_t __attribute__((vector_size(16)));
+using M4 = std::int32_t __attribute__((vector_size(16)));  // a comparison's lanes
+inline unsigned wrapped_lanes(M4 m) {
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps((__m128i)m)));
+}
+
+}  // namespace
+
+#include "flame/detail/plot_kernel.inl"
+
 }  // namespace ifsfx::detail::kernel_avx2

@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "flame/detail/batch_variations.h"
 
@@ -78,5 +79,17 @@ std::size_t flame_bin_numbers(const flame::detail::BinGrid& g, std::size_t n, co
   }
   return escaped;
 }
+
+namespace {
+using U4 = std::uint32_t __attribute__((vector_size(16)));
+using M4 = std::int32_t __attribute__((vector_size(16)));  // a comparison's lanes
+inline unsigned wrapped_lanes(M4 m) {
+  return (m[0] != 0 ? 1u : 0u) | (m[1] != 0 ? 2u : 0u) | (m[2] != 0 ? 4u : 0u) |
+         (m[3] != 0 ? 8u : 0u);
+}
+
+}  // namespace
+
+#include "flame/detail/plot_kernel.inl"
 
 }  // namespace ifsfx::detail::kernel_scalar

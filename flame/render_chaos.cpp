@@ -234,8 +234,11 @@ struct Plan {
   bool affine_only = false;  // every step affine_only: pick() moves the walkers
   std::array<Rgba, 256> palette{};
   BinGrid grid;
-  BinFunction bin_numbers = nullptr;    // the kernel level's
-  std::vector<std::uint8_t> invisible;  // steps[k].invisible, compact for the walk's lookup
+  BinFunction bin_numbers = nullptr;          // the kernel level's
+  std::vector<std::uint8_t> invisible;        // steps[k].invisible, compact for the walk's lookup
+  std::vector<const std::uint32_t*> colours;  // steps[k].colours
+  PlotTables tables;
+  PlotFunction plot = nullptr;  // the kernel level's
   bool any_invisible = false;
 };
 
@@ -247,37 +250,7 @@ struct Bins {
   std::vector<std::uint32_t> lo;
   std::vector<std::size_t> carries;
   explicit Bins(const FlameRaster& r) : lo(4 * static_cast<std::size_t>(r.bins_x) * r.bins_y) {}
-  // The four sums from `at` += v, as one 16-byte read and write (integers: any order and width
-  // of the additions gives the same sums).
-  void add(std::size_t at, U4 v) {
-    U4 s;
-    std::memcpy(&s, &lo[at], sizeof s);
-    s += v;
-    std::memcpy(&lo[at], &s, sizeof s);
-    const U4 wrapped = s < v;
-    if ((wrapped[0] | wrapped[1] | wrapped[2] | wrapped[3]) != 0) [[unlikely]]
-      for (std::size_t k = 0; k < 4; ++k)
-        if (wrapped[k] != 0) carries.push_back(at + k);
-  }
 };
-
-// One hit of colour coordinate c, coloured by the xform `from`, into the four sums from `at`.
-void plot(const Plan& plan, const Step& from, double c, std::size_t at, Bins& bins) {
-  c = std::clamp(c, 0.0, 1.0);
-  if (!plan.linear_palette) {
-    // Step palette: entry ⌊256·c⌋, the last one for c = 1.
-    bins.add(at, from.colours[std::min<std::size_t>(static_cast<std::size_t>(c * 256), 255)]);
-    return;
-  }
-  // Linear palette: entries ⌊256·c⌋ and the next, mixed by the fraction, in 1/256 steps
-  // (integers, no rounding call in the loop); from 255 on, the last entry. flam3-render's
-  // colours of Fractorium's linear-palette flames say 256·c, not 255·c. An entry is at most
-  // kUnit = 2¹⁶, so the mix fits 32 bits.
-  const auto x = static_cast<std::uint32_t>(std::min(c * 256, 255.0) * 256);
-  const std::size_t i = std::min<std::uint32_t>(x >> 8, 254);
-  const std::uint32_t w = x - (static_cast<std::uint32_t>(i) << 8);
-  bins.add(at, (from.colours[i] * (256 - w) + from.colours[i + 1] * w) >> 8);
-}
 
 // Plots the points whose bin `at` is not kOffBin, their bins fetched ahead: a step's 256 random
 // writes overlap their cache misses.
@@ -286,8 +259,12 @@ void plot_all(const Plan& plan, const std::array<std::uint32_t, kN>& at,
               std::size_t m, Bins& bins) {
   for (std::size_t i = 0; i < m; ++i)
     if (at[i] != kOffBin) __builtin_prefetch(&bins.lo[4 * std::size_t{at[i]}], 1);
-  for (std::size_t i = 0; i < m; ++i)
-    if (at[i] != kOffBin) plot(plan, plan.steps[k[i]], c[i], 4 * std::size_t{at[i]}, bins);
+  for (std::size_t i = 0; i < m;) {
+    unsigned wrapped = 0;
+    i = plan.plot(plan.tables, bins.lo.data(), i, m, at.data(), k.data(), c.data(), &wrapped);
+    for (std::size_t j = 0; j < 4; ++j)
+      if ((wrapped >> j & 1) != 0) bins.carries.push_back(4 * std::size_t{at[i - 1]} + j);
+  }
 }
 
 // The walkers of one chunk. They stay in place; each step lists them by the xform they picked.
@@ -457,7 +434,12 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   plan.grid = {raster.to_bins, static_cast<std::uint32_t>(raster.bins_x),
                static_cast<std::uint32_t>(raster.bins_y)};
   plan.bin_numbers = bin_function(cpu_level());
-  for (const Step& s : plan.steps) plan.invisible.push_back(s.invisible ? 1 : 0);
+  for (const Step& s : plan.steps) {
+    plan.invisible.push_back(s.invisible ? 1 : 0);
+    plan.colours.push_back(reinterpret_cast<const std::uint32_t*>(s.colours.data()));
+  }
+  plan.tables = {plan.colours.data(), plan.linear_palette};
+  plan.plot = plot_function(cpu_level());
   plan.any_invisible =
       std::any_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return s.invisible; });
   return plan;

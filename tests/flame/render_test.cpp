@@ -206,6 +206,69 @@ TEST(render_flame, bin_numbers_are_the_cameras_bins_at_every_kernel_level) {
   }
 }
 
+// The walk's plot kernel: a step palette's entry ⌊256·c⌋ and a linear palette's mix of two
+// entries at known coordinates, a sum wrapped past 2³² reported where it happened, and every
+// kernel level the scalar level's sums and wraps on random hits.
+TEST(render_flame, the_plot_adds_palette_colours_and_reports_wraps_at_every_kernel_level) {
+  std::vector<std::uint32_t> table(4 * 256);
+  for (std::uint32_t e = 0; e < 256; ++e)
+    for (std::uint32_t ch = 0; ch < 4; ++ch) table[4 * e + ch] = e * 256 + ch;
+  const std::uint32_t* tables[] = {table.data(), table.data() + 4};  // xform 1: entries shifted
+  for (CpuLevel level : supported_cpu_levels()) {
+    const detail::PlotFunction plot = detail::plot_function(level);
+    std::vector<std::uint32_t> bins(4 * 3, 0);
+    const std::uint32_t at[] = {0, detail::kOffBin, 1, 2};
+    const std::uint32_t k[] = {0, 0, 1, 0};
+    // c = 0.5 → entry 128; c = 2 → clamped to entry 255; at bin 1 xform 1's entry 10 is 11.
+    const double c[] = {0.5, 0.3, 10.5 / 256, 2};
+    unsigned wrapped = 0;
+    EXPECT_EQ(plot({tables, false}, bins.data(), 0, 4, at, k, c, &wrapped), 4u);
+    EXPECT_EQ(bins[0], 128u * 256) << to_string(level);
+    EXPECT_EQ(bins[4 + 1], 11u * 256 + 1) << to_string(level);
+    EXPECT_EQ(bins[8 + 2], 255u * 256 + 2) << to_string(level);
+    // Linear: c = 10.5/256 is halfway between entries 10 and 11; c = 2 the last entry.
+    std::fill(bins.begin(), bins.end(), 0);
+    EXPECT_EQ(plot({tables, true}, bins.data(), 0, 4, at, k, c, &wrapped), 4u);
+    EXPECT_EQ(bins[0], 128u * 256) << to_string(level);
+    EXPECT_EQ(bins[4 + 3], 11u * 256 + 128 + 3) << to_string(level);
+    EXPECT_EQ(bins[8], 255u * 256) << to_string(level);
+    // A sum 100 below 2³² wraps at the hit that passes it: index 0, channels r and g.
+    bins[0] = bins[1] = UINT32_MAX - 100;
+    EXPECT_EQ(plot({tables, false}, bins.data(), 0, 4, at, k, c, &wrapped), 1u);
+    EXPECT_EQ(wrapped, 3u) << to_string(level);
+  }
+  Rng rng(8);
+  const std::size_t n = 250;
+  std::vector<std::uint32_t> at(n), k(n);
+  std::vector<double> c(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    at[i] = rng.below(8) == 0 ? detail::kOffBin : rng.below(16);
+    k[i] = rng.below(2);
+    c[i] = 1.2 * rng.uniform() - 0.1;
+  }
+  for (bool linear : {false, true}) {
+    std::vector<std::uint32_t> ref;
+    std::vector<std::size_t> ref_wraps;
+    for (CpuLevel level : supported_cpu_levels()) {
+      std::vector<std::uint32_t> bins(4 * 16, UINT32_MAX - 150000);  // wraps within a few hits
+      std::vector<std::size_t> wraps;
+      for (std::size_t i = 0; i < n;) {
+        unsigned wrapped = 0;
+        i = detail::plot_function(level)({tables, linear}, bins.data(), i, n, at.data(), k.data(),
+                                         c.data(), &wrapped);
+        if (wrapped != 0) wraps.push_back(i * 16 + wrapped);
+      }
+      if (ref.empty()) {
+        ref = bins;
+        ref_wraps = wraps;
+        EXPECT_GE(wraps.size(), 10u);
+      }
+      EXPECT_EQ(bins, ref) << to_string(level) << (linear ? " linear" : " step");
+      EXPECT_EQ(wraps, ref_wraps) << to_string(level) << (linear ? " linear" : " step");
+    }
+  }
+}
+
 TEST(render_tone, the_display_scales_colour_by_the_gamma_of_the_density) {
   ToneMapping tone;
   tone.gamma = 2;
