@@ -145,4 +145,25 @@ FlameHistogram density_estimate(const FlameHistogram& h, const Filtering& f, int
   return out;
 }
 
+FlameHistogram density_estimate(FlameHistogram&& h, const Filtering& f, int ss,
+                                const LogScale& scale, int threads, const CancelToken& cancel) {
+  if (static_cast<int>(std::floor(f.estimator_radius * ss)) != 0)
+    return density_estimate(static_cast<const FlameHistogram&>(h), f, ss, scale, threads, cancel);
+  // Without reach spread_band's one tap has weight 1 (its kernel's only tap, normalised) and
+  // adds v to a zero: out = v = in·ls(a) exactly, and 0 where a is 0 (a bin of no alpha has no
+  // colour either: a hit's channels are its alpha × palette entries in [0, 1], rounded).
+  const int bands = (h.height + kDeBand - 1) / kDeBand;
+  parallel_for(static_cast<std::size_t>(bands), threads, [&](std::size_t band, int) {
+    cancel.check("density estimation");
+    const int r0 = static_cast<int>(band) * kDeBand, r1 = std::min(h.height, r0 + kDeBand);
+    for (int row = r0; row < r1; ++row)
+      for (int col = 0; col < h.width; ++col) {
+        double* p = h.at(row, col);
+        const double ls = p[3] > 0 ? scale(p[3]) : 0;
+        for (int k = 0; k < 4; ++k) p[k] *= ls;
+      }
+  });
+  return std::move(h);
+}
+
 }  // namespace ifsfx::flame

@@ -362,6 +362,34 @@ TEST(render_tone, density_estimation_spreads_a_lone_hit_over_its_disc) {
   EXPECT_EQ(dense.at(4, 5)[3], 0);
 }
 
+// Without reach (radius · ss below one bin) a histogram given up is scaled in place, to the
+// bits of the spreading path: each bin × ls(a), 0 where a is 0; with reach both are one path.
+TEST(render_tone, density_estimation_in_place_gives_the_spreading_paths_bits) {
+  FlameHistogram h(7, 5);
+  Rng rng(2);
+  for (std::size_t i = 0; i < h.rgba.size(); i += 4) {
+    if (rng.below(3) == 0) continue;  // an empty bin
+    h.rgba[i + 3] = 1 + rng.below(1000);
+    for (std::size_t k = 0; k < 3; ++k) h.rgba[i + k] = h.rgba[i + 3] * rng.uniform();
+  }
+  const LogScale scale{1.3, 0.02};
+  for (const double radius : {0.0, 0.4, 1.5})
+    for (const int ss : {1, 2}) {
+      const Filtering f{
+          .estimator_radius = radius, .estimator_minimum = 0.2, .estimator_curve = 0.4};
+      const FlameHistogram spread = density_estimate(h, f, ss, scale, 1);
+      FlameHistogram copy = h;
+      const FlameHistogram in_place = density_estimate(std::move(copy), f, ss, scale, 2);
+      EXPECT_EQ(in_place.rgba, spread.rgba) << radius << " " << ss;
+    }
+  FlameHistogram one(2, 1);
+  one.at(0, 1)[3] = 10;
+  one.at(0, 1)[1] = 5;
+  const FlameHistogram out = density_estimate(std::move(one), {.estimator_radius = 0}, 1, scale, 1);
+  EXPECT_EQ(out.at(0, 1)[1], 5 * scale(10));
+  EXPECT_EQ(out.at(0, 0)[3], 0);
+}
+
 TEST(render_tone, the_gaussian_filter_of_half_a_pixel_has_three_taps) {
   // span 2·1.5·0.5 = 1.5 → 3 taps (odd, as ss), at x = −2, 0, 2: e^−8, 1, e^−8.
   const SpatialKernel k = spatial_kernel("gaussian", 0.5, 1);
