@@ -188,11 +188,15 @@ std::vector<Term> terms_of(const std::vector<VariationTerm>& list, bool in_sum, 
     const Variation& v = variation(t.id);
     // z only: adds nothing to the sum, leaves the point alone in a list.
     if (v.kind == VariationKind::flat_3d) continue;
-    // linear (an IFS's own maps) stays in double lanes: float would only round it.
-    const LaneType type = v.name == "linear" ? LaneType::f64 : kernels.type;
-    const BatchVariation* batch = find_batch_variation(kernels.level, v.name, type);
-    out.push_back({v.function, batch ? batch : find_batch_variation(kernels.level, v.name),
-                   t.weight, t.params, !in_sum && v.assign == Assign::add, v.name == "linear"});
+    // linear3D is linear in the plane (its z part is dropped): the same term, so that a flame
+    // of linear3D xforms (Fractorium's hexagonal tilings) walks as an affine one. linear (an
+    // IFS's own maps) stays in double lanes: float would only round it.
+    const bool linear = v.name == "linear" || v.name == "linear3D";
+    const std::string_view name = linear ? std::string_view("linear") : v.name;
+    const LaneType type = linear ? LaneType::f64 : kernels.type;
+    const BatchVariation* batch = find_batch_variation(kernels.level, name, type);
+    out.push_back({v.function, batch ? batch : find_batch_variation(kernels.level, name), t.weight,
+                   t.params, !in_sum && v.assign == Assign::add, linear});
   }
   return out;
 }

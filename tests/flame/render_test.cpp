@@ -139,6 +139,23 @@ TEST(render_flame, an_affine_only_flame_gives_the_bytes_of_the_general_walk) {
   }
 }
 
+// linear3D is linear in the plane and walks as linear does, in double: an attractor near
+// x = 10⁴, where a float's step (~10⁻³) is a twentieth of a bin, gives linear's bytes (until
+// 27 Nov linear3D ran as a float batch form and moved bins).
+TEST(render_flame, linear3d_walks_as_linear_in_double) {
+  Flame f = two_points();
+  f.camera = {.width = 64, .height = 48, .center = {10000.7, 0.6}, .scale = 40};
+  f.xforms[0].pre = {0.5, 0.1, -0.1, 0.5, 5000.17, 1000.45};  // fixed: (10000.5, 0.8)
+  f.xforms[1].pre = {0.5, 0, 0, 0.5, 5000.5, 0.3};            // fixed: (10001, 0.6)
+  for (Xform& xf : f.xforms) xf.variations = {term("linear", 1)};
+  f.quality = 50;
+  Flame in_3d = f;
+  for (Xform& xf : in_3d.xforms) xf.variations = {term("linear3D", 1)};
+  const cv::Mat want = render_flame(f, {.seed = 3, .threads = 1});
+  EXPECT_GT(cv::countNonZero(want.reshape(1)), 50);
+  EXPECT_EQ(cv::norm(want, render_flame(in_3d, {.seed = 3, .threads = 1}), cv::NORM_INF), 0);
+}
+
 // A bin's 32-bit sums wrap after 2^16 hits of full colour: two constant maps, 150 000 hits
 // each, still count every hit.
 TEST(render_flame, a_bin_of_more_than_65536_hits_counts_every_hit) {
