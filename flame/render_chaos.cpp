@@ -176,6 +176,22 @@ struct Step {
   }
 };
 
+// An affine_only step flat, for the walk's point-by-point loop: its maps, the sum's weights and
+// the colour update in one small record (a Step with its colours is over 4 KB, and its terms
+// are behind a pointer).
+constexpr std::size_t kFlatTerms = 4;
+struct Flat {
+  AffineMap pre, post;
+  std::array<double, kFlatTerms> w{};  // the sum's linear weights, in order
+  double keep = 1, shift = 0;
+  std::uint32_t terms = 0;
+  bool has_sum = false, has_post = false;
+};
+
+// The shapes that every step of a flat plan shares, so that the loop has no branch on them:
+// any (the record says), or a sum of one term with a post map, or without.
+enum class FlatShape { any, one_term_post, one_term };
+
 // The kernel level and lane type the batch forms run at.
 struct Kernels {
   CpuLevel level;
@@ -236,6 +252,8 @@ struct Plan {
   std::vector<MapPicker> pickers;
   bool linear_palette = false;
   bool affine_only = false;  // every step affine_only: pick() moves the walkers
+  std::vector<Flat> flat;    // the steps as Flat records, when affine_only with few terms
+  FlatShape flat_shape = FlatShape::any;
   std::array<Rgba, 256> palette{};
   BinGrid grid;
   BinFunction bin_numbers = nullptr;          // the kernel level's
@@ -286,6 +304,37 @@ void start(Walkers& a, std::size_t i, Rng& rng) {
   a.c[i] = rng.uniform();
 }
 
+// Each walker moved by the Flat record of its xform: Step::moved's operations in its order (the
+// sum from 0, w·q added term by term), so the same bits, with the shape's branches resolved.
+template <FlatShape Shape>
+void move_flat(const Plan& plan, Walkers& a, std::size_t m) {
+  const Flat* flat = plan.flat.data();
+  for (std::size_t i = 0; i < m; ++i) {
+    const Flat& s = flat[a.k[i]];
+    const double x = a.x[i], y = a.y[i];
+    double sx = s.pre.a * x + s.pre.b * y + s.pre.e;
+    double sy = s.pre.c * x + s.pre.d * y + s.pre.f;
+    if (Shape != FlatShape::any || s.has_sum) {
+      const double qx = sx, qy = sy;
+      const std::uint32_t terms = Shape == FlatShape::any ? s.terms : 1;
+      sx = 0;
+      sy = 0;
+      for (std::uint32_t t = 0; t < terms; ++t) {
+        sx += s.w[t] * qx;
+        sy += s.w[t] * qy;
+      }
+    }
+    if (Shape == FlatShape::one_term_post || (Shape == FlatShape::any && s.has_post)) {
+      a.x[i] = s.post.a * sx + s.post.b * sy + s.post.e;
+      a.y[i] = s.post.c * sx + s.post.d * sy + s.post.f;
+    } else {
+      a.x[i] = sx;
+      a.y[i] = sy;
+    }
+    a.c[i] = s.keep * a.c[i] + s.shift;
+  }
+}
+
 // Each of the m walkers picks its next xform (a.k ← it). A plan of affine_only steps moves each
 // walker by it here; otherwise order[first[j], first[j + 1]) lists the walkers that picked xform
 // j (next: 4 × the xform count, scratch).
@@ -301,6 +350,16 @@ void pick(const Plan& plan, Walkers& a, std::size_t m, std::vector<std::size_t>&
     const std::uint32_t own =
         0u - static_cast<std::uint32_t>(static_cast<std::uint32_t>(r) < v.threshold[column]);
     a.k[i] = alias ^ ((column ^ alias) & own);
+  }
+  if (!plan.flat.empty()) {
+    switch (plan.flat_shape) {
+      case FlatShape::one_term_post:
+        return move_flat<FlatShape::one_term_post>(plan, a, m);
+      case FlatShape::one_term:
+        return move_flat<FlatShape::one_term>(plan, a, m);
+      case FlatShape::any:
+        return move_flat<FlatShape::any>(plan, a, m);
+    }
   }
   if (plan.affine_only) {
     // The general walk's step (Step::operator()), point by point, with the same bits.
@@ -420,6 +479,34 @@ std::uint64_t walk_chunk(const Plan& plan, std::uint64_t seed, std::uint64_t chu
   return reseeded;
 }
 
+// The Flat records of an affine_only plan whose sums have at most kFlatTerms terms, and the
+// shape they share.
+void flatten(Plan& plan) {
+  bool one_term = true, post = true, no_post = true;
+  for (const Step& s : plan.steps) {
+    if (s.sum_terms.size() > kFlatTerms) {
+      plan.flat.clear();
+      return;
+    }
+    Flat f{.pre = s.pre,
+           .post = s.post,
+           .keep = s.keep,
+           .shift = s.shift,
+           .terms = static_cast<std::uint32_t>(s.sum_terms.size()),
+           .has_sum = s.has_sum,
+           .has_post = s.has_post};
+    for (std::size_t t = 0; t < s.sum_terms.size(); ++t) f.w[t] = s.sum_terms[t].w;
+    plan.flat.push_back(f);
+    one_term = one_term && s.has_sum && s.sum_terms.size() == 1;
+    post = post && s.has_post;
+    no_post = no_post && !s.has_post;
+  }
+  plan.flat_shape = !one_term ? FlatShape::any
+                    : post    ? FlatShape::one_term_post
+                    : no_post ? FlatShape::one_term
+                              : FlatShape::any;
+}
+
 Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   Plan plan;
   const Kernels kernels{cpu_level(), float_lanes ? LaneType::f32 : LaneType::f64};
@@ -428,6 +515,7 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   plan.pickers = xform_pickers(flame, false);
   plan.affine_only = std::all_of(plan.steps.begin(), plan.steps.end(),
                                  [](const Step& s) { return s.affine_only; });
+  if (plan.affine_only) flatten(plan);
   plan.linear_palette = flame.palette.mode == PaletteMode::linear;
   // A bin's number and kOffBin fit 32 bits (a raster that large would need 64 GiB a worker).
   const std::uint64_t bins = std::uint64_t{static_cast<std::uint32_t>(raster.bins_x)} *

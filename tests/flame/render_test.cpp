@@ -137,6 +137,16 @@ TEST(render_flame, an_affine_only_flame_gives_the_bytes_of_the_general_walk) {
               0)
         << threads << " threads";
   }
+  // Every xform one linear term and a post map: the shape the walk runs without branches.
+  Flame uniform = f;
+  uniform.xforms[0].variations = {term("linear", 0.9)};
+  uniform.xforms[0].post = AffineMap{1, 0.1, 0, 1, 0, 0.05};
+  Flame uniform_general = uniform;
+  for (Xform& xf : uniform_general.xforms) xf.variations.push_back(term("spherical", 0));
+  const cv::Mat flat = render_flame(uniform, {.seed = 4, .threads = 2});
+  EXPECT_GT(cv::countNonZero(flat.reshape(1)), 100);
+  EXPECT_EQ(cv::norm(flat, render_flame(uniform_general, {.seed = 4, .threads = 2}), cv::NORM_INF),
+            0);
 }
 
 // linear3D is linear in the plane and walks as linear does, in double: an attractor near
