@@ -259,6 +259,7 @@ struct Plan {
   BinFunction bin_numbers = nullptr;          // the kernel level's
   std::vector<std::uint8_t> invisible;        // steps[k].invisible, compact for the walk's lookup
   std::vector<const std::uint32_t*> colours;  // steps[k].colours
+  std::vector<std::uint32_t> fixed;           // PlotTables::fixed, when it applies
   PlotTables tables;
   PlotFunction plot = nullptr;  // the kernel level's
   bool any_invisible = false;
@@ -507,6 +508,28 @@ void flatten(Plan& plan) {
                               : FlatShape::any;
 }
 
+// Where every xform sets the colour coordinate to its own (keep 0) and no final xform moves it,
+// a plotted walker's coordinate is 0·c + shift = shift of the xform that moved it last (c ≥ 0,
+// and every plotted walker has moved since its start): its hit's colour is fixed per xform,
+// computed here by the plot kernel itself from that coordinate.
+void fix_colours(Plan& plan) {
+  if (plan.final_step ||
+      std::any_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return s.keep != 0; }))
+    return;
+  const std::size_t n = plan.steps.size();
+  plan.fixed.assign(4 * n, 0);
+  std::vector<std::uint32_t> at(n), k(n);
+  std::vector<double> c(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    at[j] = static_cast<std::uint32_t>(j);
+    k[j] = static_cast<std::uint32_t>(j);
+    c[j] = plan.steps[j].shift;
+  }
+  unsigned wrapped = 0;
+  plan.plot(plan.tables, plan.fixed.data(), 0, n, at.data(), k.data(), c.data(), &wrapped);
+  plan.tables.fixed = plan.fixed.data();
+}
+
 Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   Plan plan;
   const Kernels kernels{cpu_level(), float_lanes ? LaneType::f32 : LaneType::f64};
@@ -532,6 +555,7 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   }
   plan.tables = {plan.colours.data(), plan.linear_palette};
   plan.plot = plot_function(cpu_level());
+  fix_colours(plan);
   plan.any_invisible =
       std::any_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return s.invisible; });
   return plan;

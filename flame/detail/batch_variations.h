@@ -88,6 +88,9 @@ BinFunction bin_function(CpuLevel level);
 struct PlotTables {
   const std::uint32_t* const* colours = nullptr;
   bool linear = false;
+  // When every xform sets the colour coordinate to its own (colour_speed 1, as Fractorium's
+  // tilings have), a hit's colour is its xform's: fixed + 4·k, looked up without mixing.
+  const std::uint32_t* fixed = nullptr;
 };
 
 // Plots hits [from, n) whose bin at[i] is not kOffBin: the colour of coordinate c[i] in xform

@@ -34,7 +34,11 @@ std::size_t flame_plot(const flame::detail::PlotTables& t, std::uint32_t* bins, 
                        const double* c, unsigned* wrapped) {
   for (std::size_t i = from; i < n; ++i) {
     if (at[i] == flame::detail::kOffBin) continue;
-    const U4 v = hit_colour(t.colours[k[i]], t.linear, c[i]);
+    U4 v;
+    if (t.fixed)
+      std::memcpy(&v, t.fixed + 4 * std::size_t{k[i]}, sizeof v);
+    else
+      v = hit_colour(t.colours[k[i]], t.linear, c[i]);
     std::uint32_t* p = bins + 4 * std::size_t{at[i]};
     U4 s;
     std::memcpy(&s, p, sizeof s);

@@ -149,6 +149,28 @@ TEST(render_flame, an_affine_only_flame_gives_the_bytes_of_the_general_walk) {
             0);
 }
 
+// Where every xform sets the colour coordinate to its own (colour_speed 1), each xform's hits
+// add one fixed colour: the bytes of the same flame plotted hit by hit (an identity final xform
+// of colour speed 0 makes the walk colour every hit from its coordinate).
+TEST(render_flame, colour_speed_one_plots_each_xforms_own_colour) {
+  Flame f = two_points();
+  f.filtering = {.supersample = 2, .filter_radius = 0.6, .estimator_radius = 4};
+  f.xforms[0].pre = {0.5, 0.1, -0.2, 0.5, 0.3, 0.1};
+  f.xforms[0].colour = 0.3;
+  f.xforms[1].pre = {0.6, 0, 0, 0.6, -0.4, 0};
+  f.xforms[1].colour = 0.8;
+  for (int i = 0; i < 256; ++i) f.palette.colours[i] = Rgba{i / 255.0, 1 - i / 255.0, 0.5};
+  Flame per_hit = f;
+  per_hit.final_xform = Xform{.pre = {1, 0, 0, 1, 0, 0}, .colour_speed = 0};
+  per_hit.final_xform->variations = {term("linear", 1)};
+  for (const PaletteMode mode : {PaletteMode::step, PaletteMode::linear}) {
+    f.palette.mode = per_hit.palette.mode = mode;
+    const cv::Mat fixed = render_flame(f, {.seed = 5, .threads = 2});
+    EXPECT_GT(cv::countNonZero(fixed.reshape(1)), 100);
+    EXPECT_EQ(cv::norm(fixed, render_flame(per_hit, {.seed = 5, .threads = 2}), cv::NORM_INF), 0);
+  }
+}
+
 // linear3D is linear in the plane and walks as linear does, in double: an attractor near
 // x = 10⁴, where a float's step (~10⁻³) is a twentieth of a bin, gives linear's bytes (until
 // 27 Nov linear3D ran as a float batch form and moved bins).
@@ -259,6 +281,12 @@ TEST(render_flame, the_plot_adds_palette_colours_and_reports_wraps_at_every_kern
     EXPECT_EQ(bins[0], 128u * 256) << to_string(level);
     EXPECT_EQ(bins[4 + 3], 11u * 256 + 128 + 3) << to_string(level);
     EXPECT_EQ(bins[8], 255u * 256) << to_string(level);
+    // Fixed colours per xform: the coordinates are not read.
+    const std::uint32_t fixed[] = {1, 2, 3, 4, 10, 20, 30, 40};
+    std::fill(bins.begin(), bins.end(), 0);
+    EXPECT_EQ(plot({tables, true, fixed}, bins.data(), 0, 4, at, k, c, &wrapped), 4u);
+    EXPECT_EQ(bins, (std::vector<std::uint32_t>{1, 2, 3, 4, 10, 20, 30, 40, 1, 2, 3, 4}))
+        << to_string(level);
     // A sum 100 below 2³² wraps at the hit that passes it: index 0, channels r and g.
     bins[0] = bins[1] = UINT32_MAX - 100;
     EXPECT_EQ(plot({tables, false}, bins.data(), 0, 4, at, k, c, &wrapped), 1u);
