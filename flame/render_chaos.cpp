@@ -568,7 +568,11 @@ ChaosResult run_chaos_game(const ChaosRun& run) {
   const std::uint64_t chunks =
       std::max<std::uint64_t>(1, (run.points + kChunkPoints - 1) / kChunkPoints);
   const int workers = worker_count(chunks, run.threads);
-  std::vector<Bins> bins(static_cast<std::size_t>(workers), Bins(run.raster));
+  // Each worker's bins built in place (copies of one prototype would zero, fault in and copy
+  // one raster more).
+  std::vector<Bins> bins;
+  bins.reserve(static_cast<std::size_t>(workers));
+  for (int w = 0; w < workers; ++w) bins.emplace_back(run.raster);
   std::vector<std::uint64_t> reseeded(chunks, 0);
   std::atomic<std::uint64_t> done{0};
   std::mutex progress_mutex;
