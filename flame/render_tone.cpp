@@ -13,13 +13,16 @@ namespace ifsfx::flame {
 namespace {
 
 // The disc of one density-estimation radius: offsets and Epanechnikov's weights 1 − d²/r²,
-// normalised to sum 1 (a radius below one bin keeps the bin to itself).
+// normalised to sum 1 (a radius below one bin keeps the bin to itself). Row by row: each row of
+// the disc is a run of consecutive dx (d² grows with |dx|), so that a bin's spreading clips a
+// row once and adds along it, not tap by tap.
 struct DeKernel {
-  struct Tap {
-    int dy, dx;
-    double w;
+  struct Row {
+    int dy, dx0, n;     // taps dx0 … dx0 + n − 1 of row dy
+    std::size_t first;  // their weights: w[first, first + n)
   };
-  std::vector<Tap> taps;
+  std::vector<Row> rows;
+  std::vector<double> w;
   int reach = 0;
 };
 
@@ -27,15 +30,20 @@ DeKernel de_kernel(double radius) {
   DeKernel k;
   const int reach = static_cast<int>(std::floor(radius));
   double sum = 0;
-  for (int dy = -reach; dy <= reach; ++dy)
+  for (int dy = -reach; dy <= reach; ++dy) {
+    DeKernel::Row row{dy, 0, 0, k.w.size()};
     for (int dx = -reach; dx <= reach; ++dx) {
       const double d2 = static_cast<double>(dx * dx + dy * dy) / (radius * radius);
       if (d2 >= 1) continue;  // the centre, d = 0, is always in
+      if (row.n == 0) row.dx0 = dx;
+      ++row.n;
       const double w = 1 - d2;
-      k.taps.push_back({dy, dx, w});
+      k.w.push_back(w);
       sum += w;
     }
-  for (auto& t : k.taps) t.w /= sum;
+    if (row.n > 0) k.rows.push_back(row);
+  }
+  for (double& w : k.w) w /= sum;
   k.reach = reach;
   return k;
 }
@@ -84,11 +92,19 @@ void spread_band(const FlameHistogram& h, const Filtering& f, int ss, const LogS
       const double v[4] = {in[0] * ls, in[1] * ls, in[2] * ls, in[3] * ls};
       const double d = de_density(h, row, col, ss);
       const double radius = std::max(min_r, max_r / std::pow(d, f.estimator_curve));
-      for (const auto& t : kernels(std::min(radius, max_r)).taps) {
-        const int y = row + t.dy, x = col + t.dx;
-        if (y < 0 || y >= h.height || x < 0 || x >= h.width) continue;
-        double* o = out.at(y - origin, x);
-        for (int k = 0; k < 4; ++k) o[k] += t.w * v[k];
+      // Each output bin takes one contribution from this bin, w·v, as tap by tap: the same sums.
+      const DeKernel& kernel = kernels(std::min(radius, max_r));
+      for (const DeKernel::Row& r : kernel.rows) {
+        const int y = row + r.dy;
+        if (y < 0 || y >= h.height) continue;
+        const int x0 = std::max(0, col + r.dx0), x1 = std::min(h.width, col + r.dx0 + r.n);
+        const double* w = kernel.w.data() + r.first + (x0 - (col + r.dx0));
+        double* o = out.at(y - origin, 0);
+        for (int x = x0; x < x1; ++x) {
+          double* p = o + 4 * static_cast<std::size_t>(x);
+          const double wx = w[x - x0];
+          for (int k = 0; k < 4; ++k) p[k] += wx * v[k];
+        }
       }
     }
 }
