@@ -259,8 +259,9 @@ TEST(render_flame, bin_numbers_are_the_cameras_bins_at_every_kernel_level) {
 // entries at known coordinates, a sum wrapped past 2³² reported where it happened, and every
 // kernel level the scalar level's sums and wraps on random hits.
 TEST(render_flame, the_plot_adds_palette_colours_and_reports_wraps_at_every_kernel_level) {
-  std::vector<std::uint32_t> table(4 * 256);
-  for (std::uint32_t e = 0; e < 256; ++e)
+  // 257 entries: xform 1's 256 start at the second.
+  std::vector<std::uint32_t> table(4 * 257);
+  for (std::uint32_t e = 0; e < 257; ++e)
     for (std::uint32_t ch = 0; ch < 4; ++ch) table[4 * e + ch] = e * 256 + ch;
   const std::uint32_t* tables[] = {table.data(), table.data() + 4};  // xform 1: entries shifted
   for (CpuLevel level : supported_cpu_levels()) {
