@@ -4,6 +4,7 @@
 // operations as the scalar level in the same order, so the same bits.
 #include <immintrin.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -63,5 +64,56 @@ inline void set_lane(V& v, std::size_t i, double d) {
 std::span<const flame::detail::BatchVariation> flame_batch_table() {
   return kTable;
 }
+
+// The scalar level's flame_bin_numbers four points at a time: the same products and sums in
+// the same order (no FMA), exact comparisons and truncations, so the same numbers.
+std::size_t flame_bin_numbers(const flame::detail::BinGrid& g, std::size_t n, const double* x,
+                              const double* y, std::uint32_t* at) {
+  const AffineMap& m = g.to_bins;
+  const __m256d a = _mm256_set1_pd(m.a), b = _mm256_set1_pd(m.b), c = _mm256_set1_pd(m.c);
+  const __m256d d = _mm256_set1_pd(m.d), e = _mm256_set1_pd(m.e), f = _mm256_set1_pd(m.f);
+  const __m256d zero = _mm256_setzero_pd(), sign = _mm256_set1_pd(-0.0);
+  const __m256d esc = _mm256_set1_pd(flame::detail::kEscape);
+  const __m256d bx_max = _mm256_set1_pd(g.bins_x), by_max = _mm256_set1_pd(g.bins_y);
+  const __m128i row = _mm_set1_epi32(static_cast<int>(g.bins_x));
+  const __m128i off = _mm_set1_epi32(-1);
+  // The low halves of the four 64-bit masks, as four 32-bit masks.
+  const __m256i halves = _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+  std::size_t escaped = 0;
+  for (std::size_t i = 0; i < n; i += 4) {
+    const __m256d px = _mm256_loadu_pd(x + i), py = _mm256_loadu_pd(y + i);
+    const __m256d inside =
+        _mm256_and_pd(_mm256_cmp_pd(_mm256_andnot_pd(sign, px), esc, _CMP_LT_OQ),
+                      _mm256_cmp_pd(_mm256_andnot_pd(sign, py), esc, _CMP_LT_OQ));
+    const __m256d bx = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(a, px), _mm256_mul_pd(b, py)), e);
+    const __m256d by = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(c, px), _mm256_mul_pd(d, py)), f);
+    __m256d in = _mm256_and_pd(inside, _mm256_cmp_pd(bx, zero, _CMP_GE_OQ));
+    in = _mm256_and_pd(in, _mm256_cmp_pd(bx, bx_max, _CMP_LT_OQ));
+    in = _mm256_and_pd(in, _mm256_cmp_pd(by, zero, _CMP_GE_OQ));
+    in = _mm256_and_pd(in, _mm256_cmp_pd(by, by_max, _CMP_LT_OQ));
+    const int lanes = static_cast<int>(std::min<std::size_t>(4, n - i));
+    // The count of the escaped lanes' bits from a table of 4-bit counts (no POPCNT needed).
+    const unsigned gone = static_cast<unsigned>(~_mm256_movemask_pd(inside)) & ((1u << lanes) - 1);
+    escaped += (0x4332322132212110ULL >> (4 * gone)) & 0xF;
+    // In range the truncation is the scalar cast's; out of range its value is never used.
+    const __m128i ix = _mm256_cvttpd_epi32(bx), iy = _mm256_cvttpd_epi32(by);
+    const __m128i bin = _mm_add_epi32(_mm_mullo_epi32(iy, row), ix);
+    const __m128i keep =
+        _mm256_castsi256_si128(_mm256_permutevar8x32_epi32(_mm256_castpd_si256(in), halves));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(at + i), _mm_blendv_epi8(off, bin, keep));
+  }
+  return escaped;
+}
+
+namespace {
+using U4 = std::uint32_t __attribute__((vector_size(16)));
+using M4 = std::int32_t __attribute__((vector_size(16)));  // a comparison's lanes
+inline unsigned wrapped_lanes(M4 m) {
+  return static_cast<unsigned>(_mm_movemask_ps(_mm_castsi128_ps((__m128i)m)));
+}
+
+}  // namespace
+
+#include "flame/detail/plot_kernel.inl"
 
 }  // namespace ifsfx::detail::kernel_avx2

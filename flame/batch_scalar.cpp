@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 
 #include "flame/detail/batch_variations.h"
 
@@ -58,5 +59,37 @@ inline void set_lane(V& v, std::size_t, double d) {
 std::span<const flame::detail::BatchVariation> flame_batch_table() {
   return kTable;
 }
+
+// The reference of every level's bin numbering: AffineMap's operations in its order, the
+// comparisons and truncations exact.
+std::size_t flame_bin_numbers(const flame::detail::BinGrid& g, std::size_t n, const double* x,
+                              const double* y, std::uint32_t* at) {
+  const AffineMap& m = g.to_bins;
+  const double bx_max = g.bins_x, by_max = g.bins_y;
+  std::size_t escaped = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool out =
+        !(std::abs(x[i]) < flame::detail::kEscape && std::abs(y[i]) < flame::detail::kEscape);
+    const double bx = m.a * x[i] + m.b * y[i] + m.e;
+    const double by = m.c * x[i] + m.d * y[i] + m.f;
+    const bool in = !out && bx >= 0 && bx < bx_max && by >= 0 && by < by_max;
+    escaped += out;
+    at[i] = in ? static_cast<std::uint32_t>(by) * g.bins_x + static_cast<std::uint32_t>(bx)
+               : flame::detail::kOffBin;
+  }
+  return escaped;
+}
+
+namespace {
+using U4 = std::uint32_t __attribute__((vector_size(16)));
+using M4 = std::int32_t __attribute__((vector_size(16)));  // a comparison's lanes
+inline unsigned wrapped_lanes(M4 m) {
+  return (m[0] != 0 ? 1u : 0u) | (m[1] != 0 ? 2u : 0u) | (m[2] != 0 ? 4u : 0u) |
+         (m[3] != 0 ? 8u : 0u);
+}
+
+}  // namespace
+
+#include "flame/detail/plot_kernel.inl"
 
 }  // namespace ifsfx::detail::kernel_scalar

@@ -28,4 +28,22 @@ const BatchVariation* find_batch_variation(CpuLevel level, std::string_view name
   return it == table.end() ? nullptr : &*it;
 }
 
+BinFunction bin_function(CpuLevel level) {
+#if IFSFX_FLAME_X86_KERNELS
+  if (level != CpuLevel::scalar) return ifsfx::detail::kernel_avx2::flame_bin_numbers;
+#else
+  (void)level;
+#endif
+  return ifsfx::detail::kernel_scalar::flame_bin_numbers;
+}
+
+PlotFunction plot_function(CpuLevel level) {
+#if IFSFX_FLAME_X86_KERNELS
+  if (level != CpuLevel::scalar) return ifsfx::detail::kernel_avx2::flame_plot;
+#else
+  (void)level;
+#endif
+  return ifsfx::detail::kernel_scalar::flame_plot;
+}
+
 }  // namespace ifsfx::flame::detail

@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <utility>
 
 #include <fmt/format.h>
 
@@ -87,7 +88,7 @@ cv::Mat render_flame(const Flame& input, const FlameRenderOptions& options,
   const auto progress = [&](double f) {
     if (options.progress) options.progress(0.9 * f);
   };
-  const detail::ChaosResult chaos =
+  detail::ChaosResult chaos =
       detail::run_chaos_game({.flame = &flame,
                               .raster = flame_raster(cam, ss, kernel.gutter),
                               .points = static_cast<std::uint64_t>(std::ceil(samples)),
@@ -98,8 +99,8 @@ cv::Mat render_flame(const Flame& input, const FlameRenderOptions& options,
                               .cancel = options.cancel,
                               .progress = progress});
   const FlameHistogram dense =
-      density_estimate(chaos.histogram, flame.filtering, ss, log_scale(flame, ss, quality),
-                       options.threads, options.cancel);
+      density_estimate(std::move(chaos.histogram), flame.filtering, ss,
+                       log_scale(flame, ss, quality), options.threads, options.cancel);
   const FlameHistogram pixels =
       spatial_filter(dense, kernel, ss, cam.width, cam.height, options.threads, options.cancel);
   cv::Mat out = display(pixels, flame.tone, options.channels, options.depth, options.threads);

@@ -7,10 +7,13 @@
 #include <memory>
 #include <mutex>
 
+#include <fmt/format.h>
+
 #include "flame/detail/batch_variations.h"
 #include "flame/detail/render_chaos.h"
 #include "flame/variations.h"
 #include "flame/xform_pickers.h"
+#include "ifs/error.h"
 #include "ifs/parallel.h"
 #include "ifs/rng.h"
 
@@ -23,8 +26,7 @@ namespace {
 // its variations together (flame/detail/batch_variations.h).
 constexpr std::uint64_t kWalkerPoints = 10000;
 constexpr std::uint64_t kChunkPoints = kWalkerPoints * kBatchLanes;
-constexpr double kUnit = 65536;   // one hit of full colour, in the integer sums
-constexpr double kEscape = 1e10;  // a point beyond this (or not a number) is re-seeded
+constexpr double kUnit = 65536;  // one hit of full colour, in the integer sums
 constexpr std::size_t kN = kBatchStride;
 
 // Four 32-bit sums or colour channels (r, g, b, a) as one value: GCC's generic vectors, plain
@@ -174,6 +176,22 @@ struct Step {
   }
 };
 
+// An affine_only step flat, for the walk's point-by-point loop: its maps, the sum's weights and
+// the colour update in one small record (a Step with its colours is over 4 KB, and its terms
+// are behind a pointer).
+constexpr std::size_t kFlatTerms = 4;
+struct Flat {
+  AffineMap pre, post;
+  std::array<double, kFlatTerms> w{};  // the sum's linear weights, in order
+  double keep = 1, shift = 0;
+  std::uint32_t terms = 0;
+  bool has_sum = false, has_post = false;
+};
+
+// The shapes that every step of a flat plan shares, so that the loop has no branch on them:
+// any (the record says), or a sum of one term with a post map, or without.
+enum class FlatShape { any, one_term_post, one_term };
+
 // The kernel level and lane type the batch forms run at.
 struct Kernels {
   CpuLevel level;
@@ -186,11 +204,15 @@ std::vector<Term> terms_of(const std::vector<VariationTerm>& list, bool in_sum, 
     const Variation& v = variation(t.id);
     // z only: adds nothing to the sum, leaves the point alone in a list.
     if (v.kind == VariationKind::flat_3d) continue;
-    // linear (an IFS's own maps) stays in double lanes: float would only round it.
-    const LaneType type = v.name == "linear" ? LaneType::f64 : kernels.type;
-    const BatchVariation* batch = find_batch_variation(kernels.level, v.name, type);
-    out.push_back({v.function, batch ? batch : find_batch_variation(kernels.level, v.name),
-                   t.weight, t.params, !in_sum && v.assign == Assign::add, v.name == "linear"});
+    // linear3D is linear in the plane (its z part is dropped): the same term, so that a flame
+    // of linear3D xforms (Fractorium's hexagonal tilings) walks as an affine one. linear (an
+    // IFS's own maps) stays in double lanes: float would only round it.
+    const bool linear = v.name == "linear" || v.name == "linear3D";
+    const std::string_view name = linear ? std::string_view("linear") : v.name;
+    const LaneType type = linear ? LaneType::f64 : kernels.type;
+    const BatchVariation* batch = find_batch_variation(kernels.level, name, type);
+    out.push_back({v.function, batch ? batch : find_batch_variation(kernels.level, name), t.weight,
+                   t.params, !in_sum && v.assign == Assign::add, linear});
   }
   return out;
 }
@@ -230,8 +252,17 @@ struct Plan {
   std::vector<MapPicker> pickers;
   bool linear_palette = false;
   bool affine_only = false;  // every step affine_only: pick() moves the walkers
+  std::vector<Flat> flat;    // the steps as Flat records, when affine_only with few terms
+  FlatShape flat_shape = FlatShape::any;
   std::array<Rgba, 256> palette{};
-  FlameRaster raster;
+  BinGrid grid;
+  BinFunction bin_numbers = nullptr;          // the kernel level's
+  std::vector<std::uint8_t> invisible;        // steps[k].invisible, compact for the walk's lookup
+  std::vector<const std::uint32_t*> colours;  // steps[k].colours
+  std::vector<std::uint32_t> fixed;           // PlotTables::fixed, when it applies
+  PlotTables tables;
+  PlotFunction plot = nullptr;  // the kernel level's
+  bool any_invisible = false;
 };
 
 // The histogram of one worker: r, g, b, a integer sums per bin, 32 bits each so that a bin is
@@ -242,55 +273,21 @@ struct Bins {
   std::vector<std::uint32_t> lo;
   std::vector<std::size_t> carries;
   explicit Bins(const FlameRaster& r) : lo(4 * static_cast<std::size_t>(r.bins_x) * r.bins_y) {}
-  // The four sums from `at` += v, as one 16-byte read and write (integers: any order and width
-  // of the additions gives the same sums).
-  void add(std::size_t at, U4 v) {
-    U4 s;
-    std::memcpy(&s, &lo[at], sizeof s);
-    s += v;
-    std::memcpy(&lo[at], &s, sizeof s);
-    const U4 wrapped = s < v;
-    if ((wrapped[0] | wrapped[1] | wrapped[2] | wrapped[3]) != 0) [[unlikely]]
-      for (std::size_t k = 0; k < 4; ++k)
-        if (wrapped[k] != 0) carries.push_back(at + k);
-  }
 };
 
-constexpr std::size_t kOff = SIZE_MAX;  // a point off the raster
-
-// The first of the four sums of p's bin, or kOff.
-std::size_t bin_of(const FlameRaster& r, Point p) {
-  const Point b = r.to_bins(p);
-  if (!(b.x >= 0 && b.x < r.bins_x && b.y >= 0 && b.y < r.bins_y)) return kOff;
-  return 4 * (static_cast<std::size_t>(b.y) * r.bins_x + static_cast<std::size_t>(b.x));
-}
-
-void plot(const Plan& plan, const Step& from, double c, std::size_t at, Bins& bins) {
-  c = std::clamp(c, 0.0, 1.0);
-  if (!plan.linear_palette) {
-    // Step palette: entry ⌊256·c⌋, the last one for c = 1.
-    bins.add(at, from.colours[std::min<std::size_t>(static_cast<std::size_t>(c * 256), 255)]);
-    return;
-  }
-  // Linear palette: entries ⌊256·c⌋ and the next, mixed by the fraction, in 1/256 steps
-  // (integers, no rounding call in the loop); from 255 on, the last entry. flam3-render's
-  // colours of Fractorium's linear-palette flames say 256·c, not 255·c. An entry is at most
-  // kUnit = 2¹⁶, so the mix fits 32 bits.
-  const auto x = static_cast<std::uint32_t>(std::min(c * 256, 255.0) * 256);
-  const std::size_t i = std::min<std::uint32_t>(x >> 8, 254);
-  const std::uint32_t w = x - (static_cast<std::uint32_t>(i) << 8);
-  bins.add(at, (from.colours[i] * (256 - w) + from.colours[i + 1] * w) >> 8);
-}
-
-// Plots the points whose `at` is not kOff, their bins fetched ahead: a step's 256 random
+// Plots the points whose bin `at` is not kOffBin, their bins fetched ahead: a step's 256 random
 // writes overlap their cache misses.
-void plot_all(const Plan& plan, const std::array<std::size_t, kN>& at,
+void plot_all(const Plan& plan, const std::array<std::uint32_t, kN>& at,
               const std::array<std::uint32_t, kN>& k, const std::array<double, kN>& c,
               std::size_t m, Bins& bins) {
   for (std::size_t i = 0; i < m; ++i)
-    if (at[i] != kOff) __builtin_prefetch(&bins.lo[at[i]], 1);
-  for (std::size_t i = 0; i < m; ++i)
-    if (at[i] != kOff) plot(plan, plan.steps[k[i]], c[i], at[i], bins);
+    if (at[i] != kOffBin) __builtin_prefetch(&bins.lo[4 * std::size_t{at[i]}], 1);
+  for (std::size_t i = 0; i < m;) {
+    unsigned wrapped = 0;
+    i = plan.plot(plan.tables, bins.lo.data(), i, m, at.data(), k.data(), c.data(), &wrapped);
+    for (std::size_t j = 0; j < 4; ++j)
+      if ((wrapped >> j & 1) != 0) bins.carries.push_back(4 * std::size_t{at[i - 1]} + j);
+  }
 }
 
 // The walkers of one chunk. They stay in place; each step lists them by the xform they picked.
@@ -298,6 +295,7 @@ struct Walkers {
   std::array<double, kN> x{}, y{}, c{};
   std::array<std::uint32_t, kN> k{};      // the xform that moved it last (its picker row, colours)
   std::array<std::uint64_t, kN> limit{};  // the step at which it stops plotting
+  std::uint64_t first_limit = 0;          // the smallest limit
 };
 
 // A walker's start: a random point in [−1, 1]², a random colour.
@@ -305,6 +303,37 @@ void start(Walkers& a, std::size_t i, Rng& rng) {
   a.x[i] = 2 * rng.uniform() - 1;
   a.y[i] = 2 * rng.uniform() - 1;
   a.c[i] = rng.uniform();
+}
+
+// Each walker moved by the Flat record of its xform: Step::moved's operations in its order (the
+// sum from 0, w·q added term by term), so the same bits, with the shape's branches resolved.
+template <FlatShape Shape>
+void move_flat(const Plan& plan, Walkers& a, std::size_t m) {
+  const Flat* flat = plan.flat.data();
+  for (std::size_t i = 0; i < m; ++i) {
+    const Flat& s = flat[a.k[i]];
+    const double x = a.x[i], y = a.y[i];
+    double sx = s.pre.a * x + s.pre.b * y + s.pre.e;
+    double sy = s.pre.c * x + s.pre.d * y + s.pre.f;
+    if (Shape != FlatShape::any || s.has_sum) {
+      const double qx = sx, qy = sy;
+      const std::uint32_t terms = Shape == FlatShape::any ? s.terms : 1;
+      sx = 0;
+      sy = 0;
+      for (std::uint32_t t = 0; t < terms; ++t) {
+        sx += s.w[t] * qx;
+        sy += s.w[t] * qy;
+      }
+    }
+    if (Shape == FlatShape::one_term_post || (Shape == FlatShape::any && s.has_post)) {
+      a.x[i] = s.post.a * sx + s.post.b * sy + s.post.e;
+      a.y[i] = s.post.c * sx + s.post.d * sy + s.post.f;
+    } else {
+      a.x[i] = sx;
+      a.y[i] = sy;
+    }
+    a.c[i] = s.keep * a.c[i] + s.shift;
+  }
 }
 
 // Each of the m walkers picks its next xform (a.k ← it). A plan of affine_only steps moves each
@@ -322,6 +351,16 @@ void pick(const Plan& plan, Walkers& a, std::size_t m, std::vector<std::size_t>&
     const std::uint32_t own =
         0u - static_cast<std::uint32_t>(static_cast<std::uint32_t>(r) < v.threshold[column]);
     a.k[i] = alias ^ ((column ^ alias) & own);
+  }
+  if (!plan.flat.empty()) {
+    switch (plan.flat_shape) {
+      case FlatShape::one_term_post:
+        return move_flat<FlatShape::one_term_post>(plan, a, m);
+      case FlatShape::one_term:
+        return move_flat<FlatShape::one_term>(plan, a, m);
+      case FlatShape::any:
+        return move_flat<FlatShape::any>(plan, a, m);
+    }
   }
   if (plan.affine_only) {
     // The general walk's step (Step::operator()), point by point, with the same bits.
@@ -357,35 +396,50 @@ bool escaped(double x, double y) {
   return !(std::abs(x) < kEscape && std::abs(y) < kEscape);
 }
 
+// Walkers that no longer plot (past their limit, or last moved by an invisible xform) off.
+void unplotted(const Plan& plan, const Walkers& a, std::size_t m, std::uint64_t s,
+               std::array<std::uint32_t, kN>& at) {
+  if (s < a.first_limit && !plan.any_invisible) return;
+  for (std::size_t i = 0; i < m; ++i)
+    if (s >= a.limit[i] || plan.invisible[a.k[i]] != 0) at[i] = kOffBin;
+}
+
+// Walkers that escaped re-seeded (in walker order, as the generator's draws must be); how many.
+std::uint64_t reseed(Walkers& a, std::size_t m, std::array<bool, kN>* out, Rng& rng) {
+  std::uint64_t reseeded = 0;
+  for (std::size_t i = 0; i < m; ++i) {
+    if (!escaped(a.x[i], a.y[i])) continue;
+    if (out) (*out)[i] = true;
+    start(a, i, rng);
+    ++reseeded;
+  }
+  return reseeded;
+}
+
 // After step `s` of every walker: escapees re-seeded, the others plotted (through the final
 // xform, when there is one, which moves the plotted copy only).
 std::uint64_t plot_walkers(const Plan& plan, Walkers& a, std::size_t m, std::uint64_t s,
                            std::uint64_t burn_in, Scratch& w, Rng& rng, Bins& bins) {
-  std::array<bool, kN> out{};
-  std::uint64_t reseeded = 0;
-  for (std::size_t i = 0; i < m; ++i) {
-    if (!escaped(a.x[i], a.y[i])) continue;
-    out[i] = true;
-    start(a, i, rng);
-    ++reseeded;
-  }
-  if (s < burn_in) return reseeded;
-  std::array<std::size_t, kN> at{};
+  std::array<std::uint32_t, kN> at;
   if (!plan.final_step) {
-    for (std::size_t i = 0; i < m; ++i)
-      at[i] = out[i] || s >= a.limit[i] || plan.steps[a.k[i]].invisible
-                  ? kOff
-                  : bin_of(plan.raster, {a.x[i], a.y[i]});
+    // The bins first: an escaped walker's is kOffBin, and its new start is not plotted.
+    const std::size_t gone = plan.bin_numbers(plan.grid, m, a.x.data(), a.y.data(), at.data());
+    const std::uint64_t reseeded = gone == 0 ? 0 : reseed(a, m, nullptr, rng);
+    if (s < burn_in) return reseeded;
+    unplotted(plan, a, m, s, at);
     plot_all(plan, at, a.k, a.c, m, bins);
     return reseeded;
   }
+  std::array<bool, kN> out{};
+  const std::uint64_t reseeded = reseed(a, m, &out, rng);
+  if (s < burn_in) return reseeded;
   std::array<double, kN> fx = a.x, fy = a.y, fc{};
   (*plan.final_step)(m, fx.data(), fy.data(), w, rng);
   const Step& f = *plan.final_step;
+  plan.bin_numbers(plan.grid, m, fx.data(), fy.data(), at.data());
+  unplotted(plan, a, m, s, at);
   for (std::size_t i = 0; i < m; ++i) {
-    const bool off =
-        out[i] || s >= a.limit[i] || plan.steps[a.k[i]].invisible || escaped(fx[i], fy[i]);
-    at[i] = off ? kOff : bin_of(plan.raster, {fx[i], fy[i]});
+    if (out[i]) at[i] = kOffBin;
     fc[i] = f.keep * a.c[i] + f.shift;
   }
   plot_all(plan, at, a.k, fc, m, bins);
@@ -405,6 +459,8 @@ std::uint64_t walk_chunk(const Plan& plan, std::uint64_t seed, std::uint64_t chu
     start(a, i, rng);
     a.limit[i] = burn + std::min(kWalkerPoints, n - i * kWalkerPoints);
   }
+  a.first_limit =
+      *std::min_element(a.limit.begin(), a.limit.begin() + static_cast<std::ptrdiff_t>(m));
   Scratch w;
   std::vector<std::size_t> first(plan.steps.size() + 1), next(4 * plan.steps.size());
   std::array<std::uint32_t, kN> order{};
@@ -424,6 +480,56 @@ std::uint64_t walk_chunk(const Plan& plan, std::uint64_t seed, std::uint64_t chu
   return reseeded;
 }
 
+// The Flat records of an affine_only plan whose sums have at most kFlatTerms terms, and the
+// shape they share.
+void flatten(Plan& plan) {
+  bool one_term = true, post = true, no_post = true;
+  for (const Step& s : plan.steps) {
+    if (s.sum_terms.size() > kFlatTerms) {
+      plan.flat.clear();
+      return;
+    }
+    Flat f{.pre = s.pre,
+           .post = s.post,
+           .keep = s.keep,
+           .shift = s.shift,
+           .terms = static_cast<std::uint32_t>(s.sum_terms.size()),
+           .has_sum = s.has_sum,
+           .has_post = s.has_post};
+    for (std::size_t t = 0; t < s.sum_terms.size(); ++t) f.w[t] = s.sum_terms[t].w;
+    plan.flat.push_back(f);
+    one_term = one_term && s.has_sum && s.sum_terms.size() == 1;
+    post = post && s.has_post;
+    no_post = no_post && !s.has_post;
+  }
+  plan.flat_shape = !one_term ? FlatShape::any
+                    : post    ? FlatShape::one_term_post
+                    : no_post ? FlatShape::one_term
+                              : FlatShape::any;
+}
+
+// Where every xform sets the colour coordinate to its own (keep 0) and no final xform moves it,
+// a plotted walker's coordinate is 0·c + shift = shift of the xform that moved it last (c ≥ 0,
+// and every plotted walker has moved since its start): its hit's colour is fixed per xform,
+// computed here by the plot kernel itself from that coordinate.
+void fix_colours(Plan& plan) {
+  if (plan.final_step ||
+      std::any_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return s.keep != 0; }))
+    return;
+  const std::size_t n = plan.steps.size();
+  plan.fixed.assign(4 * n, 0);
+  std::vector<std::uint32_t> at(n), k(n);
+  std::vector<double> c(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    at[j] = static_cast<std::uint32_t>(j);
+    k[j] = static_cast<std::uint32_t>(j);
+    c[j] = plan.steps[j].shift;
+  }
+  unsigned wrapped = 0;
+  plan.plot(plan.tables, plan.fixed.data(), 0, n, at.data(), k.data(), c.data(), &wrapped);
+  plan.tables.fixed = plan.fixed.data();
+}
+
 Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   Plan plan;
   const Kernels kernels{cpu_level(), float_lanes ? LaneType::f32 : LaneType::f64};
@@ -432,8 +538,26 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   plan.pickers = xform_pickers(flame, false);
   plan.affine_only = std::all_of(plan.steps.begin(), plan.steps.end(),
                                  [](const Step& s) { return s.affine_only; });
+  if (plan.affine_only) flatten(plan);
   plan.linear_palette = flame.palette.mode == PaletteMode::linear;
-  plan.raster = raster;
+  // A bin's number and kOffBin fit 32 bits (a raster that large would need 64 GiB a worker).
+  const std::uint64_t bins = std::uint64_t{static_cast<std::uint32_t>(raster.bins_x)} *
+                             static_cast<std::uint32_t>(raster.bins_y);
+  if (bins >= kOffBin)
+    throw Error(ErrorKind::invalid_argument,
+                fmt::format("flame raster: at most {} bins (got {})", kOffBin - 1, bins));
+  plan.grid = {raster.to_bins, static_cast<std::uint32_t>(raster.bins_x),
+               static_cast<std::uint32_t>(raster.bins_y)};
+  plan.bin_numbers = bin_function(cpu_level());
+  for (const Step& s : plan.steps) {
+    plan.invisible.push_back(s.invisible ? 1 : 0);
+    plan.colours.push_back(reinterpret_cast<const std::uint32_t*>(s.colours.data()));
+  }
+  plan.tables = {plan.colours.data(), plan.linear_palette};
+  plan.plot = plot_function(cpu_level());
+  fix_colours(plan);
+  plan.any_invisible =
+      std::any_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return s.invisible; });
   return plan;
 }
 
@@ -444,7 +568,11 @@ ChaosResult run_chaos_game(const ChaosRun& run) {
   const std::uint64_t chunks =
       std::max<std::uint64_t>(1, (run.points + kChunkPoints - 1) / kChunkPoints);
   const int workers = worker_count(chunks, run.threads);
-  std::vector<Bins> bins(static_cast<std::size_t>(workers), Bins(run.raster));
+  // Each worker's bins built in place (copies of one prototype would zero, fault in and copy
+  // one raster more).
+  std::vector<Bins> bins;
+  bins.reserve(static_cast<std::size_t>(workers));
+  for (int w = 0; w < workers; ++w) bins.emplace_back(run.raster);
   std::vector<std::uint64_t> reseeded(chunks, 0);
   std::atomic<std::uint64_t> done{0};
   std::mutex progress_mutex;

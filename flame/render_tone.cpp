@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <optional>
 
 #include "ifs/error.h"
@@ -17,13 +18,16 @@ namespace {
 // normalised to sum 1 (a radius below one bin keeps the bin to itself). flam3-render spreads a
 // lone bin so (docs/flames.md, "Density estimation": its profile at estimator radii 9–60 is
 // e^(−a·d²) with a·r² = 4.5 for r as kDeRadiusScale below says); Epanechnikov's 1 − d²/r²,
-// used before, spread sparse points flatter than flam3 does.
+// used before, spread sparse points flatter than flam3 does. Row by row: each row of the disc
+// is a run of consecutive dx (d² grows with |dx|), so that a bin's spreading clips a row once
+// and adds along it, not tap by tap.
 struct DeKernel {
-  struct Tap {
-    int dy, dx;
-    double w;
+  struct Row {
+    int dy, dx0, n;     // taps dx0 … dx0 + n − 1 of row dy
+    std::size_t first;  // their weights: w[first, first + n)
   };
-  std::vector<Tap> taps;
+  std::vector<Row> rows;
+  std::vector<double> w;
   int reach = 0;
 };
 
@@ -31,15 +35,20 @@ DeKernel de_kernel(double radius) {
   DeKernel k;
   const int reach = static_cast<int>(std::floor(radius));
   double sum = 0;
-  for (int dy = -reach; dy <= reach; ++dy)
+  for (int dy = -reach; dy <= reach; ++dy) {
+    DeKernel::Row row{dy, 0, 0, k.w.size()};
     for (int dx = -reach; dx <= reach; ++dx) {
       const double d2 = static_cast<double>(dx * dx + dy * dy) / (radius * radius);
       if (d2 >= 1) continue;  // the centre, d = 0, is always in
+      if (row.n == 0) row.dx0 = dx;
+      ++row.n;
       const double w = std::exp(-4.5 * d2);
-      k.taps.push_back({dy, dx, w});
+      k.w.push_back(w);
       sum += w;
     }
-  for (auto& t : k.taps) t.w /= sum;
+    if (row.n > 0) k.rows.push_back(row);
+  }
+  for (double& w : k.w) w /= sum;
   k.reach = reach;
   return k;
 }
@@ -82,6 +91,23 @@ constexpr int kDeBand = 64;  // source rows per density-estimation band
 // flam3's own seed-to-seed values, from 0.0077 and 0.33 with 1 and Epanechnikov's kernel.
 constexpr double kDeRadiusScale = 1.1;
 
+// p[k] += w·v[k] for the four channels, two at a time (GCC's generic vectors: SSE2 on x86-64,
+// scalar code elsewhere; each lane the product and sum of the scalar loop). Left to itself, GCC
+// vectorised the row across bins, with a transposing shuffle for every tap.
+using D2 = double __attribute__((vector_size(16)));
+inline void spread_to(double* p, double w, const double* v) {
+  D2 a, b, va, vb;
+  std::memcpy(&a, p, sizeof a);
+  std::memcpy(&b, p + 2, sizeof b);
+  std::memcpy(&va, v, sizeof va);
+  std::memcpy(&vb, v + 2, sizeof vb);
+  const D2 ww = {w, w};
+  a += ww * va;
+  b += ww * vb;
+  std::memcpy(p, &a, sizeof a);
+  std::memcpy(p + 2, &b, sizeof b);
+}
+
 // Spreads the log-scaled bins of rows [r0, r1) into `out`, whose row 0 is source row `origin`.
 void spread_band(const FlameHistogram& h, const Filtering& f, int ss, const LogScale& scale, int r0,
                  int r1, int origin, FlameHistogram& out) {
@@ -96,11 +122,15 @@ void spread_band(const FlameHistogram& h, const Filtering& f, int ss, const LogS
       const double d = de_density(h, row, col, ss);
       const double radius =
           std::max(min_r, kDeRadiusScale * max_r / std::pow(d, f.estimator_curve));
-      for (const auto& t : kernels(std::min(radius, max_r)).taps) {
-        const int y = row + t.dy, x = col + t.dx;
-        if (y < 0 || y >= h.height || x < 0 || x >= h.width) continue;
-        double* o = out.at(y - origin, x);
-        for (int k = 0; k < 4; ++k) o[k] += t.w * v[k];
+      // Each output bin takes one contribution from this bin, w·v, as tap by tap: the same sums.
+      const DeKernel& kernel = kernels(std::min(radius, max_r));
+      for (const DeKernel::Row& r : kernel.rows) {
+        const int y = row + r.dy;
+        if (y < 0 || y >= h.height) continue;
+        const int x0 = std::max(0, col + r.dx0), x1 = std::min(h.width, col + r.dx0 + r.n);
+        const double* w = kernel.w.data() + r.first + (x0 - (col + r.dx0));
+        double* o = out.at(y - origin, 0);
+        for (int x = x0; x < x1; ++x) spread_to(o + 4 * static_cast<std::size_t>(x), w[x - x0], v);
       }
     }
 }
@@ -155,6 +185,27 @@ FlameHistogram density_estimate(const FlameHistogram& h, const Filtering& f, int
     }
   }
   return out;
+}
+
+FlameHistogram density_estimate(FlameHistogram&& h, const Filtering& f, int ss,
+                                const LogScale& scale, int threads, const CancelToken& cancel) {
+  if (static_cast<int>(std::floor(f.estimator_radius * ss)) != 0)
+    return density_estimate(static_cast<const FlameHistogram&>(h), f, ss, scale, threads, cancel);
+  // Without reach spread_band's one tap has weight 1 (its kernel's only tap, normalised) and
+  // adds v to a zero: out = v = in·ls(a) exactly, and 0 where a is 0 (a bin of no alpha has no
+  // colour either: a hit's channels are its alpha × palette entries in [0, 1], rounded).
+  const int bands = (h.height + kDeBand - 1) / kDeBand;
+  parallel_for(static_cast<std::size_t>(bands), threads, [&](std::size_t band, int) {
+    cancel.check("density estimation");
+    const int r0 = static_cast<int>(band) * kDeBand, r1 = std::min(h.height, r0 + kDeBand);
+    for (int row = r0; row < r1; ++row)
+      for (int col = 0; col < h.width; ++col) {
+        double* p = h.at(row, col);
+        const double ls = p[3] > 0 ? scale(p[3]) : 0;
+        for (int k = 0; k < 4; ++k) p[k] *= ls;
+      }
+  });
+  return std::move(h);
 }
 
 }  // namespace ifsfx::flame

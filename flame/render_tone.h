@@ -52,6 +52,11 @@ LogScale log_scale(const Flame& flame, int ss, double quality);
 // estimator_radius is 0). Radii are in output pixels (× ss bins).
 FlameHistogram density_estimate(const FlameHistogram& hist, const Filtering& filtering, int ss,
                                 const LogScale& scale, int threads, const CancelToken& cancel = {});
+// The same from a histogram the caller gives up: without reach (estimator_radius·ss below one
+// bin, where each bin keeps its own log-scaled value) it is scaled in place, sparing a
+// raster-sized buffer and its first touch; otherwise as above.
+FlameHistogram density_estimate(FlameHistogram&& hist, const Filtering& filtering, int ss,
+                                const LogScale& scale, int threads, const CancelToken& cancel = {});
 
 // The spatial filter's weights along one axis (the 2-D kernel is their outer product, summing
 // to 1): `width` taps, and the gutter (width − ss)/2 bins it reads beyond the picture.

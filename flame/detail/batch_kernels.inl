@@ -386,6 +386,19 @@ IFSFX_BATCH(loonie) {
     return VP{k * x, k * y};
   });
 }
+// Inside the circle of radius w about (cx, −cy): turned by spin + twist·(w − r); outside: pushed
+// out by space/r. Both sides computed, the lane's chosen.
+IFSFX_BATCH(lazysusan) {
+  const double spin = t.params[0], space = t.params[1], twist = t.params[2];
+  const double cx = t.params[3], cy = t.params[4];
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+    const V xx = x - cx, yy = y + cy, rr = vsqrt(xx * xx + yy * yy);
+    const VSinCos sc = vsincos(vatan2(yy, xx) + spin + twist * (t.w - rr));
+    const V in = t.w * rr, s = t.w * (1.0 + space / (rr + kBEps));
+    const M inside = rr < t.w;
+    return VP{sel(inside, in * sc.c + cx, s * xx + cx), sel(inside, in * sc.s - cy, s * yy - cy)};
+  });
+}
 IFSFX_BATCH(conic) {
   const double e = t.params[0], holes = t.params[1];
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
@@ -862,6 +875,7 @@ constexpr BatchVariation kTable[] = {
     {"boarders", b_boarders, 1},
     {"super_shape", b_super_shape, 1},
     {"loonie", b_loonie},
+    {"lazysusan", b_lazysusan},
     {"conic", b_conic, 1},
     {"curve", b_curve},
     {"flower", b_flower, 1},

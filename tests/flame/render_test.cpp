@@ -13,13 +13,16 @@
 
 #include <opencv2/imgproc.hpp>
 
+#include "flame/detail/batch_variations.h"
 #include "flame/detail/render_chaos.h"
 #include "flame/flame_file.h"
 #include "flame/render_camera.h"
 #include "flame/render_tone.h"
 #include "flame/variations.h"
+#include "ifs/cpu.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
+#include "ifs/rng.h"
 
 namespace ifsfx::flame {
 namespace {
@@ -152,6 +155,55 @@ TEST(render_flame, an_affine_only_flame_gives_the_bytes_of_the_general_walk) {
               0)
         << threads << " threads";
   }
+  // Every xform one linear term and a post map: the shape the walk runs without branches.
+  Flame uniform = f;
+  uniform.xforms[0].variations = {term("linear", 0.9)};
+  uniform.xforms[0].post = AffineMap{1, 0.1, 0, 1, 0, 0.05};
+  Flame uniform_general = uniform;
+  for (Xform& xf : uniform_general.xforms) xf.variations.push_back(term("spherical", 0));
+  const cv::Mat flat = render_flame(uniform, {.seed = 4, .threads = 2});
+  EXPECT_GT(cv::countNonZero(flat.reshape(1)), 100);
+  EXPECT_EQ(cv::norm(flat, render_flame(uniform_general, {.seed = 4, .threads = 2}), cv::NORM_INF),
+            0);
+}
+
+// Where every xform sets the colour coordinate to its own (colour_speed 1), each xform's hits
+// add one fixed colour: the bytes of the same flame plotted hit by hit (an identity final xform
+// of colour speed 0 makes the walk colour every hit from its coordinate).
+TEST(render_flame, colour_speed_one_plots_each_xforms_own_colour) {
+  Flame f = two_points();
+  f.filtering = {.supersample = 2, .filter_radius = 0.6, .estimator_radius = 4};
+  f.xforms[0].pre = {0.5, 0.1, -0.2, 0.5, 0.3, 0.1};
+  f.xforms[0].colour = 0.3;
+  f.xforms[1].pre = {0.6, 0, 0, 0.6, -0.4, 0};
+  f.xforms[1].colour = 0.8;
+  for (int i = 0; i < 256; ++i) f.palette.colours[i] = Rgba{i / 255.0, 1 - i / 255.0, 0.5};
+  Flame per_hit = f;
+  per_hit.final_xform = Xform{.pre = {1, 0, 0, 1, 0, 0}, .colour_speed = 0};
+  per_hit.final_xform->variations = {term("linear", 1)};
+  for (const PaletteMode mode : {PaletteMode::step, PaletteMode::linear}) {
+    f.palette.mode = per_hit.palette.mode = mode;
+    const cv::Mat fixed = render_flame(f, {.seed = 5, .threads = 2});
+    EXPECT_GT(cv::countNonZero(fixed.reshape(1)), 100);
+    EXPECT_EQ(cv::norm(fixed, render_flame(per_hit, {.seed = 5, .threads = 2}), cv::NORM_INF), 0);
+  }
+}
+
+// linear3D is linear in the plane and walks as linear does, in double: an attractor near
+// x = 10⁴, where a float's step (~10⁻³) is a twentieth of a bin, gives linear's bytes (until
+// 27 Nov linear3D ran as a float batch form and moved bins).
+TEST(render_flame, linear3d_walks_as_linear_in_double) {
+  Flame f = two_points();
+  f.camera = {.width = 64, .height = 48, .center = {10000.7, 0.6}, .scale = 40};
+  f.xforms[0].pre = {0.5, 0.1, -0.1, 0.5, 5000.17, 1000.45};  // fixed: (10000.5, 0.8)
+  f.xforms[1].pre = {0.5, 0, 0, 0.5, 5000.5, 0.3};            // fixed: (10001, 0.6)
+  for (Xform& xf : f.xforms) xf.variations = {term("linear", 1)};
+  f.quality = 50;
+  Flame in_3d = f;
+  for (Xform& xf : in_3d.xforms) xf.variations = {term("linear3D", 1)};
+  const cv::Mat want = render_flame(f, {.seed = 3, .threads = 1});
+  EXPECT_GT(cv::countNonZero(want.reshape(1)), 50);
+  EXPECT_EQ(cv::norm(want, render_flame(in_3d, {.seed = 3, .threads = 1}), cv::NORM_INF), 0);
 }
 
 // A bin's 32-bit sums wrap after 2^16 hits of full colour: two constant maps, 150 000 hits
@@ -168,6 +220,127 @@ TEST(render_flame, a_bin_of_more_than_65536_hits_counts_every_hit) {
   }
   EXPECT_EQ(hits, static_cast<double>(points));
   EXPECT_GT(most, 2 * 65536.0);
+}
+
+// The walk's bin numbering (flame/detail/batch_variations.h): known bins at a rotated camera's
+// corners and edges, points off the raster and escaped ones, and every kernel level the scalar
+// level's numbers on random points around the raster, with a count not a multiple of four.
+TEST(render_flame, bin_numbers_are_the_cameras_bins_at_every_kernel_level) {
+  const detail::BinGrid g{.to_bins = {2, 0.5, -0.5, 2, 10, 20}, .bins_x = 30, .bins_y = 40};
+  // (bx, by) = (2x + 0.5y + 10, −0.5x + 2y + 20)
+  const std::vector<double> x = {0, -5, 9.99, 0, 0, 0, 1e10, NAN, 0, -5.001, 1};
+  const std::vector<double> y = {0, 0, 0, 9.99, -10, 10, 0, 0, -1e10, 0, 1};
+  const std::vector<std::uint32_t> want = {20 * 30 + 10,     // the centre (10, 20)
+                                           22 * 30 + 0,      // bx = 0: the first column
+                                           15 * 30 + 29,     // bx = 29.98: the last
+                                           39 * 30 + 14,     // by = 39.98: the last row
+                                           0 * 30 + 5,       // by = 0: the first
+                                           detail::kOffBin,  // by = 40: below the raster
+                                           detail::kOffBin,  // |x| = 10^10: escaped
+                                           detail::kOffBin,  // not a number: escaped
+                                           detail::kOffBin,  // |y| = 10^10: escaped
+                                           detail::kOffBin,  // bx = −0.002
+                                           21 * 30 + 12};    // (12.5, 21.5)
+  const std::size_t n = x.size();
+  for (CpuLevel level : supported_cpu_levels()) {
+    std::vector<std::uint32_t> at(n + 4, 7);
+    std::vector<double> px = x, py = y;
+    px.resize(n + 4, 0);
+    py.resize(n + 4, 0);
+    EXPECT_EQ(detail::bin_function(level)(g, n, px.data(), py.data(), at.data()), 3u)
+        << to_string(level);
+    for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(at[i], want[i]) << to_string(level) << " " << i;
+  }
+  Rng rng(3);
+  const std::size_t m = 1003;
+  std::vector<double> rx(m + 4), ry(m + 4);
+  for (std::size_t i = 0; i < m; ++i) {
+    rx[i] = 40 * rng.uniform() - 20;
+    ry[i] = 40 * rng.uniform() - 20;
+  }
+  rx[17] = INFINITY;
+  ry[18] = -1e11;
+  std::vector<std::uint32_t> ref(m + 4);
+  const std::size_t gone =
+      detail::bin_function(CpuLevel::scalar)(g, m, rx.data(), ry.data(), ref.data());
+  EXPECT_EQ(gone, 2u);
+  EXPECT_GT(std::count(ref.begin(), ref.begin() + m, detail::kOffBin), 100);
+  EXPECT_LT(std::count(ref.begin(), ref.begin() + m, detail::kOffBin), 900);
+  for (CpuLevel level : supported_cpu_levels()) {
+    std::vector<std::uint32_t> at(m + 4);
+    EXPECT_EQ(detail::bin_function(level)(g, m, rx.data(), ry.data(), at.data()), gone);
+    EXPECT_TRUE(std::equal(ref.begin(), ref.begin() + m, at.begin())) << to_string(level);
+  }
+}
+
+// The walk's plot kernel: a step palette's entry ⌊256·c⌋ and a linear palette's mix of two
+// entries at known coordinates, a sum wrapped past 2³² reported where it happened, and every
+// kernel level the scalar level's sums and wraps on random hits.
+TEST(render_flame, the_plot_adds_palette_colours_and_reports_wraps_at_every_kernel_level) {
+  // 257 entries: xform 1's 256 start at the second.
+  std::vector<std::uint32_t> table(4 * 257);
+  for (std::uint32_t e = 0; e < 257; ++e)
+    for (std::uint32_t ch = 0; ch < 4; ++ch) table[4 * e + ch] = e * 256 + ch;
+  const std::uint32_t* tables[] = {table.data(), table.data() + 4};  // xform 1: entries shifted
+  for (CpuLevel level : supported_cpu_levels()) {
+    const detail::PlotFunction plot = detail::plot_function(level);
+    std::vector<std::uint32_t> bins(4 * 3, 0);
+    const std::uint32_t at[] = {0, detail::kOffBin, 1, 2};
+    const std::uint32_t k[] = {0, 0, 1, 0};
+    // c = 0.5 → entry 128; c = 2 → clamped to entry 255; at bin 1 xform 1's entry 10 is 11.
+    const double c[] = {0.5, 0.3, 10.5 / 256, 2};
+    unsigned wrapped = 0;
+    EXPECT_EQ(plot({tables, false}, bins.data(), 0, 4, at, k, c, &wrapped), 4u);
+    EXPECT_EQ(bins[0], 128u * 256) << to_string(level);
+    EXPECT_EQ(bins[4 + 1], 11u * 256 + 1) << to_string(level);
+    EXPECT_EQ(bins[8 + 2], 255u * 256 + 2) << to_string(level);
+    // Linear: c = 10.5/256 is halfway between entries 10 and 11; c = 2 the last entry.
+    std::fill(bins.begin(), bins.end(), 0);
+    EXPECT_EQ(plot({tables, true}, bins.data(), 0, 4, at, k, c, &wrapped), 4u);
+    EXPECT_EQ(bins[0], 128u * 256) << to_string(level);
+    EXPECT_EQ(bins[4 + 3], 11u * 256 + 128 + 3) << to_string(level);
+    EXPECT_EQ(bins[8], 255u * 256) << to_string(level);
+    // Fixed colours per xform: the coordinates are not read.
+    const std::uint32_t fixed[] = {1, 2, 3, 4, 10, 20, 30, 40};
+    std::fill(bins.begin(), bins.end(), 0);
+    EXPECT_EQ(plot({tables, true, fixed}, bins.data(), 0, 4, at, k, c, &wrapped), 4u);
+    EXPECT_EQ(bins, (std::vector<std::uint32_t>{1, 2, 3, 4, 10, 20, 30, 40, 1, 2, 3, 4}))
+        << to_string(level);
+    // A sum 100 below 2³² wraps at the hit that passes it: index 0, channels r and g.
+    bins[0] = bins[1] = UINT32_MAX - 100;
+    EXPECT_EQ(plot({tables, false}, bins.data(), 0, 4, at, k, c, &wrapped), 1u);
+    EXPECT_EQ(wrapped, 3u) << to_string(level);
+  }
+  Rng rng(8);
+  const std::size_t n = 250;
+  std::vector<std::uint32_t> at(n), k(n);
+  std::vector<double> c(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    at[i] = rng.below(8) == 0 ? detail::kOffBin : rng.below(16);
+    k[i] = rng.below(2);
+    c[i] = 1.2 * rng.uniform() - 0.1;
+  }
+  for (bool linear : {false, true}) {
+    std::vector<std::uint32_t> ref;
+    std::vector<std::size_t> ref_wraps;
+    for (CpuLevel level : supported_cpu_levels()) {
+      std::vector<std::uint32_t> bins(4 * 16, UINT32_MAX - 150000);  // wraps within a few hits
+      std::vector<std::size_t> wraps;
+      for (std::size_t i = 0; i < n;) {
+        unsigned wrapped = 0;
+        i = detail::plot_function(level)({tables, linear}, bins.data(), i, n, at.data(), k.data(),
+                                         c.data(), &wrapped);
+        if (wrapped != 0) wraps.push_back(i * 16 + wrapped);
+      }
+      if (ref.empty()) {
+        ref = bins;
+        ref_wraps = wraps;
+        EXPECT_GE(wraps.size(), 10u);
+      }
+      EXPECT_EQ(bins, ref) << to_string(level) << (linear ? " linear" : " step");
+      EXPECT_EQ(wraps, ref_wraps) << to_string(level) << (linear ? " linear" : " step");
+    }
+  }
 }
 
 TEST(render_tone, the_display_scales_colour_by_the_gamma_of_the_density) {
@@ -264,6 +437,34 @@ TEST(render_tone, density_estimation_spreads_a_lone_hit_over_its_disc) {
   const FlameHistogram dense = density_estimate(h, f, 1, scale, 1);
   EXPECT_DOUBLE_EQ(dense.at(4, 4)[3], std::log1p(1e6));
   EXPECT_EQ(dense.at(4, 5)[3], 0);
+}
+
+// Without reach (radius · ss below one bin) a histogram given up is scaled in place, to the
+// bits of the spreading path: each bin × ls(a), 0 where a is 0; with reach both are one path.
+TEST(render_tone, density_estimation_in_place_gives_the_spreading_paths_bits) {
+  FlameHistogram h(7, 5);
+  Rng rng(2);
+  for (std::size_t i = 0; i < h.rgba.size(); i += 4) {
+    if (rng.below(3) == 0) continue;  // an empty bin
+    h.rgba[i + 3] = 1 + rng.below(1000);
+    for (std::size_t k = 0; k < 3; ++k) h.rgba[i + k] = h.rgba[i + 3] * rng.uniform();
+  }
+  const LogScale scale{1.3, 0.02};
+  for (const double radius : {0.0, 0.4, 1.5})
+    for (const int ss : {1, 2}) {
+      const Filtering f{
+          .estimator_radius = radius, .estimator_minimum = 0.2, .estimator_curve = 0.4};
+      const FlameHistogram spread = density_estimate(h, f, ss, scale, 1);
+      FlameHistogram copy = h;
+      const FlameHistogram in_place = density_estimate(std::move(copy), f, ss, scale, 2);
+      EXPECT_EQ(in_place.rgba, spread.rgba) << radius << " " << ss;
+    }
+  FlameHistogram one(2, 1);
+  one.at(0, 1)[3] = 10;
+  one.at(0, 1)[1] = 5;
+  const FlameHistogram out = density_estimate(std::move(one), {.estimator_radius = 0}, 1, scale, 1);
+  EXPECT_EQ(out.at(0, 1)[1], 5 * scale(10));
+  EXPECT_EQ(out.at(0, 0)[3], 0);
 }
 
 TEST(render_tone, the_gaussian_filter_of_half_a_pixel_has_three_taps) {
