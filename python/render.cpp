@@ -43,11 +43,10 @@ void set_flame_background(flame::Flame& f, const py::object& background, bool al
                 "background: \"transparent\" needs alpha=True (got alpha=False)");
 }
 
-// A flame file's flame (flame/render.h) as an array: BGR, or BGRA over its background's alpha.
-cv::Mat flame_picture(const std::string& spec, std::optional<cv::Size> size,
-                      std::optional<double> quality, std::uint64_t seed, int threads, bool alpha,
-                      const py::object& background) {
-  flame::Flame f = flame::read_flame(spec);
+// A flame (flame/render.h) as an array: BGR, or BGRA over its background's alpha; the GIL
+// released while it renders.
+cv::Mat flame_picture(flame::Flame f, std::optional<cv::Size> size, std::optional<double> quality,
+                      std::uint64_t seed, int threads, bool alpha, const py::object& background) {
   set_flame_background(f, background, alpha);
   return run_released([&](const CancelToken& cancel) {
     return flame::render_flame(f, {.size = size,
@@ -62,10 +61,10 @@ cv::Mat flame_picture(const std::string& spec, std::optional<cv::Size> size,
 py::array render_flame(const std::string& spec, const py::object& size, const py::object& quality,
                        std::uint64_t seed, int threads, bool alpha, const py::object& background,
                        const py::object& dtype, bool rgb) {
-  const cv::Mat image =
-      flame_picture(spec, size.is_none() ? std::nullopt : std::optional(size_arg(size)),
-                    quality.is_none() ? std::nullopt : std::optional(quality.cast<double>()), seed,
-                    threads, alpha, background);
+  const cv::Mat image = flame_picture(
+      flame::read_flame(spec), size.is_none() ? std::nullopt : std::optional(size_arg(size)),
+      quality.is_none() ? std::nullopt : std::optional(quality.cast<double>()), seed, threads,
+      alpha, background);
   return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
 }
 
@@ -116,16 +115,8 @@ py::array render(const py::object& preset, const std::string& mode_name, const p
     // tone mapping are the file's, so a keyword that would change them is refused (as the
     // command refuses the flags), not ignored.
     refuse_flame_keywords(view, margin, supersample, gamma, brightness);
-    flame::Flame f = *as_flame;
-    set_flame_background(f, background, alpha);
-    const cv::Mat image = run_released([&](const CancelToken& cancel) {
-      return flame::render_flame(f, {.size = pixels,
-                                     .quality = quality,
-                                     .seed = seed,
-                                     .threads = threads,
-                                     .cancel = cancel,
-                                     .channels = alpha ? 4 : 3});
-    });
+    const cv::Mat image =
+        flame_picture(*as_flame, pixels, quality, seed, threads, alpha, background);
     return to_array(swap_red_blue(to_depth(image, depth_of(dtype, CV_8U)), rgb));
   }
   if (as_flame && !exact_arg.is_none() && exact_arg.cast<bool>())
