@@ -24,7 +24,8 @@ namespace ifsfx::flame {
 namespace {
 
 // A point beyond this (or not a number) has left the flame: its walker starts again (the
-// renderer's rule, flame/detail/render_chaos.h).
+// renderer's rule and bound, kEscape of flame/detail/batch_variations.h, not included here: its
+// namespace flame::detail would hide ifsfx::detail, which this file uses throughout).
 constexpr double kEscape = 1e10;
 // Burn-in of a flame that is not an affine IFS: no contraction factor says how long the walk
 // takes to forget its start; flam3 discards 15, the affine chaos game at least 64.

@@ -551,13 +551,12 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   plan.bin_numbers = bin_function(cpu_level());
   for (const Step& s : plan.steps) {
     plan.invisible.push_back(s.invisible ? 1 : 0);
+    plan.any_invisible = plan.any_invisible || s.invisible;
     plan.colours.push_back(reinterpret_cast<const std::uint32_t*>(s.colours.data()));
   }
   plan.tables = {plan.colours.data(), plan.linear_palette};
   plan.plot = plot_function(cpu_level());
   fix_colours(plan);
-  plan.any_invisible =
-      std::any_of(plan.steps.begin(), plan.steps.end(), [](const Step& s) { return s.invisible; });
   return plan;
 }
 

@@ -157,17 +157,8 @@ FlameHistogram density_estimate(const FlameHistogram& h, const Filtering& f, int
   const int bands = (h.height + kDeBand - 1) / kDeBand;
   // Each band spreads into a buffer of its own (its rows ± reach); the buffers are summed in
   // band order, so the sums do not depend on the threads.
+  // (Without reach the renderer scales its histogram in place: the overload below.)
   FlameHistogram out(h.width, h.height);
-  if (reach == 0) {
-    // Each bin stays in its own row: the bands write disjoint rows of `out` directly (no band
-    // buffers, one raster-sized buffer less to fault in).
-    parallel_for(static_cast<std::size_t>(bands), threads, [&](std::size_t band, int) {
-      cancel.check("density estimation");
-      const int r0 = static_cast<int>(band) * kDeBand, r1 = std::min(h.height, r0 + kDeBand);
-      spread_band(h, f, ss, scale, r0, r1, 0, out);
-    });
-    return out;
-  }
   std::vector<FlameHistogram> parts(static_cast<std::size_t>(bands));
   parallel_for(static_cast<std::size_t>(bands), threads, [&](std::size_t band, int) {
     cancel.check("density estimation");
