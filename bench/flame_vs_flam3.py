@@ -34,6 +34,8 @@ import xml.etree.ElementTree as ET
 SSIM_TOL, COLOUR_TOL = 0.02, 1.0
 Z_ONLY = ("flatten", "zscale", "ztranslate", "zcone", "zblur")
 EMBER_ONLY = ("var_color", "name", "animate", "motion_frequency", "motion_function")
+# Ember's z parameters of 2-D variations: nothing in the plane (ifsfx ignores them too).
+EMBER_Z_PARAMETERS = ("waves2_freqz", "waves2_scalez")
 
 
 def cpu_run(cmd, env=None, stdin=None):
@@ -60,8 +62,12 @@ def resized(flame, longest, quality):
     # Ember's per-xform attributes that do not change the picture (flam3-render would warn
     # "unrecognized variation" about them, and ifsfx ignores them too).
     for xf in list(flame.iter("xform")) + list(flame.iter("finalxform")):
-        for attr in EMBER_ONLY:
+        for attr in EMBER_ONLY + EMBER_Z_PARAMETERS:
             xf.attrib.pop(attr, None)
+        # Apophysis' Mobius plugin, as Ember writes it, is flam3's mobius under other names
+        # (ifsfx reads both as one variation, flame/variations_more.cpp).
+        for attr in [a for a in xf.attrib if a == "Mobius" or a.startswith("Mobius_")]:
+            xf.set(attr.lower(), xf.attrib.pop(attr))
         # Ember's 3-D variations that are 2-D ones in the plane, as flam3 knows them: linear3D
         # is linear at z = 0; flatten and the z-only ones change nothing (docs/flames.md).
         for prefix in ("", "pre_", "post_"):
