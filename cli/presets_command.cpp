@@ -62,8 +62,9 @@ void add_presets_command(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "presets",
       "List the shipped IFS presets: name, number of maps, contraction factor, description.\n"
-      "Name one on the command line, or give a path to a .toml or .ifs file (FILE.ifs:NAME for\n"
-      "one entry of a Fractint file). --super lists the superIFS presets of `ifsfx texture`.");
+      "Name one on the command line, or give a path to a .toml, .ifs or .flame file to list its\n"
+      "entries (FILE.ifs:NAME, FILE.flame:NAME or FILE.flame:INDEX for one of them).\n"
+      "--super lists the superIFS presets of `ifsfx texture`.");
   auto super = std::make_shared<bool>(false);
   auto files = std::make_shared<std::vector<std::string>>();
   cmd->add_flag("--super", *super,
