@@ -234,7 +234,8 @@ colouring: steal mode: colouring IFS preset with as many maps, default None: a t
 background: tops and steal: colour off the attractor ("black", "white", "#rrggbb" or
     (R, G, B)), default None: black; alpha is 0 there. A flame's measure: None keeps the
     file's, a colour or "transparent" (with alpha=True) replaces it, as render_flame.
-alpha: tops and steal: keep the coverage as an alpha channel (as PNG), default True.
+alpha: tops, steal and a flame's measure: keep the coverage as an alpha channel (as PNG),
+    default True.
 dtype: "uint8" (default, as an 8-bit PNG), "uint16" (as a 16-bit PNG) or "float32" (in [0, 1]).
 rgb: False (default): arrays in and out in BGR(A) order, like cv2; True: RGB(A).
 allow_expansive: accept maps of factor >= 1 when the IFS contracts on average, default False.
