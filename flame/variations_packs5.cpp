@@ -34,16 +34,20 @@ struct NGon {
   double w = 1;     // the weight, divided by sin(mπ/n) with adjustToLinear
 };
 
-// A switch of the plugin (0 or 1, a value beyond taken as the nearer).
+// The plugin's whole-number parameters are rounded, ⌊v + ½⌋, as JWildfire and Ember read them.
+int whole(double v) {
+  return mode_of(std::floor(v + 0.5));
+}
+// A switch (0 or 1, a value beyond taken as the nearer).
 bool on(double v) {
-  return mode_of(v) >= 1;
+  return whole(v) >= 1;
 }
 
 NGon ngon_of(std::span<const double> k, double w) {
   NGon g;
-  g.n = std::max(mode_of(k[0]), 3);
+  g.n = std::max(whole(k[0]), 3);
   g.alpha = 2 * kPi / g.n;
-  const double stripes = mode_of(k[1]);
+  const double stripes = whole(k[1]);
   const double ratio = std::isnan(k[2]) ? 1 : std::clamp(k[2], 0.0, 2.0);
   g.bands = 2 * std::abs(stripes);
   g.band = stripes == 0 ? 0 : g.alpha / g.bands;

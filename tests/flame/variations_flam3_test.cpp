@@ -617,6 +617,9 @@ TEST(variations_packs5, nBlur_fills_its_polygon_and_reads_no_point) {
     EXPECT_LE(std::max(std::abs(l.x), std::abs(l.y)), 0.5 + 1e-12) << seed;
   }
   EXPECT_GT(far, 0.99);  // out to the border
+  // whole-number parameters rounded as JWildfire and Ember read them: 4.6 edges are 5
+  EXPECT_POINT_NEAR(eval("nBlur", {0, 0}, 1, {4.6, 0.5}), eval("nBlur", {0, 0}, 1, {5, 1}).x,
+                    eval("nBlur", {0, 0}, 1, {5, 1}).y);
   EXPECT_POINT_NEAR(eval("dc_ztransl", {0.3, -2}, 2, {0.2, 0.8, 3, 0, 1}), 0.6, -4);
 }
 
