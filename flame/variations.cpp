@@ -25,6 +25,7 @@ Registry build() {
   detail::add_pack2_variations(reg.rows);
   detail::add_pack3_variations(reg.rows);
   detail::add_pack4_variations(reg.rows);
+  detail::add_pack5_variations(reg.rows);
   for (std::uint32_t i = 0; i < reg.rows.size(); ++i) {
     reg.rows[i].id = i;
     reg.by_name.emplace_back(reg.rows[i].name, i);

@@ -71,6 +71,7 @@ void add_pack_variations(std::vector<Variation>& out);
 void add_pack2_variations(std::vector<Variation>& out);
 void add_pack3_variations(std::vector<Variation>& out);
 void add_pack4_variations(std::vector<Variation>& out);
+void add_pack5_variations(std::vector<Variation>& out);
 
 // The Möbius map w·(a·z + b)/(c·z + d) of complex a, b, c, d given as params[0..7] (re a, im a,
 // re b, ..., im d): flam3's mobius and Apophysis' Mobius plugin, under different parameter names.

@@ -91,6 +91,32 @@ TEST(flame_write, read_write_read_gives_the_same_flame) {
   EXPECT_EQ(parse_flames(flames_xml(two), "two.flame").size(), 2u);
 }
 
+TEST(flame_write, every_variation_keeps_its_parameters_through_a_round_trip) {
+  // each variation of the registry in one xform, in every list it may stand in, its
+  // parameters moved off their defaults (by k/4 + ⅛, exact in binary)
+  Flame f = full_flame();
+  for (const Variation& v : variations()) {
+    std::vector<double> p = default_parameters(v);
+    for (std::size_t k = 0; k < p.size(); ++k) p[k] += 0.25 * static_cast<double>(k) + 0.125;
+    const VariationTerm t{.id = v.id, .weight = 0.375, .params = p};
+    Xform xf{.name = std::string(v.name), .pre = {1, 0, 0, 1, 0, 0}, .weight = 0.5};
+    // blur's pre_ form would be written pre_blur, which files use for flam3's own pre_blur
+    if (v.place == VariationPlace::pre_only || !find_variation("pre_" + xf.name))
+      xf.pre_variations = {t};
+    if (v.place == VariationPlace::any) {
+      xf.variations = {t};
+      xf.post_variations = {t};
+    }
+    f.xforms.push_back(xf);
+  }
+  const std::vector<Flame> back = parse_flames(flame_xml(f), "every.flame");
+  ASSERT_EQ(back.size(), 1u);
+  ASSERT_EQ(back[0].xforms.size(), f.xforms.size());
+  for (std::size_t i = 0; i < f.xforms.size(); ++i)
+    EXPECT_EQ(back[0].xforms[i], f.xforms[i]) << f.xforms[i].name;
+  EXPECT_EQ(back[0], f);
+}
+
 TEST(flame_write, flam3_genomes_survive_a_round_trip) {
   if (std::system("command -v flam3-genome > /dev/null 2>&1") != 0)
     GTEST_SKIP() << "flam3-genome (flam3-utils) is not installed";

@@ -2,9 +2,11 @@
 // flam3's variations after the paper's 49, the complex functions, and the ones beyond flam3, at
 // points where their published formulas are worked by hand (values of the complex functions from
 // the functions themselves: w·f(z) at z = 0.5 + 0.25i).
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <vector>
 
 #include "flame/detail/simplex_noise.h"
 #include "variation_check.h"
@@ -580,6 +582,125 @@ TEST(variations_packs4, hypertile3D2_is_hypertile2_at_z0) {
     EXPECT_NEAR(std::hypot(h.x, h.y), big_r, 1e-9);
     const Point a = eval("hypertile3D2", {0.3, -0.2}, 0.7, {4, 5}, {}, seed);
     EXPECT_POINT_NEAR(eval("hypertile2", {0.3, -0.2}, 0.7, {4, 5}, {}, seed), a.x, a.y);
+  }
+}
+
+// nBlur's point seen in the plugin's sector frame: its angle a from a sector's first corner
+// (the final turn by α/2 undone: A = π/2 + α/2 − β), its radius over w, and the polygon's
+// radius R(a) = cos(α/2)/cos(a − α/2) on that ray (corners at 1).
+struct Sector {
+  double a, r, edge;
+};
+Sector in_sector(Point q, double n, double w) {
+  const double alpha = 2 * kPi / n;
+  double a = std::fmod(kPi / 2 + alpha / 2 - std::atan2(q.y, q.x), alpha);
+  if (a < 0) a += alpha;
+  return {a, std::hypot(q.x, q.y) / w, std::cos(alpha / 2) / std::cos(a - alpha / 2)};
+}
+// The distance of a from the nearest multiple of `band` whose index has parity `parity`.
+double from_band(double a, double band, int parity) {
+  const double c = 2 * std::round((a / band - parity) / 2) + parity;
+  return std::abs(a - c * band);
+}
+
+TEST(variations_packs5, nBlur_fills_its_polygon_and_reads_no_point) {
+  //          edges stripes ratio hole circum adjust equal exact highlight
+  double far = 0;
+  for (std::uint64_t seed = 1; seed <= 3000; ++seed) {
+    const Point q = eval("nBlur", {0.3, -2}, 2, {5, 0, 1, 0, 0, 0, 1, 0, 1}, {}, seed);
+    EXPECT_POINT_NEAR(eval("nBlur", {7, 1}, 2, {5, 0, 1, 0, 0, 0, 1, 0, 1}, {}, seed), q.x, q.y);
+    const Sector s = in_sector(q, 5, 2);
+    EXPECT_LE(s.r, s.edge + 1e-12) << seed;
+    far = std::max(far, s.r / s.edge);
+    // adjustToLinear, 4 edges: the square [−w, w]², linear's picture of the unit square
+    const Point l = eval("nBlur", {0, 0}, 0.5, {4}, {}, seed);
+    EXPECT_LE(std::max(std::abs(l.x), std::abs(l.y)), 0.5 + 1e-12) << seed;
+  }
+  EXPECT_GT(far, 0.99);  // out to the border
+  // whole-number parameters rounded as JWildfire and Ember read them: 4.6 edges are 5
+  EXPECT_POINT_NEAR(eval("nBlur", {0, 0}, 1, {4.6, 0.5}), eval("nBlur", {0, 0}, 1, {5, 1}).x,
+                    eval("nBlur", {0, 0}, 1, {5, 1}).y);
+  EXPECT_POINT_NEAR(eval("dc_ztransl", {0.3, -2}, 2, {0.2, 0.8, 3, 0, 1}), 0.6, -4);
+}
+
+TEST(variations_packs5, nBlur_leaves_its_hole_empty) {
+  // hole 0.6 of the triangle, for each way of drawing the radius (equalBlur, exactCalc) and
+  // with circumCircle (the outer bound the unit disc, the hole still the triangle's)
+  for (double equal : {0, 1})
+    for (double exact : {0, 1})
+      for (double circum : {0, 1}) {
+        double beyond = 0;
+        for (std::uint64_t seed = 1; seed <= 400; ++seed) {
+          const Point q =
+              eval("nBlur", {0, 0}, 1, {3, 0, 1, 0.6, circum, 0, equal, exact, 1}, {}, seed);
+          const Sector s = in_sector(q, 3, 1);
+          EXPECT_GE(s.r, 0.6 * s.edge - 1e-12) << equal << exact << circum << " " << seed;
+          EXPECT_LE(s.r, (circum != 0 ? 1 : s.edge) + 1e-9) << equal << exact << circum;
+          beyond = std::max(beyond, s.r - s.edge);
+        }
+        EXPECT_EQ(beyond > 0.05, circum != 0) << equal << exact;  // the disc beyond the sides
+      }
+}
+
+TEST(variations_packs5, nBlur_stripes_leave_their_gaps_empty) {
+  // triangle, 2 stripes: bands of α/4 centred at its multiples, the even ones lit, ratio 0.5
+  // narrowing them to half a band (±α/16 about their centres); ratio 1.5 widening them
+  const double alpha = 2 * kPi / 3, band = alpha / 4;
+  // 15 stripes negative, ratio 0.45 (the pack flame's): the odd bands lit, 1.55 bands wide,
+  // so nothing within 0.225 band of an even multiple
+  const double band15 = alpha / 30;
+  for (std::uint64_t seed = 1; seed <= 1000; ++seed) {
+    const Sector s = in_sector(eval("nBlur", {0, 0}, 1, {3, 2, 0.5, 0, 0, 0}, {}, seed), 3, 1);
+    EXPECT_LE(from_band(s.a, band, 0), band / 4 + 1e-9) << seed;
+    EXPECT_LE(s.r, s.edge + 1e-12);
+    const Sector w = in_sector(eval("nBlur", {0, 0}, 1, {3, 2, 1.5, 0, 0, 0}, {}, seed), 3, 1);
+    EXPECT_LE(from_band(w.a, band, 0), 0.75 * band + 1e-9) << seed;
+    const Sector m =
+        in_sector(eval("nBlur", {0, 0}, 1, {3, -15, 0.45, 0.6, 0, 0, 0, 0, 0.1}, {}, seed), 3, 1);
+    EXPECT_GE(from_band(m.a, band15, 0), 0.225 * band15 - 1e-9) << seed;
+    EXPECT_LE(from_band(m.a, band15, 1), 0.775 * band15 + 1e-9) << seed;
+    EXPECT_GE(m.r, 0.6 * m.edge - 1e-12);
+  }
+}
+
+TEST(variations_packs5, nBlur_replays_its_draws) {
+  // 4 edges, adjustToLinear, equalBlur, highlightEdges 1: u0 the angle in the sector, u1 the
+  // sector, u2 the radius
+  const double g = 13 / std::pow(4.0, 1.3), alpha = kPi / 2;
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    Rng rng(seed);
+    double u[3];
+    for (double& v : u) v = rng.uniform();
+    const double t = 0.5 - std::atan(g * (u[0] - 0.5)) / (2 * std::atan(g / 2));
+    const double a = t * alpha, turn = std::floor(4 * u[1]) * alpha;
+    const double rho = std::sqrt(u[2]) * std::cos(alpha / 2) / std::cos(a - alpha / 2);
+    const double beta = kPi / 2 + alpha / 2 - turn - a, w = 3 / std::sin(kPi / 4);
+    EXPECT_POINT_NEAR(eval("nBlur", {5, 5}, 3, {4}, {}, seed), w * rho * std::cos(beta),
+                      w * rho * std::sin(beta));
+  }
+}
+
+TEST(variations_packs5, depth_blur2_blurs_by_a_star_beyond_its_radius) {
+  //                 power range blur radius x0 y0 mulx muly exp
+  const std::vector<double> k{3, 0.5, 10, 1, 0, 0, 1, 1, 1};
+  EXPECT_POINT_NEAR(eval("depth_blur2", {0.3, 0.4}, 2, k), 0.6, 0.8);  // within: w·p
+  // the ellipse: mulx 0.1 puts (0.3, 0) at distance 3, beyond the radius
+  EXPECT_NE(eval("depth_blur2", {0.3, 0}, 1, {3, 0.5, 10, 1, 0, 0, 0.1}).x, 0.3);
+  const double len = std::sqrt(1.25 - std::cos(kPi / 3));  // the star's edge, tip to corner
+  const double gamma = std::asin(std::sin(kPi / 3) * 0.5 / len);
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    Rng rng(seed);
+    const double u0 = rng.uniform(), u1 = rng.uniform();
+    // at (3, 4): distance 5, the star scaled by blur/10·(5 − 1) = 4
+    const double f = 6 * u0, j = std::trunc(f), x = (f - j) * len;
+    const double z = std::sqrt(1 + x * x - 2 * x * std::cos(gamma));
+    const double delta = std::asin(std::sin(gamma) * x / z);
+    const double theta = 2 * kPi / 3 * std::trunc(j / 2) + (std::fmod(j, 2) != 0 ? delta : -delta);
+    const double s = 4 * z * std::sqrt(u1);
+    const Point q = eval("depth_blur2", {3, 4}, 1, k, {}, seed);
+    EXPECT_POINT_NEAR(q, 3 + s * std::sin(theta), 4 - s * std::cos(theta));
+    // within the star: its tips at 4, its inner corners at 2
+    EXPECT_LE(std::hypot(q.x - 3, q.y - 4), 4 + 1e-9);
   }
 }
 
