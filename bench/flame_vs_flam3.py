@@ -78,9 +78,8 @@ def resized(flame, longest, quality):
                 for attr in [a for a in xf.attrib if a == prefix + name or a.startswith(prefix + name + "_")]:
                     xf.attrib.pop(attr)
                     # A regular z-only variation adds nothing to the sum, which may then hold no
-                    # variation at all: flam3 sums none to (0, 0), ifsfx (as Ember) passes the
-                    # affine point through an xform without variations. A linear of weight 0
-                    # keeps a sum that both read as the flame's: (0, 0).
+                    # variation at all: flam3 and ifsfx sum none to (0, 0), as the flame's
+                    # flatten does in Ember. A linear of weight 0 writes that sum out.
                     if attr == name and "linear" not in xf.attrib:
                         xf.set("linear", "0")
     return flame

@@ -22,7 +22,10 @@ Point apply_term(const VariationTerm& term, Point p, const AffineMap& pre, Rng& 
 Point apply_xform(const Xform& xf, Point p, Rng& rng) {
   Point q = xf.pre(p);
   for (const VariationTerm& t : xf.pre_variations) q = chain(t, q, xf.pre, rng);
-  Point s = q;
+  // The sum; without normal terms, the pre_ terms' point when there are some, else the empty
+  // sum (0, 0) — flam3 sums an xform of no variation to the origin, and Ember does too unless
+  // it has pre_ terms.
+  Point s = xf.pre_variations.empty() ? Point{0, 0} : q;
   if (!xf.variations.empty()) {
     s = {0, 0};
     for (const VariationTerm& t : xf.variations) {
@@ -30,8 +33,9 @@ Point apply_xform(const Xform& xf, Point p, Rng& rng) {
       s = {s.x + v.x, s.y + v.y};
     }
   }
-  if (xf.post) s = (*xf.post)(s);
+  // post_ terms before the post-affine map, as Apophysis 7X, JWildfire and Ember apply them.
   for (const VariationTerm& t : xf.post_variations) s = chain(t, s, xf.pre, rng);
+  if (xf.post) s = (*xf.post)(s);
   return s;
 }
 
