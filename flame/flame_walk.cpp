@@ -65,11 +65,13 @@ FlameWalk::FlameWalk(const WalkSetup& setup)
 // (a counting sort of the live list by xform); escapees re-seeded, the others' keys take the
 // symbol and count down their burn-in. Returns how many plot this step (a.plotted).
 std::size_t FlameWalk::move(Walkers& a, Scratch& w, Rng& rng) const {
-  const std::size_t steps = steps_.size();
+  // Locals, not members: the stores through a's arrays would otherwise reload them every walker.
+  const std::size_t steps = steps_.size(), live = a.n_live;
   const bool xaos = pickers_.size() > 1;
-  std::fill(a.next.begin(), a.next.end(), 0);
+  std::size_t* next = a.next.data();
+  std::fill_n(next, steps, 0);
   MapPicker::View v = pickers_[0].view();
-  for (std::size_t l = 0; l < a.n_live; ++l) {
+  for (std::size_t l = 0; l < live; ++l) {
     const std::uint32_t i = a.live[l];
     if (xaos) v = pickers_[a.row[i]].view();
     // MapPicker's alias draw without its branch, which a random draw mispredicts half the time.
@@ -79,22 +81,22 @@ std::size_t FlameWalk::move(Walkers& a, Scratch& w, Rng& rng) const {
     const std::uint32_t own =
         0u - static_cast<std::uint32_t>(static_cast<std::uint32_t>(r) < v.threshold[column]);
     a.k[i] = alias ^ ((column ^ alias) & own);
-    ++a.next[a.k[i]];
+    ++next[a.k[i]];
   }
   std::size_t at = 0;
   for (std::size_t j = 0; j < steps; ++j) {
     a.first[j] = at;
-    at += std::exchange(a.next[j], at);
+    at += std::exchange(next[j], at);
   }
   a.first[steps] = at;
-  for (std::size_t l = 0; l < a.n_live; ++l) a.order[a.next[a.k[a.live[l]]]++] = a.live[l];
+  for (std::size_t l = 0; l < live; ++l) a.order[next[a.k[a.live[l]]]++] = a.live[l];
   for (std::size_t j = 0; j < steps; ++j)
     if (a.first[j + 1] > a.first[j])
       steps_[j](a.first[j + 1] - a.first[j], a.order.data() + a.first[j], a.x.data(), a.y.data(), w,
                 rng);
   const int shift = 64 - bits_;
   std::size_t plotted = 0;
-  for (std::size_t l = 0; l < a.n_live; ++l) {
+  for (std::size_t l = 0; l < live; ++l) {
     const std::uint32_t i = a.live[l];
     if (escaped(a.x[i], a.y[i])) {
       a.start(i, burn_in_, rng);
