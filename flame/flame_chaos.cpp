@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include "flame/detail/flame_walk.h"
 #include "flame/render_camera.h"
 #include "flame/xform_eval.h"
 #include "flame/xform_pickers.h"
@@ -23,10 +24,9 @@
 namespace ifsfx::flame {
 namespace {
 
-// A point beyond this (or not a number) has left the flame: its walker starts again (the
-// renderer's rule and bound, kEscape of flame/detail/batch_variations.h, not included here: its
-// namespace flame::detail would hide ifsfx::detail, which this file uses throughout).
-constexpr double kEscape = 1e10;
+// A point beyond flame::detail::kEscape (or not a number) has left the flame: its walker starts
+// again (the renderer's rule and bound).
+using flame::detail::kEscape;
 // Burn-in of a flame that is not an affine IFS: no contraction factor says how long the walk
 // takes to forget its start; flam3 discards 15, the affine chaos game at least 64.
 constexpr int kFlameBurnIn = 64;
@@ -47,22 +47,22 @@ Camera sized_camera(const Flame& flame, cv::Size size) {
   return camera;
 }
 
-// The walkers of one flame on one viewport: the affine kernels' lanes (ifs/detail/walkers.h) —
-// each lane starts at a uniform point of [0, 1)² from its own xoshiro256+, picks every xform
-// with one draw of it, burns in, then plots — with the xform's step in place of the affine map.
-// Random variations draw from a second generator per lane, so the picks are the kernels' picks
-// whatever the variations draw. Lanes run one after another: what they plot is merged by max
-// or OR, which ignores the order.
-class FlameWalk {
+// The walkers of an affine IFS drawn as a flame (affine_ifs) on one viewport: the affine
+// kernels' lanes (ifs/detail/walkers.h) — each lane starts at a uniform point of [0, 1)² from its
+// own xoshiro256+, picks every xform with one draw of it, burns in, then plots — with the
+// xform's step in place of the affine map, so that the pictures are the affine IFS's bytes.
+// Lanes run one after another: what they plot is merged by max or OR, which ignores the order.
+// Every other flame takes the batched walk (flame/detail/flame_walk.h).
+class LaneWalk {
  public:
-  FlameWalk(const Flame& flame, const Viewport& viewport, const std::optional<AffineMap>& turn,
-            int burn_in)
+  LaneWalk(const Flame& flame, const Viewport& viewport, const std::optional<AffineMap>& turn,
+           int burn_in)
       : flame_(flame), pickers_(xform_pickers(flame, true)), turn_(turn), burn_in_(burn_in) {
     const AffineMap to_pixel = viewport.plane_to_pixel();
     sx_ = to_pixel.a, ox_ = to_pixel.e, sy_ = to_pixel.d, oy_ = to_pixel.f;
     width_ = viewport.size.width;
     height_ = viewport.size.height;
-    bits_ = detail::symbol_bits(flame.xforms.size());
+    bits_ = ifsfx::detail::symbol_bits(flame.xforms.size());
   }
 
   int bits() const { return bits_; }
@@ -71,10 +71,11 @@ class FlameWalk {
   // address key (σk in the top b bits, docs/design.md §2).
   template <class Plot>
   void walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, Plot&& plot) const {
-    const detail::LaneSeeds seeds = detail::lane_seeds(seed, chunk);
-    for (int lane = 0; lane < detail::kLanes; ++lane) {
-      const std::uint64_t n = points / detail::kLanes +
-                              (static_cast<std::uint64_t>(lane) < points % detail::kLanes ? 1 : 0);
+    const ifsfx::detail::LaneSeeds seeds = ifsfx::detail::lane_seeds(seed, chunk);
+    for (int lane = 0; lane < ifsfx::detail::kLanes; ++lane) {
+      const std::uint64_t n =
+          points / ifsfx::detail::kLanes +
+          (static_cast<std::uint64_t>(lane) < points % ifsfx::detail::kLanes ? 1 : 0);
       walk_lane(seeds.s[lane], n, plot);
     }
   }
@@ -82,7 +83,7 @@ class FlameWalk {
  private:
   template <class Plot>
   void walk_lane(const std::uint64_t (&state)[4], std::uint64_t n, Plot& plot) const {
-    detail::LaneRng rng(state);
+    ifsfx::detail::LaneRng rng(state);
     Rng variations(stream_seed(state[0], state[1]));
     const int shift = 64 - bits_;
     Point p;
@@ -138,10 +139,12 @@ struct Plan {
   Viewport viewport;
   std::optional<Ifs> affine;
   std::optional<AffineMap> turn;
+  bool lanes = false;  // an affine IFS (contracting or not): the affine kernels' lanes
 };
 
 Plan plan_of(const Flame& flame, cv::Size size, const Sampling& sampling) {
-  Plan plan{flame_viewport(flame, size, sampling), affine_ifs(flame), std::nullopt};
+  Plan plan{flame_viewport(flame, size, sampling), affine_ifs(flame), std::nullopt, false};
+  plan.lanes = plan.affine.has_value();
   if (plan.affine && !(plan.affine->contraction() < 1)) plan.affine.reset();
   if (!sampling.view && flame.camera.rotate != 0) {
     // The camera's bins (flame plane → pixels, turned) against the unturned viewport: the turn
@@ -154,11 +157,42 @@ Plan plan_of(const Flame& flame, cv::Size size, const Sampling& sampling) {
 }
 
 // Points a chunk of the walk plots: an affine IFS's chunks (its pictures are then the affine
-// chaos game's, byte for byte), smaller ones for a flame's slower steps, so that the workers
-// share a picture of a few million points.
+// chaos game's, byte for byte; smaller ones where it does not contract, as before the batched
+// walk), the batched walk's for any other flame.
 std::uint64_t chunk_points(const Plan& plan) {
-  return plan.affine ? detail::kChunkPoints : detail::kSlowChunkPoints;
+  if (!plan.lanes) return flame::detail::kWalkChunkPoints;
+  return plan.affine ? ifsfx::detail::kChunkPoints : ifsfx::detail::kSlowChunkPoints;
 }
+
+// The walk of a plan: the affine lanes or the batched walk, plot(pixel, key) for every point
+// that lands on the raster.
+class Walk {
+ public:
+  Walk(const Flame& flame, const Plan& plan, int burn_in) {
+    if (plan.lanes) {
+      lanes_.emplace(flame, plan.viewport, plan.turn, burn_in);
+      return;
+    }
+    batch_.emplace(flame::detail::WalkSetup{.flame = &flame,
+                                            .to_pixel = plan.viewport.plane_to_pixel(),
+                                            .turn = plan.turn,
+                                            .width = plan.viewport.size.width,
+                                            .height = plan.viewport.size.height,
+                                            .burn_in = burn_in});
+  }
+
+  template <class Plot>
+  void walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, Plot&& plot) const {
+    if (lanes_) return lanes_->walk(seed, chunk, points, plot);
+    batch_->walk(seed, chunk, points, [&plot](const flame::detail::WalkHits& hits) {
+      for (std::size_t i = 0; i < hits.n; ++i) plot(hits.pixel[i], hits.key[i]);
+    });
+  }
+
+ private:
+  std::optional<LaneWalk> lanes_;
+  std::optional<flame::detail::FlameWalk> batch_;
+};
 
 void check_inputs(const Flame& flame, cv::Size size, const Sampling& sampling, bool exact) {
   check_flame_chaos(sampling, exact);
@@ -171,16 +205,17 @@ void check_inputs(const Flame& flame, cv::Size size, const Sampling& sampling, b
     pre.probabilities.push_back(xf.weight);
   }
   pre.name = flame.name.empty() ? "flame" : flame.name;
-  detail::check_chaos_game({.ifs = pre, .size = size, .sampling = &sampling});
+  ifsfx::detail::check_chaos_game({.ifs = pre, .size = size, .sampling = &sampling});
 }
 
 // The tops keys of a flame on its plan: the affine coverage policy over the flame's walk.
-detail::AddressRaster flame_keys(const Flame& flame, const Plan& plan, const Sampling& sampling,
-                                 int key_bits, detail::ChaosTopsStats* stats) {
-  const int bits = detail::symbol_bits(flame.xforms.size());
+ifsfx::detail::AddressRaster flame_keys(const Flame& flame, const Plan& plan,
+                                        const Sampling& sampling, int key_bits,
+                                        ifsfx::detail::ChaosTopsStats* stats) {
+  const int bits = ifsfx::detail::symbol_bits(flame.xforms.size());
   const int burn_in =
       std::max(plan.affine ? default_burn_in(*plan.affine) : kFlameBurnIn, 64 / bits + 1);
-  const auto walk = std::make_shared<const FlameWalk>(flame, plan.viewport, plan.turn, burn_in);
+  const auto walk = std::make_shared<const Walk>(flame, plan, burn_in);
   const auto run = [walk](auto* cells, std::uint64_t seed, std::uint64_t chunk,
                           std::uint64_t points) {
     using Cell = std::remove_pointer_t<decltype(cells)>;
@@ -191,7 +226,7 @@ detail::AddressRaster flame_keys(const Flame& flame, const Plan& plan, const Sam
       if (v > cells[pixel]) cells[pixel] = v;
     });
   };
-  const detail::KeyWalk keys{
+  const ifsfx::detail::KeyWalk keys{
       .run32 = [run](std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
                      std::uint32_t* cells) { run(cells, seed, chunk, points); },
       .run64 = [run](std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
@@ -199,19 +234,19 @@ detail::AddressRaster flame_keys(const Flame& flame, const Plan& plan, const Sam
       .bits = bits,
       .chunk_points = chunk_points(plan),
       .affine = plan.affine ? &*plan.affine : nullptr};
-  return detail::chaos_tops(keys, plan.viewport,
-                            {.quality = sampling.quality,
-                             .seed = sampling.seed,
-                             .threads = sampling.threads,
-                             .key_bits = key_bits,
-                             .cancel = sampling.cancel},
-                            stats);
+  return ifsfx::detail::chaos_tops(keys, plan.viewport,
+                                   {.quality = sampling.quality,
+                                    .seed = sampling.seed,
+                                    .threads = sampling.threads,
+                                    .key_bits = key_bits,
+                                    .cancel = sampling.cancel},
+                                   stats);
 }
 
 // T of each covered pixel from its whole key: g_σ1 ∘ … ∘ g_σK(c), c the fixed point of g_σK — the
 // colouring orbit of the pixel's winning point, run in lockstep with it (paper §4), to within
 // s_G^K. CV_32FC2 (u, v), v = 1 − y.
-cv::Mat uv_of_whole_keys(const detail::AddressRaster& tops, const Ifs& G, int threads) {
+cv::Mat uv_of_whole_keys(const ifsfx::detail::AddressRaster& tops, const Ifs& G, int threads) {
   const auto n = static_cast<std::uint32_t>(G.size());
   const int K = tops.symbols();
   cv::Mat uv(tops.viewport.size, CV_32FC2, cv::Scalar::all(0));
@@ -222,7 +257,7 @@ cv::Mat uv_of_whole_keys(const detail::AddressRaster& tops, const Ifs& G, int th
       const std::uint64_t key = tops.at(col, row);
       if (key == 0) continue;
       const auto symbol = [&](int m) { return std::min(tops.symbol(key, m), n - 1); };
-      Point y = detail::fixed_point(G.maps[symbol(K - 1)]);
+      Point y = ifsfx::detail::fixed_point(G.maps[symbol(K - 1)]);
       for (int m = K - 1; m >= 0; --m) y = G.maps[symbol(m)](y);
       out[col] = cv::Vec2f(static_cast<float>(y.x), static_cast<float>(1 - y.y));
     }
@@ -281,18 +316,17 @@ cv::Mat flame_attractor(const Flame& flame, cv::Size size, const Sampling& sampl
   check_inputs(flame, size, sampling, false);
   const auto start = std::chrono::steady_clock::now();
   const Plan plan = plan_of(flame, size, sampling);
-  const FlameWalk walk(flame, plan.viewport, plan.turn,
-                       plan.affine ? default_burn_in(*plan.affine) : kFlameBurnIn);
+  const Walk walk(flame, plan, plan.affine ? default_burn_in(*plan.affine) : kFlameBurnIn);
   const auto points =
       static_cast<std::uint64_t>(std::ceil(sampling.quality * size.width * double(size.height)));
-  const std::uint64_t chunks = detail::chunk_count(points, chunk_points(plan));
+  const std::uint64_t chunks = ifsfx::detail::chunk_count(points, chunk_points(plan));
   const int workers = worker_count(chunks, sampling.threads);
   std::vector<cv::Mat> hits(static_cast<std::size_t>(workers));
   parallel_for(chunks, workers, [&](std::size_t chunk, int worker) {
     sampling.cancel.check("render");
     cv::Mat& mask = hits[static_cast<std::size_t>(worker)];
     if (mask.empty()) mask = cv::Mat::zeros(size, CV_8UC1);
-    walk.walk(sampling.seed, chunk, detail::chunk_size(points, chunk, chunk_points(plan)),
+    walk.walk(sampling.seed, chunk, ifsfx::detail::chunk_size(points, chunk, chunk_points(plan)),
               [&mask](long pixel, std::uint64_t) { mask.data[pixel] = 255; });
   });
   cv::Mat out = cv::Mat::zeros(size, CV_8UC1);
@@ -308,9 +342,9 @@ cv::Mat flame_attractor(const Flame& flame, cv::Size size, const Sampling& sampl
 TopSymbols flame_top_symbols(const Flame& flame, cv::Size size, const TopsOptions& options) {
   check_inputs(flame, size, options.sampling, options.exact);
   const Plan plan = plan_of(flame, size, options.sampling);
-  detail::ChaosTopsStats chaos;
+  ifsfx::detail::ChaosTopsStats chaos;
   // 32-bit keys: 32/b ≥ 2 symbols, as top_symbols keeps them.
-  TopSymbols out = detail::symbols_of(flame_keys(flame, plan, options.sampling, 32, &chaos));
+  TopSymbols out = ifsfx::detail::symbols_of(flame_keys(flame, plan, options.sampling, 32, &chaos));
   out.points = chaos.points;
   return out;
 }
@@ -329,7 +363,7 @@ StealMap flame_steal_map(const Flame& flame, const Ifs& G, cv::Size size,
                          const StealMapOptions& options, StealMapStats* stats) {
   const auto start = std::chrono::steady_clock::now();
   check_inputs(flame, size, options.sampling, options.exact);
-  detail::check_chaos_game(
+  ifsfx::detail::check_chaos_game(
       {.ifs = G, .name = G.name.empty() ? "colouring IFS" : G.name, .contracting = true});
   if (G.size() != flame.xforms.size())
     throw Error(ErrorKind::invalid_ifs,
@@ -338,15 +372,15 @@ StealMap flame_steal_map(const Flame& flame, const Ifs& G, cv::Size size,
                             G.size(), flame.xforms.size()));
   const Plan plan = plan_of(flame, size, options.sampling);
   // compute_steal_map's record size: 32 bits when their 32/b symbols pin T to 1/8192 through G.
-  const int bits = detail::symbol_bits(G.size());
-  const bool short_keys = std::pow(detail::word_contraction(G), 32 / bits) * 8192 <= 1;
-  detail::ChaosTopsStats chaos;
-  const detail::AddressRaster tops =
+  const int bits = ifsfx::detail::symbol_bits(G.size());
+  const bool short_keys = std::pow(ifsfx::detail::word_contraction(G), 32 / bits) * 8192 <= 1;
+  ifsfx::detail::ChaosTopsStats chaos;
+  const ifsfx::detail::AddressRaster tops =
       flame_keys(flame, plan, options.sampling, short_keys ? 32 : 64, &chaos);
   options.sampling.cancel.check("steal map");
   StealMap map;
   map.source_uv = plan.affine
-                      ? detail::uv_from_keys(tops, *plan.affine, G, options.sampling.threads)
+                      ? ifsfx::detail::uv_from_keys(tops, *plan.affine, G, options.sampling.threads)
                       : uv_of_whole_keys(tops, G, options.sampling.threads);
   map.coverage = tops.coverage();
   if (stats) {

@@ -7,9 +7,10 @@
 // stealing (paper §4: the colouring IFS G driven by the same σk) carry over unchanged. The colour
 // coordinate of the flame look is not used: its role is taken by G's orbit.
 //
-// The walk is the affine chaos game's (ifs/detail/walkers.h): the same lanes, generators, burn-in
-// and coverage policy (docs/design.md §2), so that a flame whose xforms are plain `linear` maps
-// gives the bytes of the affine IFS of those maps (affine_ifs) in every mode.
+// The coverage policy is the affine chaos game's (docs/design.md §2). A flame whose xforms are
+// plain `linear` maps walks as its affine IFS (affine_ifs) does, the same lanes, generators and
+// burn-in (ifs/detail/walkers.h), and gives its bytes in every mode; any other flame walks in
+// lockstep batches through the renderer's batch forms (flame/detail/flame_walk.h).
 //
 // Refused: the exact descent (it follows f_n⁻¹, and a flame's xforms have no inverse), the torus
 // of a seamless tile, and a colouring IFS whose map count is not the flame's xform count.

@@ -11,6 +11,7 @@
 
 #include "flame/detail/batch_variations.h"
 #include "flame/detail/render_chaos.h"
+#include "flame/detail/xform_step.h"
 #include "flame/variations.h"
 #include "flame/xform_pickers.h"
 #include "ifs/error.h"
@@ -27,153 +28,21 @@ namespace {
 constexpr std::uint64_t kWalkerPoints = 10000;
 constexpr std::uint64_t kChunkPoints = kWalkerPoints * kBatchLanes;
 constexpr double kUnit = 65536;  // one hit of full colour, in the integer sums
-constexpr std::size_t kN = kBatchStride;
+constexpr std::size_t kN = kStepStride;
 
 // Four 32-bit sums or colour channels (r, g, b, a) as one value: GCC's generic vectors, plain
 // SSE2 on x86-64, scalar code elsewhere.
 using U4 = std::uint32_t __attribute__((vector_size(16)));
 
-// One variation term with everything the inner loop needs resolved once.
-struct Term {
-  VariationFunction f;
-  const BatchVariation* batch;  // null: point by point through f
-  double w;
-  std::span<const double> params;
-  bool adds;    // pre_/post_ lists: p + w·V(p) rather than w·V(p)
-  bool linear;  // V(p) = p
-};
-
-// The arrays one xform's batch works in: the affine point q, a term's result t, the sum s and
-// the random draws u.
-struct Scratch {
-  std::array<double, kN> qx{}, qy{}, tx{}, ty{}, sx{}, sy{};
-  std::vector<double> u;
-};
-
-// Points [0, n) of (x, y) through one term, its w·V added to (ox, oy).
-void run_term(const Term& t, const AffineMap& pre, std::size_t n, const double* x, const double* y,
-              double* ox, double* oy, Scratch& w, Rng& rng) {
-  if (!t.batch) {
-    for (std::size_t i = 0; i < n; ++i) {
-      const Point r = t.f({.p = {x[i], y[i]}, .w = t.w, .params = t.params, .pre = &pre}, rng);
-      ox[i] += r.x;
-      oy[i] += r.y;
-    }
-    return;
-  }
-  const auto draws = static_cast<std::size_t>(t.batch->draws);
-  if (w.u.size() < draws * kN) w.u.resize(draws * kN);
-  // Draw by draw, each over the points (the batch form reads draw j of point i at u[j·kN + i];
-  // point by point, the strided stores and the generator's state went through memory).
-  Rng local = rng;
-  for (std::size_t j = 0; j < draws; ++j) {
-    double* u = w.u.data() + j * kN;
-    for (std::size_t i = 0; i < n; ++i) u[i] = local.uniform();
-  }
-  rng = local;
-  t.batch->function({.w = t.w, .params = t.params.data(), .pre = &pre, .u = w.u.data()}, n, x, y,
-                    ox, oy);
-}
-
-void affine(const AffineMap& m, std::size_t n, double* x, double* y) {
-  for (std::size_t i = 0; i < n; ++i) {
-    const double u = x[i], v = y[i];
-    x[i] = m.a * u + m.b * v + m.e;
-    y[i] = m.c * u + m.d * v + m.f;
-  }
-}
-
-// An xform prepared for the loop: apply_xform's steps (flame/xform_eval.h) without looking
-// anything up, over a batch of points, and the colour update c ← keep·c + shift.
+// An xform prepared for the loop: its motion (flame/detail/xform_step.h) and the colour update
+// c ← keep·c + shift.
 struct Step {
-  AffineMap pre, post;
-  bool has_post = false, has_sum = false;
-  std::vector<Term> pre_terms, sum_terms, post_terms;
+  XformStep motion;
   double keep = 1, shift = 0;
   std::array<U4, 256> colours{};  // palette × opacity (r, g, b, a), in kUnit
   // Every entry 0 (opacity 0, as flames use to hide an xform's own points): its hits add
   // nothing and are not plotted at all (flam3-render skips them too).
   bool invisible = false;
-  // Only affine: no pre_/post_ terms and every term of the sum `linear` (an IFS drawn as a
-  // flame), so that one point goes through it on its own without the arrays (moved()).
-  bool affine_only = false;
-
-  // One point through an affine_only xform: the operations of operator() on it, in its order
-  // (the sum starts from 0 and adds w·q term by term, as run_term does), so the bits are equal.
-  Point moved(double x, double y) const {
-    double sx = pre.a * x + pre.b * y + pre.e;
-    double sy = pre.c * x + pre.d * y + pre.f;
-    if (has_sum) {
-      const double qx = sx, qy = sy;
-      sx = 0;
-      sy = 0;
-      for (const Term& t : sum_terms) {
-        sx += t.w * qx;
-        sy += t.w * qy;
-      }
-    }
-    if (!has_post) return {sx, sy};
-    return {post.a * sx + post.b * sy + post.e, post.c * sx + post.d * sy + post.f};
-  }
-
-  // (x, y) ← each term of `terms` in order, over points [0, n).
-  void chain(const std::vector<Term>& terms, std::size_t n, double* x, double* y, Scratch& w,
-             Rng& rng) const {
-    const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
-    for (const Term& t : terms) {
-      std::fill_n(w.tx.begin(), padded, 0.0);
-      std::fill_n(w.ty.begin(), padded, 0.0);
-      run_term(t, pre, n, x, y, w.tx.data(), w.ty.data(), w, rng);
-      for (std::size_t i = 0; i < n; ++i) {
-        x[i] = t.adds ? x[i] + w.tx[i] : w.tx[i];
-        y[i] = t.adds ? y[i] + w.ty[i] : w.ty[i];
-      }
-    }
-  }
-  // Points [0, n) of (x, y) moved through the xform, in place.
-  void operator()(std::size_t n, double* x, double* y, Scratch& w, Rng& rng) const {
-    std::copy_n(x, n, w.qx.begin());
-    std::copy_n(y, n, w.qy.begin());
-    const auto [sx, sy] = move_scratch(n, w, rng);
-    std::copy_n(sx, n, x);
-    std::copy_n(sy, n, y);
-  }
-  // The points x[at[i]], y[at[i]] for i in [0, n) moved through the xform, in place.
-  void operator()(std::size_t n, const std::uint32_t* at, double* x, double* y, Scratch& w,
-                  Rng& rng) const {
-    for (std::size_t i = 0; i < n; ++i) {
-      w.qx[i] = x[at[i]];
-      w.qy[i] = y[at[i]];
-    }
-    const auto [sx, sy] = move_scratch(n, w, rng);
-    for (std::size_t i = 0; i < n; ++i) {
-      x[at[i]] = sx[i];
-      y[at[i]] = sy[i];
-    }
-  }
-  // The points [0, n) of (w.qx, w.qy) through the xform; where the result is.
-  std::pair<double*, double*> move_scratch(std::size_t n, Scratch& w, Rng& rng) const {
-    const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
-    std::fill(w.qx.begin() + static_cast<std::ptrdiff_t>(n),
-              w.qx.begin() + static_cast<std::ptrdiff_t>(padded), 0.0);
-    std::fill(w.qy.begin() + static_cast<std::ptrdiff_t>(n),
-              w.qy.begin() + static_cast<std::ptrdiff_t>(padded), 0.0);
-    affine(pre, n, w.qx.data(), w.qy.data());
-    chain(pre_terms, n, w.qx.data(), w.qy.data(), w, rng);
-    double* sx = w.qx.data();
-    double* sy = w.qy.data();
-    if (has_sum) {
-      std::fill_n(w.sx.begin(), padded, 0.0);
-      std::fill_n(w.sy.begin(), padded, 0.0);
-      for (const Term& t : sum_terms)
-        run_term(t, pre, n, w.qx.data(), w.qy.data(), w.sx.data(), w.sy.data(), w, rng);
-      sx = w.sx.data();
-      sy = w.sy.data();
-    }
-    if (has_post) affine(post, n, sx, sy);
-    chain(post_terms, n, sx, sy, w, rng);
-    return {sx, sy};
-  }
 };
 
 // An affine_only step flat, for the walk's point-by-point loop: its maps, the sum's weights and
@@ -192,43 +61,9 @@ struct Flat {
 // any (the record says), or a sum of one term with a post map, or without.
 enum class FlatShape { any, one_term_post, one_term };
 
-// The kernel level and lane type the batch forms run at.
-struct Kernels {
-  CpuLevel level;
-  LaneType type;
-};
-
-std::vector<Term> terms_of(const std::vector<VariationTerm>& list, bool in_sum, Kernels kernels) {
-  std::vector<Term> out;
-  for (const VariationTerm& t : list) {
-    const Variation& v = variation(t.id);
-    // z only: adds nothing to the sum, leaves the point alone in a list.
-    if (v.kind == VariationKind::flat_3d) continue;
-    // linear3D is linear in the plane (its z part is dropped): the same term, so that a flame
-    // of linear3D xforms (Fractorium's hexagonal tilings) walks as an affine one. linear (an
-    // IFS's own maps) stays in double lanes: float would only round it.
-    const bool linear = v.name == "linear" || v.name == "linear3D";
-    const std::string_view name = linear ? std::string_view("linear") : v.name;
-    const LaneType type = linear ? LaneType::f64 : kernels.type;
-    const BatchVariation* batch = find_batch_variation(kernels.level, name, type);
-    out.push_back({v.function, batch ? batch : find_batch_variation(kernels.level, name), t.weight,
-                   t.params, !in_sum && v.assign == Assign::add, linear});
-  }
-  return out;
-}
-
 Step step_of(const Xform& xf, const Palette& palette, Kernels kernels) {
   Step s;
-  s.pre = xf.pre;
-  s.has_post = xf.post.has_value();
-  if (s.has_post) s.post = *xf.post;
-  s.has_sum = !xf.variations.empty();
-  s.pre_terms = terms_of(xf.pre_variations, false, kernels);
-  s.sum_terms = terms_of(xf.variations, true, kernels);
-  s.post_terms = terms_of(xf.post_variations, false, kernels);
-  s.affine_only =
-      s.pre_terms.empty() && s.post_terms.empty() &&
-      std::all_of(s.sum_terms.begin(), s.sum_terms.end(), [](const Term& t) { return t.linear; });
+  s.motion = xform_step_of(xf, kernels);
   s.keep = 1 - xf.colour_speed;
   s.shift = xf.colour_speed * xf.colour;
   for (std::size_t i = 0; i < 256; ++i) {
@@ -305,8 +140,8 @@ void start(Walkers& a, std::size_t i, Rng& rng) {
   a.c[i] = rng.uniform();
 }
 
-// Each walker moved by the Flat record of its xform: Step::moved's operations in its order (the
-// sum from 0, w·q added term by term), so the same bits, with the shape's branches resolved.
+// Each walker moved by the Flat record of its xform: XformStep::moved's operations in its order
+// (the sum from 0, w·q added term by term), so the same bits, with the shape's branches resolved.
 template <FlatShape Shape>
 void move_flat(const Plan& plan, Walkers& a, std::size_t m) {
   const Flat* flat = plan.flat.data();
@@ -363,10 +198,10 @@ void pick(const Plan& plan, Walkers& a, std::size_t m, std::vector<std::size_t>&
     }
   }
   if (plan.affine_only) {
-    // The general walk's step (Step::operator()), point by point, with the same bits.
+    // The general walk's step (XformStep::operator()), point by point, with the same bits.
     for (std::size_t i = 0; i < m; ++i) {
       const Step& s = plan.steps[a.k[i]];
-      const Point p = s.moved(a.x[i], a.y[i]);
+      const Point p = s.motion.moved(a.x[i], a.y[i]);
       a.x[i] = p.x;
       a.y[i] = p.y;
       a.c[i] = s.keep * a.c[i] + s.shift;
@@ -434,7 +269,7 @@ std::uint64_t plot_walkers(const Plan& plan, Walkers& a, std::size_t m, std::uin
   const std::uint64_t reseeded = reseed(a, m, &out, rng);
   if (s < burn_in) return reseeded;
   std::array<double, kN> fx = a.x, fy = a.y, fc{};
-  (*plan.final_step)(m, fx.data(), fy.data(), w, rng);
+  plan.final_step->motion(m, fx.data(), fy.data(), w, rng);
   const Step& f = *plan.final_step;
   plan.bin_numbers(plan.grid, m, fx.data(), fy.data(), at.data());
   unplotted(plan, a, m, s, at);
@@ -472,7 +307,7 @@ std::uint64_t walk_chunk(const Plan& plan, std::uint64_t seed, std::uint64_t chu
       if (count == 0) continue;
       const Step& step = plan.steps[j];
       const std::uint32_t* at = order.data() + lo;
-      step(count, at, a.x.data(), a.y.data(), w, rng);
+      step.motion(count, at, a.x.data(), a.y.data(), w, rng);
       for (std::size_t i = 0; i < count; ++i) a.c[at[i]] = step.keep * a.c[at[i]] + step.shift;
     }
     reseeded += plot_walkers(plan, a, m, s, burn, w, rng, bins);
@@ -484,15 +319,16 @@ std::uint64_t walk_chunk(const Plan& plan, std::uint64_t seed, std::uint64_t chu
 // shape they share.
 void flatten(Plan& plan) {
   bool one_term = true, post = true, no_post = true;
-  for (const Step& s : plan.steps) {
+  for (const Step& step : plan.steps) {
+    const XformStep& s = step.motion;
     if (s.sum_terms.size() > kFlatTerms) {
       plan.flat.clear();
       return;
     }
     Flat f{.pre = s.pre,
            .post = s.post,
-           .keep = s.keep,
-           .shift = s.shift,
+           .keep = step.keep,
+           .shift = step.shift,
            .terms = static_cast<std::uint32_t>(s.sum_terms.size()),
            .has_sum = s.has_sum,
            .has_post = s.has_post};
@@ -537,7 +373,7 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   if (flame.final_xform) plan.final_step = step_of(*flame.final_xform, flame.palette, kernels);
   plan.pickers = xform_pickers(flame, false);
   plan.affine_only = std::all_of(plan.steps.begin(), plan.steps.end(),
-                                 [](const Step& s) { return s.affine_only; });
+                                 [](const Step& s) { return s.motion.affine_only; });
   if (plan.affine_only) flatten(plan);
   plan.linear_palette = flame.palette.mode == PaletteMode::linear;
   // A bin's number and kOffBin fit 32 bits (a raster that large would need 64 GiB a worker).

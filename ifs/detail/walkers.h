@@ -20,9 +20,10 @@ namespace ifsfx::detail {
 // every chunk is seeded from (seed, chunk): results never depend on the thread count.
 inline constexpr std::uint64_t kChunkPoints = std::uint64_t{1} << 22;
 
-// A walk two orders of magnitude slower per point than the affine kernels (a flame's xforms,
-// flame/flame_chaos.h) takes chunks this much smaller, so that a picture is still many chunks
-// for the workers to share.
+// A walk two orders of magnitude slower per point than the affine kernels takes chunks this
+// much smaller, so that a picture is still many chunks for the workers to share: an affine IFS
+// drawn as a flame that does not contract (flame/flame_chaos.h; any other flame walks in batches
+// of its own size, flame/detail/flame_walk.h).
 inline constexpr std::uint64_t kSlowChunkPoints = std::uint64_t{1} << 16;
 
 inline std::uint64_t chunk_count(std::uint64_t points, std::uint64_t per_chunk = kChunkPoints) {

@@ -140,11 +140,12 @@ TEST(flame_chaos, a_final_spherical_xform_inverts_the_attractor_and_the_steal_ma
 }
 
 TEST(flame_chaos, a_flame_of_many_chunks_gives_the_same_bytes_for_any_thread_count) {
-  // 48² pixels at quality 64: 147 456 points, three of a flame's chunks (2¹⁶ points each).
+  // 48² pixels at quality 256: 589 824 points, three of the batched walk's chunks (2¹⁸ points
+  // each), the last one of 64 walkers.
   const Flame flame = inverted_square();
   const cv::Size size{48, 48};
   const auto sampled = [](int threads) {
-    return Sampling{.quality = 64, .seed = 7, .threads = threads};
+    return Sampling{.quality = 256, .seed = 7, .threads = threads};
   };
   const cv::Mat one = flame_attractor(flame, size, sampled(1));
   const TopSymbols tops = flame_top_symbols(flame, size, {.sampling = sampled(1), .exact = false});
@@ -155,6 +156,36 @@ TEST(flame_chaos, a_flame_of_many_chunks_gives_the_same_bytes_for_any_thread_cou
     EXPECT_TRUE(testing::same_bytes(tops.first, again.first));
     EXPECT_TRUE(testing::same_bytes(tops.second, again.second));
   }
+}
+
+// An xform that throws its points past the escape bound (weight 1/81 of the picks) adds nothing
+// to the picture: its walkers start again. Had they stayed, the final spherical xform would put
+// them at the origin, in view. A camera turned by 90° about the centre of a square raster draws
+// the same walk's picture turned (pixel centres onto pixel centres; a point within rounding of a
+// pixel's edge may land on either side).
+TEST(flame_chaos, escaped_walkers_start_again_and_the_camera_turn_turns_the_picture) {
+  const Flame flame = inverted_square();
+  const cv::Size size{48, 48};
+  const Sampling sampling{.quality = 16, .seed = 3};
+  const cv::Mat plain = flame_attractor(flame, size, {.quality = 256, .seed = 3});
+  Flame escaping = flame;
+  escaping.xforms.push_back(
+      {.pre = {1, 0, 0, 1, 1e11, 0}, .weight = 0.05, .variations = {term("linear")}});
+  const cv::Mat escaped = flame_attractor(escaping, size, sampling);
+  cv::Mat outside;
+  cv::subtract(escaped, plain, outside);
+  EXPECT_EQ(cv::countNonZero(outside), 0);
+  EXPECT_GT(cv::countNonZero(escaped), cv::countNonZero(plain) * 9 / 10);
+
+  Flame turned = flame;
+  turned.camera.rotate = 90;
+  const cv::Mat unturned = flame_attractor(flame, size, sampling);
+  cv::Mat expected;
+  cv::rotate(unturned, expected, cv::ROTATE_90_CLOCKWISE);
+  cv::Mat differ;
+  cv::compare(flame_attractor(turned, size, sampling), expected, differ, cv::CMP_NE);
+  EXPECT_LT(cv::countNonZero(differ), cv::countNonZero(unturned) / 100);
+  EXPECT_GT(cv::countNonZero(unturned), 300);
 }
 
 TEST(flame_chaos, what_needs_inverse_maps_or_a_map_per_xform_is_refused) {

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: Apache-2.0
+// One xform's motion over a batch of walkers: apply_xform's steps (flame/xform_eval.h) — the
+// pre-affine map, the pre_ terms, the weighted sum of the variations, the post map, the post_
+// terms — resolved once and run over arrays of points, each variation through its batch form
+// (flame/detail/batch_variations.h) where it has one. The walks that move many walkers in
+// lockstep share it: the renderer's (flame/render_chaos.cpp, which adds the colour) and the
+// paper modes' (flame/flame_walk.cpp, which adds the address).
+//
+//   const XformStep step = xform_step_of(xf, {cpu_level(), LaneType::f32});
+//   step(n, at, x, y, scratch, rng);  // walkers at[0..n) of (x, y) moved, in place
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "flame/detail/batch_variations.h"
+#include "flame/flame.h"
+#include "flame/variations.h"
+#include "ifs/rng.h"
+
+namespace ifsfx::flame::detail {
+
+// The length of a batch's arrays: kBatchLanes walkers, padded to whole vectors.
+inline constexpr std::size_t kStepStride = kBatchStride;
+
+// The kernel level and lane type the batch forms run at.
+struct Kernels {
+  CpuLevel level;
+  LaneType type;
+};
+
+// One variation term with everything the inner loop needs resolved once.
+struct Term {
+  VariationFunction f;
+  const BatchVariation* batch;  // null: point by point through f
+  double w;
+  std::span<const double> params;
+  bool adds;    // pre_/post_ lists: p + w·V(p) rather than w·V(p)
+  bool linear;  // V(p) = p
+};
+
+// The arrays one xform's batch works in: the affine point q, a term's result t, the sum s and
+// the random draws u.
+struct Scratch {
+  std::array<double, kStepStride> qx{}, qy{}, tx{}, ty{}, sx{}, sy{};
+  std::vector<double> u;
+};
+
+// An xform's terms of one list: `in_sum` for the weighted sum (w·V), else a pre_/post_ list
+// (p + w·V where the variation adds). z-only variations are dropped; linear3D is `linear`.
+std::vector<Term> terms_of(const std::vector<VariationTerm>& list, bool in_sum, Kernels kernels);
+
+// An xform prepared for the loop: apply_xform's steps without looking anything up.
+struct XformStep {
+  AffineMap pre, post;
+  bool has_post = false, has_sum = false;
+  std::vector<Term> pre_terms, sum_terms, post_terms;
+  // Only affine: no pre_/post_ terms and every term of the sum `linear` (an IFS drawn as a
+  // flame), so that one point goes through it on its own without the arrays (moved()).
+  bool affine_only = false;
+
+  // One point through an affine_only xform: the operations of operator() on it, in its order
+  // (the sum starts from 0 and adds w·q term by term, as the batch does), so the bits are equal.
+  Point moved(double x, double y) const {
+    double sx = pre.a * x + pre.b * y + pre.e;
+    double sy = pre.c * x + pre.d * y + pre.f;
+    if (has_sum) {
+      const double qx = sx, qy = sy;
+      sx = 0;
+      sy = 0;
+      for (const Term& t : sum_terms) {
+        sx += t.w * qx;
+        sy += t.w * qy;
+      }
+    }
+    if (!has_post) return {sx, sy};
+    return {post.a * sx + post.b * sy + post.e, post.c * sx + post.d * sy + post.f};
+  }
+
+  // Points [0, n) of (x, y) moved through the xform, in place.
+  void operator()(std::size_t n, double* x, double* y, Scratch& w, Rng& rng) const;
+  // The points x[at[i]], y[at[i]] for i in [0, n) moved through the xform, in place.
+  void operator()(std::size_t n, const std::uint32_t* at, double* x, double* y, Scratch& w,
+                  Rng& rng) const;
+
+ private:
+  // The points [0, n) of (w.qx, w.qy) through the xform; where the result is.
+  std::pair<double*, double*> move_scratch(std::size_t n, Scratch& w, Rng& rng) const;
+  // (x, y) ← each term of `terms` in order, over points [0, n).
+  void chain(const std::vector<Term>& terms, std::size_t n, double* x, double* y, Scratch& w,
+             Rng& rng) const;
+};
+
+XformStep xform_step_of(const Xform& xf, Kernels kernels);
+
+}  // namespace ifsfx::flame::detail

@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: Apache-2.0
+// One xform's motion over a batch of walkers (flame/detail/xform_step.h).
+#include "flame/detail/xform_step.h"
+
+#include <algorithm>
+#include <string_view>
+
+namespace ifsfx::flame::detail {
+namespace {
+
+constexpr std::size_t kN = kStepStride;
+
+// Points [0, n) of (x, y) through one term, its w·V added to (ox, oy).
+void run_term(const Term& t, const AffineMap& pre, std::size_t n, const double* x, const double* y,
+              double* ox, double* oy, Scratch& w, Rng& rng) {
+  if (!t.batch) {
+    for (std::size_t i = 0; i < n; ++i) {
+      const Point r = t.f({.p = {x[i], y[i]}, .w = t.w, .params = t.params, .pre = &pre}, rng);
+      ox[i] += r.x;
+      oy[i] += r.y;
+    }
+    return;
+  }
+  const auto draws = static_cast<std::size_t>(t.batch->draws);
+  if (w.u.size() < draws * kN) w.u.resize(draws * kN);
+  // Draw by draw, each over the points (the batch form reads draw j of point i at u[j·kN + i];
+  // point by point, the strided stores and the generator's state went through memory).
+  Rng local = rng;
+  for (std::size_t j = 0; j < draws; ++j) {
+    double* u = w.u.data() + j * kN;
+    for (std::size_t i = 0; i < n; ++i) u[i] = local.uniform();
+  }
+  rng = local;
+  t.batch->function({.w = t.w, .params = t.params.data(), .pre = &pre, .u = w.u.data()}, n, x, y,
+                    ox, oy);
+}
+
+void affine(const AffineMap& m, std::size_t n, double* x, double* y) {
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = x[i], v = y[i];
+    x[i] = m.a * u + m.b * v + m.e;
+    y[i] = m.c * u + m.d * v + m.f;
+  }
+}
+
+}  // namespace
+
+std::vector<Term> terms_of(const std::vector<VariationTerm>& list, bool in_sum, Kernels kernels) {
+  std::vector<Term> out;
+  for (const VariationTerm& t : list) {
+    const Variation& v = variation(t.id);
+    // z only: adds nothing to the sum, leaves the point alone in a list.
+    if (v.kind == VariationKind::flat_3d) continue;
+    // linear3D is linear in the plane (its z part is dropped): the same term, so that a flame
+    // of linear3D xforms (Fractorium's hexagonal tilings) walks as an affine one. linear (an
+    // IFS's own maps) stays in double lanes: float would only round it.
+    const bool linear = v.name == "linear" || v.name == "linear3D";
+    const std::string_view name = linear ? std::string_view("linear") : v.name;
+    const LaneType type = linear ? LaneType::f64 : kernels.type;
+    const BatchVariation* batch = find_batch_variation(kernels.level, name, type);
+    out.push_back({v.function, batch ? batch : find_batch_variation(kernels.level, name), t.weight,
+                   t.params, !in_sum && v.assign == Assign::add, linear});
+  }
+  return out;
+}
+
+XformStep xform_step_of(const Xform& xf, Kernels kernels) {
+  XformStep s;
+  s.pre = xf.pre;
+  s.has_post = xf.post.has_value();
+  if (s.has_post) s.post = *xf.post;
+  s.has_sum = !xf.variations.empty();
+  s.pre_terms = terms_of(xf.pre_variations, false, kernels);
+  s.sum_terms = terms_of(xf.variations, true, kernels);
+  s.post_terms = terms_of(xf.post_variations, false, kernels);
+  s.affine_only =
+      s.pre_terms.empty() && s.post_terms.empty() &&
+      std::all_of(s.sum_terms.begin(), s.sum_terms.end(), [](const Term& t) { return t.linear; });
+  return s;
+}
+
+void XformStep::chain(const std::vector<Term>& terms, std::size_t n, double* x, double* y,
+                      Scratch& w, Rng& rng) const {
+  const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
+  for (const Term& t : terms) {
+    std::fill_n(w.tx.begin(), padded, 0.0);
+    std::fill_n(w.ty.begin(), padded, 0.0);
+    run_term(t, pre, n, x, y, w.tx.data(), w.ty.data(), w, rng);
+    for (std::size_t i = 0; i < n; ++i) {
+      x[i] = t.adds ? x[i] + w.tx[i] : w.tx[i];
+      y[i] = t.adds ? y[i] + w.ty[i] : w.ty[i];
+    }
+  }
+}
+
+void XformStep::operator()(std::size_t n, double* x, double* y, Scratch& w, Rng& rng) const {
+  std::copy_n(x, n, w.qx.begin());
+  std::copy_n(y, n, w.qy.begin());
+  const auto [sx, sy] = move_scratch(n, w, rng);
+  std::copy_n(sx, n, x);
+  std::copy_n(sy, n, y);
+}
+
+void XformStep::operator()(std::size_t n, const std::uint32_t* at, double* x, double* y, Scratch& w,
+                           Rng& rng) const {
+  for (std::size_t i = 0; i < n; ++i) {
+    w.qx[i] = x[at[i]];
+    w.qy[i] = y[at[i]];
+  }
+  const auto [sx, sy] = move_scratch(n, w, rng);
+  for (std::size_t i = 0; i < n; ++i) {
+    x[at[i]] = sx[i];
+    y[at[i]] = sy[i];
+  }
+}
+
+std::pair<double*, double*> XformStep::move_scratch(std::size_t n, Scratch& w, Rng& rng) const {
+  const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
+  std::fill(w.qx.begin() + static_cast<std::ptrdiff_t>(n),
+            w.qx.begin() + static_cast<std::ptrdiff_t>(padded), 0.0);
+  std::fill(w.qy.begin() + static_cast<std::ptrdiff_t>(n),
+            w.qy.begin() + static_cast<std::ptrdiff_t>(padded), 0.0);
+  affine(pre, n, w.qx.data(), w.qy.data());
+  chain(pre_terms, n, w.qx.data(), w.qy.data(), w, rng);
+  double* sx = w.qx.data();
+  double* sy = w.qy.data();
+  if (has_sum) {
+    std::fill_n(w.sx.begin(), padded, 0.0);
+    std::fill_n(w.sy.begin(), padded, 0.0);
+    for (const Term& t : sum_terms)
+      run_term(t, pre, n, w.qx.data(), w.qy.data(), w.sx.data(), w.sy.data(), w, rng);
+    sx = w.sx.data();
+    sy = w.sy.data();
+  }
+  if (has_post) affine(post, n, sx, sy);
+  chain(post_terms, n, sx, sy, w, rng);
+  return {sx, sy};
+}
+
+}  // namespace ifsfx::flame::detail
