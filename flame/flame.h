@@ -45,8 +45,8 @@ struct VariationTerm {
 };
 
 // One function of the flame (paper §3): p ← post(Σ_v w_v·V_v(pre(p))), with the pre_ variations
-// applied in order to pre(p) before the sum and the post_ ones after the post-affine map
-// (flame/xform_eval.h), and the colour coordinate c ← (1 − s)·c + s·colour (paper §5).
+// applied in order to pre(p) before the sum and the post_ ones after it, before the post-affine
+// map (flame/xform_eval.h), and the colour coordinate c ← (1 − s)·c + s·colour (paper §5).
 struct Xform {
   std::string name;               // Apophysis/Fractorium's label; no effect on the picture
   AffineMap pre;                  // flame plane → flame plane, ifsfx order (see above)
@@ -59,8 +59,8 @@ struct Xform {
   // entries (and an empty row) are 1.
   std::vector<double> chaos;
   std::vector<VariationTerm> pre_variations;   // applied in order to the affine point, replacing it
-  std::vector<VariationTerm> variations;       // summed; none at all means the identity
-  std::vector<VariationTerm> post_variations;  // applied in order after the post-affine map
+  std::vector<VariationTerm> variations;       // summed; none: (0, 0), or pre_'s point if any
+  std::vector<VariationTerm> post_variations;  // applied in order to the sum, then post
   friend bool operator==(const Xform&, const Xform&) = default;
 };
 

@@ -295,9 +295,11 @@ std::optional<Ifs> affine_ifs(const Flame& flame) {
   Ifs ifs;
   ifs.name = flame.name;
   for (const Xform& xf : flame.xforms) {
-    const bool plain = xf.variations.empty() || (xf.variations.size() == 1 &&
-                                                 variation(xf.variations[0].id).name == "linear" &&
-                                                 xf.variations[0].weight == 1);
+    // One linear term of weight 1 (an xform without variations is the constant map to the
+    // origin, not its affine map: flame/xform_eval.cpp).
+    const bool plain = xf.variations.size() == 1 &&
+                       variation(xf.variations[0].id).name == "linear" &&
+                       xf.variations[0].weight == 1;
     const bool xaos =
         std::any_of(xf.chaos.begin(), xf.chaos.end(), [](double c) { return c != 1; });
     if (!plain || xf.post || !xf.pre_variations.empty() || !xf.post_variations.empty() || xaos)

@@ -46,7 +46,7 @@ enum class VariationKind {
 
 // Where a variation may stand in an xform.
 enum class VariationPlace {
-  any,       // NAME in the sum, pre_NAME before it, post_NAME after the post-affine map
+  any,       // NAME in the sum, pre_NAME before it, post_NAME after it (before the post map)
   pre_only,  // flam3's pre_blur: a name of its own that already says "pre"
 };
 

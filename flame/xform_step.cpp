@@ -69,7 +69,9 @@ XformStep xform_step_of(const Xform& xf, Kernels kernels) {
   s.pre = xf.pre;
   s.has_post = xf.post.has_value();
   if (s.has_post) s.post = *xf.post;
-  s.has_sum = !xf.variations.empty();
+  // With no normal term the sum is empty, (0, 0), unless pre_ terms hand their point on
+  // (apply_xform, flame/xform_eval.cpp).
+  s.has_sum = !xf.variations.empty() || xf.pre_variations.empty();
   s.pre_terms = terms_of(xf.pre_variations, false, kernels);
   s.sum_terms = terms_of(xf.variations, true, kernels);
   s.post_terms = terms_of(xf.post_variations, false, kernels);
@@ -132,8 +134,8 @@ std::pair<double*, double*> XformStep::move_scratch(std::size_t n, Scratch& w, R
     sx = w.sx.data();
     sy = w.sy.data();
   }
-  if (has_post) affine(post, n, sx, sy);
   chain(post_terms, n, sx, sy, w, rng);
+  if (has_post) affine(post, n, sx, sy);
   return {sx, sy};
 }
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // One xform's motion over a batch of walkers: apply_xform's steps (flame/xform_eval.h) — the
-// pre-affine map, the pre_ terms, the weighted sum of the variations, the post map, the post_
-// terms — resolved once and run over arrays of points, each variation through its batch form
+// pre-affine map, the pre_ terms, the weighted sum of the variations, the post_ terms, the post
+// map — resolved once and run over arrays of points, each variation through its batch form
 // (flame/detail/batch_variations.h) where it has one. The walks that move many walkers in
 // lockstep share it: the renderer's (flame/render_chaos.cpp, which adds the colour) and the
 // paper modes' (flame/flame_walk.cpp, which adds the address).

@@ -19,6 +19,7 @@
 #include "flame/render_camera.h"
 #include "flame/render_tone.h"
 #include "flame/variations.h"
+#include "flame/xform_eval.h"
 #include "ifs/cpu.h"
 #include "ifs/error.h"
 #include "ifs/image_io.h"
@@ -502,6 +503,59 @@ TEST(render_flame, draws_an_asymmetric_flame_as_flam3_render_does) {
   const cv::Mat ours = render_flame(read_flame(in.string()));
   EXPECT_EQ(lit(ours), lit(theirs8));
   EXPECT_EQ(cv::norm(ours, theirs8, cv::NORM_INF), 0);
+}
+
+TEST(render_flame, an_xform_without_variations_is_flam3_renders_constant_map) {
+  if (std::system("command -v flam3-render > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
+  // The second xform has no variation at all: flam3 sums none to (0, 0), which its post map
+  // moves to (−0.3, 0.4) whatever its pre-affine map (one that would draw elsewhere).
+  const std::string xml = R"(<flame name="empty" size="64 48" center="0.1 -0.05" scale="40"
+    quality="10" filter="0" oversample="1" estimator_radius="0" gamma="1">
+  <xform weight="1" color="0" color_speed="1" linear="1" coefs="0 0 0 0 0.5 -0.25"/>
+  <xform weight="1" color="1" color_speed="1" coefs="0.5 0 0 0.5 0.2 0.3"
+    post="1 0 0 1 -0.3 0.4"/>
+  <color index="0" rgb="255 0 0"/>)";
+  std::string text = xml;
+  for (int i = 1; i < 256; ++i)
+    text += "<color index=\"" + std::to_string(i) + "\" rgb=\"0 255 0\"/>";
+  text += "</flame>";
+  fs::path in;
+  cv::Mat theirs = flam3_picture("empty", text, in);
+  ASSERT_FALSE(theirs.empty());
+  if (theirs.channels() == 4) cv::cvtColor(theirs, theirs, cv::COLOR_BGRA2BGR);
+  cv::Mat theirs8;
+  theirs.convertTo(theirs8, CV_8U);
+  const Flame flame = read_flame(in.string());
+  ASSERT_TRUE(flame.xforms[1].variations.empty());
+  const cv::Mat ours = render_flame(flame);
+  EXPECT_EQ(lit(ours).size(), 2u);
+  EXPECT_EQ(lit(ours), lit(theirs8));
+  EXPECT_EQ(cv::norm(ours, theirs8, cv::NORM_INF), 0);
+}
+
+TEST(render_flame, post_terms_come_before_the_post_map_as_in_apply_xform) {
+  // One xform: pre_ term, sum, post_ term and a post map; its final image of a point is
+  // apply_xform's (post_spherical then the post map). A lone constant start: the pre-affine map
+  // sends every point to (0.4, 0.2); pre_spherical (2, 1); 0.5·linear (1, 0.5); post_spherical
+  // (0.8, 0.4); the post map + (−0.5, 0.1) → (0.3, 0.5). The other order: the post map first
+  // (0.5, 0.6), then spherical (0.82, 0.98).
+  Flame f = two_points();
+  Xform& xf = f.xforms[1];
+  xf.pre = {0, 0, 0, 0, 0.4, 0.2};
+  xf.pre_variations = {term("spherical", 1)};
+  xf.variations = {term("linear", 0.5)};
+  xf.post_variations = {term("spherical", 1)};
+  xf.post = AffineMap{1, 0, 0, 1, -0.5, 0.1};
+  Rng rng(1);
+  const Point p = apply_xform(xf, {0, 0}, rng);
+  EXPECT_NEAR(p.x, 0.3, 1e-9);  // spherical's 1/(r² + 1e-10)
+  EXPECT_NEAR(p.y, 0.5, 1e-9);
+  f.xforms.erase(f.xforms.begin());
+  const std::vector<cv::Point> at = lit(render_flame(f));
+  // The camera formula (a_point_lands_where_the_camera_formula_puts_it): (0.3 − 0.1)·40 + 32 =
+  // 40, (0.5 + 0.05)·40 + 24 = 46; the other order's (0.82, 0.98) is off the picture.
+  EXPECT_EQ(at, (std::vector<cv::Point>{{40, 46}}));
 }
 
 TEST(render_flame, spreads_a_lone_bin_as_flam3_render_does) {
