@@ -34,9 +34,9 @@ struct NGon {
   double w = 1;     // the weight, divided by sin(mπ/n) with adjustToLinear
 };
 
-// The plugin's whole-number parameters are rounded, ⌊v + ½⌋, as JWildfire and Ember read them.
+// The plugin's whole-number parameters, rounded as every mode parameter (mode_of).
 int whole(double v) {
-  return mode_of(std::floor(v + 0.5));
+  return mode_of(v);
 }
 // A switch (0 or 1, a value beyond taken as the nearer).
 bool on(double v) {

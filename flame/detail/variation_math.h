@@ -51,11 +51,12 @@ inline double sum_of_four(Rng& rng) {
   return a + b + c + d - 2.0;
 }
 
-// A parameter that picks a mode (a type, a crop mode) as a whole number: truncated, and kept
-// within int's range so that any finite value a file holds converts without undefined
-// behaviour (the fuzzer's sanitizers check it).
+// A parameter that picks a mode (a type, a crop mode) as a whole number: rounded to the
+// nearest, ⌊v + ½⌋, as Ember and JWildfire read their integer parameters, and kept within int's
+// range so that any finite value a file holds converts without undefined behaviour (the
+// fuzzer's sanitizers check it).
 inline int mode_of(double v) {
-  return std::isnan(v) ? 0 : static_cast<int>(std::clamp(std::trunc(v), -1e9, 1e9));
+  return std::isnan(v) ? 0 : static_cast<int>(std::clamp(std::floor(v + 0.5), -1e9, 1e9));
 }
 
 inline Point scaled(double w, double x, double y) {

@@ -171,6 +171,10 @@ TEST(variations_packs, falloff2_leaves_points_within_mindist_and_blurs_by_distan
     const Point r = eval("falloff2", {3, 4}, 1, {1, 0.5, 0, 1, 0, 0, 0, 0, 0, 0, 1}, {}, seed);
     EXPECT_NEAR(std::hypot(r.x, r.y), 5, 1e-9);
     EXPECT_LE(std::abs(std::atan2(r.y, r.x) - std::atan2(4.0, 3.0)), 0.09 + 1e-12);
+    // a type of 0.6 is type 1: whole-number parameters are rounded, as Ember reads them
+    const Point r6 = eval("falloff2", {3, 4}, 1, {1, 0.5, 0, 1, 0, 0, 0, 0, 0, 0, 0.6}, {}, seed);
+    EXPECT_EQ(r6.x, r.x);
+    EXPECT_EQ(r6.y, r.y);
     // invert at the origin, mindist 0: dist = max(1 − 0, 0)·0.04, offsets within ±0.02
     const Point i = eval("falloff2", {0, 0}, 1, {1, 0, 1, 1, 0, 0, 0, 0, 0, 1, 0}, {}, seed);
     EXPECT_LE(std::max(std::abs(i.x), std::abs(i.y)), 0.02 + 1e-12);
