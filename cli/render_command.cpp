@@ -345,7 +345,8 @@ CLI::Option* add_per_mode_options(CLI::App& cmd, RenderArgs& args) {
 
 void add_render_command(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
-  auto* cmd = app.add_subcommand("render", "Render an IFS preset or a fractal flame (.flame) to a still image");
+  auto* cmd = app.add_subcommand(
+      "render", "Render an IFS preset or a fractal flame (.flame) to a still image");
   cmd->add_option(
          "preset", args->preset,
          "Preset: a shipped name (see `ifsfx presets`), a .toml/.ifs path, FILE.ifs:NAME, or a "

@@ -98,7 +98,11 @@ class LaneWalk {
       burn = burn_in_;
     };
     start();
+    // Bounded as the batched walk's walkers are (flame::detail::kStepBudget): a flame that
+    // escapes for ever gives up the lane's points.
+    std::uint64_t budget = flame::detail::kStepBudget * (n + static_cast<std::uint64_t>(burn_in_));
     for (std::uint64_t plotted = 0; plotted < n;) {
+      if (budget-- == 0) return;
       const std::uint32_t k = pickers_[picker](rng.next());
       if (pickers_.size() > 1) picker = 1 + k;
       const Point q = flip(apply_xform(flame_.xforms[k], flip(p), variations));

@@ -26,13 +26,15 @@ bool escaped(double x, double y) {
 // still plot, in walker order.
 struct FlameWalk::Walkers {
   std::array<double, kN> x{}, y{};
-  std::array<std::uint64_t, kN> key{};   // the address: the last symbols, newest on top
-  std::array<std::uint64_t, kN> left{};  // points still to plot
-  std::array<std::uint32_t, kN> row{};   // the picker row: 0 from a start, 1 + σ after σ (xaos)
-  std::array<std::uint32_t, kN> k{};     // the xform picked this step
-  std::array<int, kN> burn{};            // steps still unplotted
+  std::array<std::uint64_t, kN> key{};     // the address: the last symbols, newest on top
+  std::array<std::uint64_t, kN> left{};    // points still to plot
+  std::array<std::uint32_t, kN> row{};     // the picker row: 0 from a start, 1 + σ after σ (xaos)
+  std::array<std::uint32_t, kN> k{};       // the xform picked this step
+  std::array<int, kN> burn{};              // steps still unplotted
+  std::array<std::uint64_t, kN> budget{};  // steps it may still take (kStepBudget)
   std::array<std::uint32_t, kN> live{}, order{}, plotted{};
   std::size_t n_live = 0;
+  bool gave_up = false;  // a walker gave up this step: the live list is to be pruned
   std::vector<std::size_t> first, next;  // the counting sort's, per xform
 
   // Walker i from a uniform point of [−1, 1]², its address forgotten.
@@ -98,6 +100,11 @@ std::size_t FlameWalk::move(Walkers& a, Scratch& w, Rng& rng) const {
   std::size_t plotted = 0;
   for (std::size_t l = 0; l < live; ++l) {
     const std::uint32_t i = a.live[l];
+    if (--a.budget[i] == 0) {
+      a.left[i] = 0;
+      a.gave_up = true;
+      continue;
+    }
     if (escaped(a.x[i], a.y[i])) {
       a.start(i, burn_in_, rng);
       continue;
@@ -148,6 +155,7 @@ void FlameWalk::walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t poin
   for (std::size_t i = 0; i < m; ++i) {
     a->start(i, burn_in_, rng);
     a->left[i] = points / m + (i < points % m ? 1 : 0);
+    a->budget[i] = kStepBudget * (a->left[i] + static_cast<std::uint64_t>(burn_in_));
     a->live[i] = static_cast<std::uint32_t>(i);
   }
   a->n_live = m;
@@ -155,11 +163,14 @@ void FlameWalk::walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t poin
   const auto hits = std::make_unique<WalkHits>();
   while (a->n_live > 0) {
     const std::size_t plotted = move(*a, w, rng);
-    if (plotted == 0) continue;
-    plot_step(*a, plotted, w, rng, *hits);
-    if (hits->n > 0) plot(*hits);
-    // The walkers done leave the live list, which keeps its order.
+    if (plotted == 0 && !a->gave_up) continue;
+    if (plotted > 0) {
+      plot_step(*a, plotted, w, rng, *hits);
+      if (hits->n > 0) plot(*hits);
+    }
+    // The walkers done (or given up) leave the live list, which keeps its order.
     for (std::size_t p = 0; p < plotted; ++p) --a->left[a->plotted[p]];
+    a->gave_up = false;
     a->n_live = static_cast<std::size_t>(
         std::remove_if(a->live.begin(), a->live.begin() + static_cast<std::ptrdiff_t>(a->n_live),
                        [&](std::uint32_t i) { return a->left[i] == 0; }) -

@@ -27,6 +27,12 @@ namespace ifsfx::flame::detail {
 // Points each walker of a full chunk plots after its burn-in: 1024 keeps the burn-in of 64 steps
 // a sixteenth of the work.
 inline constexpr std::uint64_t kWalkerPlots = 1024;
+// A walker's steps are bounded by kStepBudget times the steps its points and burn-in take: a
+// flame whose orbits always escape (a translation beyond kEscape) would otherwise restart for
+// ever, and nothing else ends a walk. Such a walker gives up the points it has left, as the
+// renderer's walkers, which stop after a fixed number of steps, plot fewer points where theirs
+// escape. A contracting flame never comes near the bound.
+inline constexpr std::uint64_t kStepBudget = 16;
 // Points a chunk plots (2¹⁸): kBatchLanes walkers of kWalkerPlots.
 inline constexpr std::uint64_t kWalkChunkPoints = kWalkerPlots * kBatchLanes;
 

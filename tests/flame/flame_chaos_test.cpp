@@ -188,6 +188,25 @@ TEST(flame_chaos, escaped_walkers_start_again_and_the_camera_turn_turns_the_pict
   EXPECT_GT(cv::countNonZero(unturned), 300);
 }
 
+TEST(flame_chaos, a_flame_whose_orbits_always_escape_ends_with_an_empty_picture) {
+  // One xform that moves every point by 1e11: each step escapes and restarts its walker, which
+  // never plots. Both walks (the affine IFS's lanes, and the batched walk, which a term of
+  // weight 0 selects) give up after kStepBudget times their steps instead of restarting for ever.
+  Flame affine;
+  affine.camera = {.width = 16, .height = 16, .center = {0, 0}, .scale = 8};
+  affine.xforms.push_back({.pre = {1, 0, 0, 1, 1e11, 0}, .variations = {term("linear")}});
+  Flame batched = affine;
+  batched.xforms[0].variations.push_back(term("spherical", 0));
+  ASSERT_TRUE(affine_ifs(affine).has_value());
+  ASSERT_FALSE(affine_ifs(batched).has_value());
+  for (const Flame& f : {affine, batched}) {
+    EXPECT_EQ(cv::countNonZero(flame_attractor(f, {16, 16}, {.quality = 4, .seed = 1})), 0);
+    const TopSymbols tops =
+        flame_top_symbols(f, {16, 16}, {.sampling = {.quality = 4, .seed = 1}, .exact = false});
+    EXPECT_EQ(cv::countNonZero(tops.coverage), 0);
+  }
+}
+
 TEST(flame_chaos, what_needs_inverse_maps_or_a_map_per_xform_is_refused) {
   const Flame flame = inverted_square();
   const auto message = [](auto&& f) {
