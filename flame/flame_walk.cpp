@@ -76,13 +76,7 @@ std::size_t FlameWalk::move(Walkers& a, Scratch& w, Rng& rng) const {
   for (std::size_t l = 0; l < live; ++l) {
     const std::uint32_t i = a.live[l];
     if (xaos) v = pickers_[a.row[i]].view();
-    // MapPicker's alias draw without its branch, which a random draw mispredicts half the time.
-    const std::uint64_t r = rng.next();
-    const auto column = static_cast<std::uint32_t>(((r >> 32) * v.n) >> 32);
-    const std::uint32_t alias = v.alias[column];
-    const std::uint32_t own =
-        0u - static_cast<std::uint32_t>(static_cast<std::uint32_t>(r) < v.threshold[column]);
-    a.k[i] = alias ^ ((column ^ alias) & own);
+    a.k[i] = v.branch_free(rng.next());
     ++next[a.k[i]];
   }
   std::size_t at = 0;

@@ -178,14 +178,7 @@ void pick(const Plan& plan, Walkers& a, std::size_t m, std::vector<std::size_t>&
           std::vector<std::size_t>& next, std::array<std::uint32_t, kN>& order, Rng& rng) {
   const bool xaos = plan.pickers.size() > 1;
   for (std::size_t i = 0; i < m; ++i) {
-    // MapPicker's alias draw without its branch, which a random draw mispredicts half the time.
-    const MapPicker::View v = plan.pickers[xaos ? 1 + a.k[i] : 0].view();
-    const std::uint64_t r = rng.next();
-    const auto column = static_cast<std::uint32_t>(((r >> 32) * v.n) >> 32);
-    const std::uint32_t alias = v.alias[column];
-    const std::uint32_t own =
-        0u - static_cast<std::uint32_t>(static_cast<std::uint32_t>(r) < v.threshold[column]);
-    a.k[i] = alias ^ ((column ^ alias) & own);
+    a.k[i] = plan.pickers[xaos ? 1 + a.k[i] : 0].view().branch_free(rng.next());
   }
   if (!plan.flat.empty()) {
     switch (plan.flat_shape) {

@@ -69,6 +69,15 @@ class MapPicker {
       const auto column = static_cast<std::uint32_t>(((r >> 32) * n) >> 32);
       return static_cast<std::uint32_t>(r) < threshold[column] ? column : alias[column];
     }
+    // The same map by a mask instead of a branch, for loops of independent draws, where a
+    // branch on a random bit is mispredicted half the time.
+    std::uint32_t branch_free(std::uint64_t r) const noexcept {
+      const auto column = static_cast<std::uint32_t>(((r >> 32) * n) >> 32);
+      const std::uint32_t other = alias[column];
+      const std::uint32_t own =
+          0u - static_cast<std::uint32_t>(static_cast<std::uint32_t>(r) < threshold[column]);
+      return other ^ ((column ^ other) & own);
+    }
   };
   View view() const noexcept { return {n_, threshold_.data(), alias_.data()}; }
 

@@ -65,7 +65,13 @@ TEST(map_picker, draws_maps_with_their_probabilities) {
   Rng rng(11);
   std::array<int, 4> hits{};
   constexpr int kDraws = 2'000'000;
-  for (int i = 0; i < kDraws; ++i) ++hits[pick(rng.next())];
+  const MapPicker::View view = pick.view();
+  for (int i = 0; i < kDraws; ++i) {
+    const std::uint64_t r = rng.next();
+    const std::uint32_t map = pick(r);
+    ++hits[map];
+    if (view.branch_free(r) != map) ADD_FAILURE() << "branch_free differs at draw " << i;
+  }
   EXPECT_NEAR(hits[0] / double(kDraws), 0.1, 0.002);
   EXPECT_NEAR(hits[1] / double(kDraws), 0.2, 0.002);
   EXPECT_EQ(hits[2], 0);
