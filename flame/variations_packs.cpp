@@ -142,11 +142,7 @@ constexpr VariationParameter kHypertile2[] = {{"hypertile2_p", 3}, {"hypertile2_
 // hypertile3D2 at z = 0 is hypertile2's map (its 3-D form of the same Möbius map, z = 0).
 constexpr VariationParameter kHypertile3D2[] = {{"hypertile3D2_p", 3}, {"hypertile3D2_q", 7}};
 Point hypertile2(const VariationInput& in, Rng& rng) {
-  const double p = in.params[0] == 0 ? kEps : in.params[0];
-  const double q = in.params[1] == 0 ? kEps : in.params[1];
-  const double pa = 2 * kPi / p, cs = std::cos(pa);
-  const double r2 = 1 - (cs - 1) / (cs + std::cos(2 * kPi / q));
-  const double big_r = r2 > 0 ? 1 / std::sqrt(r2) : 1.0;
+  const auto [pa, big_r] = hyper_tiling(in.params[0], in.params[1]);
   const auto [x, y] = in.p;
   const double a = x + big_r, b = y, c = big_r * x + 1, d = big_r * y;
   const double u = a * c + b * d, v = b * c - a * d;

@@ -121,11 +121,7 @@ Point rblur(const VariationInput& in, Rng& rng) {
 // random multiple k of 2π/p (k = ⌊32767·Ψ⌋, as hypertile2), R as hypertile2's.
 constexpr VariationParameter kHypertile1[] = {{"hypertile1_p", 3}, {"hypertile1_q", 7}};
 Point hypertile1(const VariationInput& in, Rng& rng) {
-  const double p = in.params[0] == 0 ? kEps : in.params[0];
-  const double q = in.params[1] == 0 ? kEps : in.params[1];
-  const double pa = 2 * kPi / p, cs = std::cos(pa);
-  const double r2 = 1 - (cs - 1) / (cs + std::cos(2 * kPi / q));
-  const double big_r = r2 > 0 ? 1 / std::sqrt(r2) : 1.0;
+  const auto [pa, big_r] = hyper_tiling(in.params[0], in.params[1]);
   const double t = std::floor(32767 * psi(rng)) * pa;
   const double re = big_r * std::cos(t), im = big_r * std::sin(t);
   const auto [x, y] = in.p;

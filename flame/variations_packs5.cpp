@@ -34,20 +34,17 @@ struct NGon {
   double w = 1;     // the weight, divided by sin(mπ/n) with adjustToLinear
 };
 
-// The plugin's whole-number parameters, rounded as every mode parameter (mode_of).
-int whole(double v) {
-  return mode_of(v);
-}
-// A switch (0 or 1, a value beyond taken as the nearer).
+// A switch (0 or 1, a value beyond taken as the nearer); the plugin's whole-number parameters
+// are rounded as every mode parameter (mode_of).
 bool on(double v) {
-  return whole(v) >= 1;
+  return mode_of(v) >= 1;
 }
 
 NGon ngon_of(std::span<const double> k, double w) {
   NGon g;
-  g.n = std::max(whole(k[0]), 3);
+  g.n = std::max(mode_of(k[0]), 3);
   g.alpha = 2 * kPi / g.n;
-  const double stripes = whole(k[1]);
+  const double stripes = mode_of(k[1]);
   const double ratio = std::isnan(k[2]) ? 1 : std::clamp(k[2], 0.0, 2.0);
   g.bands = 2 * std::abs(stripes);
   g.band = stripes == 0 ? 0 : g.alpha / g.bands;

@@ -59,6 +59,20 @@ inline int mode_of(double v) {
   return std::isnan(v) ? 0 : static_cast<int>(std::clamp(std::floor(v + 0.5), -1e9, 1e9));
 }
 
+// The {p, q} hyperbolic tiling of hypertile1 and hypertile2: the angle a = 2π/p between its
+// Möbius maps and their radius R = 1/√(1 − (cos a − 1)/(cos a + cos(2π/q))) (1 where the root's
+// argument is not positive); a p or q of 0 is taken as kEps.
+struct HyperTiling {
+  double angle, radius;
+};
+inline HyperTiling hyper_tiling(double p_param, double q_param) {
+  const double p = p_param == 0 ? kEps : p_param;
+  const double q = q_param == 0 ? kEps : q_param;
+  const double pa = 2 * kPi / p, cs = std::cos(pa);
+  const double r2 = 1 - (cs - 1) / (cs + std::cos(2 * kPi / q));
+  return {pa, r2 > 0 ? 1 / std::sqrt(r2) : 1.0};
+}
+
 inline Point scaled(double w, double x, double y) {
   return {w * x, w * y};
 }

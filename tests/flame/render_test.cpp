@@ -138,6 +138,16 @@ TEST(render_flame, the_same_seed_gives_the_same_bytes_for_any_thread_count) {
 // A flame of affine xforms only (linear terms, a post map) is walked point by point without the
 // term arrays (flame/render_chaos.cpp); a term of weight 0 adds nothing but sends the same
 // flame down the arrays: the two walks must give the same bytes.
+// flam3_picture as 8-bit BGR, as render_flame gives it (an empty Mat where flam3 failed).
+cv::Mat flam3_bgr8(const std::string& name, const std::string& xml, fs::path& flame) {
+  cv::Mat picture = flam3_picture(name, xml, flame);
+  if (picture.empty()) return picture;
+  if (picture.channels() == 4) cv::cvtColor(picture, picture, cv::COLOR_BGRA2BGR);
+  cv::Mat out;
+  picture.convertTo(out, CV_8U);
+  return out;
+}
+
 TEST(render_flame, an_affine_only_flame_gives_the_bytes_of_the_general_walk) {
   Flame f = two_points();
   f.filtering = {.supersample = 2, .filter_radius = 0.6, .estimator_radius = 4};
@@ -495,11 +505,8 @@ TEST(render_flame, draws_an_asymmetric_flame_as_flam3_render_does) {
             (i < 192 ? "0 255 0" : "0 0 255") + "\"/>";
   text += "</flame>";
   fs::path in;
-  cv::Mat theirs = flam3_picture("L", text, in);
-  ASSERT_FALSE(theirs.empty());
-  if (theirs.channels() == 4) cv::cvtColor(theirs, theirs, cv::COLOR_BGRA2BGR);
-  cv::Mat theirs8;
-  theirs.convertTo(theirs8, CV_8U);
+  const cv::Mat theirs8 = flam3_bgr8("L", text, in);
+  ASSERT_FALSE(theirs8.empty());
   const cv::Mat ours = render_flame(read_flame(in.string()));
   EXPECT_EQ(lit(ours), lit(theirs8));
   EXPECT_EQ(cv::norm(ours, theirs8, cv::NORM_INF), 0);
@@ -521,11 +528,8 @@ TEST(render_flame, an_xform_without_variations_is_flam3_renders_constant_map) {
     text += "<color index=\"" + std::to_string(i) + "\" rgb=\"0 255 0\"/>";
   text += "</flame>";
   fs::path in;
-  cv::Mat theirs = flam3_picture("empty", text, in);
-  ASSERT_FALSE(theirs.empty());
-  if (theirs.channels() == 4) cv::cvtColor(theirs, theirs, cv::COLOR_BGRA2BGR);
-  cv::Mat theirs8;
-  theirs.convertTo(theirs8, CV_8U);
+  const cv::Mat theirs8 = flam3_bgr8("empty", text, in);
+  ASSERT_FALSE(theirs8.empty());
   const Flame flame = read_flame(in.string());
   ASSERT_TRUE(flame.xforms[1].variations.empty());
   const cv::Mat ours = render_flame(flame);
