@@ -17,11 +17,28 @@ bash tools/install-deps.sh
 bash tools/host-versions.sh
 
 jobs=$(nproc)
-release_tests() { cd build/release && ctest --output-on-failure -j"$jobs" --timeout 600; }
+# suite BUILD TIMEOUT CTEST-ARGS...: the build's suite, all cores. Tests that fail are run once
+# more, one at a time; the suite passes only if every one of them passes there, and their names
+# are kept in build/BUILD/flaky.txt for the summary (a test that fails only beside others, under
+# load, is a defect to fix, named at the end of the log, but not one that fails the whole run).
+suite() {
+  local build=$1 timeout=$2
+  shift 2
+  cd "build/$build"
+  rm -f flaky.txt
+  ctest --output-on-failure -j"$jobs" --timeout "$timeout" "$@" && return 0
+  local failures=Testing/Temporary/LastTestsFailed.log
+  [[ -s $failures ]] || return 1
+  cp "$failures" first-failures.txt
+  echo "=== run-tests: $build: again, one at a time: $(cut -d: -f2 first-failures.txt | tr '\n' ' ')"
+  ctest --output-on-failure -j1 --timeout "$timeout" --rerun-failed || return 1
+  cp first-failures.txt flaky.txt
+}
+release_tests() { suite release 600; }
 asan_tests() {
   export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:strict_string_checks=1
   export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-  cd build/asan && ctest --output-on-failure -j"$jobs" --timeout 1200 -LE 'vm|install|slurm'
+  suite asan 1200 -LE 'vm|install|slurm'
 }
 
 # run_pass NAME COMMAND...: runs COMMAND in a subshell with errexit and records how it ended.
@@ -55,6 +72,16 @@ run_pass fuzz bash tools/run-fuzz.sh
 
 echo "=== run-tests: summary"
 printf '  %s\n' "${results[@]}"
+# The log is long and may be read from its tail only: name the tests that failed here, at the end.
+for build in release asan; do
+  if [[ -s build/$build/flaky.txt ]]; then
+    echo "  $build-tests: failed beside the others, passed alone:"
+    sed 's/^/    /' "build/$build/flaky.txt"
+  elif [[ " ${failed[*]} " == *" $build-tests "* && -s build/$build/Testing/Temporary/LastTestsFailed.log ]]; then
+    echo "  $build-tests failed:"
+    sed 's/^/    /' "build/$build/Testing/Temporary/LastTestsFailed.log"
+  fi
+done
 echo "passes: $((${#results[@]} - ${#failed[@]})) passed, ${#failed[@]} failed"
 if ((${#failed[@]})); then
   bash tools/host-versions.sh
