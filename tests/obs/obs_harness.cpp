@@ -193,7 +193,9 @@ bool Obs::show(obs_source_t* source, const Planes& frame, std::int64_t index) {
                                 f.color_range_min, f.color_range_max);
   }
   obs_source_output_video(source, &f);
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(2);
+  // OBS's video thread renders the frame at its next 30 Hz tick (llvmpipe, software GL); a CI
+  // machine running other tests beside this one can hold it back for seconds (2 s was too short).
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
   while (!capture_.seen(f.timestamp)) {
     if (std::chrono::steady_clock::now() > deadline) return false;
     std::this_thread::sleep_for(std::chrono::milliseconds(2));

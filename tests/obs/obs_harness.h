@@ -64,7 +64,7 @@ class Obs {
   void release(Chain& chain);
 
   // Outputs `frame` with timestamp `index` frames of 30 fps after an arbitrary origin and waits
-  // (up to 2 s) for the probe to see it; false if it did not.
+  // (up to 15 s) for the probe to see it; false if it did not.
   bool show(obs_source_t* source, const Planes& frame, std::int64_t index);
 
   // The newest picture of OBS's BGRA output (obs_add_raw_video_callback).
