@@ -6,21 +6,26 @@ For each flame — `flam3-genome` random genomes made at run time, and every <fl
 files under the directories given (e.g. Fractorium's Data/examples, by path: other people's art
 is never copied into the repository) — at one size and quality:
 
-  flam3-render with seeds 1 and 2, and ifsfx (bench/flame_render) with seed 1,
+  flam3-render and ifsfx (bench/flame_render) with seeds 1 to N each (--seeds, 3 by default),
 
-then prints per flame the similarity of the two flam3 pictures (flam3's own seed-to-seed
-spread: SSIM of the luminances and mean RGB distance, bench/flame_compare) and of ifsfx's to
-flam3's (the mean over the two flam3 pictures), the CPU seconds of each whole command (the
-child's getrusage) and the speed ratio flam3/ifsfx. A line passes when ifsfx is within flam3's
-spread: SSIM ≥ flam3's − 0.02 and colour distance ≤ flam3's + 1.0.
+then prints per flame flam3's own seed-to-seed spread (SSIM of the luminances and mean RGB
+distance, bench/flame_compare, the mean over every pair of flam3's pictures: one pair alone is
+a noisy estimate) and the similarity of ifsfx's pictures to flam3's (the mean over every pair of
+one of each), the CPU seconds of each whole command (the child's getrusage, the mean of each
+program's runs) and the speed ratio flam3/ifsfx. A line passes when ifsfx is within flam3's
+spread: SSIM ≥ flam3's − 0.02 and colour distance ≤ flam3's + 1.0, or, where the pairs differ
+much among themselves (a picture that is mostly noise), within twice the standard error of the
+difference of the two means.
 
   bench/flame_vs_flam3.py [--genomes 20] [--size 256] [--quality 50] [--threads 2]
-                          [--bin build/release/bench] [--keep DIR] [DIR_OR_FILE ...]
+                          [--seeds 3] [--bin build/release/bench] [--keep DIR]
+                          [DIR_OR_FILE ...]
 
---keep DIR keeps each line's three pictures and the flame as rendered (NAME.flame, resized),
-for bench/flame_ab.sh.
+--keep DIR keeps each line's pictures (NAME-flam3-SEED.png, NAME-ifsfx-SEED.png) and the flame as
+rendered (NAME.flame, resized), for bench/flame_ab.sh.
 """
 import argparse
+import itertools
 import os
 import re
 import resource
@@ -123,12 +128,21 @@ def compare(tool, a, b):
     return (float(m.group(1)), float(m.group(2))) if m else (float("nan"), float("nan"))
 
 
+def twice_error(a, b, k):
+    """Twice the standard error of mean(a[][k]) − mean(b[][k]) (the pairs taken as independent)."""
+    def variance_of_mean(pairs):
+        values = [v[k] for v in pairs]
+        return statistics.variance(values) / len(values) if len(values) > 1 else 0.0
+    return 2 * (variance_of_mean(a) + variance_of_mean(b)) ** 0.5
+
+
 def one(name, flame, args, work):
     path = os.path.join(work, "f.flame")
     ET.ElementTree(resized(flame, args.size, args.quality)).write(path)
-    pics = [os.path.join(work, n) for n in ("f3a.png", "f3b.png", "ifsfx.png")]
+    seeds = range(1, args.seeds + 1)
+    flam3_pics = [os.path.join(work, f"f3-{seed}.png") for seed in seeds]
     times = []
-    for seed, out in ((1, pics[0]), (2, pics[1])):
+    for seed, out in zip(seeds, flam3_pics):
         env = dict(os.environ, out=out, format="png", verbose="0", nthreads=str(args.threads),
                    seed=str(seed), isaac_seed=str(seed), transparency="0")
         with open(path) as f:
@@ -138,21 +152,37 @@ def one(name, flame, args, work):
         if re.search(r"unknown|not recogni|ignor", err, re.I):
             return f"{name:34} flam3-render cannot: {err.strip().splitlines()[0][:60]}"
         times.append(cpu)
-    rc, err, cpu_ifsfx = cpu_run([os.path.join(args.bin, "flame_render"), path, "-o", pics[2],
-                                  "--seed", "1", "--threads", str(args.threads)])
-    if rc != 0:
-        return f"{name:34} ifsfx refuses: {err.strip()[:90]}"
+    ifsfx_pics, ifsfx_times = [], []
+    for seed in seeds:
+        out = os.path.join(work, f"ifsfx-{seed}.png")
+        rc, err, cpu = cpu_run([os.path.join(args.bin, "flame_render"), path, "-o", out,
+                                "--seed", str(seed), "--threads", str(args.threads)])
+        if rc != 0:
+            return f"{name:34} ifsfx refuses: {err.strip()[:90]}"
+        ifsfx_pics.append(out)
+        ifsfx_times.append(cpu)
     tool = os.path.join(args.bin, "flame_compare")
-    s_ff, c_ff = compare(tool, pics[0], pics[1])
-    s_a, c_a = compare(tool, pics[2], pics[0])
-    s_b, c_b = compare(tool, pics[2], pics[1])
-    s_if, c_if = (s_a + s_b) / 2, (c_a + c_b) / 2
-    ok = s_if >= s_ff - SSIM_TOL and c_if <= c_ff + COLOUR_TOL
+    # flam3's spread: the mean over every pair of its seeds' pictures; ifsfx's similarity: the
+    # mean over every pair of one ifsfx and one flam3 picture. One pair alone is a noisy estimate
+    # where the picture is mostly noise (a flame of scattered circles spans colour 62-85 over
+    # flam3's pairs), so the tolerance is at least twice the standard error of the two means'
+    # difference.
+    spread = [compare(tool, a, b) for a, b in itertools.combinations(flam3_pics, 2)]
+    ours = [compare(tool, a, b) for a in ifsfx_pics for b in flam3_pics]
+    s_ff, c_ff = statistics.mean(v[0] for v in spread), statistics.mean(v[1] for v in spread)
+    s_if, c_if = statistics.mean(v[0] for v in ours), statistics.mean(v[1] for v in ours)
+    s_tol = max(SSIM_TOL, twice_error(spread, ours, 0))
+    c_tol = max(COLOUR_TOL, twice_error(spread, ours, 1))
+    ok = s_if >= s_ff - s_tol and c_if <= c_ff + c_tol
     if args.keep:
-        for p, tag in zip(pics, ("flam3-1", "flam3-2", "ifsfx")):
-            shutil.copy(p, os.path.join(args.keep, f"{name.replace(':', '_')}-{tag}.png"))
-        shutil.copy(path, os.path.join(args.keep, f"{name.replace(':', '_')}.flame"))
-    return dict(name=name, s_ff=s_ff, c_ff=c_ff, s_if=s_if, c_if=c_if, ok=ok, t_f=times[0], t_i=cpu_ifsfx)
+        stem = name.replace(":", "_")
+        for seed, pic in zip(seeds, flam3_pics):
+            shutil.copy(pic, os.path.join(args.keep, f"{stem}-flam3-{seed}.png"))
+        for seed, pic in zip(seeds, ifsfx_pics):
+            shutil.copy(pic, os.path.join(args.keep, f"{stem}-ifsfx-{seed}.png"))
+        shutil.copy(path, os.path.join(args.keep, f"{stem}.flame"))
+    return dict(name=name, s_ff=s_ff, c_ff=c_ff, s_if=s_if, c_if=c_if, ok=ok, tol=(s_tol, c_tol),
+                t_f=statistics.mean(times), t_i=statistics.mean(ifsfx_times))
 
 
 def main():
@@ -163,14 +193,19 @@ def main():
     ap.add_argument("--quality", type=float, default=50)
     ap.add_argument("--threads", type=int, default=2)
     ap.add_argument("--bin", default="build/release/bench")
+    ap.add_argument("--seeds", type=int, default=3)
     ap.add_argument("--keep")
     args = ap.parse_args()
+    if args.seeds < 2:
+        sys.exit("flame_vs_flam3: --seeds must be at least 2 (flam3's spread needs a pair)")
     if not shutil.which("flam3-render"):
         sys.exit("flame_vs_flam3: flam3-render is needed (apt-get install flam3-utils)")
     if args.keep:
         os.makedirs(args.keep, exist_ok=True)
-    print(f"# {args.size} px longest side, quality {args.quality:g}, {args.threads} thread(s) each; "
-          f"CPU seconds of each whole command; pass: SSIM >= flam3's - {SSIM_TOL}, colour <= flam3's + {COLOUR_TOL}")
+    print(f"# {args.size} px longest side, quality {args.quality:g}, {args.threads} thread(s) each, "
+          f"seeds 1-{args.seeds} each; "
+          f"CPU seconds of each whole command (the mean of its runs); pass: SSIM >= flam3's - {SSIM_TOL}, "
+          f"colour <= flam3's + {COLOUR_TOL} (or twice the standard error of the means' difference, if larger)")
     print(f"{'flame':34} {'flam3 vs flam3':>16} {'ifsfx vs flam3':>16} {'flam3 s':>8} {'ifsfx s':>8} {'ratio':>6}")
     rows, skipped = [], 0
     with tempfile.TemporaryDirectory() as work:
@@ -182,7 +217,8 @@ def main():
                 continue
             rows.append(r)
             print(f"{name:34} {r['s_ff']:7.4f} {r['c_ff']:7.2f}  {r['s_if']:7.4f} {r['c_if']:7.2f}  "
-                  f"{r['t_f']:8.2f} {r['t_i']:8.2f} {r['t_f'] / max(r['t_i'], 1e-3):6.1f}  {'pass' if r['ok'] else 'FAIL'}",
+                  f"{r['t_f']:8.2f} {r['t_i']:8.2f} {r['t_f'] / max(r['t_i'], 1e-3):6.1f}  {'pass' if r['ok'] else 'FAIL'}"
+                  + (f" (tolerance {r['tol'][0]:.3f}, {r['tol'][1]:.2f})" if r["tol"] != (SSIM_TOL, COLOUR_TOL) else ""),
                   flush=True)
     for label, sel in (("genomes", [r for r in rows if r["name"].startswith("genome-")]),
                        ("packs", [r for r in rows if not r["name"].startswith("genome-")])):
