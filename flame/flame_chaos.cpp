@@ -3,6 +3,7 @@
 #include "flame/flame_chaos.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -65,24 +66,26 @@ class LaneWalk {
     bits_ = ifsfx::detail::symbol_bits(flame.xforms.size());
   }
 
-  int bits() const { return bits_; }
-
   // `points` points of chunk `chunk`: plot(pixel, key) for each that lands on the raster, its
-  // address key (σk in the top b bits, docs/design.md §2).
+  // address key (σk in the top b bits, docs/design.md §2). Returns the points given up.
   template <class Plot>
-  void walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, Plot&& plot) const {
+  std::uint64_t walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
+                     Plot&& plot) const {
     const ifsfx::detail::LaneSeeds seeds = ifsfx::detail::lane_seeds(seed, chunk);
+    std::uint64_t given_up = 0;
     for (int lane = 0; lane < ifsfx::detail::kLanes; ++lane) {
       const std::uint64_t n =
           points / ifsfx::detail::kLanes +
           (static_cast<std::uint64_t>(lane) < points % ifsfx::detail::kLanes ? 1 : 0);
-      walk_lane(seeds.s[lane], n, plot);
+      given_up += walk_lane(seeds.s[lane], n, plot);
     }
+    return given_up;
   }
 
  private:
+  // The lane's n points; returns those it gave up.
   template <class Plot>
-  void walk_lane(const std::uint64_t (&state)[4], std::uint64_t n, Plot& plot) const {
+  std::uint64_t walk_lane(const std::uint64_t (&state)[4], std::uint64_t n, Plot& plot) const {
     ifsfx::detail::LaneRng rng(state);
     Rng variations(stream_seed(state[0], state[1]));
     const int shift = 64 - bits_;
@@ -102,7 +105,7 @@ class LaneWalk {
     // escapes for ever gives up the lane's points.
     std::uint64_t budget = flame::detail::kStepBudget * (n + static_cast<std::uint64_t>(burn_in_));
     for (std::uint64_t plotted = 0; plotted < n;) {
-      if (budget-- == 0) return;
+      if (budget-- == 0) return n - plotted;
       const std::uint32_t k = pickers_[picker](rng.next());
       if (pickers_.size() > 1) picker = 1 + k;
       const Point q = flip(apply_xform(flame_.xforms[k], flip(p), variations));
@@ -125,6 +128,7 @@ class LaneWalk {
       if ((px >= 0) & (px < width_) & (py >= 0) & (py < height_))
         plot(static_cast<long>(py) * width_ + static_cast<long>(px), key);
     }
+    return 0;
   }
 
   const Flame& flame_;
@@ -187,15 +191,22 @@ class Walk {
 
   template <class Plot>
   void walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, Plot&& plot) const {
-    if (lanes_) return lanes_->walk(seed, chunk, points, plot);
-    batch_->walk(seed, chunk, points, [&plot](const flame::detail::WalkHits& hits) {
-      for (std::size_t i = 0; i < hits.n; ++i) plot(hits.pixel[i], hits.key[i]);
-    });
+    given_up_ += lanes_ ? lanes_->walk(seed, chunk, points, plot)
+                        : batch_->walk(seed, chunk, points,
+                                       [&plot](const flame::detail::WalkHits& hits) {
+                                         for (std::size_t i = 0; i < hits.n; ++i)
+                                           plot(hits.pixel[i], hits.key[i]);
+                                       });
   }
+
+  // The points the walks so far gave up (their walkers' step budget ran out), of any thread: a
+  // sum of integers, the same whatever the order.
+  std::uint64_t given_up() const { return given_up_; }
 
  private:
   std::optional<LaneWalk> lanes_;
   std::optional<flame::detail::FlameWalk> batch_;
+  mutable std::atomic<std::uint64_t> given_up_{0};
 };
 
 void check_inputs(const Flame& flame, cv::Size size, const Sampling& sampling, bool exact) {
@@ -238,13 +249,15 @@ ifsfx::detail::AddressRaster flame_keys(const Flame& flame, const Plan& plan,
       .bits = bits,
       .chunk_points = chunk_points(plan),
       .affine = plan.affine ? &*plan.affine : nullptr};
-  return ifsfx::detail::chaos_tops(keys, plan.viewport,
-                                   {.quality = sampling.quality,
-                                    .seed = sampling.seed,
-                                    .threads = sampling.threads,
-                                    .key_bits = key_bits,
-                                    .cancel = sampling.cancel},
-                                   stats);
+  ifsfx::detail::AddressRaster out = ifsfx::detail::chaos_tops(keys, plan.viewport,
+                                                               {.quality = sampling.quality,
+                                                                .seed = sampling.seed,
+                                                                .threads = sampling.threads,
+                                                                .key_bits = key_bits,
+                                                                .cancel = sampling.cancel},
+                                                               stats);
+  if (stats) stats->points -= walk->given_up();
+  return out;
 }
 
 // T of each covered pixel from its whole key: g_σ1 ∘ … ∘ g_σK(c), c the fixed point of g_σK — the
@@ -339,7 +352,7 @@ cv::Mat flame_attractor(const Flame& flame, cv::Size size, const Sampling& sampl
   for (const cv::Mat& mask : hits)
     if (!mask.empty()) cv::bitwise_or(out, mask, out);
   if (stats)
-    *stats = {points,
+    *stats = {points - walk.given_up(),
               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
               cv::countNonZero(out) / static_cast<double>(size.area()), plan.viewport.view};
   return out;

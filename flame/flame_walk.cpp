@@ -35,6 +35,7 @@ struct FlameWalk::Walkers {
   std::array<std::uint32_t, kN> live{}, order{}, plotted{};
   std::size_t n_live = 0;
   bool gave_up = false;  // a walker gave up this step: the live list is to be pruned
+  std::uint64_t given_up = 0;  // the points the walkers that gave up had left
   std::vector<std::size_t> first, next;  // the counting sort's, per xform
 
   // Walker i from a uniform point of [−1, 1]², its address forgotten.
@@ -95,7 +96,7 @@ std::size_t FlameWalk::move(Walkers& a, Scratch& w, Rng& rng) const {
   for (std::size_t l = 0; l < live; ++l) {
     const std::uint32_t i = a.live[l];
     if (--a.budget[i] == 0) {
-      a.left[i] = 0;
+      a.given_up += std::exchange(a.left[i], 0);
       a.gave_up = true;
       continue;
     }
@@ -137,9 +138,9 @@ void FlameWalk::plot_step(Walkers& a, std::size_t plotted, Scratch& w, Rng& rng,
   }
 }
 
-void FlameWalk::walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
-                     const std::function<void(const WalkHits&)>& plot) const {
-  if (points == 0) return;
+std::uint64_t FlameWalk::walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
+                              const std::function<void(const WalkHits&)>& plot) const {
+  if (points == 0) return 0;
   Rng rng(stream_seed(seed, chunk));
   const auto m = static_cast<std::size_t>(
       std::min<std::uint64_t>(kBatchLanes, (points + kWalkerPlots - 1) / kWalkerPlots));
@@ -170,6 +171,7 @@ void FlameWalk::walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t poin
                        [&](std::uint32_t i) { return a->left[i] == 0; }) -
         a->live.begin());
   }
+  return a->given_up;
 }
 
 }  // namespace ifsfx::flame::detail

@@ -62,9 +62,10 @@ class FlameWalk {
   explicit FlameWalk(const WalkSetup& setup);
 
   // `points` points of chunk `chunk` of the walk seeded with `seed`: plot(hits) after each step
-  // with the points that landed on the raster. Depends on (seed, chunk, points) only.
-  void walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
-            const std::function<void(const WalkHits&)>& plot) const;
+  // with the points that landed on the raster. Depends on (seed, chunk, points) only. Returns
+  // how many of the points were given up (kStepBudget), not plotted.
+  std::uint64_t walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points,
+                     const std::function<void(const WalkHits&)>& plot) const;
 
  private:
   struct Walkers;

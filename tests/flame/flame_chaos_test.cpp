@@ -199,12 +199,23 @@ TEST(flame_chaos, a_flame_whose_orbits_always_escape_ends_with_an_empty_picture)
   batched.xforms[0].variations.push_back(term("spherical", 0));
   ASSERT_TRUE(affine_ifs(affine).has_value());
   ASSERT_FALSE(affine_ifs(batched).has_value());
+  // The points given up are not counted as plotted (the command's summary prints the count).
   for (const Flame& f : {affine, batched}) {
-    EXPECT_EQ(cv::countNonZero(flame_attractor(f, {16, 16}, {.quality = 4, .seed = 1})), 0);
+    RenderStats stats;
+    EXPECT_EQ(cv::countNonZero(flame_attractor(f, {16, 16}, {.quality = 4, .seed = 1}, &stats)),
+              0);
+    EXPECT_EQ(stats.points, 0u);
     const TopSymbols tops =
         flame_top_symbols(f, {16, 16}, {.sampling = {.quality = 4, .seed = 1}, .exact = false});
     EXPECT_EQ(cv::countNonZero(tops.coverage), 0);
+    EXPECT_EQ(tops.points, 0u);
   }
+  // A flame whose walkers plot every point counts them all: quality 4 on 16×16.
+  Flame contracting = batched;
+  contracting.xforms[0].pre = {0.5, 0, 0, 0.5, 0, 0};
+  RenderStats stats;
+  flame_attractor(contracting, {16, 16}, {.quality = 4, .seed = 1}, &stats);
+  EXPECT_EQ(stats.points, 4u * 16 * 16);
 }
 
 TEST(flame_chaos, what_needs_inverse_maps_or_a_map_per_xform_is_refused) {
