@@ -5,8 +5,9 @@
 //      k1 = contrast·brightness·268/256 and k2 = ss²/(contrast·area·q), area the picture's
 //      size in flame-plane units², q the samples per pixel (with the zoom's 4^zoom);
 //   2. density estimation: each bin spread over a disc whose radius shrinks with its density,
-//      1.1·R/a^curve bins (between the minimum and R), by the Gaussian e^(−4.5·d²/r²),
-//      normalised — flam3-render's kernel and radius as measured (render_tone.cpp);
+//      1.1·R/a^curve bins (1.05 with supersampling; between the minimum and R), by the
+//      Gaussian e^(−4.5·d²/r²), normalised — flam3-render's kernel and radius as measured
+//      (render_tone.cpp);
 //   3. the spatial filter: a separable kernel `filter_shape` of radius `filter` pixels, summed
 //      from the supersampled bins into each pixel;
 //   4. the display, per pixel of density α (the log-scaled alpha): the gamma curve α^(1/γ),
