@@ -562,27 +562,39 @@ TEST(render_flame, post_terms_come_before_the_post_map_as_in_apply_xform) {
   EXPECT_EQ(at, (std::vector<cv::Point>{{40, 46}}));
 }
 
-TEST(render_flame, spreads_a_lone_bin_as_flam3_render_does) {
-  if (std::system("command -v flam3-render > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
-  // Every point on one bin, 22 hits: density estimation alone spreads it (radius about 1.1 ·
-  // 16 / 22^0.4 = 5.1 bins; gamma 1 keeps the picture linear in the spread values). The profile
-  // across the bin and along its diagonal is flam3-render's to 2 levels of 255; Epanechnikov's
-  // kernel gave 14 13 11 8 3 where flam3 gives 26 22 13 5 1.
-  std::string text = R"(<flame name="dot" size="33 33" center="0 0" scale="10" quality="0.02"
-    supersample="1" filter="0.2" estimator_radius="16" estimator_minimum="0" estimator_curve="0.4"
-    brightness="0.4" gamma="1" gamma_threshold="0" vibrancy="1">
-  <xform weight="1" color="0" linear="1" coefs="0 0 0 0 0.001 0.001"/>)";
+// A flame whose every point lands on one bin (the constant map to (0.001, 0.001), a white
+// palette, gamma 1: density estimation alone spreads it, the picture linear in the spread
+// values), `size` pixels square, `flame_attributes` the rest of the <flame> element's. Its
+// pictures by flam3-render (`theirs`) and ifsfx (`ours`), grey; false where flam3 failed.
+bool lone_bin_pictures(const std::string& name, int size, const std::string& flame_attributes,
+                       cv::Mat& theirs, cv::Mat& ours) {
+  std::string text = "<flame name=\"" + name + "\" size=\"" + std::to_string(size) + " " +
+                     std::to_string(size) + "\" center=\"0 0\" scale=\"10\" filter=\"0.2\" " +
+                     "estimator_minimum=\"0\" estimator_curve=\"0.4\" gamma=\"1\" " +
+                     "gamma_threshold=\"0\" vibrancy=\"1\" " + flame_attributes + ">" +
+                     R"(<xform weight="1" color="0" linear="1" coefs="0 0 0 0 0.001 0.001"/>)";
   for (int i = 0; i < 256; ++i)
     text += "<color index=\"" + std::to_string(i) + "\" rgb=\"255 255 255\"/>";
   text += "</flame>";
   fs::path in;
-  const cv::Mat picture = flam3_picture("dot", text, in);
-  ASSERT_FALSE(picture.empty());
-  cv::Mat theirs, ours;
+  const cv::Mat picture = flam3_picture(name, text, in);
+  if (picture.empty()) return false;
   cv::cvtColor(picture, theirs, cv::COLOR_BGRA2GRAY);
   cv::cvtColor(render_flame(read_flame(in.string())), ours, cv::COLOR_BGR2GRAY);
-  ASSERT_EQ(theirs.size(), ours.size());
+  return theirs.size() == ours.size();
+}
+
+TEST(render_flame, spreads_a_lone_bin_as_flam3_render_does) {
+  if (std::system("command -v flam3-render > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
+  // 22 hits, radius about 1.1 · 16 / 22^0.4 = 5.1 bins. The profile across the bin and along
+  // its diagonal is flam3-render's to 2 levels of 255; Epanechnikov's kernel gave 14 13 11 8 3
+  // where flam3 gives 26 22 13 5 1.
+  cv::Mat theirs, ours;
+  ASSERT_TRUE(lone_bin_pictures("dot", 33,
+                                R"(quality="0.02" supersample="1" estimator_radius="16" )"
+                                R"(brightness="0.4")",
+                                theirs, ours));
   ASSERT_GT(theirs.at<std::uint8_t>(16, 16), 20);
   for (int d = 0; d <= 6; ++d) {
     EXPECT_NEAR(ours.at<std::uint8_t>(16, 16 + d), theirs.at<std::uint8_t>(16, 16 + d), 2) << d;
@@ -597,20 +609,11 @@ TEST(render_flame, spreads_a_lone_supersampled_bin_as_flam3_render_does) {
   // As above at supersample 2 and 100 hits, where flam3's spread is narrower than at
   // supersample 1 (the radius's factor 1.05, not 1.1: render_tone.cpp): the profile's width
   // 3σ is flam3's to 2 % (1.1 made it 4 % wider), its brightness to 2 levels.
-  std::string text = R"(<flame name="dot" size="65 65" center="0 0" scale="10" quality="0.023669"
-    supersample="2" filter="0.2" estimator_radius="9" estimator_minimum="0" estimator_curve="0.4"
-    brightness="1" gamma="1" gamma_threshold="0" vibrancy="1">
-  <xform weight="1" color="0" linear="1" coefs="0 0 0 0 0.001 0.001"/>)";
-  for (int i = 0; i < 256; ++i)
-    text += "<color index=\"" + std::to_string(i) + "\" rgb=\"255 255 255\"/>";
-  text += "</flame>";
-  fs::path in;
-  const cv::Mat picture = flam3_picture("dot2", text, in);
-  ASSERT_FALSE(picture.empty());
   cv::Mat theirs, ours;
-  cv::cvtColor(picture, theirs, cv::COLOR_BGRA2GRAY);
-  cv::cvtColor(render_flame(read_flame(in.string())), ours, cv::COLOR_BGR2GRAY);
-  ASSERT_EQ(theirs.size(), ours.size());
+  ASSERT_TRUE(lone_bin_pictures("dot2", 65,
+                                R"(quality="0.023669" supersample="2" estimator_radius="9" )"
+                                R"(brightness="1")",
+                                theirs, ours));
   // 3σ of the picture as a distribution of brightness about its centroid, per axis.
   const auto width = [](const cv::Mat& g) {
     const cv::Moments m = cv::moments(g);
