@@ -12,6 +12,8 @@
 
 #include "flame/detail/batch_variations.h"
 
+#define IFSFX_FLOAT_IO 1
+
 namespace ifsfx::detail::kernel_avx2 {
 namespace {
 
@@ -42,6 +44,12 @@ inline void add_to_f(double* p, F f) {
   _mm256_storeu_pd(
       p + 4, _mm256_add_pd(_mm256_loadu_pd(p + 4), _mm256_cvtps_pd(_mm256_extractf128_ps(v, 1))));
 }
+inline F loadu_f(const float* p) {
+  return (F)_mm256_loadu_ps(p);
+}
+inline void storeu_f(float* p, F f) {
+  _mm256_storeu_ps(p, (__m256)f);
+}
 inline I bits_f(F f) {
   return (I)f;
 }
@@ -62,6 +70,8 @@ inline void set_lane_f(F& f, std::size_t i, float v) {
 #include "flame/detail/batch_kernels.inl"
 
 }  // namespace
+
+#undef IFSFX_FLOAT_IO
 
 std::span<const flame::detail::BatchVariation> flame_batch_table_f32() {
   return kTable;

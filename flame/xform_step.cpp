@@ -10,6 +10,21 @@ namespace {
 
 constexpr std::size_t kN = kStepStride;
 
+// The term's random draws for points [0, n), draw j of point i at u[j·kN + i]: draw by draw,
+// each over the points (point by point, the strided stores and the generator's state went
+// through memory).
+const double* fill_draws(const Term& t, std::size_t n, Scratch& w, Rng& rng) {
+  const auto draws = static_cast<std::size_t>(t.batch->draws);
+  if (w.u.size() < draws * kN) w.u.resize(draws * kN);
+  Rng local = rng;
+  for (std::size_t j = 0; j < draws; ++j) {
+    double* u = w.u.data() + j * kN;
+    for (std::size_t i = 0; i < n; ++i) u[i] = local.uniform();
+  }
+  rng = local;
+  return w.u.data();
+}
+
 // Points [0, n) of (x, y) through one term, its w·V added to (ox, oy).
 void run_term(const Term& t, const AffineMap& pre, std::size_t n, const double* x, const double* y,
               double* ox, double* oy, Scratch& w, Rng& rng) {
@@ -21,18 +36,15 @@ void run_term(const Term& t, const AffineMap& pre, std::size_t n, const double* 
     }
     return;
   }
-  const auto draws = static_cast<std::size_t>(t.batch->draws);
-  if (w.u.size() < draws * kN) w.u.resize(draws * kN);
-  // Draw by draw, each over the points (the batch form reads draw j of point i at u[j·kN + i];
-  // point by point, the strided stores and the generator's state went through memory).
-  Rng local = rng;
-  for (std::size_t j = 0; j < draws; ++j) {
-    double* u = w.u.data() + j * kN;
-    for (std::size_t i = 0; i < n; ++i) u[i] = local.uniform();
-  }
-  rng = local;
-  t.batch->function({.w = t.w, .params = t.params.data(), .pre = &pre, .u = w.u.data()}, n, x, y,
-                    ox, oy);
+  const double* u = fill_draws(t, n, w, rng);
+  t.batch->function({.w = t.w, .params = t.params.data(), .pre = &pre, .u = u}, n, x, y, ox, oy);
+}
+
+// A float form of the sum over the float copy (w.fx, w.fy), its w·V added to (w.fsx, w.fsy).
+void run_term_f(const Term& t, const AffineMap& pre, std::size_t n, Scratch& w, Rng& rng) {
+  const double* u = fill_draws(t, n, w, rng);
+  t.batch->function_f({.w = t.w, .params = t.params.data(), .pre = &pre, .u = u}, n, w.fx.data(),
+                      w.fy.data(), w.fsx.data(), w.fsy.data());
 }
 
 void affine(const AffineMap& m, std::size_t n, double* x, double* y) {
@@ -78,6 +90,8 @@ XformStep xform_step_of(const Xform& xf, Kernels kernels) {
   s.affine_only =
       s.pre_terms.empty() && s.post_terms.empty() &&
       std::all_of(s.sum_terms.begin(), s.sum_terms.end(), [](const Term& t) { return t.linear; });
+  s.float_sum = std::any_of(s.sum_terms.begin(), s.sum_terms.end(),
+                            [](const Term& t) { return t.batch && t.batch->function_f; });
   return s;
 }
 
@@ -129,8 +143,28 @@ std::pair<double*, double*> XformStep::move_scratch(std::size_t n, Scratch& w, R
   if (has_sum) {
     std::fill_n(w.sx.begin(), padded, 0.0);
     std::fill_n(w.sy.begin(), padded, 0.0);
-    for (const Term& t : sum_terms)
-      run_term(t, pre, n, w.qx.data(), w.qy.data(), w.sx.data(), w.sy.data(), w, rng);
+    if (float_sum) {
+      // One rounding of the point for every float term (the padding's zeros too), their sum
+      // in float, added to the double terms' sum once after them.
+      for (std::size_t i = 0; i < padded; ++i) {
+        w.fx[i] = static_cast<float>(w.qx[i]);
+        w.fy[i] = static_cast<float>(w.qy[i]);
+      }
+      std::fill_n(w.fsx.begin(), padded, 0.0f);
+      std::fill_n(w.fsy.begin(), padded, 0.0f);
+    }
+    for (const Term& t : sum_terms) {
+      if (t.batch && t.batch->function_f)
+        run_term_f(t, pre, n, w, rng);
+      else
+        run_term(t, pre, n, w.qx.data(), w.qy.data(), w.sx.data(), w.sy.data(), w, rng);
+    }
+    if (float_sum) {
+      for (std::size_t i = 0; i < n; ++i) {
+        w.sx[i] += static_cast<double>(w.fsx[i]);
+        w.sy[i] += static_cast<double>(w.fsy[i]);
+      }
+    }
     sx = w.sx.data();
     sy = w.sy.data();
   }

@@ -42,10 +42,16 @@ struct BatchTerm {
 using BatchFunction = void (*)(const BatchTerm& t, std::size_t n, const double* x, const double* y,
                                double* ox, double* oy);
 
+// The same over float arrays, the sums in float: a float form's points rounded once for all the
+// terms of an xform's sum (flame/xform_step.cpp), not once a term.
+using BatchFunctionF = void (*)(const BatchTerm& t, std::size_t n, const float* x, const float* y,
+                                float* ox, float* oy);
+
 struct BatchVariation {
   std::string_view name;  // the registry's name
   BatchFunction function = nullptr;
-  int draws = 0;  // uniforms per point
+  BatchFunctionF function_f = nullptr;  // float lanes only
+  int draws = 0;                        // uniforms per point
 };
 
 // The arithmetic of a batch form's lanes: doubles (four a register on AVX2) or floats (eight;

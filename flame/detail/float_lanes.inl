@@ -6,7 +6,8 @@
 // it for GCC's vectors). Included inside a level's anonymous namespace after it defines F (float
 // or a GCC vector of kW floats), I (its bits as unsigned 32-bit integers), kW and
 //   F splat_f(float), F sqrt_f(F), bool any_f(M), F load_f(const double*) (kW doubles rounded),
-//   void add_to_f(double*, F) (kW doubles += the floats widened),
+//   void add_to_f(double*, F) (kW doubles += the floats widened), F loadu_f(const float*) and
+//   void storeu_f(float*, F) (kW floats, unaligned),
 // all with the same rounding on every level (IEEE single operations, no fused multiply-add).
 
 using M = decltype(F{} < F{});
@@ -65,6 +66,13 @@ inline V load(const double* p) {
 }
 inline void add_to(double* p, V v) {
   add_to_f(p, v.v);
+}
+// The float arrays of an xform's sum (BatchFunctionF): no conversion, the sum in float.
+inline V load(const float* p) {
+  return {loadu_f(p)};
+}
+inline void add_to(float* p, V v) {
+  storeu_f(p, loadu_f(p) + v.v);
 }
 inline V sel(M m, V a, V b) {
   return {m ? a.v : b.v};

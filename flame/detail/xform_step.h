@@ -44,9 +44,10 @@ struct Term {
 };
 
 // The arrays one xform's batch works in: the affine point q, a term's result t, the sum s and
-// the random draws u.
+// the random draws u; q rounded to float once (f) and the float terms' sum (fs).
 struct Scratch {
   std::array<double, kStepStride> qx{}, qy{}, tx{}, ty{}, sx{}, sy{};
+  std::array<float, kStepStride> fx{}, fy{}, fsx{}, fsy{};
   std::vector<double> u;
 };
 
@@ -62,6 +63,10 @@ struct XformStep {
   // Only affine: no pre_/post_ terms and every term of the sum `linear` (an IFS drawn as a
   // flame), so that one point goes through it on its own without the arrays (moved()).
   bool affine_only = false;
+  // Some term of the sum has a float form over float arrays (BatchVariation::function_f): the
+  // sum's float terms read one float copy of the point and add in float, the total added to
+  // the double terms' sum once (flame/xform_step.cpp).
+  bool float_sum = false;
 
   // One point through an affine_only xform: the operations of operator() on it, in its order
   // (the sum starts from 0 and adds w·q term by term, as the batch does), so the bits are equal.
