@@ -27,6 +27,15 @@ inline F splat_f(float f) {
 inline F sqrt_f(F x) {
   return (F)_mm256_sqrt_ps((__m256)x);
 }
+inline F round_f(F x) {
+  return (F)_mm256_round_ps((__m256)x, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+}
+inline F floor_f(F x) {
+  return (F)_mm256_round_ps((__m256)x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+}
+inline F trunc_f(F x) {
+  return (F)_mm256_round_ps((__m256)x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
+}
 inline bool any_f(decltype(F{} < F{}) m) {
   return _mm256_movemask_ps((__m256)m) != 0;
 }

@@ -25,6 +25,16 @@ inline F splat_f(float f) {
 inline F sqrt_f(F x) {
   return std::sqrt(x);
 }
+// (nearbyint rounds as the current mode does: to nearest, ties to even, as the AVX2 level's.)
+inline F round_f(F x) {
+  return std::nearbyint(x);
+}
+inline F floor_f(F x) {
+  return std::floor(x);
+}
+inline F trunc_f(F x) {
+  return std::trunc(x);
+}
 inline bool any_f(bool m) {
   return m;
 }

@@ -181,11 +181,11 @@ IFSFX_BATCH(cylinder) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) { return VP{t.w * vsin(x), t.w * y}; });
 }
 IFSFX_BATCH(julian) {
-  const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2;
+  const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2, ip = 1 / p;
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
     const V p3 = vtrunc(ap * draw(t, 0, i));
-    const VSinCos sc = vsincos((vatan2(y, x) + 2.0 * kVPi * p3) / p);
-    const V k = t.w * vpow(x * x + y * y, splat(e));
+    const VSinCos sc = vsincos((vatan2(y, x) + 2.0 * kVPi * p3) * ip);
+    const V k = t.w * vpow_const(x * x + y * y, e);
     return VP{k * sc.c, k * sc.s};
   });
 }
@@ -405,8 +405,9 @@ IFSFX_BATCH(lazysusan) {
 IFSFX_BATCH(conic) {
   const double e = t.params[0], holes = t.params[1];
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
-    const V r = r_of(x, y) + kBEps, ct = x / r;
-    const V k = t.w * (draw(t, 0, i) - holes) * e / (1.0 + e * ct) / r;
+    // e/((1 + e·x/r)·r) as e/(r + e·x): one division where there were three.
+    const V r = r_of(x, y) + kBEps;
+    const V k = t.w * (draw(t, 0, i) - holes) * e / (r + e * x);
     return VP{k * x, k * y};
   });
 }
@@ -541,12 +542,12 @@ IFSFX_BATCH(noise) {
   });
 }
 IFSFX_BATCH(juliascope) {
-  const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2;
+  const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2, ip = 1 / p;
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
     const V p3 = vtrunc(ap * draw(t, 0, i));
     const V sign = sel(vfmod(p3, splat(2.0)) == 0.0, splat(1.0), splat(-1.0));
-    const VSinCos sc = vsincos((sign * vatan2(y, x) + 2.0 * kVPi * p3) / p);
-    const V k = t.w * vpow(x * x + y * y, splat(e));
+    const VSinCos sc = vsincos((sign * vatan2(y, x) + 2.0 * kVPi * p3) * ip);
+    const V k = t.w * vpow_const(x * x + y * y, e);
     return VP{k * sc.c, k * sc.s};
   });
 }

@@ -7,7 +7,8 @@
 // or a GCC vector of kW floats), I (its bits as unsigned 32-bit integers), kW and
 //   F splat_f(float), F sqrt_f(F), bool any_f(M), F load_f(const double*) (kW doubles rounded),
 //   void add_to_f(double*, F) (kW doubles += the floats widened), F loadu_f(const float*) and
-//   void storeu_f(float*, F) (kW floats, unaligned),
+//   void storeu_f(float*, F) (kW floats, unaligned), F round_f(F), floor_f(F), trunc_f(F) (to
+//   the nearest integer, ties to even, below, toward 0: exact, one instruction on AVX2),
 // all with the same rounding on every level (IEEE single operations, no fused multiply-add).
 
 using M = decltype(F{} < F{});
@@ -82,6 +83,15 @@ inline bool any(M m) {
 }
 inline V vsqrt(V x) {
   return {sqrt_f(x.v)};
+}
+inline V vround(V x) {
+  return {round_f(x.v)};
+}
+inline V vfloor(V x) {
+  return {floor_f(x.v)};
+}
+inline V vtrunc(V x) {
+  return {trunc_f(x.v)};
 }
 inline I as_bits(V x) {
   return bits_f(x.v);
