@@ -301,7 +301,9 @@ std::uint64_t walk_chunk(const Plan& plan, std::uint64_t seed, std::uint64_t chu
       const Step& step = plan.steps[j];
       const std::uint32_t* at = order.data() + lo;
       step.motion(count, at, a.x.data(), a.y.data(), w, rng);
-      for (std::size_t i = 0; i < count; ++i) a.c[at[i]] = step.keep * a.c[at[i]] + step.shift;
+      // (keep and shift in registers: a store to a.c might otherwise change them)
+      const double keep = step.keep, shift = step.shift;
+      for (std::size_t i = 0; i < count; ++i) a.c[at[i]] = keep * a.c[at[i]] + shift;
     }
     reseeded += plot_walkers(plan, a, m, s, burn, w, rng, bins);
   }

@@ -67,6 +67,7 @@ struct XformStep {
   // sum's float terms read one float copy of the point and add in float, the total added to
   // the double terms' sum once (flame/xform_step.cpp).
   bool float_sum = false;
+  bool double_sum = false;  // and some term adds in double (linear, no float form)
 
   // One point through an affine_only xform: the operations of operator() on it, in its order
   // (the sum starts from 0 and adds w·q term by term, as the batch does), so the bits are equal.
@@ -93,8 +94,11 @@ struct XformStep {
                   Rng& rng) const;
 
  private:
-  // The points [0, n) of (w.qx, w.qy) through the xform; where the result is.
+  // The points [0, n) of (w.qx, w.qy), the pre-affine map applied, through the pre_ terms, the
+  // sum and the post_ terms; where the result is (the post map is the caller's).
   std::pair<double*, double*> move_scratch(std::size_t n, Scratch& w, Rng& rng) const;
+  // (w.sx, w.sy) ← the weighted sum of the terms at the points [0, n) of (w.qx, w.qy).
+  void sum(std::size_t n, Scratch& w, Rng& rng) const;
   // (x, y) ← each term of `terms` in order, over points [0, n).
   void chain(const std::vector<Term>& terms, std::size_t n, double* x, double* y, Scratch& w,
              Rng& rng) const;
