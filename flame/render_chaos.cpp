@@ -97,6 +97,7 @@ struct Plan {
   std::vector<std::uint32_t> fixed;           // PlotTables::fixed, when it applies
   PlotTables tables;
   PlotFunction plot = nullptr;  // the kernel level's
+  ListFunction list = nullptr;  // the kernel level's, for at most kListXforms steps
   bool any_invisible = false;
 };
 
@@ -201,9 +202,11 @@ void pick(const Plan& plan, Walkers& a, std::size_t m, std::vector<std::size_t>&
     }
     return;
   }
-  // A counting sort with four rows of counters, walker i on row i mod 4, so that walkers of one
-  // xform in a row do not each wait for the last one's counter (a store to load chain).
   const std::size_t steps = plan.steps.size();
+  if (steps <= kListXforms) return plan.list(a.k.data(), m, steps, order.data(), first.data());
+  // More xforms: a counting sort with four rows of counters, walker i on row i mod 4, so that
+  // walkers of one xform in a row do not each wait for the last one's counter (a store to load
+  // chain). Its order differs from plan.list's, and is the same at every level.
   std::fill(next.begin(), next.end(), 0);
   for (std::size_t i = 0; i < m; ++i) ++next[(i & 3) * steps + a.k[i]];
   std::size_t at = 0;
@@ -387,6 +390,7 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   }
   plan.tables = {plan.colours.data(), plan.linear_palette};
   plan.plot = plot_function(cpu_level());
+  plan.list = list_function(cpu_level());
   fix_colours(plan);
   return plan;
 }
