@@ -182,10 +182,20 @@ IFSFX_BATCH(cylinder) {
 }
 IFSFX_BATCH(julian) {
   const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2, ip = 1 / p;
-  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+  // Two passes, the angle first: one pass's chain (atan2, then sincos) and its pow were more
+  // instructions than the core reorders at once, so one group of lanes waited for the last.
+  V angle[kBatchStride / kW + 1], radius[kBatchStride / kW + 1];
+  for (std::size_t i = 0; i < n; i += kW) {
+    const V x = load(X + i), y = load(Y + i);
+    radius[i / kW] = t.w * vpow_const(x * x + y * y, e);
+  }
+  for (std::size_t i = 0; i < n; i += kW) {
     const V p3 = vtrunc(ap * draw(t, 0, i));
-    const VSinCos sc = vsincos((vatan2(y, x) + 2.0 * kVPi * p3) * ip);
-    const V k = t.w * vpow_const(x * x + y * y, e);
+    angle[i / kW] = (vatan2(load(Y + i), load(X + i)) + 2.0 * kVPi * p3) * ip;
+  }
+  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
+    const VSinCos sc = vsincos(angle[i / kW]);
+    const V k = radius[i / kW];
     return VP{k * sc.c, k * sc.s};
   });
 }
@@ -305,11 +315,17 @@ IFSFX_BATCH(cosh) {
   });
 }
 IFSFX_BATCH(tanh) {
-  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+  // sinh and cosh in a pass of their own (as julian's angle, for the reorder window).
+  V sh[kBatchStride / kW + 1], ch[kBatchStride / kW + 1];
+  for (std::size_t i = 0; i < n; i += kW) {
+    const VSinhCosh h = vsinhcosh(2.0 * load(X + i));
+    sh[i / kW] = h.s;
+    ch[i / kW] = h.c;
+  }
+  each(n, X, Y, OX, OY, [&](V, V y, std::size_t i) {
     const VSinCos sc = vsincos(2.0 * y);
-    const VSinhCosh h = vsinhcosh(2.0 * x);
-    const V d = t.w * (1.0 / (sc.c + h.c));
-    return VP{d * h.s, d * sc.s};
+    const V d = t.w * (1.0 / (sc.c + ch[i / kW]));
+    return VP{d * sh[i / kW], d * sc.s};
   });
 }
 IFSFX_BATCH(sech) {
@@ -340,9 +356,15 @@ IFSFX_BATCH(coth) {
 // flam3's later variations (flame/variations_flam3.cpp).
 IFSFX_BATCH(popcorn2) {
   const double* k = t.params;
-  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
-    const VSinCos a = vsincos(y * k[2]), b = vsincos(x * k[2]);
-    return VP{t.w * (x + k[0] * vsin(a.s / a.c)), t.w * (y + k[1] * vsin(b.s / b.c))};
+  // The tangents in a pass of their own (as julian's angle, for the reorder window).
+  V ta[kBatchStride / kW + 1], tb[kBatchStride / kW + 1];
+  for (std::size_t i = 0; i < n; i += kW) {
+    const VSinCos a = vsincos(load(Y + i) * k[2]), b = vsincos(load(X + i) * k[2]);
+    ta[i / kW] = a.s / a.c;
+    tb[i / kW] = b.s / b.c;
+  }
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    return VP{t.w * (x + k[0] * vsin(ta[i / kW])), t.w * (y + k[1] * vsin(tb[i / kW]))};
   });
 }
 IFSFX_BATCH(pie) {
