@@ -5,6 +5,7 @@
 #include <immintrin.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -63,6 +64,45 @@ inline void set_lane(V& v, std::size_t i, double d) {
 
 std::span<const flame::detail::BatchVariation> flame_batch_table() {
   return kTable;
+}
+
+namespace {
+// For each 8-bit mask, the indices of its set bits packed to the low bytes (a vpermd order).
+constexpr auto kPack = [] {
+  std::array<std::uint64_t, 256> t{};
+  for (unsigned mask = 0; mask < 256; ++mask) {
+    unsigned n = 0;
+    for (unsigned b = 0; b < 8; ++b)
+      if ((mask >> b & 1) != 0) t[mask] |= std::uint64_t{b} << (8 * n++);
+  }
+  return t;
+}();
+}  // namespace
+
+// The scalar level's listing eight walkers at a time: the lanes that picked xform j packed to
+// the front by a permutation and stored at the list's end (the other lanes' entries are written
+// over next), so the same order.
+void flame_list_by_xform(const std::uint32_t* k, std::size_t m, std::size_t steps,
+                         std::uint32_t* order, std::size_t* first) {
+  const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  std::size_t c = 0;
+  for (std::size_t j = 0; j < steps; ++j) {
+    first[j] = c;
+    const __m256i want = _mm256_set1_epi32(static_cast<int>(j));
+    for (std::size_t i = 0; i < m; i += 8) {
+      const __m256i kk = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(k + i));
+      auto mask = static_cast<unsigned>(
+          _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(kk, want))));
+      if (m - i < 8) mask &= (1u << (m - i)) - 1;
+      const __m256i perm =
+          _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(kPack[mask])));
+      const __m256i at = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(i)), iota);
+      _mm256_storeu_si256(reinterpret_cast<__m256i*>(order + c),
+                          _mm256_permutevar8x32_epi32(at, perm));
+      c += static_cast<std::size_t>(__builtin_popcount(mask));
+    }
+  }
+  first[steps] = c;
 }
 
 // The scalar level's flame_bin_numbers four points at a time: the same products and sums in

@@ -12,6 +12,8 @@
 
 #include "flame/detail/batch_variations.h"
 
+#define IFSFX_FLOAT_IO 1
+
 namespace ifsfx::detail::kernel_avx2 {
 namespace {
 
@@ -24,6 +26,15 @@ inline F splat_f(float f) {
 }
 inline F sqrt_f(F x) {
   return (F)_mm256_sqrt_ps((__m256)x);
+}
+inline F round_f(F x) {
+  return (F)_mm256_round_ps((__m256)x, _MM_FROUND_TO_NEAREST_INT | _MM_FROUND_NO_EXC);
+}
+inline F floor_f(F x) {
+  return (F)_mm256_round_ps((__m256)x, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+}
+inline F trunc_f(F x) {
+  return (F)_mm256_round_ps((__m256)x, _MM_FROUND_TO_ZERO | _MM_FROUND_NO_EXC);
 }
 inline bool any_f(decltype(F{} < F{}) m) {
   return _mm256_movemask_ps((__m256)m) != 0;
@@ -41,6 +52,12 @@ inline void add_to_f(double* p, F f) {
                    _mm256_add_pd(_mm256_loadu_pd(p), _mm256_cvtps_pd(_mm256_castps256_ps128(v))));
   _mm256_storeu_pd(
       p + 4, _mm256_add_pd(_mm256_loadu_pd(p + 4), _mm256_cvtps_pd(_mm256_extractf128_ps(v, 1))));
+}
+inline F loadu_f(const float* p) {
+  return (F)_mm256_loadu_ps(p);
+}
+inline void storeu_f(float* p, F f) {
+  _mm256_storeu_ps(p, (__m256)f);
 }
 inline I bits_f(F f) {
   return (I)f;
@@ -62,6 +79,8 @@ inline void set_lane_f(F& f, std::size_t i, float v) {
 #include "flame/detail/batch_kernels.inl"
 
 }  // namespace
+
+#undef IFSFX_FLOAT_IO
 
 std::span<const flame::detail::BatchVariation> flame_batch_table_f32() {
   return kTable;

@@ -62,6 +62,21 @@ std::span<const flame::detail::BatchVariation> flame_batch_table() {
 
 // The reference of every level's bin numbering: AffineMap's operations in its order, the
 // comparisons and truncations exact.
+// The reference listing: each xform's walkers in ascending order, branch-free (the store is
+// always made, the count moves on where the walker picked the xform).
+void flame_list_by_xform(const std::uint32_t* k, std::size_t m, std::size_t steps,
+                         std::uint32_t* order, std::size_t* first) {
+  std::size_t c = 0;
+  for (std::size_t j = 0; j < steps; ++j) {
+    first[j] = c;
+    for (std::size_t i = 0; i < m; ++i) {
+      order[c] = static_cast<std::uint32_t>(i);
+      c += k[i] == j ? 1 : 0;
+    }
+  }
+  first[steps] = c;
+}
+
 std::size_t flame_bin_numbers(const flame::detail::BinGrid& g, std::size_t n, const double* x,
                               const double* y, std::uint32_t* at) {
   const AffineMap& m = g.to_bins;

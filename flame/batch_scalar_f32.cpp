@@ -10,6 +10,8 @@
 
 #include "flame/detail/batch_variations.h"
 
+#define IFSFX_FLOAT_IO 1
+
 namespace ifsfx::detail::kernel_scalar {
 namespace {
 
@@ -23,6 +25,16 @@ inline F splat_f(float f) {
 inline F sqrt_f(F x) {
   return std::sqrt(x);
 }
+// (nearbyint rounds as the current mode does: to nearest, ties to even, as the AVX2 level's.)
+inline F round_f(F x) {
+  return std::nearbyint(x);
+}
+inline F floor_f(F x) {
+  return std::floor(x);
+}
+inline F trunc_f(F x) {
+  return std::trunc(x);
+}
 inline bool any_f(bool m) {
   return m;
 }
@@ -31,6 +43,12 @@ inline F load_f(const double* p) {
 }
 inline void add_to_f(double* p, F f) {
   *p += static_cast<double>(f);
+}
+inline F loadu_f(const float* p) {
+  return *p;
+}
+inline void storeu_f(float* p, F f) {
+  *p = f;
 }
 inline I bits_f(F f) {
   return std::bit_cast<I>(f);
@@ -52,6 +70,8 @@ inline void set_lane_f(F& f, std::size_t, float v) {
 #include "flame/detail/batch_kernels.inl"
 
 }  // namespace
+
+#undef IFSFX_FLOAT_IO
 
 std::span<const flame::detail::BatchVariation> flame_batch_table_f32() {
   return kTable;

@@ -46,4 +46,13 @@ PlotFunction plot_function(CpuLevel level) {
   return ifsfx::detail::kernel_scalar::flame_plot;
 }
 
+ListFunction list_function(CpuLevel level) {
+#if IFSFX_FLAME_X86_KERNELS
+  if (level != CpuLevel::scalar) return ifsfx::detail::kernel_avx2::flame_list_by_xform;
+#else
+  (void)level;
+#endif
+  return ifsfx::detail::kernel_scalar::flame_list_by_xform;
+}
+
 }  // namespace ifsfx::flame::detail

@@ -97,6 +97,7 @@ struct Plan {
   std::vector<std::uint32_t> fixed;           // PlotTables::fixed, when it applies
   PlotTables tables;
   PlotFunction plot = nullptr;  // the kernel level's
+  ListFunction list = nullptr;  // the kernel level's, for at most kListXforms steps
   bool any_invisible = false;
 };
 
@@ -110,13 +111,12 @@ struct Bins {
   explicit Bins(const FlameRaster& r) : lo(4 * static_cast<std::size_t>(r.bins_x) * r.bins_y) {}
 };
 
-// Plots the points whose bin `at` is not kOffBin, their bins fetched ahead: a step's 256 random
-// writes overlap their cache misses.
+// Plots the points whose bin `at` is not kOffBin. (A pass prefetching the step's 256 bins first
+// cost more than it saved, 0-14 % of the CPU on genomes and Sierpinski flames, 27 Nov 17:44: the
+// plot's own loads already overlap their misses.)
 void plot_all(const Plan& plan, const std::array<std::uint32_t, kN>& at,
               const std::array<std::uint32_t, kN>& k, const std::array<double, kN>& c,
               std::size_t m, Bins& bins) {
-  for (std::size_t i = 0; i < m; ++i)
-    if (at[i] != kOffBin) __builtin_prefetch(&bins.lo[4 * std::size_t{at[i]}], 1);
   for (std::size_t i = 0; i < m;) {
     unsigned wrapped = 0;
     i = plan.plot(plan.tables, bins.lo.data(), i, m, at.data(), k.data(), c.data(), &wrapped);
@@ -201,9 +201,11 @@ void pick(const Plan& plan, Walkers& a, std::size_t m, std::vector<std::size_t>&
     }
     return;
   }
-  // A counting sort with four rows of counters, walker i on row i mod 4, so that walkers of one
-  // xform in a row do not each wait for the last one's counter (a store to load chain).
   const std::size_t steps = plan.steps.size();
+  if (steps <= kListXforms) return plan.list(a.k.data(), m, steps, order.data(), first.data());
+  // More xforms: a counting sort with four rows of counters, walker i on row i mod 4, so that
+  // walkers of one xform in a row do not each wait for the last one's counter (a store to load
+  // chain). Its order differs from plan.list's, and is the same at every level.
   std::fill(next.begin(), next.end(), 0);
   for (std::size_t i = 0; i < m; ++i) ++next[(i & 3) * steps + a.k[i]];
   std::size_t at = 0;
@@ -301,7 +303,9 @@ std::uint64_t walk_chunk(const Plan& plan, std::uint64_t seed, std::uint64_t chu
       const Step& step = plan.steps[j];
       const std::uint32_t* at = order.data() + lo;
       step.motion(count, at, a.x.data(), a.y.data(), w, rng);
-      for (std::size_t i = 0; i < count; ++i) a.c[at[i]] = step.keep * a.c[at[i]] + step.shift;
+      // (keep and shift in registers: a store to a.c might otherwise change them)
+      const double keep = step.keep, shift = step.shift;
+      for (std::size_t i = 0; i < count; ++i) a.c[at[i]] = keep * a.c[at[i]] + shift;
     }
     reseeded += plot_walkers(plan, a, m, s, burn, w, rng, bins);
   }
@@ -385,6 +389,7 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   }
   plan.tables = {plan.colours.data(), plan.linear_palette};
   plan.plot = plot_function(cpu_level());
+  plan.list = list_function(cpu_level());
   fix_colours(plan);
   return plan;
 }

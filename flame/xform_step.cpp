@@ -10,6 +10,21 @@ namespace {
 
 constexpr std::size_t kN = kStepStride;
 
+// The term's random draws for points [0, n), draw j of point i at u[j·kN + i]: draw by draw,
+// each over the points (point by point, the strided stores and the generator's state went
+// through memory).
+const double* fill_draws(const Term& t, std::size_t n, Scratch& w, Rng& rng) {
+  const auto draws = static_cast<std::size_t>(t.batch->draws);
+  if (w.u.size() < draws * kN) w.u.resize(draws * kN);
+  Rng local = rng;
+  for (std::size_t j = 0; j < draws; ++j) {
+    double* u = w.u.data() + j * kN;
+    for (std::size_t i = 0; i < n; ++i) u[i] = local.uniform();
+  }
+  rng = local;
+  return w.u.data();
+}
+
 // Points [0, n) of (x, y) through one term, its w·V added to (ox, oy).
 void run_term(const Term& t, const AffineMap& pre, std::size_t n, const double* x, const double* y,
               double* ox, double* oy, Scratch& w, Rng& rng) {
@@ -21,26 +36,15 @@ void run_term(const Term& t, const AffineMap& pre, std::size_t n, const double* 
     }
     return;
   }
-  const auto draws = static_cast<std::size_t>(t.batch->draws);
-  if (w.u.size() < draws * kN) w.u.resize(draws * kN);
-  // Draw by draw, each over the points (the batch form reads draw j of point i at u[j·kN + i];
-  // point by point, the strided stores and the generator's state went through memory).
-  Rng local = rng;
-  for (std::size_t j = 0; j < draws; ++j) {
-    double* u = w.u.data() + j * kN;
-    for (std::size_t i = 0; i < n; ++i) u[i] = local.uniform();
-  }
-  rng = local;
-  t.batch->function({.w = t.w, .params = t.params.data(), .pre = &pre, .u = w.u.data()}, n, x, y,
-                    ox, oy);
+  const double* u = fill_draws(t, n, w, rng);
+  t.batch->function({.w = t.w, .params = t.params.data(), .pre = &pre, .u = u}, n, x, y, ox, oy);
 }
 
-void affine(const AffineMap& m, std::size_t n, double* x, double* y) {
-  for (std::size_t i = 0; i < n; ++i) {
-    const double u = x[i], v = y[i];
-    x[i] = m.a * u + m.b * v + m.e;
-    y[i] = m.c * u + m.d * v + m.f;
-  }
+// A float form of the sum over the float copy (w.fx, w.fy), its w·V added to (w.fsx, w.fsy).
+void run_term_f(const Term& t, const AffineMap& pre, std::size_t n, Scratch& w, Rng& rng) {
+  const double* u = fill_draws(t, n, w, rng);
+  t.batch->function_f({.w = t.w, .params = t.params.data(), .pre = &pre, .u = u}, n, w.fx.data(),
+                      w.fy.data(), w.fsx.data(), w.fsy.data());
 }
 
 }  // namespace
@@ -78,6 +82,9 @@ XformStep xform_step_of(const Xform& xf, Kernels kernels) {
   s.affine_only =
       s.pre_terms.empty() && s.post_terms.empty() &&
       std::all_of(s.sum_terms.begin(), s.sum_terms.end(), [](const Term& t) { return t.linear; });
+  const auto is_float = [](const Term& t) { return t.batch && t.batch->function_f; };
+  s.float_sum = std::any_of(s.sum_terms.begin(), s.sum_terms.end(), is_float);
+  s.double_sum = !std::all_of(s.sum_terms.begin(), s.sum_terms.end(), is_float);
   return s;
 }
 
@@ -95,10 +102,21 @@ void XformStep::chain(const std::vector<Term>& terms, std::size_t n, double* x, 
   }
 }
 
+// The gathers apply the pre-affine map as they copy, and the scatters the post map as they
+// write back: the same operations as affine() in the same order, one pass fewer each way.
 void XformStep::operator()(std::size_t n, double* x, double* y, Scratch& w, Rng& rng) const {
-  std::copy_n(x, n, w.qx.begin());
-  std::copy_n(y, n, w.qy.begin());
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = x[i], v = y[i];
+    w.qx[i] = pre.a * u + pre.b * v + pre.e;
+    w.qy[i] = pre.c * u + pre.d * v + pre.f;
+  }
   const auto [sx, sy] = move_scratch(n, w, rng);
+  for (std::size_t i = 0; has_post && i < n; ++i) {
+    const double u = sx[i], v = sy[i];
+    x[i] = post.a * u + post.b * v + post.e;
+    y[i] = post.c * u + post.d * v + post.f;
+  }
+  if (has_post) return;
   std::copy_n(sx, n, x);
   std::copy_n(sy, n, y);
 }
@@ -106,13 +124,48 @@ void XformStep::operator()(std::size_t n, double* x, double* y, Scratch& w, Rng&
 void XformStep::operator()(std::size_t n, const std::uint32_t* at, double* x, double* y, Scratch& w,
                            Rng& rng) const {
   for (std::size_t i = 0; i < n; ++i) {
-    w.qx[i] = x[at[i]];
-    w.qy[i] = y[at[i]];
+    const double u = x[at[i]], v = y[at[i]];
+    w.qx[i] = pre.a * u + pre.b * v + pre.e;
+    w.qy[i] = pre.c * u + pre.d * v + pre.f;
   }
   const auto [sx, sy] = move_scratch(n, w, rng);
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; has_post && i < n; ++i) {
+    const double u = sx[i], v = sy[i];
+    x[at[i]] = post.a * u + post.b * v + post.e;
+    y[at[i]] = post.c * u + post.d * v + post.f;
+  }
+  for (std::size_t i = 0; !has_post && i < n; ++i) {
     x[at[i]] = sx[i];
     y[at[i]] = sy[i];
+  }
+}
+
+void XformStep::sum(std::size_t n, Scratch& w, Rng& rng) const {
+  const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
+  if (double_sum) {
+    std::fill_n(w.sx.begin(), padded, 0.0);
+    std::fill_n(w.sy.begin(), padded, 0.0);
+  }
+  if (float_sum) {
+    // One rounding of the point for every float term (the padding's zeros too), their sum in
+    // float, added to the double terms' sum once after them.
+    for (std::size_t i = 0; i < padded; ++i) {
+      w.fx[i] = static_cast<float>(w.qx[i]);
+      w.fy[i] = static_cast<float>(w.qy[i]);
+    }
+    std::fill_n(w.fsx.begin(), padded, 0.0f);
+    std::fill_n(w.fsy.begin(), padded, 0.0f);
+  }
+  for (const Term& t : sum_terms) {
+    if (t.batch && t.batch->function_f)
+      run_term_f(t, pre, n, w, rng);
+    else
+      run_term(t, pre, n, w.qx.data(), w.qy.data(), w.sx.data(), w.sy.data(), w, rng);
+  }
+  if (!float_sum) return;
+  for (std::size_t i = 0; i < n; ++i) {
+    w.sx[i] = double_sum ? w.sx[i] + w.fsx[i] : w.fsx[i];
+    w.sy[i] = double_sum ? w.sy[i] + w.fsy[i] : w.fsy[i];
   }
 }
 
@@ -122,21 +175,14 @@ std::pair<double*, double*> XformStep::move_scratch(std::size_t n, Scratch& w, R
             w.qx.begin() + static_cast<std::ptrdiff_t>(padded), 0.0);
   std::fill(w.qy.begin() + static_cast<std::ptrdiff_t>(n),
             w.qy.begin() + static_cast<std::ptrdiff_t>(padded), 0.0);
-  affine(pre, n, w.qx.data(), w.qy.data());
   chain(pre_terms, n, w.qx.data(), w.qy.data(), w, rng);
-  double* sx = w.qx.data();
-  double* sy = w.qy.data();
-  if (has_sum) {
-    std::fill_n(w.sx.begin(), padded, 0.0);
-    std::fill_n(w.sy.begin(), padded, 0.0);
-    for (const Term& t : sum_terms)
-      run_term(t, pre, n, w.qx.data(), w.qy.data(), w.sx.data(), w.sy.data(), w, rng);
-    sx = w.sx.data();
-    sy = w.sy.data();
+  if (!has_sum) {
+    chain(post_terms, n, w.qx.data(), w.qy.data(), w, rng);
+    return {w.qx.data(), w.qy.data()};
   }
-  chain(post_terms, n, sx, sy, w, rng);
-  if (has_post) affine(post, n, sx, sy);
-  return {sx, sy};
+  sum(n, w, rng);
+  chain(post_terms, n, w.sx.data(), w.sy.data(), w, rng);
+  return {w.sx.data(), w.sy.data()};
 }
 
 }  // namespace ifsfx::flame::detail

@@ -3,7 +3,10 @@
 // formula (flame/variations_*.cpp, where the comments cite the paper) over the lane type V of
 // flame/detail/vmath.inl (doubles) or flame/detail/vmath_f32.inl (floats), included after it. The
 // random ones read their draws from t.u in the order the registry function draws them. The level
-// defines add_to(double* o, V r): o[0, kW) += r, in double.
+// defines add_to(double* o, V r): o[0, kW) += r, in double. A float level (IFSFX_FLOAT_IO) also
+// defines load(const float*) and add_to(float*, V), and each form has a second instance over
+// float arrays (BatchFunctionF): the terms of an xform's sum read one float copy of its points
+// and add into float sums, without a conversion each way for every term.
 
 using flame::detail::BatchTerm;
 using flame::detail::BatchVariation;
@@ -16,8 +19,8 @@ struct VP {
 };
 
 // (ox, oy) += f(x, y, i) for the points [0, n), kW at a time.
-template <class F>
-inline void each(std::size_t n, const double* X, const double* Y, double* OX, double* OY, F f) {
+template <class In, class Out, class F>
+inline void each(std::size_t n, const In* X, const In* Y, Out* OX, Out* OY, F f) {
   for (std::size_t i = 0; i < n; i += kW) {
     const VP r = f(load(X + i), load(Y + i), i);
     add_to(OX + i, r.x);
@@ -33,9 +36,9 @@ inline V r_of(V x, V y) {
   return vsqrt(x * x + y * y);
 }
 
-#define IFSFX_BATCH(name)                                                                        \
-  void b_##name(const BatchTerm& t, std::size_t n, const double* X, const double* Y, double* OX, \
-                double* OY)
+#define IFSFX_BATCH(name)        \
+  template <class In, class Out> \
+  void b_##name(const BatchTerm& t, std::size_t n, const In* X, const In* Y, Out* OX, Out* OY)
 
 IFSFX_BATCH(linear) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) { return VP{t.w * x, t.w * y}; });
@@ -178,11 +181,21 @@ IFSFX_BATCH(cylinder) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) { return VP{t.w * vsin(x), t.w * y}; });
 }
 IFSFX_BATCH(julian) {
-  const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2;
-  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+  const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2, ip = 1 / p;
+  // Two passes, the angle first: one pass's chain (atan2, then sincos) and its pow were more
+  // instructions than the core reorders at once, so one group of lanes waited for the last.
+  V angle[kBatchStride / kW + 1], radius[kBatchStride / kW + 1];
+  for (std::size_t i = 0; i < n; i += kW) {
+    const V x = load(X + i), y = load(Y + i);
+    radius[i / kW] = t.w * vpow_const(x * x + y * y, e);
+  }
+  for (std::size_t i = 0; i < n; i += kW) {
     const V p3 = vtrunc(ap * draw(t, 0, i));
-    const VSinCos sc = vsincos((vatan2(y, x) + 2.0 * kVPi * p3) / p);
-    const V k = t.w * vpow(x * x + y * y, splat(e));
+    angle[i / kW] = (vatan2(load(Y + i), load(X + i)) + 2.0 * kVPi * p3) * ip;
+  }
+  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
+    const VSinCos sc = vsincos(angle[i / kW]);
+    const V k = radius[i / kW];
     return VP{k * sc.c, k * sc.s};
   });
 }
@@ -302,11 +315,17 @@ IFSFX_BATCH(cosh) {
   });
 }
 IFSFX_BATCH(tanh) {
-  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
+  // sinh and cosh in a pass of their own (as julian's angle, for the reorder window).
+  V sh[kBatchStride / kW + 1], ch[kBatchStride / kW + 1];
+  for (std::size_t i = 0; i < n; i += kW) {
+    const VSinhCosh h = vsinhcosh(2.0 * load(X + i));
+    sh[i / kW] = h.s;
+    ch[i / kW] = h.c;
+  }
+  each(n, X, Y, OX, OY, [&](V, V y, std::size_t i) {
     const VSinCos sc = vsincos(2.0 * y);
-    const VSinhCosh h = vsinhcosh(2.0 * x);
-    const V d = t.w * (1.0 / (sc.c + h.c));
-    return VP{d * h.s, d * sc.s};
+    const V d = t.w * (1.0 / (sc.c + ch[i / kW]));
+    return VP{d * sh[i / kW], d * sc.s};
   });
 }
 IFSFX_BATCH(sech) {
@@ -337,9 +356,15 @@ IFSFX_BATCH(coth) {
 // flam3's later variations (flame/variations_flam3.cpp).
 IFSFX_BATCH(popcorn2) {
   const double* k = t.params;
-  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
-    const VSinCos a = vsincos(y * k[2]), b = vsincos(x * k[2]);
-    return VP{t.w * (x + k[0] * vsin(a.s / a.c)), t.w * (y + k[1] * vsin(b.s / b.c))};
+  // The tangents in a pass of their own (as julian's angle, for the reorder window).
+  V ta[kBatchStride / kW + 1], tb[kBatchStride / kW + 1];
+  for (std::size_t i = 0; i < n; i += kW) {
+    const VSinCos a = vsincos(load(Y + i) * k[2]), b = vsincos(load(X + i) * k[2]);
+    ta[i / kW] = a.s / a.c;
+    tb[i / kW] = b.s / b.c;
+  }
+  each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+    return VP{t.w * (x + k[0] * vsin(ta[i / kW])), t.w * (y + k[1] * vsin(tb[i / kW]))};
   });
 }
 IFSFX_BATCH(pie) {
@@ -402,8 +427,9 @@ IFSFX_BATCH(lazysusan) {
 IFSFX_BATCH(conic) {
   const double e = t.params[0], holes = t.params[1];
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
-    const V r = r_of(x, y) + kBEps, ct = x / r;
-    const V k = t.w * (draw(t, 0, i) - holes) * e / (1.0 + e * ct) / r;
+    // e/((1 + e·x/r)·r) as e/(r + e·x): one division where there were three.
+    const V r = r_of(x, y) + kBEps;
+    const V k = t.w * (draw(t, 0, i) - holes) * e / (r + e * x);
     return VP{k * x, k * y};
   });
 }
@@ -538,12 +564,12 @@ IFSFX_BATCH(noise) {
   });
 }
 IFSFX_BATCH(juliascope) {
-  const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2;
+  const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2, ip = 1 / p;
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
     const V p3 = vtrunc(ap * draw(t, 0, i));
     const V sign = sel(vfmod(p3, splat(2.0)) == 0.0, splat(1.0), splat(-1.0));
-    const VSinCos sc = vsincos((sign * vatan2(y, x) + 2.0 * kVPi * p3) / p);
-    const V k = t.w * vpow(x * x + y * y, splat(e));
+    const VSinCos sc = vsincos((sign * vatan2(y, x) + 2.0 * kVPi * p3) * ip);
+    const V k = t.w * vpow_const(x * x + y * y, e);
     return VP{k * sc.c, k * sc.s};
   });
 }
@@ -825,106 +851,115 @@ IFSFX_BATCH(blur_zoom) {
 
 #undef IFSFX_BATCH
 
+// A form's double and (at a float level) float instances, then its draws.
+#ifdef IFSFX_FLOAT_IO
+#define IFSFX_FORMS(fn) fn<double, double>, fn<float, float>
+#else
+#define IFSFX_FORMS(fn) fn<double, double>, nullptr
+#endif
+
 constexpr BatchVariation kTable[] = {
-    {"linear", b_linear},
-    {"sinusoidal", b_sinusoidal},
-    {"spherical", b_spherical},
-    {"swirl", b_swirl},
-    {"horseshoe", b_horseshoe},
-    {"polar", b_polar},
-    {"handkerchief", b_handkerchief},
-    {"heart", b_heart},
-    {"disc", b_disc},
-    {"spiral", b_spiral},
-    {"hyperbolic", b_hyperbolic},
-    {"diamond", b_diamond},
-    {"ex", b_ex},
-    {"julia", b_julia, 1},
-    {"bent", b_bent},
-    {"waves", b_waves},
-    {"fisheye", b_fisheye},
-    {"exponential", b_exponential},
-    {"power", b_power},
-    {"cosine", b_cosine},
-    {"eyefish", b_eyefish},
-    {"bubble", b_bubble},
-    {"cylinder", b_cylinder},
-    {"julian", b_julian, 1},
-    {"blur", b_blur, 2},
-    {"gaussian_blur", b_gaussian_blur, 5},
-    {"curl", b_curl},
-    {"tangent", b_tangent},
-    {"square", b_square, 2},
-    {"cross", b_cross},
-    {"exp", b_exp},
-    {"log", b_log},
-    {"sin", b_sin},
-    {"cos", b_cos},
-    {"tan", b_tan},
-    {"sec", b_sec},
-    {"csc", b_csc},
-    {"cot", b_cot},
-    {"sinh", b_sinh},
-    {"cosh", b_cosh},
-    {"tanh", b_tanh},
-    {"sech", b_sech},
-    {"csch", b_csch},
-    {"coth", b_coth},
-    {"popcorn2", b_popcorn2},
-    {"pie", b_pie, 3},
-    {"boarders", b_boarders, 1},
-    {"super_shape", b_super_shape, 1},
-    {"loonie", b_loonie},
-    {"lazysusan", b_lazysusan},
-    {"conic", b_conic, 1},
-    {"curve", b_curve},
-    {"flower", b_flower, 1},
-    {"whorl", b_whorl},
-    {"foci", b_foci},
-    {"bent2", b_bent2},
-    {"polar2", b_polar2},
-    {"waves2", b_waves2},
-    {"splits", b_splits},
-    {"popcorn", b_popcorn},
-    {"rings", b_rings},
-    {"fan", b_fan},
-    {"blob", b_blob},
-    {"pdj", b_pdj},
-    {"fan2", b_fan2},
-    {"rings2", b_rings2},
-    {"perspective", b_perspective},
-    {"noise", b_noise, 2},
-    {"juliascope", b_juliascope, 1},
-    {"radial_blur", b_radial_blur, 4},
-    {"ngon", b_ngon},
-    {"rectangles", b_rectangles},
-    {"arch", b_arch, 1},
-    {"rays", b_rays, 1},
-    {"blade", b_blade, 1},
-    {"secant2", b_secant2},
-    {"flux", b_flux},
-    {"disc2", b_disc2},
-    {"oscilloscope", b_oscilloscope},
-    {"stripes", b_stripes},
-    {"hemisphere", b_hemisphere},
-    {"parabola", b_parabola, 2},
-    {"butterfly", b_butterfly},
-    {"scry", b_scry},
-    {"split", b_split},
-    {"escher", b_escher},
-    {"cell", b_cell},
-    {"mobius", b_mobius},
-    {"Mobius", b_mobius},
-    {"linear3D", b_linear},
-    {"wedge", b_wedge},
-    {"wedge_julia", b_wedge_julia, 1},
-    {"wedge_sph", b_wedge_sph},
-    {"modulus", b_modulus},
-    {"separation", b_separation},
-    {"bipolar", b_bipolar},
-    {"elliptic", b_elliptic},
-    {"edisc", b_edisc},
-    {"sineblur", b_sineblur, 2},
-    {"blur_linear", b_blur_linear, 1},
-    {"blur_zoom", b_blur_zoom, 1},
+    {"linear", IFSFX_FORMS(b_linear), 0},
+    {"sinusoidal", IFSFX_FORMS(b_sinusoidal), 0},
+    {"spherical", IFSFX_FORMS(b_spherical), 0},
+    {"swirl", IFSFX_FORMS(b_swirl), 0},
+    {"horseshoe", IFSFX_FORMS(b_horseshoe), 0},
+    {"polar", IFSFX_FORMS(b_polar), 0},
+    {"handkerchief", IFSFX_FORMS(b_handkerchief), 0},
+    {"heart", IFSFX_FORMS(b_heart), 0},
+    {"disc", IFSFX_FORMS(b_disc), 0},
+    {"spiral", IFSFX_FORMS(b_spiral), 0},
+    {"hyperbolic", IFSFX_FORMS(b_hyperbolic), 0},
+    {"diamond", IFSFX_FORMS(b_diamond), 0},
+    {"ex", IFSFX_FORMS(b_ex), 0},
+    {"julia", IFSFX_FORMS(b_julia), 1},
+    {"bent", IFSFX_FORMS(b_bent), 0},
+    {"waves", IFSFX_FORMS(b_waves), 0},
+    {"fisheye", IFSFX_FORMS(b_fisheye), 0},
+    {"exponential", IFSFX_FORMS(b_exponential), 0},
+    {"power", IFSFX_FORMS(b_power), 0},
+    {"cosine", IFSFX_FORMS(b_cosine), 0},
+    {"eyefish", IFSFX_FORMS(b_eyefish), 0},
+    {"bubble", IFSFX_FORMS(b_bubble), 0},
+    {"cylinder", IFSFX_FORMS(b_cylinder), 0},
+    {"julian", IFSFX_FORMS(b_julian), 1},
+    {"blur", IFSFX_FORMS(b_blur), 2},
+    {"gaussian_blur", IFSFX_FORMS(b_gaussian_blur), 5},
+    {"curl", IFSFX_FORMS(b_curl), 0},
+    {"tangent", IFSFX_FORMS(b_tangent), 0},
+    {"square", IFSFX_FORMS(b_square), 2},
+    {"cross", IFSFX_FORMS(b_cross), 0},
+    {"exp", IFSFX_FORMS(b_exp), 0},
+    {"log", IFSFX_FORMS(b_log), 0},
+    {"sin", IFSFX_FORMS(b_sin), 0},
+    {"cos", IFSFX_FORMS(b_cos), 0},
+    {"tan", IFSFX_FORMS(b_tan), 0},
+    {"sec", IFSFX_FORMS(b_sec), 0},
+    {"csc", IFSFX_FORMS(b_csc), 0},
+    {"cot", IFSFX_FORMS(b_cot), 0},
+    {"sinh", IFSFX_FORMS(b_sinh), 0},
+    {"cosh", IFSFX_FORMS(b_cosh), 0},
+    {"tanh", IFSFX_FORMS(b_tanh), 0},
+    {"sech", IFSFX_FORMS(b_sech), 0},
+    {"csch", IFSFX_FORMS(b_csch), 0},
+    {"coth", IFSFX_FORMS(b_coth), 0},
+    {"popcorn2", IFSFX_FORMS(b_popcorn2), 0},
+    {"pie", IFSFX_FORMS(b_pie), 3},
+    {"boarders", IFSFX_FORMS(b_boarders), 1},
+    {"super_shape", IFSFX_FORMS(b_super_shape), 1},
+    {"loonie", IFSFX_FORMS(b_loonie), 0},
+    {"lazysusan", IFSFX_FORMS(b_lazysusan), 0},
+    {"conic", IFSFX_FORMS(b_conic), 1},
+    {"curve", IFSFX_FORMS(b_curve), 0},
+    {"flower", IFSFX_FORMS(b_flower), 1},
+    {"whorl", IFSFX_FORMS(b_whorl), 0},
+    {"foci", IFSFX_FORMS(b_foci), 0},
+    {"bent2", IFSFX_FORMS(b_bent2), 0},
+    {"polar2", IFSFX_FORMS(b_polar2), 0},
+    {"waves2", IFSFX_FORMS(b_waves2), 0},
+    {"splits", IFSFX_FORMS(b_splits), 0},
+    {"popcorn", IFSFX_FORMS(b_popcorn), 0},
+    {"rings", IFSFX_FORMS(b_rings), 0},
+    {"fan", IFSFX_FORMS(b_fan), 0},
+    {"blob", IFSFX_FORMS(b_blob), 0},
+    {"pdj", IFSFX_FORMS(b_pdj), 0},
+    {"fan2", IFSFX_FORMS(b_fan2), 0},
+    {"rings2", IFSFX_FORMS(b_rings2), 0},
+    {"perspective", IFSFX_FORMS(b_perspective), 0},
+    {"noise", IFSFX_FORMS(b_noise), 2},
+    {"juliascope", IFSFX_FORMS(b_juliascope), 1},
+    {"radial_blur", IFSFX_FORMS(b_radial_blur), 4},
+    {"ngon", IFSFX_FORMS(b_ngon), 0},
+    {"rectangles", IFSFX_FORMS(b_rectangles), 0},
+    {"arch", IFSFX_FORMS(b_arch), 1},
+    {"rays", IFSFX_FORMS(b_rays), 1},
+    {"blade", IFSFX_FORMS(b_blade), 1},
+    {"secant2", IFSFX_FORMS(b_secant2), 0},
+    {"flux", IFSFX_FORMS(b_flux), 0},
+    {"disc2", IFSFX_FORMS(b_disc2), 0},
+    {"oscilloscope", IFSFX_FORMS(b_oscilloscope), 0},
+    {"stripes", IFSFX_FORMS(b_stripes), 0},
+    {"hemisphere", IFSFX_FORMS(b_hemisphere), 0},
+    {"parabola", IFSFX_FORMS(b_parabola), 2},
+    {"butterfly", IFSFX_FORMS(b_butterfly), 0},
+    {"scry", IFSFX_FORMS(b_scry), 0},
+    {"split", IFSFX_FORMS(b_split), 0},
+    {"escher", IFSFX_FORMS(b_escher), 0},
+    {"cell", IFSFX_FORMS(b_cell), 0},
+    {"mobius", IFSFX_FORMS(b_mobius), 0},
+    {"Mobius", IFSFX_FORMS(b_mobius), 0},
+    {"linear3D", IFSFX_FORMS(b_linear), 0},
+    {"wedge", IFSFX_FORMS(b_wedge), 0},
+    {"wedge_julia", IFSFX_FORMS(b_wedge_julia), 1},
+    {"wedge_sph", IFSFX_FORMS(b_wedge_sph), 0},
+    {"modulus", IFSFX_FORMS(b_modulus), 0},
+    {"separation", IFSFX_FORMS(b_separation), 0},
+    {"bipolar", IFSFX_FORMS(b_bipolar), 0},
+    {"elliptic", IFSFX_FORMS(b_elliptic), 0},
+    {"edisc", IFSFX_FORMS(b_edisc), 0},
+    {"sineblur", IFSFX_FORMS(b_sineblur), 2},
+    {"blur_linear", IFSFX_FORMS(b_blur_linear), 1},
+    {"blur_zoom", IFSFX_FORMS(b_blur_zoom), 1},
 };
+
+#undef IFSFX_FORMS

@@ -42,10 +42,16 @@ struct BatchTerm {
 using BatchFunction = void (*)(const BatchTerm& t, std::size_t n, const double* x, const double* y,
                                double* ox, double* oy);
 
+// The same over float arrays, the sums in float: a float form's points rounded once for all the
+// terms of an xform's sum (flame/xform_step.cpp), not once a term.
+using BatchFunctionF = void (*)(const BatchTerm& t, std::size_t n, const float* x, const float* y,
+                                float* ox, float* oy);
+
 struct BatchVariation {
   std::string_view name;  // the registry's name
   BatchFunction function = nullptr;
-  int draws = 0;  // uniforms per point
+  BatchFunctionF function_f = nullptr;  // float lanes only
+  int draws = 0;                        // uniforms per point
 };
 
 // The arithmetic of a batch form's lanes: doubles (four a register on AVX2) or floats (eight;
@@ -105,12 +111,25 @@ using PlotFunction = std::size_t (*)(const PlotTables& t, std::uint32_t* bins, s
 
 PlotFunction plot_function(CpuLevel level);
 
+// The walkers listed by the xform each picked: order[first[j], first[j + 1]) holds the walkers
+// i < m with k[i] = j, in ascending order, for j < steps ≤ kListXforms. Reads k up to m rounded
+// up to 8, writes up to m + 8 entries of order and steps + 1 of first. On AVX2 eight walkers at
+// a time for each xform (compare, mask, a table's permutation): the counting sort it replaces
+// waited on its counters in memory (a third of the walk's own time, perf at 27 Nov 17:30).
+inline constexpr std::size_t kListXforms = 8;
+using ListFunction = void (*)(const std::uint32_t* k, std::size_t m, std::size_t steps,
+                              std::uint32_t* order, std::size_t* first);
+
+ListFunction list_function(CpuLevel level);
+
 }  // namespace ifsfx::flame::detail
 
 // Each level's table (flame/batch_scalar.cpp, flame/batch_avx2.cpp), in the kernel namespaces
 // that alone may hold instructions beyond baseline x86-64 (tests/ifs/kernel_isolation_test.sh).
 namespace ifsfx::detail::kernel_scalar {
 std::span<const flame::detail::BatchVariation> flame_batch_table();
+void flame_list_by_xform(const std::uint32_t* k, std::size_t m, std::size_t steps,
+                         std::uint32_t* order, std::size_t* first);
 std::span<const flame::detail::BatchVariation> flame_batch_table_f32();
 std::size_t flame_bin_numbers(const flame::detail::BinGrid& g, std::size_t n, const double* x,
                               const double* y, std::uint32_t* at);
@@ -120,6 +139,8 @@ std::size_t flame_plot(const flame::detail::PlotTables& t, std::uint32_t* bins, 
 }  // namespace ifsfx::detail::kernel_scalar
 namespace ifsfx::detail::kernel_avx2 {
 std::span<const flame::detail::BatchVariation> flame_batch_table();
+void flame_list_by_xform(const std::uint32_t* k, std::size_t m, std::size_t steps,
+                         std::uint32_t* order, std::size_t* first);
 std::span<const flame::detail::BatchVariation> flame_batch_table_f32();
 std::size_t flame_bin_numbers(const flame::detail::BinGrid& g, std::size_t n, const double* x,
                               const double* y, std::uint32_t* at);

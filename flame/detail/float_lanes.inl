@@ -6,7 +6,9 @@
 // it for GCC's vectors). Included inside a level's anonymous namespace after it defines F (float
 // or a GCC vector of kW floats), I (its bits as unsigned 32-bit integers), kW and
 //   F splat_f(float), F sqrt_f(F), bool any_f(M), F load_f(const double*) (kW doubles rounded),
-//   void add_to_f(double*, F) (kW doubles += the floats widened),
+//   void add_to_f(double*, F) (kW doubles += the floats widened), F loadu_f(const float*) and
+//   void storeu_f(float*, F) (kW floats, unaligned), F round_f(F), floor_f(F), trunc_f(F) (to
+//   the nearest integer, ties to even, below, toward 0: exact, one instruction on AVX2),
 // all with the same rounding on every level (IEEE single operations, no fused multiply-add).
 
 using M = decltype(F{} < F{});
@@ -66,6 +68,13 @@ inline V load(const double* p) {
 inline void add_to(double* p, V v) {
   add_to_f(p, v.v);
 }
+// The float arrays of an xform's sum (BatchFunctionF): no conversion, the sum in float.
+inline V load(const float* p) {
+  return {loadu_f(p)};
+}
+inline void add_to(float* p, V v) {
+  storeu_f(p, loadu_f(p) + v.v);
+}
 inline V sel(M m, V a, V b) {
   return {m ? a.v : b.v};
 }
@@ -74,6 +83,15 @@ inline bool any(M m) {
 }
 inline V vsqrt(V x) {
   return {sqrt_f(x.v)};
+}
+inline V vround(V x) {
+  return {round_f(x.v)};
+}
+inline V vfloor(V x) {
+  return {floor_f(x.v)};
+}
+inline V vtrunc(V x) {
+  return {trunc_f(x.v)};
 }
 inline I as_bits(V x) {
   return bits_f(x.v);

@@ -158,6 +158,12 @@ inline V vpow(V x, V y) {
   return vexp(y * vlog(x));
 }
 
+// x^e for a term's constant e (vmath_f32.inl takes square roots for e = ½ and ¼; the double
+// forms keep their bits).
+inline V vpow_const(V x, double e) {
+  return vpow(x, splat(e));
+}
+
 // atan on [−0.2, 0.66] (Cephes' rational form).
 inline V atan_core(V t) {
   const V z = t * t;

@@ -10,25 +10,13 @@ constexpr double kVPi = 3.14159265358979323846;
 constexpr double kVMagic = 0x1.8p23;  // x + 1.5·2^23 − 1.5·2^23 rounds |x| < 2^22 to an integer
 constexpr double kLn2Hi = 0.693359375, kLn2Lo = -2.12194440e-4;  // ln 2 = hi + lo, hi exact
 
+// |x|: the sign bit cleared (one and, where a compare and a blend were).
 inline V vabs(V x) {
-  return sel(x < 0.0, -x, x);
+  return from_bits(as_bits(x) & 0x7fffffffu);
 }
 
-// The nearest integer (ties to even), for |x| < 2^22; larger |x| are integers already.
-inline V vround(V x) {
-  const V r = (x + kVMagic) - kVMagic;
-  return sel(vabs(x) < 0x1p22, r, x);
-}
-
-inline V vfloor(V x) {
-  const V r = vround(x);
-  return sel(r > x, r - 1.0, r);
-}
-
-inline V vtrunc(V x) {
-  const V f = vfloor(vabs(x));
-  return sel(x < 0.0, -f, f);
-}
+// vround, vfloor and vtrunc are the level's (flame/detail/float_lanes.inl): one rounding
+// instruction on AVX2, exact, so every level gives the same integers.
 
 inline V vfmod(V x, V y) {
   return x - vtrunc(x / y) * y;
@@ -130,6 +118,15 @@ inline V vpow(V x, V y) {
   return vexp(y * vlog(x));
 }
 
+// x^e for x ≥ 0 and a term's constant e: by square roots for e = ½ and ¼ (julian's and
+// juliascope's d/(2p) at d = 1, p = 1 or 2; correctly rounded, where e^(e·ln x) was a log, a
+// division and an exp), else vpow. The branch is the same for every point of the term.
+inline V vpow_const(V x, double e) {
+  if (e == 0.5) return vsqrt(x);
+  if (e == 0.25) return vsqrt(vsqrt(x));
+  return vpow(x, splat(e));
+}
+
 // atan on [−tan π/8, tan π/8] (Cephes' atanf polynomial).
 inline V atan_core(V t) {
   const V z = t * t;
@@ -139,16 +136,19 @@ inline V atan_core(V t) {
   return t + t * z * p;
 }
 
-// atan2(y, x) in (−π, π], as vmath.inl's: the smaller over the larger |coordinate|, above
-// tan π/8 through atan a = π/4 + atan((a − 1)/(a + 1)), reflected into its octant.
+// atan2(y, x) in (−π, π], as vmath.inl's: atan of the smaller over the larger |coordinate| a,
+// above tan π/8 through atan a = π/4 + atan((a − 1)/(a + 1)), reflected into its octant. The
+// quotient is taken once, numerator and denominator chosen first: (small − big)/(small + big)
+// above tan π/8, small/big below (one division where there were two).
 inline V vatan2(V y, V x) {
   const V ax = vabs(x), ay = vabs(y);
-  const V big = sel(ax > ay, ax, ay), small = sel(ax > ay, ay, ax);
-  const V a = sel(big > 0.0, small / big, splat(0.0));
-  const M far = a > 0.41421356237309504880;
-  const V t = sel(far, (a - 1.0) / (a + 1.0), a);
+  const M swap = ay > ax;
+  const V big = sel(swap, ay, ax), small = sel(swap, ax, ay);
+  const M far = small > 0.41421356237309504880 * big;
+  const V num = sel(far, small - big, small), den = sel(far, small + big, big);
+  const V t = sel(big == 0.0, splat(0.0), num / den);
   V ang = atan_core(t) + sel(far, splat(kVPi / 4), splat(0.0));
-  ang = sel(ay > ax, kVPi / 2 - ang, ang);
+  ang = sel(swap, kVPi / 2 - ang, ang);
   ang = sel(x < 0.0, kVPi - ang, ang);
   ang = sel(y < 0.0, -ang, ang);
   return sel((x != x) | (y != y), splat(NAN), ang);

@@ -44,9 +44,10 @@ struct Term {
 };
 
 // The arrays one xform's batch works in: the affine point q, a term's result t, the sum s and
-// the random draws u.
+// the random draws u; q rounded to float once (f) and the float terms' sum (fs).
 struct Scratch {
   std::array<double, kStepStride> qx{}, qy{}, tx{}, ty{}, sx{}, sy{};
+  std::array<float, kStepStride> fx{}, fy{}, fsx{}, fsy{};
   std::vector<double> u;
 };
 
@@ -62,6 +63,11 @@ struct XformStep {
   // Only affine: no pre_/post_ terms and every term of the sum `linear` (an IFS drawn as a
   // flame), so that one point goes through it on its own without the arrays (moved()).
   bool affine_only = false;
+  // Some term of the sum has a float form over float arrays (BatchVariation::function_f): the
+  // sum's float terms read one float copy of the point and add in float, the total added to
+  // the double terms' sum once (flame/xform_step.cpp).
+  bool float_sum = false;
+  bool double_sum = false;  // and some term adds in double (linear, no float form)
 
   // One point through an affine_only xform: the operations of operator() on it, in its order
   // (the sum starts from 0 and adds w·q term by term, as the batch does), so the bits are equal.
@@ -88,8 +94,11 @@ struct XformStep {
                   Rng& rng) const;
 
  private:
-  // The points [0, n) of (w.qx, w.qy) through the xform; where the result is.
+  // The points [0, n) of (w.qx, w.qy), the pre-affine map applied, through the pre_ terms, the
+  // sum and the post_ terms; where the result is (the post map is the caller's).
   std::pair<double*, double*> move_scratch(std::size_t n, Scratch& w, Rng& rng) const;
+  // (w.sx, w.sy) ← the weighted sum of the terms at the points [0, n) of (w.qx, w.qy).
+  void sum(std::size_t n, Scratch& w, Rng& rng) const;
   // (x, y) ← each term of `terms` in order, over points [0, n).
   void chain(const std::vector<Term>& terms, std::size_t n, double* x, double* y, Scratch& w,
              Rng& rng) const;

@@ -284,6 +284,49 @@ TEST(render_flame, bin_numbers_are_the_cameras_bins_at_every_kernel_level) {
   }
 }
 
+// The walk's listing of walkers by xform: each xform's walkers in ascending order at a known
+// pick, and every kernel level the scalar level's list on random picks of 1 to 8 xforms and
+// walker counts that are not whole vectors.
+TEST(render_flame, walkers_are_listed_by_xform_in_order_at_every_kernel_level) {
+  const std::vector<std::uint32_t> k = {2, 0, 2, 1, 0, 0, 2, 2, 1, 0, 2, 0, 0, 0, 0, 0};
+  const std::size_t m = 11;  // the last five entries of k are padding
+  for (CpuLevel level : supported_cpu_levels()) {
+    std::vector<std::uint32_t> order(m + 8, 99);
+    std::vector<std::size_t> first(4);
+    detail::list_function(level)(k.data(), m, 3, order.data(), first.data());
+    EXPECT_EQ(first, (std::vector<std::size_t>{0, 4, 6, 11})) << to_string(level);
+    order.resize(m);
+    EXPECT_EQ(order, (std::vector<std::uint32_t>{1, 4, 5, 9, 3, 8, 0, 2, 6, 7, 10}))
+        << to_string(level);
+  }
+  Rng rng(11);
+  for (std::size_t steps = 1; steps <= detail::kListXforms; ++steps) {
+    const std::size_t n = 256 - 3 * steps;
+    std::vector<std::uint32_t> picks(n + 8, 0);
+    for (std::size_t i = 0; i < n; ++i) picks[i] = rng.below(static_cast<std::uint32_t>(steps));
+    std::vector<std::uint32_t> ref(n + 8);
+    std::vector<std::size_t> ref_first(steps + 1);
+    detail::list_function(CpuLevel::scalar)(picks.data(), n, steps, ref.data(), ref_first.data());
+    EXPECT_EQ(ref_first[steps], n);
+    for (std::size_t j = 0; j < steps; ++j)
+      for (std::size_t i = ref_first[j]; i < ref_first[j + 1]; ++i) {
+        EXPECT_EQ(picks[ref[i]], j);
+        if (i > ref_first[j]) {
+          EXPECT_LT(ref[i - 1], ref[i]);
+        }
+      }
+    for (CpuLevel level : supported_cpu_levels()) {
+      std::vector<std::uint32_t> order(n + 8);
+      std::vector<std::size_t> first(steps + 1);
+      detail::list_function(level)(picks.data(), n, steps, order.data(), first.data());
+      EXPECT_EQ(first, ref_first) << to_string(level) << " " << steps;
+      EXPECT_TRUE(
+          std::equal(ref.begin(), ref.begin() + static_cast<std::ptrdiff_t>(n), order.begin()))
+          << to_string(level) << " " << steps;
+    }
+  }
+}
+
 // The walk's plot kernel: a step palette's entry ⌊256·c⌋ and a linear palette's mix of two
 // entries at known coordinates, a sum wrapped past 2³² reported where it happened, and every
 // kernel level the scalar level's sums and wraps on random hits.

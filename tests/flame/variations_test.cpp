@@ -190,10 +190,12 @@ namespace ifsfx::flame {
 namespace {
 
 // One batch form over `n` points, its draws taken from `rng` as the walker takes them (point by
-// point, each point's draws in order).
+// point, each point's draws in order); `floats`: its instance over float arrays (function_f, as
+// an xform's sum runs a float form), the points rounded to float and the sums in float.
 std::vector<double> run_batch(const detail::BatchVariation& b, const std::vector<double>& params,
                               const AffineMap& pre, const std::vector<double>& x,
-                              const std::vector<double>& y, std::uint64_t seed) {
+                              const std::vector<double>& y, std::uint64_t seed,
+                              bool floats = false) {
   using detail::kBatchStride;
   Rng rng(seed);
   std::vector<double> u(static_cast<std::size_t>(b.draws) * kBatchStride + kBatchStride);
@@ -203,8 +205,16 @@ std::vector<double> run_batch(const detail::BatchVariation& b, const std::vector
   std::vector<double> px(kBatchStride), py(kBatchStride), ox(kBatchStride), oy(kBatchStride);
   std::copy(x.begin(), x.end(), px.begin());
   std::copy(y.begin(), y.end(), py.begin());
-  b.function({.w = 0.7, .params = params.data(), .pre = &pre, .u = u.data()}, x.size(), px.data(),
-             py.data(), ox.data(), oy.data());
+  const detail::BatchTerm t{.w = 0.7, .params = params.data(), .pre = &pre, .u = u.data()};
+  if (floats) {
+    std::vector<float> fx(px.begin(), px.end()), fy(py.begin(), py.end());
+    std::vector<float> fox(kBatchStride), foy(kBatchStride);
+    b.function_f(t, x.size(), fx.data(), fy.data(), fox.data(), foy.data());
+    std::copy(fox.begin(), fox.end(), ox.begin());
+    std::copy(foy.begin(), foy.end(), oy.begin());
+  } else {
+    b.function(t, x.size(), px.data(), py.data(), ox.data(), oy.data());
+  }
   std::vector<double> out;
   for (std::size_t i = 0; i < x.size(); ++i) out.insert(out.end(), {ox[i], oy[i]});
   return out;
@@ -214,9 +224,9 @@ std::vector<double> run_batch(const detail::BatchVariation& b, const std::vector
 // random numbers) than tol·(1 + |value|).
 int far_from_registry(const detail::BatchVariation& b, const std::vector<double>& params,
                       const AffineMap& pre, const std::vector<double>& x,
-                      const std::vector<double>& y, double tol) {
+                      const std::vector<double>& y, double tol, bool floats) {
   const Variation* v = find_variation(b.name);
-  const std::vector<double> ours = run_batch(b, params, pre, x, y, 5);
+  const std::vector<double> ours = run_batch(b, params, pre, x, y, 5, floats);
   Rng rng(5);
   int far = 0;
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -230,7 +240,8 @@ int far_from_registry(const detail::BatchVariation& b, const std::vector<double>
 // Every batch form (the chaos game's, flame/detail/batch_variations.h) gives its registry
 // function's value at random points and parameters, drawing the same random numbers — to 1e-9 in
 // double lanes, to 2e-4 in float lanes (their polynomials and the point's rounding to float) —
-// and every level gives the scalar level's bits for each lane type. In float lanes 2 % of a
+// and every level gives the scalar level's bits for each lane type (a float form's instance over
+// float arrays too, the one an xform's sum runs). In float lanes 2 % of a
 // form's values may be further: near its singular points a float rounding of the point moves the
 // value by more (popcorn's and popcorn2's sin(tan(k·y)) near tan's poles, where sec²(k·y) > 3000
 // on about 1.2 % of the points; cross's 1/|x² − y²| near x = ±y). A wrong form misses on most.
@@ -255,15 +266,21 @@ TEST(variations, batch_forms_equal_the_registry_and_every_level_the_scalar_bits)
         x.push_back(6 * pick.uniform() - 3);
         y.push_back(6 * pick.uniform() - 3);
       }
-      EXPECT_LE(far_from_registry(b, params, pre, x, y, tol), far_allowed(type, 2 * x.size()))
-          << b.name << (type == detail::LaneType::f32 ? " in float lanes" : "");
-      const std::vector<double> ours = run_batch(b, params, pre, x, y, 5);
-      for (CpuLevel level : supported_cpu_levels()) {
-        const detail::BatchVariation* other = detail::find_batch_variation(level, b.name, type);
-        ASSERT_NE(other, nullptr) << b.name << " at " << to_string(level);
-        const std::vector<double> theirs = run_batch(*other, params, pre, x, y, 5);
-        EXPECT_EQ(0, std::memcmp(theirs.data(), ours.data(), ours.size() * sizeof(double)))
-            << b.name << " at " << to_string(level);
+      const bool f32 = type == detail::LaneType::f32;
+      ASSERT_EQ(f32, b.function_f != nullptr) << b.name;
+      for (int pass = 0; pass < (f32 ? 2 : 1); ++pass) {
+        const bool floats = pass == 1;
+        EXPECT_LE(far_from_registry(b, params, pre, x, y, tol, floats),
+                  far_allowed(type, 2 * x.size()))
+            << b.name << (f32 ? " in float lanes" : "") << (floats ? " over floats" : "");
+        const std::vector<double> ours = run_batch(b, params, pre, x, y, 5, floats);
+        for (CpuLevel level : supported_cpu_levels()) {
+          const detail::BatchVariation* other = detail::find_batch_variation(level, b.name, type);
+          ASSERT_NE(other, nullptr) << b.name << " at " << to_string(level);
+          const std::vector<double> theirs = run_batch(*other, params, pre, x, y, 5, floats);
+          EXPECT_EQ(0, std::memcmp(theirs.data(), ours.data(), ours.size() * sizeof(double)))
+              << b.name << " at " << to_string(level) << (floats ? " over floats" : "");
+        }
       }
     }
   }
