@@ -280,7 +280,8 @@ IFSFX_BATCH(sec) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(x);
     const VSinhCosh h = vsinhcosh(y);
-    const V d = t.w * (2.0 / (vcos(2.0 * x) + vcosh(2.0 * y)));
+    // cos 2x + cosh 2y = 2(cos² x + sinh² y): no second sincos and sinhcosh.
+    const V d = t.w * (1.0 / (sc.c * sc.c + h.s * h.s));
     return VP{d * (sc.c * h.c), d * (sc.s * h.s)};
   });
 }
@@ -288,7 +289,8 @@ IFSFX_BATCH(csc) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(x);
     const VSinhCosh h = vsinhcosh(y);
-    const V d = t.w * (2.0 / (vcosh(2.0 * y) - vcos(2.0 * x)));
+    // cosh 2y − cos 2x = 2(sinh² y + sin² x): no second sincos and sinhcosh, no cancellation.
+    const V d = t.w * (1.0 / (h.s * h.s + sc.s * sc.s));
     return VP{d * (sc.s * h.c), d * (-sc.c * h.s)};
   });
 }
@@ -332,7 +334,8 @@ IFSFX_BATCH(sech) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(y);
     const VSinhCosh h = vsinhcosh(x);
-    const V d = t.w * (2.0 / (vcos(2.0 * y) + vcosh(2.0 * x)));
+    // cos 2y + cosh 2x = 2(cos² y + sinh² x), as sec's.
+    const V d = t.w * (1.0 / (sc.c * sc.c + h.s * h.s));
     return VP{d * (sc.c * h.c), d * (-sc.s * h.s)};
   });
 }
@@ -340,7 +343,8 @@ IFSFX_BATCH(csch) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) {
     const VSinCos sc = vsincos(y);
     const VSinhCosh h = vsinhcosh(x);
-    const V d = t.w * (2.0 / (vcosh(2.0 * x) - vcos(2.0 * y)));
+    // cosh 2x − cos 2y = 2(sinh² x + sin² y), as csc's.
+    const V d = t.w * (1.0 / (h.s * h.s + sc.s * sc.s));
     return VP{d * (h.s * sc.c), d * (-h.c * sc.s)};
   });
 }
