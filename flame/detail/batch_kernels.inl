@@ -398,6 +398,20 @@ IFSFX_BATCH(boarders) {
 IFSFX_BATCH(super_shape) {
   const double* k = t.params;
   const double rnd = k[0], m = k[1], n1 = k[2], n2 = k[3], n3 = k[4], holes = k[5];
+  if (m == 0) {
+    // m = 0, as flam3-genome writes it: the angle is 0·atan2 + π/4 = π/4 at every point, so the
+    // radius factor (t1 + t2)^(−1/n1) is one value for the term, by the same operations: the
+    // same bits, three pows and a sincos fewer a point.
+    const VSinCos sc = vsincos(splat(kVPi / 4));
+    const V t1 = vpow(vabs(sc.c), splat(n2)), t2 = vpow(vabs(sc.s), splat(n3));
+    const V q = vpow(t1 + t2, splat(-1 / n1));
+    each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
+      const V r = r_of(x, y);
+      const V f = t.w * ((rnd * draw(t, 0, i) + (1 - rnd) * r - holes) * q) / (r + kBEps);
+      return VP{f * x, f * y};
+    });
+    return;
+  }
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
     const VSinCos sc = vsincos(m / 4 * vatan2(y, x) + kVPi / 4);
     const V t1 = vpow(vabs(sc.c), splat(n2)), t2 = vpow(vabs(sc.s), splat(n3));
