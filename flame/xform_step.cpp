@@ -163,7 +163,9 @@ void XformStep::sum(std::size_t n, Scratch& w, Rng& rng) const {
       run_term(t, pre, n, w.qx.data(), w.qy.data(), w.sx.data(), w.sy.data(), w, rng);
   }
   if (!float_sum) return;
-  for (std::size_t i = 0; i < n; ++i) {
+  // Through the padding too: without double terms the sums there were not zeroed, and a post_
+  // term reads them (stale values, not a number perhaps, would send its lanes to libm).
+  for (std::size_t i = 0; i < padded; ++i) {
     w.sx[i] = double_sum ? w.sx[i] + w.fsx[i] : w.fsx[i];
     w.sy[i] = double_sum ? w.sy[i] + w.fsy[i] : w.fsy[i];
   }

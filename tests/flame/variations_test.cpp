@@ -286,5 +286,37 @@ TEST(variations, batch_forms_equal_the_registry_and_every_level_the_scalar_bits)
   }
 }
 
+// super_shape with m = 0, as flam3-genome writes it, takes its radius factor once for the term
+// (the random parameters above never give m = 0): still the registry's values, and every level
+// the scalar bits, in both lane types.
+TEST(variations, super_shape_of_m_0_equals_the_registry_at_every_level) {
+  const AffineMap pre{1, 0, 0, 1, 0, 0};
+  const std::vector<double> params = {0.18, 0, 39.3, 6.7, 6.7, 0.1};  // rnd m n1 n2 n3 holes
+  Rng pick(7);
+  std::vector<double> x, y;
+  for (std::size_t i = 0; i < detail::kBatchLanes; ++i) {
+    x.push_back(6 * pick.uniform() - 3);
+    y.push_back(6 * pick.uniform() - 3);
+  }
+  for (const auto type : {detail::LaneType::f64, detail::LaneType::f32}) {
+    const detail::BatchVariation* b =
+        detail::find_batch_variation(CpuLevel::scalar, "super_shape", type);
+    ASSERT_NE(b, nullptr);
+    const bool f32 = type == detail::LaneType::f32;
+    for (int pass = 0; pass < (f32 ? 2 : 1); ++pass) {
+      const bool floats = pass == 1;
+      EXPECT_EQ(far_from_registry(*b, params, pre, x, y, f32 ? 2e-4 : 1e-9, floats), 0);
+      const std::vector<double> ours = run_batch(*b, params, pre, x, y, 5, floats);
+      for (CpuLevel level : supported_cpu_levels()) {
+        const std::vector<double> theirs =
+            run_batch(*detail::find_batch_variation(level, "super_shape", type), params, pre, x, y,
+                      5, floats);
+        EXPECT_EQ(0, std::memcmp(theirs.data(), ours.data(), ours.size() * sizeof(double)))
+            << to_string(level);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace ifsfx::flame
