@@ -191,12 +191,13 @@ class Walk {
 
   template <class Plot>
   void walk(std::uint64_t seed, std::uint64_t chunk, std::uint64_t points, Plot&& plot) const {
-    given_up_ += lanes_ ? lanes_->walk(seed, chunk, points, plot)
-                        : batch_->walk(seed, chunk, points,
-                                       [&plot](const flame::detail::WalkHits& hits) {
-                                         for (std::size_t i = 0; i < hits.n; ++i)
-                                           plot(hits.pixel[i], hits.key[i]);
-                                       });
+    if (lanes_) {
+      given_up_ += lanes_->walk(seed, chunk, points, plot);
+      return;
+    }
+    given_up_ += batch_->walk(seed, chunk, points, [&plot](const flame::detail::WalkHits& hits) {
+      for (std::size_t i = 0; i < hits.n; ++i) plot(hits.pixel[i], hits.key[i]);
+    });
   }
 
   // The points the walks so far gave up (their walkers' step budget ran out), of any thread: a

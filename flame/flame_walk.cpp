@@ -34,7 +34,7 @@ struct FlameWalk::Walkers {
   std::array<std::uint64_t, kN> budget{};  // steps it may still take (kStepBudget)
   std::array<std::uint32_t, kN> live{}, order{}, plotted{};
   std::size_t n_live = 0;
-  bool gave_up = false;  // a walker gave up this step: the live list is to be pruned
+  bool gave_up = false;        // a walker gave up this step: the live list is to be pruned
   std::uint64_t given_up = 0;  // the points the walkers that gave up had left
   std::vector<std::size_t> first, next;  // the counting sort's, per xform
 

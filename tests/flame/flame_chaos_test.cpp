@@ -202,8 +202,7 @@ TEST(flame_chaos, a_flame_whose_orbits_always_escape_ends_with_an_empty_picture)
   // The points given up are not counted as plotted (the command's summary prints the count).
   for (const Flame& f : {affine, batched}) {
     RenderStats stats;
-    EXPECT_EQ(cv::countNonZero(flame_attractor(f, {16, 16}, {.quality = 4, .seed = 1}, &stats)),
-              0);
+    EXPECT_EQ(cv::countNonZero(flame_attractor(f, {16, 16}, {.quality = 4, .seed = 1}, &stats)), 0);
     EXPECT_EQ(stats.points, 0u);
     const TopSymbols tops =
         flame_top_symbols(f, {16, 16}, {.sampling = {.quality = 4, .seed = 1}, .exact = false});
