@@ -135,9 +135,9 @@ struct FitOptions {
   // the default budget) and is skipped when that is over a tenth of max_evaluations. 0 = none.
   int similarity_starts = 2;
   // FitMethod::attractor: the share of the attractor's stages given to re-seeding maps where the
-  // error is (reseed.h, issue 32 item 3), taken from the stages before the fine raster's;
-  // 0..0.5, 0 = none.
-  double reseed_share = 0.2;
+  // error is (reseed.h, issue 32 item 3), at the start of the fine raster's stage (what it leaves
+  // goes to that stage; without fine_target, the end of the working raster's); 0..0.15, 0 = none.
+  double reseed_share = 0.15;
   // moments: CMA-ES runs after the first, each from a seeded k-means++ split. search: runs
   // after the first that start from the next-best choice of maps from the pool; later runs
   // kick the best maps so far, for as long as the budget lasts.

@@ -12,9 +12,9 @@ namespace ifsfx::collage::detail {
 
 namespace {
 
-// Where each stage ends, as a share of what the collage stages left (evaluations and time alike),
-// without the re-seed (FitOptions::reseed_share): its share is taken from the stages before it,
-// whose ends scale down by (kFineStart − share) / kFineStart.
+// Where each stage ends, as a share of what the collage stages left (evaluations and time alike).
+// The re-seed (FitOptions::reseed_share) runs first in the fine raster's share, and what it leaves
+// goes to the fine raster's first round: a re-seed that finds nothing to do changes nothing.
 constexpr double kCoarseEnd = 0.2, kMiddleEnd = 0.35, kEscapeEnd = 0.5, kFineStart = 0.7;
 // The fine raster's stage (FitOptions::fine_target, finish_on_fine): chaos-game points per pixel
 // of its square, CMA-ES's first step, and the rounds of CMA-ES and ICP. Measured on the fern's
@@ -58,7 +58,7 @@ class Stages {
         total_evaluations_(std::max(0L, budget_.evaluations_left())),
         run_(run),
         centre_(fitting.objective.centroid()),
-        reseed_(std::clamp(options_.reseed_share, 0.0, 0.5)) {
+        reseed_(std::clamp(options_.reseed_share, 0.0, (1 - kFineStart) / kFineRounds)) {
     // The levels are cut from the finest picture of L there is, kept where L covers any part
     // of a pixel, as A's raster is (attractor_loss.h): a half-covered coarse target drops a
     // fern's fronds, and its loss is lower for a wrong fern than for the true one (0.21
@@ -130,11 +130,10 @@ class Stages {
   }
   void charge(long evaluations) { budget_.evaluations += evaluations; }
 
-  // The end of a stage before the re-seed whose end without it is `fraction`.
-  double early(double fraction) const { return fraction * (kFineStart - reseed_) / kFineStart; }
-  // The re-seed's share: it ends where the fine raster's stage starts (or the stages end).
+  // The re-seed's share: it starts where the fine raster's stage does (at most that stage's first
+  // round), or, without a fine raster, takes the end of the working raster's.
   double reseed_share() const { return reseed_; }
-  double reseed_end() const { return has_fine() ? kFineStart : 1.0; }
+  double reseed_begin() const { return has_fine() ? kFineStart : 1.0 - reseed_; }
 
   bool has_fine() const { return levels_.size() > 3; }
   const AttractorLoss& level(int k) const { return levels_[static_cast<std::size_t>(k)]; }
@@ -179,7 +178,7 @@ std::vector<AffineMap> escape(Stages& stages, std::vector<AffineMap> current, do
   double best_value = value, current_value = value;
   Rng rng(stream_seed(options.seed ^ 0x65736361706500ULL, 0));
   for (int k = 0; k < kEscapes; ++k) {
-    const double end = stages.early(kMiddleEnd + (kEscapeEnd - kMiddleEnd) * (k + 1) / kEscapes);
+    const double end = kMiddleEnd + (kEscapeEnd - kMiddleEnd) * (k + 1) / kEscapes;
     if (!stages.open(end)) break;
     const auto start =
         perturbed(current, stages.centre(), options.objective.max_factor, kEscapeScale, rng);
@@ -321,19 +320,18 @@ void optimise_attractor(Fitting& fitting, std::vector<std::vector<AffineMap>> st
   // Coarse: every start on 32², as far as its share goes.
   std::vector<AttractorRefined> coarse;
   for (int k = 0; k < count; ++k) {
-    if (k > 0 && !stages.open(stages.early(kCoarseEnd * (k + 1) / count))) break;
+    if (k > 0 && !stages.open(kCoarseEnd * (k + 1) / count)) break;
     fitting.report(FitPhase::attractor, stages.run(), fitting.best_objective);
     coarse.push_back(stages.refine(0, starts[static_cast<std::size_t>(k)], 0.05,
-                                   stages.early(kCoarseEnd * (k + 1) / count), 1));
+                                   kCoarseEnd * (k + 1) / count, 1));
   }
   std::stable_sort(coarse.begin(), coarse.end(),
                    [](const auto& a, const auto& b) { return a.value < b.value; });
   // Middle: the best two on 64².
   std::vector<AttractorRefined> middle;
   for (std::size_t k = 0; k < std::min<std::size_t>(2, coarse.size()); ++k) {
-    if (k > 0 && !stages.open(stages.early(kMiddleEnd))) break;
-    middle.push_back(
-        stages.refine(1, coarse[k].maps, 0.03, stages.early(kMiddleEnd), static_cast<int>(2 - k)));
+    if (k > 0 && !stages.open(kMiddleEnd)) break;
+    middle.push_back(stages.refine(1, coarse[k].maps, 0.03, kMiddleEnd, static_cast<int>(2 - k)));
   }
   std::stable_sort(middle.begin(), middle.end(),
                    [](const auto& a, const auto& b) { return a.value < b.value; });
@@ -345,7 +343,7 @@ void optimise_attractor(Fitting& fitting, std::vector<std::vector<AffineMap>> st
   // The coarse levels' optimum need not be the working raster's: the last stage starts from the
   // best on it of the escapes' best and the best attractor before these stages.
   std::vector<AffineMap> final_maps = stages.better_at_last_level(best, starts.front());
-  const double last_end = stages.reseed_end() - stages.reseed_share();
+  const double last_end = stages.has_fine() ? kFineStart : stages.reseed_begin();
   if (stages.open(last_end)) {
     final_maps = stages.refine(2, final_maps, 0.01, last_end, 1).maps;
     fitting.chooser.consider(final_maps);
@@ -360,7 +358,8 @@ void optimise_attractor(Fitting& fitting, std::vector<std::vector<AffineMap>> st
     if (!fitting.options.fine_target.empty())
       fitting.chooser.consider(refine_icp(fitting.options.fine_target, final_maps, icp));
   }
-  if (stages.reseed_share() > 0) reseed(stages, last_end, stages.reseed_end());
+  if (stages.reseed_share() > 0)
+    reseed(stages, stages.reseed_begin(), stages.reseed_begin() + stages.reseed_share());
   if (stages.has_fine()) finish_on_fine(stages);
   fitting.chooser.result.runs = stages.run();
 }
