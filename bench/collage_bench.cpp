@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Collage fitting on real shapes (issues 15 and 32): every shape × every N of --maps is fitted
 // once per method of --methods in one run: `collage` (the fit before issue 32: the collage W(L)
-// and its iterates), `attractor` (issue 32: the attractor itself, from the best few starts) and
+// and its iterates), `attractor` (issue 32: the attractor itself, from the best few starts),
 // `noscan` (the attractor method without the self-similarity scan's starts, as it was before) and
 // `noreseed` (the attractor method without the re-seed of maps where the error is, as before it).
 // The shapes: the silhouettes of bench/collage-shapes/ (holes, thin parts, letters, a logo with
