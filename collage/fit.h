@@ -77,8 +77,10 @@ enum class FitMethod {
   // (cut_partition.h) and the best distinct runs are refined by CMA-ES on the attractor loss
   // (attractor_loss.h) over all maps at once, coarse to fine (32², 64², the working raster; cut
   // from fine_target when given), with perturb-and-accept escapes between (attractor_fit.h) and
-  // ICP last (on the working raster and on fine_target); with fine_target, every candidate is
-  // judged on it too, and its best is moved by CMA-ES on the loss cut at its size last.
+  // ICP last (on the working raster and on fine_target); then the maps that pay least are
+  // re-seeded on the regions of L that A misses (reseed.h, reseed_share); with fine_target, every
+  // candidate is judged on it too, and its best is moved by CMA-ES on the loss cut at its size
+  // last.
   attractor,
   // Issues 14–15: the collage objective W(L) against L, then a polish on W^k(L); the attractor
   // is only rendered to choose between candidates.
@@ -132,6 +134,10 @@ struct FitOptions {
   // many distinct covers. It costs a fixed number of evaluations (scan_cost, about 5300: 2% of
   // the default budget) and is skipped when that is over a tenth of max_evaluations. 0 = none.
   int similarity_starts = 2;
+  // FitMethod::attractor: the share of the attractor's stages given to re-seeding maps where the
+  // error is (reseed.h, issue 32 item 3), at the start of the fine raster's stage (what it leaves
+  // goes to that stage; without fine_target, the end of the working raster's); 0..0.15, 0 = none.
+  double reseed_share = 0.15;
   // moments: CMA-ES runs after the first, each from a seeded k-means++ split. search: runs
   // after the first that start from the next-best choice of maps from the pool; later runs
   // kick the best maps so far, for as long as the budget lasts.

@@ -5,6 +5,7 @@
 
 #include "collage/attractor_fit.h"
 #include "collage/attractor_loss.h"
+#include "collage/reseed.h"
 #include "ifs/rng.h"
 
 namespace ifsfx::collage::detail {
@@ -12,6 +13,8 @@ namespace ifsfx::collage::detail {
 namespace {
 
 // Where each stage ends, as a share of what the collage stages left (evaluations and time alike).
+// The re-seed (FitOptions::reseed_share) runs first in the fine raster's share, and what it leaves
+// goes to the fine raster's first round: a re-seed that finds nothing to do changes nothing.
 constexpr double kCoarseEnd = 0.2, kMiddleEnd = 0.35, kEscapeEnd = 0.5, kFineStart = 0.7;
 // The fine raster's stage (FitOptions::fine_target, finish_on_fine): chaos-game points per pixel
 // of its square, CMA-ES's first step, and the rounds of CMA-ES and ICP. Measured on the fern's
@@ -23,6 +26,18 @@ constexpr int kFineRounds = 2;
 // map_params.h: radians, logits, 0.1 plane units).
 constexpr int kEscapes = 4;
 constexpr double kEscapeScale = 0.05;
+// The re-seed (reseed.h): its tries, each an equal part of its share; the chaos-game points per
+// pixel of the raster that finds the error regions (4: few holes in A's raster where A is
+// solid); the smallest region worth a map, as a share of L's pixels there; CMA-ES's first step
+// for the re-optimisation; what a range/domain search for one piece costs (~50 ms: 200
+// evaluations' time).
+constexpr int kReseeds = 4;
+constexpr double kJudgePoints = 4, kMinRegion = 0.002, kReseedSigma = 0.01;
+constexpr long kSearchCost = 200;
+// What one try screens: the largest regions, and the maps that pay least; a set is re-optimised
+// when its IoU on the working raster is at most this far below the candidate's.
+constexpr int kScreenRegions = 4, kScreenMaps = 2;
+constexpr double kReseedSlack = 0.005;
 
 // Evaluations are counted as collage evaluations of about the same time: one of the attractor
 // loss costs a unit per 5000 chaos-game points (4 per pixel: 3.3 units on 64², 13 on 128²).
@@ -42,7 +57,8 @@ class Stages {
         start_evaluations_(budget_.evaluations),
         total_evaluations_(std::max(0L, budget_.evaluations_left())),
         run_(run),
-        centre_(fitting.objective.centroid()) {
+        centre_(fitting.objective.centroid()),
+        reseed_(std::clamp(options_.reseed_share, 0.0, (1 - kFineStart) / kFineRounds)) {
     // The levels are cut from the finest picture of L there is, kept where L covers any part
     // of a pixel, as A's raster is (attractor_loss.h): a half-covered coarse target drops a
     // fern's fronds, and its loss is lower for a wrong fern than for the true one (0.21
@@ -107,7 +123,20 @@ class Stages {
     return last(b) < last(a) ? b : a;
   }
 
+  // Evaluations of `loss` (or their equivalent) spent outside a refine().
+  void charge(const AttractorLoss& loss, int evaluations) {
+    budget_.evaluations +=
+        static_cast<long>(evaluations * unit_cost(loss.size()) * loss.points() / 4);
+  }
+  void charge(long evaluations) { budget_.evaluations += evaluations; }
+
+  // The re-seed's share: it starts where the fine raster's stage does (at most that stage's first
+  // round), or, without a fine raster, takes the end of the working raster's.
+  double reseed_share() const { return reseed_; }
+  double reseed_begin() const { return has_fine() ? kFineStart : 1.0 - reseed_; }
+
   bool has_fine() const { return levels_.size() > 3; }
+  const AttractorLoss& level(int k) const { return levels_[static_cast<std::size_t>(k)]; }
   Fitting& fitting() { return fitting_; }
   Point centre() const { return centre_; }
   int run() const { return run_; }
@@ -136,6 +165,7 @@ class Stages {
   long start_evaluations_, total_evaluations_;
   int run_;
   Point centre_;
+  double reseed_;
   std::vector<AttractorLoss> levels_;
 };
 
@@ -190,6 +220,96 @@ void finish_on_fine(Stages& stages) {
   }
 }
 
+// The maps of the best candidate on the fine raster (the working raster's best without one).
+const std::vector<AffineMap>& best_maps(Stages& stages) {
+  const Chooser& chooser = stages.fitting().chooser;
+  return stages.has_fine() ? chooser.fine_best.ifs.maps : chooser.result.ifs.maps;
+}
+double best_iou(Stages& stages) {
+  const Chooser& chooser = stages.fitting().chooser;
+  return stages.has_fine() ? chooser.fine_best.report.fine_iou : chooser.best_iou;
+}
+
+// One re-seed's start: the set, the region its new map covers and its IoU on the working raster.
+struct Reseeded {
+  std::vector<AffineMap> maps;
+  const ErrorRegion* region = nullptr;
+  double iou = -1;
+};
+
+// The best re-seeded set, by IoU on the working raster: each of the kScreenRegions largest
+// missed regions not tried in vain, each map the range/domain search finds onto it, in place of
+// each of the kScreenMaps maps of `current` that pay least. One rendering per set on the
+// working raster (a 128² rendering: a sixteenth of the judge's), so many are cheap to screen.
+Reseeded screen(Stages& stages, const std::vector<AffineMap>& current, const ErrorMaps& errors,
+                const cv::Mat& tried, const SearchOptions& search) {
+  const AttractorLoss& working = stages.level(2);
+  const std::vector<int> order = least_paying(working, current);
+  stages.charge(working, static_cast<int>(current.size()));
+  Reseeded best;
+  int regions = 0;
+  for (const ErrorRegion& region : errors.missed_regions) {
+    if (regions == kScreenRegions) break;
+    if (2 * cv::countNonZero(region.mask & tried) >= region.area) continue;
+    ++regions;
+    const std::vector<AffineMap> placed =
+        maps_onto_region(stages.fitting().target, region.mask, search);
+    stages.charge(kSearchCost);
+    for (std::size_t w = 0; w < std::min<std::size_t>(kScreenMaps, order.size()); ++w)
+      for (const AffineMap& f : placed) {
+        std::vector<AffineMap> maps = current;
+        maps[static_cast<std::size_t>(order[w])] = f;
+        stages.charge(working, 1);
+        if (const double iou = working.terms(maps).iou; iou > best.iou)
+          best = {std::move(maps), &region, iou};
+      }
+  }
+  return best;
+}
+
+// Maps where the error is (issue 32 item 3, reseed.h), on [begin, end) of the stages' share in
+// up to kReseeds tries. Each try finds, on the finest raster, the regions of L that the best
+// candidate's A misses, screens the re-seeded sets (above), and when the best of them is within
+// kReseedSlack of the candidate's IoU on the working raster, re-optimises it by CMA-ES on the
+// working raster's loss from a small step and aligns it by ICP on the finest raster; the
+// chooser keeps it only if its IoU there rises. A region whose try did not gain is not tried
+// again. When no set comes near, the re-seed ends and its evaluations go to the next stage.
+void reseed(Stages& stages, double begin, double end) {
+  Fitting& fitting = stages.fitting();
+  const FitOptions& options = fitting.options;
+  const cv::Mat& finest = stages.has_fine() ? options.fine_target : fitting.target;
+  const AttractorLoss judge(finest, {.size = finest.cols,
+                                     .points = kJudgePoints,
+                                     .seed = stream_seed(options.seed ^ 0x7265736565644ULL, 0),
+                                     .keep = 0});
+  const int min_area = std::max(4, static_cast<int>(kMinRegion * cv::countNonZero(judge.target())));
+  SearchOptions search = options.search;
+  search.max_factor = std::min(search.max_factor, options.objective.max_factor);
+  search.threads = options.threads;
+  search.cancel = options.cancel;
+  const RefineOptions icp{options.refine_iterations, options.objective.max_factor,
+                          fitting.budget.at(1.0, fitting.chooser.reserve()), options.cancel};
+  cv::Mat tried(judge.target().size(), CV_8UC1, cv::Scalar(0));  // regions tried in vain
+  for (int k = 0; k < kReseeds; ++k) {
+    const double stage_end = begin + (end - begin) * (k + 1) / kReseeds;
+    if (!stages.open(stage_end)) break;
+    const std::vector<AffineMap> current = best_maps(stages);
+    if (current.empty()) break;
+    const ErrorMaps errors = error_maps(judge.target(), judge.raster(current), min_area);
+    stages.charge(judge, 1);
+    const Reseeded found = screen(stages, current, errors, tried, search);
+    const double now = stages.level(2).terms(current).iou;
+    stages.charge(stages.level(2), 1);
+    if (found.region == nullptr || found.iou < now - kReseedSlack) break;
+    const double before = best_iou(stages);
+    const auto moved = stages.refine(2, found.maps, kReseedSigma, stage_end, 1).maps;
+    fitting.chooser.consider(found.maps);
+    fitting.chooser.consider(moved);
+    if (options.refine_iterations > 0) fitting.chooser.consider(refine_icp(finest, moved, icp));
+    if (!(best_iou(stages) > before)) tried |= found.region->mask;
+  }
+}
+
 }  // namespace
 
 void optimise_attractor(Fitting& fitting, std::vector<std::vector<AffineMap>> starts, int run) {
@@ -223,7 +343,7 @@ void optimise_attractor(Fitting& fitting, std::vector<std::vector<AffineMap>> st
   // The coarse levels' optimum need not be the working raster's: the last stage starts from the
   // best on it of the escapes' best and the best attractor before these stages.
   std::vector<AffineMap> final_maps = stages.better_at_last_level(best, starts.front());
-  const double last_end = stages.has_fine() ? kFineStart : 1.0;
+  const double last_end = stages.has_fine() ? kFineStart : stages.reseed_begin();
   if (stages.open(last_end)) {
     final_maps = stages.refine(2, final_maps, 0.01, last_end, 1).maps;
     fitting.chooser.consider(final_maps);
@@ -238,6 +358,8 @@ void optimise_attractor(Fitting& fitting, std::vector<std::vector<AffineMap>> st
     if (!fitting.options.fine_target.empty())
       fitting.chooser.consider(refine_icp(fitting.options.fine_target, final_maps, icp));
   }
+  if (stages.reseed_share() > 0)
+    reseed(stages, stages.reseed_begin(), stages.reseed_begin() + stages.reseed_share());
   if (stages.has_fine()) finish_on_fine(stages);
   fitting.chooser.result.runs = stages.run();
 }

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include "collage/reseed.h"
+#include "ifs/error.h"
+
 #include "tests/collage/test_shapes.h"
 
 namespace ifsfx::collage {
@@ -52,6 +55,59 @@ TEST(attractor_fit, metropolis_takes_gains_always_and_losses_by_their_odds) {
   EXPECT_TRUE(metropolis_accepts(0.01, 0.01, 0.3));   // exp(−1) ≈ 0.37 > 0.3
   EXPECT_FALSE(metropolis_accepts(0.01, 0.01, 0.4));  // … < 0.4
   EXPECT_FALSE(metropolis_accepts(0.01, 0, 0));       // no temperature, no loss taken
+}
+
+TEST(attractor_fit, reseed_puts_the_map_that_pays_least_on_the_part_a_misses) {
+  // L is a disc and a square apart; A is the five-petalled flower shrunk into the disc, one of
+  // its maps twice: A misses the square, and either copy of the twice-given map is worth nothing.
+  const cv::Mat shape = testing::disc_and_square(96);
+  const Point c{24.5 / 96, 1 - 48.5 / 96};  // the disc's centre; its radius is 19/96
+  const double rho = 0.38;
+  std::vector<AffineMap> maps;
+  for (AffineMap f : testing::five_petals().maps) {
+    // f conjugated by x -> c + rho (x - (1/2, 1/2)): the same linear part, moved.
+    const Point t = f({0.5, 0.5});
+    f.e = c.x - (f.a * c.x + f.b * c.y) + rho * (t.x - 0.5);
+    f.f = c.y - (f.c * c.x + f.d * c.y) + rho * (t.y - 0.5);
+    maps.push_back(f);
+  }
+  maps.push_back(maps[1]);
+  const AttractorLoss judge(shape, {.size = 96, .keep = 0});
+  const ErrorMaps errors = error_maps(judge.target(), judge.raster(maps), 4);
+  ASSERT_FALSE(errors.missed_regions.empty());
+  const cv::Mat& missed = errors.missed_regions.front().mask;
+  const cv::Rect square(57, 32, 32, 32);
+  EXPECT_EQ(cv::countNonZero(missed(square)), 32 * 32);
+  EXPECT_EQ(errors.missed_regions.front().area, 32 * 32);  // nothing of the disc with it
+  const std::vector<int> order = least_paying(judge, maps);
+  ASSERT_EQ(order.size(), maps.size());
+  const int weakest = order.front();
+  EXPECT_TRUE(weakest == 1 || weakest == 5) << weakest;
+  const std::vector<AffineMap> found = maps_onto_region(shape, missed);
+  ASSERT_FALSE(found.empty());
+  const AffineMap& placed = found.front();
+  // The search sends L's centroid to the piece's: the square's centre.
+  const cv::Moments m = cv::moments(shape, true);
+  const Point at = placed({(m.m10 / m.m00 + 0.5) / 96, 1 - (m.m01 / m.m00 + 0.5) / 96});
+  EXPECT_NEAR(at.x, 73.0 / 96, 0.02);
+  EXPECT_NEAR(at.y, 1 - 48.0 / 96, 0.02);
+  const double before = judge.terms(maps).iou;
+  maps[static_cast<std::size_t>(weakest)] = placed;
+  // A gains a copy of itself on the square (0.375 -> 0.543).
+  EXPECT_GT(judge.terms(maps).iou, before + 0.1) << "from " << before;
+}
+
+TEST(attractor_fit, error_maps_tell_missed_from_spilled_and_drop_one_pixel_slivers) {
+  cv::Mat target(32, 32, CV_8UC1, cv::Scalar(0)), attractor(32, 32, CV_8UC1, cv::Scalar(0));
+  target(cv::Rect(4, 4, 20, 20)).setTo(255);
+  attractor(cv::Rect(4, 4, 10, 19)).setTo(255);  // a 1-pixel sliver of L left at the bottom
+  attractor(cv::Rect(26, 4, 4, 4)).setTo(255);   // a spill right of L
+  const ErrorMaps e = error_maps(target, attractor);
+  ASSERT_EQ(e.missed_regions.size(), 1u);
+  EXPECT_EQ(e.missed_regions[0].area, 10 * 20);  // the right half, without the sliver
+  ASSERT_EQ(e.spilled_regions.size(), 1u);
+  EXPECT_EQ(e.spilled_regions[0].area, 16);
+  EXPECT_THROW(error_maps(target, attractor(cv::Rect(0, 0, 16, 16))), Error);
 }
 
 }  // namespace
