@@ -60,8 +60,6 @@ std::span<const flame::detail::BatchVariation> flame_batch_table() {
   return kTable;
 }
 
-// The reference of every level's bin numbering: AffineMap's operations in its order, the
-// comparisons and truncations exact.
 // The reference listing: each xform's walkers in ascending order, branch-free (the store is
 // always made, the count moves on where the walker picked the xform).
 void flame_list_by_xform(const std::uint32_t* k, std::size_t m, std::size_t steps,
@@ -77,6 +75,8 @@ void flame_list_by_xform(const std::uint32_t* k, std::size_t m, std::size_t step
   first[steps] = c;
 }
 
+// The reference of every level's bin numbering: AffineMap's operations in its order, the
+// comparisons and truncations exact.
 std::size_t flame_bin_numbers(const flame::detail::BinGrid& g, std::size_t n, const double* x,
                               const double* y, std::uint32_t* at) {
   const AffineMap& m = g.to_bins;

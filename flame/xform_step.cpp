@@ -10,6 +10,12 @@ namespace {
 
 constexpr std::size_t kN = kStepStride;
 
+// n rounded up to a whole register of float lanes (8 on AVX2), at most kN: the batch forms run
+// over whole registers, so the arrays' padding must hold numbers too.
+std::size_t padded_count(std::size_t n) {
+  return std::min(kN, (n + 7) / 8 * 8);
+}
+
 // The term's random draws for points [0, n), draw j of point i at u[j·kN + i]: draw by draw,
 // each over the points (point by point, the strided stores and the generator's state went
 // through memory).
@@ -38,6 +44,11 @@ void run_term(const Term& t, const AffineMap& pre, std::size_t n, const double* 
   }
   const double* u = fill_draws(t, n, w, rng);
   t.batch->function({.w = t.w, .params = t.params.data(), .pre = &pre, .u = u}, n, x, y, ox, oy);
+}
+
+// The term has a float form over float arrays (BatchVariation::function_f).
+bool has_float_form(const Term& t) {
+  return t.batch && t.batch->function_f;
 }
 
 // A float form of the sum over the float copy (w.fx, w.fy), its w·V added to (w.fsx, w.fsy).
@@ -82,15 +93,14 @@ XformStep xform_step_of(const Xform& xf, Kernels kernels) {
   s.affine_only =
       s.pre_terms.empty() && s.post_terms.empty() &&
       std::all_of(s.sum_terms.begin(), s.sum_terms.end(), [](const Term& t) { return t.linear; });
-  const auto is_float = [](const Term& t) { return t.batch && t.batch->function_f; };
-  s.float_sum = std::any_of(s.sum_terms.begin(), s.sum_terms.end(), is_float);
-  s.double_sum = !std::all_of(s.sum_terms.begin(), s.sum_terms.end(), is_float);
+  s.float_sum = std::any_of(s.sum_terms.begin(), s.sum_terms.end(), has_float_form);
+  s.double_sum = !std::all_of(s.sum_terms.begin(), s.sum_terms.end(), has_float_form);
   return s;
 }
 
 void XformStep::chain(const std::vector<Term>& terms, std::size_t n, double* x, double* y,
                       Scratch& w, Rng& rng) const {
-  const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
+  const std::size_t padded = padded_count(n);
   for (const Term& t : terms) {
     std::fill_n(w.tx.begin(), padded, 0.0);
     std::fill_n(w.ty.begin(), padded, 0.0);
@@ -103,45 +113,50 @@ void XformStep::chain(const std::vector<Term>& terms, std::size_t n, double* x, 
 }
 
 // The gathers apply the pre-affine map as they copy, and the scatters the post map as they
-// write back: the same operations as affine() in the same order, one pass fewer each way.
+// write back (AffineMap's operations, one pass fewer each way).
 void XformStep::operator()(std::size_t n, double* x, double* y, Scratch& w, Rng& rng) const {
   for (std::size_t i = 0; i < n; ++i) {
-    const double u = x[i], v = y[i];
-    w.qx[i] = pre.a * u + pre.b * v + pre.e;
-    w.qy[i] = pre.c * u + pre.d * v + pre.f;
+    const Point q = pre({x[i], y[i]});
+    w.qx[i] = q.x;
+    w.qy[i] = q.y;
   }
   const auto [sx, sy] = move_scratch(n, w, rng);
-  for (std::size_t i = 0; has_post && i < n; ++i) {
-    const double u = sx[i], v = sy[i];
-    x[i] = post.a * u + post.b * v + post.e;
-    y[i] = post.c * u + post.d * v + post.f;
+  if (!has_post) {
+    std::copy_n(sx, n, x);
+    std::copy_n(sy, n, y);
+    return;
   }
-  if (has_post) return;
-  std::copy_n(sx, n, x);
-  std::copy_n(sy, n, y);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point p = post({sx[i], sy[i]});
+    x[i] = p.x;
+    y[i] = p.y;
+  }
 }
 
 void XformStep::operator()(std::size_t n, const std::uint32_t* at, double* x, double* y, Scratch& w,
                            Rng& rng) const {
   for (std::size_t i = 0; i < n; ++i) {
-    const double u = x[at[i]], v = y[at[i]];
-    w.qx[i] = pre.a * u + pre.b * v + pre.e;
-    w.qy[i] = pre.c * u + pre.d * v + pre.f;
+    const Point q = pre({x[at[i]], y[at[i]]});
+    w.qx[i] = q.x;
+    w.qy[i] = q.y;
   }
   const auto [sx, sy] = move_scratch(n, w, rng);
-  for (std::size_t i = 0; has_post && i < n; ++i) {
-    const double u = sx[i], v = sy[i];
-    x[at[i]] = post.a * u + post.b * v + post.e;
-    y[at[i]] = post.c * u + post.d * v + post.f;
+  if (!has_post) {
+    for (std::size_t i = 0; i < n; ++i) {
+      x[at[i]] = sx[i];
+      y[at[i]] = sy[i];
+    }
+    return;
   }
-  for (std::size_t i = 0; !has_post && i < n; ++i) {
-    x[at[i]] = sx[i];
-    y[at[i]] = sy[i];
+  for (std::size_t i = 0; i < n; ++i) {
+    const Point p = post({sx[i], sy[i]});
+    x[at[i]] = p.x;
+    y[at[i]] = p.y;
   }
 }
 
 void XformStep::sum(std::size_t n, Scratch& w, Rng& rng) const {
-  const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
+  const std::size_t padded = padded_count(n);
   if (double_sum) {
     std::fill_n(w.sx.begin(), padded, 0.0);
     std::fill_n(w.sy.begin(), padded, 0.0);
@@ -157,7 +172,7 @@ void XformStep::sum(std::size_t n, Scratch& w, Rng& rng) const {
     std::fill_n(w.fsy.begin(), padded, 0.0f);
   }
   for (const Term& t : sum_terms) {
-    if (t.batch && t.batch->function_f)
+    if (has_float_form(t))
       run_term_f(t, pre, n, w, rng);
     else
       run_term(t, pre, n, w.qx.data(), w.qy.data(), w.sx.data(), w.sy.data(), w, rng);
@@ -172,7 +187,7 @@ void XformStep::sum(std::size_t n, Scratch& w, Rng& rng) const {
 }
 
 std::pair<double*, double*> XformStep::move_scratch(std::size_t n, Scratch& w, Rng& rng) const {
-  const std::size_t padded = std::min(kN, (n + 7) / 8 * 8);
+  const std::size_t padded = padded_count(n);
   std::fill(w.qx.begin() + static_cast<std::ptrdiff_t>(n),
             w.qx.begin() + static_cast<std::ptrdiff_t>(padded), 0.0);
   std::fill(w.qy.begin() + static_cast<std::ptrdiff_t>(n),

@@ -36,6 +36,26 @@ inline V r_of(V x, V y) {
   return vsqrt(x * x + y * y);
 }
 
+// julian's and juliascope's w·(x² + y²)^e on the circle at angle_of(x, y, i), in passes: the
+// radii, then the angles, then the points. In one pass its chain (atan2, then sincos) and its
+// pow were more instructions than the core reorders at once, so one group of lanes waited for
+// the last.
+template <class In, class Out, class A>
+inline void julian_passes(const BatchTerm& t, std::size_t n, const In* X, const In* Y, Out* OX,
+                          Out* OY, double e, A angle_of) {
+  V angle[kBatchStride / kW + 1], radius[kBatchStride / kW + 1];
+  for (std::size_t i = 0; i < n; i += kW) {
+    const V x = load(X + i), y = load(Y + i);
+    radius[i / kW] = t.w * vpow_const(x * x + y * y, e);
+  }
+  for (std::size_t i = 0; i < n; i += kW) angle[i / kW] = angle_of(load(X + i), load(Y + i), i);
+  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
+    const VSinCos sc = vsincos(angle[i / kW]);
+    const V k = radius[i / kW];
+    return VP{k * sc.c, k * sc.s};
+  });
+}
+
 #define IFSFX_BATCH(name)        \
   template <class In, class Out> \
   void b_##name(const BatchTerm& t, std::size_t n, const In* X, const In* Y, Out* OX, Out* OY)
@@ -181,22 +201,10 @@ IFSFX_BATCH(cylinder) {
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t) { return VP{t.w * vsin(x), t.w * y}; });
 }
 IFSFX_BATCH(julian) {
-  const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2, ip = 1 / p;
-  // Two passes, the angle first: one pass's chain (atan2, then sincos) and its pow were more
-  // instructions than the core reorders at once, so one group of lanes waited for the last.
-  V angle[kBatchStride / kW + 1], radius[kBatchStride / kW + 1];
-  for (std::size_t i = 0; i < n; i += kW) {
-    const V x = load(X + i), y = load(Y + i);
-    radius[i / kW] = t.w * vpow_const(x * x + y * y, e);
-  }
-  for (std::size_t i = 0; i < n; i += kW) {
+  const double p = t.params[0], d = t.params[1], ap = std::abs(p), ip = 1 / p;
+  julian_passes(t, n, X, Y, OX, OY, d / p / 2, [&](V x, V y, std::size_t i) {
     const V p3 = vtrunc(ap * draw(t, 0, i));
-    angle[i / kW] = (vatan2(load(Y + i), load(X + i)) + 2.0 * kVPi * p3) * ip;
-  }
-  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
-    const VSinCos sc = vsincos(angle[i / kW]);
-    const V k = radius[i / kW];
-    return VP{k * sc.c, k * sc.s};
+    return (vatan2(y, x) + 2.0 * kVPi * p3) * ip;
   });
 }
 IFSFX_BATCH(blur) {
@@ -398,27 +406,27 @@ IFSFX_BATCH(boarders) {
 IFSFX_BATCH(super_shape) {
   const double* k = t.params;
   const double rnd = k[0], m = k[1], n1 = k[2], n2 = k[3], n3 = k[4], holes = k[5];
+  // The radius factor (|cos a|^n2 + |sin a|^n3)^(−1/n1) at angle a, and a point's move by it.
+  const auto factor = [&](V a) {
+    const VSinCos sc = vsincos(a);
+    const V t1 = vpow(vabs(sc.c), splat(n2)), t2 = vpow(vabs(sc.s), splat(n3));
+    return vpow(t1 + t2, splat(-1 / n1));
+  };
+  const auto moved = [&](V x, V y, std::size_t i, V q) {
+    const V r = r_of(x, y);
+    const V f = t.w * ((rnd * draw(t, 0, i) + (1 - rnd) * r - holes) * q) / (r + kBEps);
+    return VP{f * x, f * y};
+  };
   if (m == 0) {
     // m = 0, as flam3-genome writes it: the angle is 0·atan2 + π/4 = π/4 at every point, so the
-    // radius factor (t1 + t2)^(−1/n1) is one value for the term, by the same operations: the
-    // same bits, three pows and a sincos fewer a point.
-    const VSinCos sc = vsincos(splat(kVPi / 4));
-    const V t1 = vpow(vabs(sc.c), splat(n2)), t2 = vpow(vabs(sc.s), splat(n3));
-    const V q = vpow(t1 + t2, splat(-1 / n1));
-    each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
-      const V r = r_of(x, y);
-      const V f = t.w * ((rnd * draw(t, 0, i) + (1 - rnd) * r - holes) * q) / (r + kBEps);
-      return VP{f * x, f * y};
-    });
+    // factor is one value for the term, by the same operations: the same bits, three pows and a
+    // sincos fewer a point.
+    const V q = factor(splat(kVPi / 4));
+    each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) { return moved(x, y, i, q); });
     return;
   }
   each(n, X, Y, OX, OY, [&](V x, V y, std::size_t i) {
-    const VSinCos sc = vsincos(m / 4 * vatan2(y, x) + kVPi / 4);
-    const V t1 = vpow(vabs(sc.c), splat(n2)), t2 = vpow(vabs(sc.s), splat(n3));
-    const V r = r_of(x, y);
-    const V rr = (rnd * draw(t, 0, i) + (1 - rnd) * r - holes) * vpow(t1 + t2, splat(-1 / n1));
-    const V f = t.w * rr / (r + kBEps);
-    return VP{f * x, f * y};
+    return moved(x, y, i, factor(m / 4 * vatan2(y, x) + kVPi / 4));
   });
 }
 IFSFX_BATCH(loonie) {
@@ -582,22 +590,11 @@ IFSFX_BATCH(noise) {
   });
 }
 IFSFX_BATCH(juliascope) {
-  const double p = t.params[0], d = t.params[1], ap = std::abs(p), e = d / p / 2, ip = 1 / p;
-  // In passes, as julian's.
-  V angle[kBatchStride / kW + 1], radius[kBatchStride / kW + 1];
-  for (std::size_t i = 0; i < n; i += kW) {
-    const V x = load(X + i), y = load(Y + i);
-    radius[i / kW] = t.w * vpow_const(x * x + y * y, e);
-  }
-  for (std::size_t i = 0; i < n; i += kW) {
+  const double p = t.params[0], d = t.params[1], ap = std::abs(p), ip = 1 / p;
+  julian_passes(t, n, X, Y, OX, OY, d / p / 2, [&](V x, V y, std::size_t i) {
     const V p3 = vtrunc(ap * draw(t, 0, i));
     const V sign = sel(vfmod(p3, splat(2.0)) == 0.0, splat(1.0), splat(-1.0));
-    angle[i / kW] = (sign * vatan2(load(Y + i), load(X + i)) + 2.0 * kVPi * p3) * ip;
-  }
-  each(n, X, Y, OX, OY, [&](V, V, std::size_t i) {
-    const VSinCos sc = vsincos(angle[i / kW]);
-    const V k = radius[i / kW];
-    return VP{k * sc.c, k * sc.s};
+    return (sign * vatan2(y, x) + 2.0 * kVPi * p3) * ip;
   });
 }
 IFSFX_BATCH(radial_blur) {

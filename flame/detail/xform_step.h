@@ -72,19 +72,16 @@ struct XformStep {
   // One point through an affine_only xform: the operations of operator() on it, in its order
   // (the sum starts from 0 and adds w·q term by term, as the batch does), so the bits are equal.
   Point moved(double x, double y) const {
-    double sx = pre.a * x + pre.b * y + pre.e;
-    double sy = pre.c * x + pre.d * y + pre.f;
+    Point s = pre({x, y});
     if (has_sum) {
-      const double qx = sx, qy = sy;
-      sx = 0;
-      sy = 0;
+      const Point q = s;
+      s = {0, 0};
       for (const Term& t : sum_terms) {
-        sx += t.w * qx;
-        sy += t.w * qy;
+        s.x += t.w * q.x;
+        s.y += t.w * q.y;
       }
     }
-    if (!has_post) return {sx, sy};
-    return {post.a * sx + post.b * sy + post.e, post.c * sx + post.d * sy + post.f};
+    return has_post ? post(s) : s;
   }
 
   // Points [0, n) of (x, y) moved through the xform, in place.
