@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -519,6 +520,35 @@ TEST(render_tone, density_estimation_in_place_gives_the_spreading_paths_bits) {
   const FlameHistogram out = density_estimate(std::move(one), {.estimator_radius = 0}, 1, scale, 1);
   EXPECT_EQ(out.at(0, 1)[1], 5 * scale(10));
   EXPECT_EQ(out.at(0, 0)[3], 0);
+}
+
+// A bin's kernel follows its own density, though the renderer keeps the last few densities'
+// kernels (and hits' log scales) in a table: 120 lone bins, 8 bins apart, of hits that repeat
+// and that differ (whole and fractional, more than the table holds), each spread with the
+// centre weight of its own radius, 1.1·3/a^0.4 held to [1, 3] and quantised to 1/16 bin.
+TEST(render_tone, density_estimation_picks_each_bins_kernel_by_its_own_density) {
+  constexpr int kBins = 120;
+  FlameHistogram h(8 * kBins, 7);
+  const auto hits = [](int i) { return i % 3 == 0 ? 1.0 + i % 7 : 0.5 + 0.75 * i; };
+  for (int i = 0; i < kBins; ++i) {
+    h.at(3, 8 * i + 3)[3] = hits(i);
+    h.at(3, 8 * i + 3)[1] = 0.5 * hits(i);
+  }
+  const LogScale scale{1, 0.3};
+  const Filtering f{.estimator_radius = 3, .estimator_minimum = 1, .estimator_curve = 0.4};
+  const FlameHistogram out = density_estimate(h, f, 1, scale, 2);
+  for (int i = 0; i < kBins; ++i) {
+    const double a = hits(i);
+    const double radius = std::lround(std::clamp(1.1 * 3 / std::pow(a, 0.4), 1.0, 3.0) * 16) / 16.0;
+    double sum = 0;
+    for (int dy = -3; dy <= 3; ++dy)
+      for (int dx = -3; dx <= 3; ++dx) {
+        const double d2 = (dx * dx + dy * dy) / (radius * radius);
+        if (d2 < 1) sum += std::exp(-4.5 * d2);
+      }
+    EXPECT_DOUBLE_EQ(out.at(3, 8 * i + 3)[3], scale(a) * a / sum) << i << " " << a;
+    EXPECT_DOUBLE_EQ(out.at(3, 8 * i + 3)[1], scale(a) * 0.5 * a / sum) << i << " " << a;
+  }
 }
 
 TEST(render_tone, the_gaussian_filter_of_half_a_pixel_has_three_taps) {
