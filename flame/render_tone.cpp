@@ -194,26 +194,35 @@ FlameHistogram density_estimate(const FlameHistogram& h, const Filtering& f, int
                                 const LogScale& scale, int threads, const CancelToken& cancel) {
   const int reach = static_cast<int>(std::floor(f.estimator_radius * ss));
   const int bands = (h.height + kDeBand - 1) / kDeBand;
-  // Each band spreads into a buffer of its own (its rows ± reach); the buffers are summed in
-  // band order, so the sums do not depend on the threads.
+  // Band b spreads rows [64b, 64b + 64) into rows 64b − reach … 64b + 64 + reach. Each band's
+  // sums are its own, added in band order, so that they do not depend on the threads: a row
+  // that an earlier band also reaches goes into a buffer of this band's, added to the picture
+  // after all bands; the first band to reach a row spreads into the picture's row itself,
+  // which starts at 0 (0 + p is p: the bits of the sums of buffers of every band before
+  // 27 Nov, without their 2·reach rows a band of allocation, zeroing and adding).
   // (Without reach the renderer scales its histogram in place: the overload below.)
+  const auto first_band = [&](int y) { return y < reach ? 0 : (y - reach) / kDeBand; };
   FlameHistogram out(h.width, h.height);
   std::vector<FlameHistogram> parts(static_cast<std::size_t>(bands));
   parallel_for(static_cast<std::size_t>(bands), threads, [&](std::size_t band, int) {
     cancel.check("density estimation");
-    const int r0 = static_cast<int>(band) * kDeBand, r1 = std::min(h.height, r0 + kDeBand);
-    FlameHistogram& p = parts[band];
-    p = FlameHistogram(h.width, r1 - r0 + 2 * reach);
-    std::vector<double*> rows(static_cast<std::size_t>(p.height));
-    for (int r = 0; r < p.height; ++r) rows[static_cast<std::size_t>(r)] = p.at(r, 0);
-    spread_band(h, f, ss, scale, r0, r1, r0 - reach, rows.data());
+    const int b = static_cast<int>(band);
+    const int r0 = b * kDeBand, r1 = std::min(h.height, r0 + kDeBand);
+    const int y0 = std::max(0, r0 - reach), y1 = std::min(h.height, r1 + reach);
+    int own = y0;  // rows [y0, own) are an earlier band's too
+    while (own < y1 && first_band(own) < b) ++own;
+    parts[band] = FlameHistogram(h.width, own - y0);
+    std::vector<double*> rows(static_cast<std::size_t>(y1 - y0));
+    for (int y = y0; y < y1; ++y)
+      rows[static_cast<std::size_t>(y - y0)] = y < own ? parts[band].at(y - y0, 0) : out.at(y, 0);
+    spread_band(h, f, ss, scale, r0, r1, y0, rows.data());
   });
   for (int band = 0; band < bands; ++band) {
     const FlameHistogram& p = parts[static_cast<std::size_t>(band)];
-    const int first = band * kDeBand - reach;
-    for (int r = std::max(0, first); r < std::min(h.height, first + p.height); ++r) {
-      const double* src = p.at(r - first, 0);
-      double* dst = out.at(r, 0);
+    const int y0 = std::max(0, band * kDeBand - reach);
+    for (int r = 0; r < p.height; ++r) {
+      const double* src = p.at(r, 0);
+      double* dst = out.at(y0 + r, 0);
       for (int i = 0; i < 4 * h.width; ++i) dst[i] += src[i];
     }
   }

@@ -522,6 +522,54 @@ TEST(render_tone, density_estimation_in_place_gives_the_spreading_paths_bits) {
   EXPECT_EQ(out.at(0, 0)[3], 0);
 }
 
+// Density estimation spreads bands of 64 source rows, each into sums of its own added in band
+// order (render_tone.cpp; since 27 Nov the first band to reach a row spreads into the picture's
+// row, the later ones into buffers). The reference: the bands spread one at a time (the other
+// bands' bins emptied; supersample 1, so a bin's radius is its own hits) and the pictures added
+// in band order, from 0. Bit for bit, at a reach of 9 (two bands meet in a row) and 40 (three),
+// for 1, 2 and 3 threads.
+TEST(render_tone, density_estimation_adds_the_bands_sums_in_band_order) {
+  FlameHistogram h(9, 150);
+  Rng rng(5);
+  for (int r = 0; r < h.height; ++r) {
+    // Sparse bins (1 or 2 hits: a radius of 40 reaches 40 or 33 rows) at the top, middle and
+    // bottom of each band, so that at reach 40 the sums of three bands meet in a row with
+    // like magnitudes.
+    if (r % 64 > 5 && (r % 64 < 30 || r % 64 > 35) && r % 64 < 58) continue;
+    for (int c = 0; c < h.width; ++c) {
+      if (rng.below(3) != 0) continue;
+      double* bin = h.at(r, c);
+      bin[3] = 1 + rng.below(2);
+      for (int k = 0; k < 3; ++k) bin[k] = bin[3] * rng.uniform();
+    }
+  }
+  const LogScale scale{1.3, 0.02};
+  for (const double radius : {9.0, 40.0}) {
+    const Filtering f{.estimator_radius = radius, .estimator_minimum = 0, .estimator_curve = 0.4};
+    std::vector<FlameHistogram> parts;
+    for (int band = 0; band * 64 < h.height; ++band) {
+      FlameHistogram one(h.width, h.height);
+      for (int r = band * 64; r < std::min(h.height, band * 64 + 64); ++r)
+        std::copy(h.at(r, 0), h.at(r, 0) + 4 * h.width, one.at(r, 0));
+      parts.push_back(density_estimate(one, f, 1, scale, 1));
+    }
+    FlameHistogram expected(h.width, h.height), reversed(h.width, h.height);
+    for (std::size_t i = 0; i < expected.rgba.size(); ++i)
+      for (std::size_t b = 0; b < parts.size(); ++b) {
+        expected.rgba[i] += parts[b].rgba[i];
+        reversed.rgba[i] += parts[parts.size() - 1 - b].rgba[i];
+      }
+    // Where three bands meet the order shows in the last bits (else this could not fail; two
+    // sums add the same either way).
+    if (radius == 40) {
+      EXPECT_NE(reversed.rgba, expected.rgba);
+    }
+    for (const int threads : {1, 2, 3})
+      EXPECT_EQ(density_estimate(h, f, 1, scale, threads).rgba, expected.rgba)
+          << radius << " " << threads;
+  }
+}
+
 // A bin's kernel follows its own density, though the renderer keeps the last few densities'
 // kernels (and hits' log scales) in a table: 120 lone bins, 8 bins apart, of hits that repeat
 // and that differ (whole and fractional, more than the table holds), each spread with the
