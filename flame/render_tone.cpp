@@ -9,6 +9,8 @@
 #include <cstring>
 #include <optional>
 
+#include "flame/detail/density_kernel.h"
+#include "ifs/cpu.h"
 #include "ifs/error.h"
 #include "ifs/parallel.h"
 
@@ -100,22 +102,43 @@ constexpr double kDeRadiusScale = 1.1;
 // flam3's (Fractorium's tyrantwave_base_forms 7: mean +1.3 levels, now +0.6).
 constexpr double kDeRadiusScaleSupersampled = 1.05;
 
+}  // namespace
+}  // namespace ifsfx::flame
+
 // p[k] += w·v[k] for the four channels, two at a time (GCC's generic vectors: SSE2 on x86-64,
 // scalar code elsewhere; each lane the product and sum of the scalar loop). Left to itself, GCC
 // vectorised the row across bins, with a transposing shuffle for every tap.
-using D2 = double __attribute__((vector_size(16)));
-inline void spread_to(double* p, double w, const double* v) {
-  D2 a, b, va, vb;
-  std::memcpy(&a, p, sizeof a);
-  std::memcpy(&b, p + 2, sizeof b);
+void ifsfx::detail::kernel_scalar::flame_spread_row(double* o, const double* w, int n,
+                                                    const double* v) {
+  using D2 = double __attribute__((vector_size(16)));
+  D2 va, vb;
   std::memcpy(&va, v, sizeof va);
   std::memcpy(&vb, v + 2, sizeof vb);
-  const D2 ww = {w, w};
-  a += ww * va;
-  b += ww * vb;
-  std::memcpy(p, &a, sizeof a);
-  std::memcpy(p + 2, &b, sizeof b);
+  for (int i = 0; i < n; ++i, o += 4) {
+    D2 a, b;
+    std::memcpy(&a, o, sizeof a);
+    std::memcpy(&b, o + 2, sizeof b);
+    const D2 ww = {w[i], w[i]};
+    a += ww * va;
+    b += ww * vb;
+    std::memcpy(o, &a, sizeof a);
+    std::memcpy(o + 2, &b, sizeof b);
+  }
 }
+
+namespace ifsfx::flame {
+
+detail::SpreadRowFunction detail::spread_row_function(CpuLevel level) {
+#if IFSFX_FLAME_X86_KERNELS
+  // AVX-512 runs the AVX2 row: a bin is four doubles.
+  if (level != CpuLevel::scalar) return ifsfx::detail::kernel_avx2::flame_spread_row;
+#else
+  (void)level;
+#endif
+  return ifsfx::detail::kernel_scalar::flame_spread_row;
+}
+
+namespace {
 
 // The last few results of f(x) by x's bits, as a direct-mapped table: a bin's radius (a pow)
 // depends only on its density and its log scale (a log1p) only on its hits, and both repeat
@@ -149,6 +172,7 @@ void spread_band(const FlameHistogram& h, const Filtering& f, int ss, const LogS
   const double max_r = f.estimator_radius * ss, min_r = f.estimator_minimum * ss;
   const double scale_r = ss > 1 ? kDeRadiusScaleSupersampled : kDeRadiusScale;
   DeKernels kernels(max_r);
+  const detail::SpreadRowFunction spread_row = detail::spread_row_function(cpu_level());
   Memo<double> log_scaled;
   Memo<const DeKernel*> kernel_of;
   const auto kernel_of_density = [&](double d) {
@@ -168,8 +192,7 @@ void spread_band(const FlameHistogram& h, const Filtering& f, int ss, const LogS
         if (y < 0 || y >= h.height) continue;
         const int x0 = std::max(0, col + r.dx0), x1 = std::min(h.width, col + r.dx0 + r.n);
         const double* w = kernel.w.data() + r.first + (x0 - (col + r.dx0));
-        double* o = rows[y - origin];
-        for (int x = x0; x < x1; ++x) spread_to(o + 4 * static_cast<std::size_t>(x), w[x - x0], v);
+        if (x1 > x0) spread_row(rows[y - origin] + 4 * static_cast<std::size_t>(x0), w, x1 - x0, v);
       }
     }
 }

@@ -15,6 +15,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "flame/detail/batch_variations.h"
+#include "flame/detail/density_kernel.h"
 #include "flame/detail/render_chaos.h"
 #include "flame/flame_file.h"
 #include "flame/render_camera.h"
@@ -596,6 +597,31 @@ TEST(render_tone, density_estimation_picks_each_bins_kernel_by_its_own_density) 
       }
     EXPECT_DOUBLE_EQ(out.at(3, 8 * i + 3)[3], scale(a) * a / sum) << i << " " << a;
     EXPECT_DOUBLE_EQ(out.at(3, 8 * i + 3)[1], scale(a) * 0.5 * a / sum) << i << " " << a;
+  }
+}
+
+// Density estimation's row of a disc, o[4i + k] += w[i]·v[k]: at every kernel level the CPU
+// runs, the scalar level's bits (a product then a sum, no FMA), for rows of 0 to 40 taps at
+// any offset, and the plain formula's.
+TEST(render_tone, the_spread_row_gives_the_scalar_bits_at_every_kernel_level) {
+  Rng rng(11);
+  for (int n = 0; n <= 40; ++n) {
+    std::vector<double> w(static_cast<std::size_t>(n) + 1), o(4 * w.size() + 4);
+    for (double& x : w) x = rng.uniform();
+    for (double& x : o) x = rng.uniform() * 100;
+    const double v[4] = {rng.uniform(), rng.uniform() * 1e-3, rng.uniform() * 7, 1 / 3.0};
+    const int at = static_cast<int>(rng.below(2));  // row start: 4·at doubles in
+    std::vector<double> expected = o;
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < 4; ++k) {
+        const double p = w[static_cast<std::size_t>(i)] * v[k];  // no FMA: a product, then a sum
+        expected[static_cast<std::size_t>(4 * (at + i) + k)] += p;
+      }
+    for (const CpuLevel level : supported_cpu_levels()) {
+      std::vector<double> got = o;
+      detail::spread_row_function(level)(got.data() + 4 * at, w.data(), n, v);
+      EXPECT_EQ(got, expected) << to_string(level) << " " << n;
+    }
   }
 }
 
