@@ -2,9 +2,8 @@
 // Collage fitting on real shapes (issues 15 and 32): every shape × every N of --maps is fitted
 // once per method of --methods in one run: `collage` (the fit before issue 32: the collage W(L)
 // and its iterates), `attractor` (issue 32: the attractor itself, from the best few starts),
-// `noscan` (the attractor method without the self-similarity scan's starts, as it was before),
-// `noreseed` (the attractor method without the re-seed of maps where the error is, as before it)
-// and `nosweep` (without the one-map-at-a-time CMA-ES on the working raster, as before it).
+// `noscan` (the attractor method without the self-similarity scan's starts, as it was before) and
+// `noreseed` (the attractor method without the re-seed of maps where the error is, as before it).
 // The shapes: the silhouettes of bench/collage-shapes/ (holes, thin parts, letters, a logo with
 // rings and text) and two fractals' own pictures drawn here: the attractor of the shipped
 // barnsley-fern preset and that of the first FractalDB category of seed 1 (ifsfx dataset's
@@ -15,8 +14,7 @@
 // 2 × wall on an idle 2-core machine, less on a shared one); then the medians, and for shapes
 // with holes IoU(L, L with its holes filled), the most a fit without holes can reach.
 //   build/release/bench/collage_bench [--only fish,logo,fern] [--maps 4,6,8]
-//       [--methods collage,attractor,noscan,noreseed,nosweep] [--max-seconds 30] [--max-evaluations
-//       N]
+//       [--methods collage,attractor,noscan,noreseed] [--max-seconds 30] [--max-evaluations N]
 //       [--previews DIR]
 //       [--truth 1]
 // --truth 1: for the drawn fractals fitted with their own number of maps, a diagnosis line for
@@ -140,10 +138,9 @@ Args parse(int argc, char** argv) {
     } else if (flag == "--methods") {
       a.methods = split(value);
       for (const auto& m : a.methods)
-        if (m != "collage" && m != "attractor" && m != "noscan" && m != "noreseed" &&
-            m != "nosweep" && m != "sweep")
+        if (m != "collage" && m != "attractor" && m != "noscan" && m != "noreseed")
           throw Error(ErrorKind::parse,
-                      "--methods: collage, attractor, noscan, noreseed, nosweep (got " + m + ")");
+                      "--methods: collage, attractor, noscan, noreseed (got " + m + ")");
     } else if (flag == "--max-seconds") {
       a.max_seconds = std::stod(value);
     } else if (flag == "--max-evaluations") {
@@ -231,9 +228,6 @@ Row fit_one(const Args& args, const Shape& shape, int maps, const std::string& m
   if (method == "noscan") options.similarity_starts = 0;
   // noreseed: the attractor method without the re-seed of maps where the error is (before it).
   if (method == "noreseed") options.reseed_share = 0;
-  // nosweep: the attractor method without the one-map-at-a-time CMA-ES (before it).
-  if (method == "nosweep") options.map_sweeps = 0;
-  if (method == "sweep") options.map_sweeps = std::max(1, options.map_sweeps);
   options.max_seconds = args.max_seconds;
   options.max_evaluations = args.max_evaluations;
   options.threads = args.threads;

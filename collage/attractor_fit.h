@@ -45,15 +45,6 @@ struct AttractorRefined {
 AttractorRefined refine_on_attractor(const AttractorLoss& loss, std::span<const AffineMap> start,
                                      const AttractorRefineOptions& options = {});
 
-// CMA-ES on `loss` over the six coordinates of maps[index] alone, the others held where they are
-// (block coordinate descent): a 6-dimensional search takes far fewer evaluations per step than
-// one over all 6N coordinates, so on a fine raster, where each evaluation is dear, one map at a
-// time moves further for the same budget. Same contract as refine_on_attractor; throws
-// Error{invalid_argument} for an index out of range.
-AttractorRefined refine_map_on_attractor(const AttractorLoss& loss, std::span<const AffineMap> maps,
-                                         std::size_t index,
-                                         const AttractorRefineOptions& options = {});
-
 // All maps moved at random in contractive coordinates: every coordinate gets a normal step of
 // `scale` (radians, logits, 0.1 plane units) drawn from `rng`; reflections are kept.
 std::vector<AffineMap> perturbed(std::span<const AffineMap> maps, Point centre, double max_factor,

@@ -138,10 +138,6 @@ struct FitOptions {
   // error is (reseed.h, issue 32 item 3), at the start of the fine raster's stage (what it leaves
   // goes to that stage; without fine_target, the end of the working raster's); 0..0.15, 0 = none.
   double reseed_share = 0.15;
-  // FitMethod::attractor: passes of block coordinate descent on the working raster (every map in
-  // turn moved by CMA-ES over its six coordinates, the others fixed; attractor_fit.h) in the
-  // second half of that raster's stage, after the one over all maps at once; 0 = none.
-  int map_sweeps = 0;
   // moments: CMA-ES runs after the first, each from a seeded k-means++ split. search: runs
   // after the first that start from the next-best choice of maps from the pool; later runs
   // kick the best maps so far, for as long as the budget lasts.

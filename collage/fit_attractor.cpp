@@ -22,8 +22,6 @@ constexpr double kCoarseEnd = 0.2, kMiddleEnd = 0.35, kEscapeEnd = 0.5, kFineSta
 // of 0.01: nothing); with ICP after it 0.898; two rounds 0.908, three 0.909.
 constexpr double kFinePoints = 1, kFineSigma = 0.003;
 constexpr int kFineRounds = 2;
-// The first step of the one-map-at-a-time CMA-ES (sweep_maps) on the working raster.
-constexpr double kSweepSigma = 0.02;
 // How many escapes share their stage, and how far each moves the maps (coordinates of
 // map_params.h: radians, logits, 0.1 plane units).
 constexpr int kEscapes = 4;
@@ -82,10 +80,9 @@ class Stages {
   }
 
   // CMA-ES at `level` from `start` with the evaluations left before `fraction` of the stages'
-  // share, divided among `ways` runs, and until that share of the time; over all maps, or over
-  // start[map] alone with the others fixed (map ≥ 0).
+  // share, divided among `ways` runs, and until that share of the time.
   AttractorRefined refine(int level, const std::vector<AffineMap>& start, double sigma,
-                          double fraction, int ways, int map = -1) {
+                          double fraction, int ways) {
     const AttractorLoss& loss = levels_[static_cast<std::size_t>(level)];
     const double cost = unit_cost(loss.size()) * loss.points() / 4;
     const long units = evaluations_until(fraction) / std::max(1, ways);
@@ -106,9 +103,7 @@ class Stages {
                            p.best, p.best, std::max(fitting_.chooser.best_iou, 0.0),
                            budget_.seconds()});
       };
-    AttractorRefined found =
-        map < 0 ? refine_on_attractor(loss, start, o)
-                : refine_map_on_attractor(loss, start, static_cast<std::size_t>(map), o);
+    AttractorRefined found = refine_on_attractor(loss, start, o);
     budget_.evaluations += static_cast<long>(static_cast<double>(found.evaluations) * cost);
     if (found.deadline_reached) budget_.capped = true;
     ++run_;
@@ -201,22 +196,6 @@ std::vector<AffineMap> escape(Stages& stages, std::vector<AffineMap> current, do
   }
   value = best_value;
   return best;
-}
-
-// Block coordinate descent from `maps` on `level` until `end` of the stages' share: `passes`
-// times, every map in turn moved by CMA-ES over its own six coordinates with the others fixed,
-// each run getting an equal part of what is left. A six-dimensional CMA-ES (λ = 9) takes a step
-// for a fraction of the evaluations one over all 6N coordinates does (λ = 14 for N = 6, and a
-// covariance of 36² to learn), so a map can settle where the others leave room.
-std::vector<AffineMap> sweep_maps(Stages& stages, int level, std::vector<AffineMap> maps,
-                                  double sigma, double end, int passes) {
-  const int count = static_cast<int>(maps.size());
-  for (int pass = 0; pass < passes; ++pass)
-    for (int k = 0; k < count; ++k) {
-      if (!stages.open(end)) return maps;
-      maps = stages.refine(level, maps, sigma, end, (passes - pass) * count - k, k).maps;
-    }
-  return maps;
 }
 
 // The last word is the fine raster's (the last 30% of the stages' share), in rounds: CMA-ES on
@@ -365,16 +344,8 @@ void optimise_attractor(Fitting& fitting, std::vector<std::vector<AffineMap>> st
   // best on it of the escapes' best and the best attractor before these stages.
   std::vector<AffineMap> final_maps = stages.better_at_last_level(best, starts.front());
   const double last_end = stages.has_fine() ? kFineStart : stages.reseed_begin();
-  // With map sweeps (FitOptions::map_sweeps), the working raster's share is split: all maps at
-  // once on its first half, one map at a time on its second.
-  const int passes = std::max(0, fitting.options.map_sweeps);
-  const double all_end = passes > 0 ? (kEscapeEnd + last_end) / 2 : last_end;
-  if (stages.open(all_end)) {
-    final_maps = stages.refine(2, final_maps, 0.01, all_end, 1).maps;
-    fitting.chooser.consider(final_maps);
-  }
-  if (passes > 0 && stages.open(last_end)) {
-    final_maps = sweep_maps(stages, 2, final_maps, kSweepSigma, last_end, passes);
+  if (stages.open(last_end)) {
+    final_maps = stages.refine(2, final_maps, 0.01, last_end, 1).maps;
     fitting.chooser.consider(final_maps);
   }
   // ICP on the collage (refine.h) aligns the maps below a pixel where L is self-similar, as a

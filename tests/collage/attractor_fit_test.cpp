@@ -26,28 +26,6 @@ TEST(attractor_fit, cmaes_on_the_attractor_puts_moved_quadrants_back) {
   for (const AffineMap& f : r.maps) EXPECT_LT(f.contraction(), 0.97);
 }
 
-TEST(attractor_fit, one_map_at_a_time_puts_the_moved_quadrant_back_and_leaves_the_others) {
-  // One quadrant map slid a quarter of the square off its quadrant: A misses that quadrant.
-  auto start = testing::quadrant_maps();
-  start[2].e += 0.25;
-  start[2].f -= 0.1;
-  const AttractorLoss loss(testing::framed_square(), {.size = 32});
-  const double before = loss.terms(start).iou;
-  ASSERT_LT(before, 0.85);
-  const AttractorRefined r = refine_map_on_attractor(
-      loss, start, 2, {.centre = {0.5, 0.5}, .sigma = 0.3, .max_evaluations = 600});
-  EXPECT_GE(loss.terms(r.maps).iou, 0.95) << "from " << before;
-  EXPECT_EQ(r.value, loss(r.maps));
-  // It is back over its quadrant (larger than it was, perhaps: overlap is not penalised).
-  EXPECT_LT(r.maps[2]({0.5, 0.5}).x, 0.42);
-  EXPECT_GT(r.maps[2]({0.5, 0.5}).y, 0.6);
-  // The other maps are where they were (their coordinates' round trip aside).
-  for (std::size_t n : {0u, 1u, 3u})
-    for (std::size_t k = 0; k < 6; ++k)
-      EXPECT_NEAR(r.maps[n].coefficients()[k], start[n].coefficients()[k], 1e-9) << n;
-  EXPECT_THROW(refine_map_on_attractor(loss, start, 4), Error);
-}
-
 TEST(attractor_fit, the_same_seed_gives_the_same_maps_for_any_thread_count) {
   auto start = testing::quadrant_maps();
   start[1].e += 0.05;
