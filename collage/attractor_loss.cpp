@@ -73,6 +73,7 @@ AttractorLoss::AttractorLoss(const cv::Mat& target, const AttractorLossOptions& 
   distance_ = distance_to(canvas);
   for (int i = 0; i < side_ * side_; ++i)
     if (canvas.data[i]) inside_.push_back(i);
+  bounds_ = cv::boundingRect(canvas);
   Rng rng(stream_seed(options.seed, 0x61747472ULL));
   const auto count =
       kLanes * (static_cast<std::size_t>(options.points * size_ * size_) / kLanes + kBurnIn);
@@ -119,17 +120,36 @@ AttractorTerms AttractorLoss::terms(std::span<const AffineMap> maps) const {
   const double points = static_cast<double>(draws_.size() - kLanes * kBurnIn);
   t.spill = spill / points / size_;
   long hit = 0, both = 0;
-  for (std::uint8_t h : hits) hit += h;
+  cv::Rect box = bounds_;  // L's pixels and A's, on the canvas
+  for (int r = 0; r < side_; ++r) {
+    const std::uint8_t* row = hits.data() + static_cast<std::size_t>(r) * side_;
+    long in_row = 0;
+    for (int c = 0; c < side_; ++c) in_row += row[c];
+    if (in_row == 0) continue;
+    hit += in_row;
+    int first = 0, last = side_ - 1;
+    while (!row[first]) ++first;
+    while (!row[last]) --last;
+    box |= cv::Rect(first, r, last - first + 1, 1);
+  }
   for (int i : inside_) both += hits[static_cast<std::size_t>(i)];
   const auto inside = static_cast<long>(inside_.size());
   t.iou = static_cast<double>(both) / static_cast<double>(inside + hit - both);
-  // Coverage: how far L's pixels are from the nearest pixel A hits (zeros of `empty`).
-  cv::Mat empty(side_, side_, CV_8UC1), far;
-  for (std::size_t i = 0; i < hits.size(); ++i) empty.data[i] = hits[i] ? 0 : 255;
+  // Coverage: how far L's pixels are from the nearest pixel A hits (zeros of `empty`). The
+  // distance transform runs on the box around L and A only: a 3×3 chamfer distance is a sum of
+  // integer steps (OpenCV's fixed point) along a path that can stay in the box of its two ends,
+  // so the distances there are the whole canvas's, bit for bit, at a fraction of the pixels
+  // (the canvas reaches a quarter of the square past it on every side).
   if (hit > 0) {
+    cv::Mat empty(box.height, box.width, CV_8UC1), far;
+    for (int r = 0; r < box.height; ++r) {
+      const std::uint8_t* row = hits.data() + static_cast<std::size_t>(r + box.y) * side_ + box.x;
+      auto* out = empty.ptr<std::uint8_t>(r);
+      for (int c = 0; c < box.width; ++c) out[c] = row[c] ? 0 : 255;
+    }
     cv::distanceTransform(empty, far, cv::DIST_L2, cv::DIST_MASK_3);
     double sum = 0;
-    for (int i : inside_) sum += far.ptr<float>()[i];
+    for (int i : inside_) sum += far.at<float>(i / side_ - box.y, i % side_ - box.x);
     t.coverage = sum / static_cast<double>(inside) / size_;
   } else {
     t.coverage = 1;

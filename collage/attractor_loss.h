@@ -78,6 +78,7 @@ class AttractorLoss {
   cv::Mat target_;
   cv::Mat distance_;          // CV_32FC1 on the canvas: distance to L's nearest pixel centre
   std::vector<int> inside_;   // canvas indices of L's pixels
+  cv::Rect bounds_;           // their bounding box on the canvas
   std::vector<float> draws_;  // the common random numbers, uniform in [0, 1)
   AttractorLossOptions options_;
 };

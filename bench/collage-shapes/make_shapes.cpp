@@ -273,6 +273,30 @@ cv::Mat bird() {
   return m > 127;
 }
 
+// A dog standing, seen from the side: a long body, a deep chest, a neck rising to a head with a
+// muzzle and a drooping ear, four legs (the far ones a step behind the near ones) and a tail
+// raised in a curve (added after the fitter's sixth issue-32 pass, before its seventh, to check
+// it on an animal it was not tuned to).
+cv::Mat dog() {
+  cv::Mat m(300, 360, CV_8UC1, cv::Scalar(0));
+  const cv::Scalar on(255);
+  cv::ellipse(m, {180, 150}, {96, 42}, -4, 0, 360, on, cv::FILLED, cv::LINE_AA);  // body
+  cv::ellipse(m, {112, 160}, {40, 46}, 0, 0, 360, on, cv::FILLED, cv::LINE_AA);   // chest
+  cv::ellipse(m, {90, 104}, {26, 46}, 30, 0, 360, on, cv::FILLED, cv::LINE_AA);   // neck
+  cv::circle(m, {72, 64}, 28, on, cv::FILLED, cv::LINE_AA);                       // head
+  cv::ellipse(m, {38, 78}, {30, 13}, 8, 0, 360, on, cv::FILLED, cv::LINE_AA);     // muzzle
+  const std::vector<cv::Point> ear = {{78, 40}, {96, 42}, {98, 84}, {86, 86}};    // drooping
+  cv::fillPoly(m, std::vector<std::vector<cv::Point>>{ear}, on, cv::LINE_AA);
+  stroke(m, {104, 186}, {98, 282}, 20);   // near front leg
+  stroke(m, {130, 186}, {132, 278}, 16);  // far front leg
+  stroke(m, {238, 168}, {252, 222}, 26);  // near hind leg: thigh
+  stroke(m, {252, 222}, {240, 282}, 18);  // its shank
+  stroke(m, {212, 170}, {214, 278}, 16);  // far hind leg
+  stroke(m, {268, 136}, {304, 96}, 12);   // tail
+  stroke(m, {304, 96}, {314, 52}, 10);
+  return m > 127;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
@@ -294,6 +318,7 @@ int main(int argc, char** argv) try {
   write_shape(out, "key", key());
   write_shape(out, "cat", cat());
   write_shape(out, "bird", bird());
+  write_shape(out, "dog", dog());
   return 0;
 } catch (const std::exception& e) {
   std::fprintf(stderr, "make_collage_shapes: %s\n", e.what());

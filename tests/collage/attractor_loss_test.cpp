@@ -57,6 +57,19 @@ TEST(attractor_loss, spill_and_coverage_are_plane_distances) {
   EXPECT_LT(t.coverage, 0.7);
 }
 
+TEST(attractor_loss, coverage_is_the_mean_chamfer_distance_of_l_from_a) {
+  // A is the left half of L (four maps of the half onto its quarters): on 32², L is 24×24
+  // pixels and each row's 12 right-hand pixels lie 1..12 horizontal steps of the 3×3 chamfer
+  // distance (0.955 pixel) from A, so the mean over L is 0.955 · 78 / 24 pixels, 0.0970 plane
+  // units.
+  const AttractorLoss loss(testing::framed_square(), {.size = 32});
+  std::vector<AffineMap> half;
+  for (double y : {0.125, 0.5})
+    for (double x : {0.125, 0.3125})
+      half.push_back(rectangle_map(0.125, 0.125, 0.5, 0.875, x, y, x + 0.1875, y + 0.375));
+  EXPECT_NEAR(loss.terms(half).coverage, 0.955 * 78 / 24 / 32, 0.002);
+}
+
 TEST(attractor_loss, the_raster_is_what_the_points_hit) {
   const AttractorLoss loss(testing::framed_square(), {.size = 32});
   const cv::Mat a = loss.raster(testing::quadrant_maps());
