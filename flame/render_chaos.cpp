@@ -45,13 +45,18 @@ struct Step {
   bool invisible = false;
 };
 
+// Two doubles as one value (GCC's generic vectors, one SSE2 register): a point's x and y lanes
+// go through a map's products and sums together, each lane the scalar operations in order.
+using D2 = double __attribute__((vector_size(16)));
+
 // An affine_only step flat, for the walk's point-by-point loop: its maps, the sum's weights and
 // the colour update in one small record (a Step with its colours is over 4 KB, and its terms
-// are behind a pointer).
+// are behind a pointer). The maps by columns, (a, c), (b, d), (e, f): p ↦ col_x·x + col_y·y +
+// col_o is (a·x + b·y + e, c·x + d·y + f), AffineMap's operations in its order on each lane.
 constexpr std::size_t kFlatTerms = 4;
 struct Flat {
-  AffineMap pre, post;
-  std::array<double, kFlatTerms> w{};  // the sum's linear weights, in order
+  D2 pre_x{}, pre_y{}, pre_o{}, post_x{}, post_y{}, post_o{};
+  std::array<D2, kFlatTerms> w{};  // the sum's linear weights, in order, each in both lanes
   double keep = 1, shift = 0;
   std::uint32_t terms = 0;
   bool has_sum = false, has_post = false;
@@ -147,26 +152,17 @@ void move_flat(const Plan& plan, Walkers& a, std::size_t m) {
   const Flat* flat = plan.flat.data();
   for (std::size_t i = 0; i < m; ++i) {
     const Flat& s = flat[a.k[i]];
-    const double x = a.x[i], y = a.y[i];
-    double sx = s.pre.a * x + s.pre.b * y + s.pre.e;
-    double sy = s.pre.c * x + s.pre.d * y + s.pre.f;
+    D2 p = s.pre_x * a.x[i] + s.pre_y * a.y[i] + s.pre_o;
     if (Shape != FlatShape::any || s.has_sum) {
-      const double qx = sx, qy = sy;
+      const D2 q = p;
       const std::uint32_t terms = Shape == FlatShape::any ? s.terms : 1;
-      sx = 0;
-      sy = 0;
-      for (std::uint32_t t = 0; t < terms; ++t) {
-        sx += s.w[t] * qx;
-        sy += s.w[t] * qy;
-      }
+      p = D2{0, 0};
+      for (std::uint32_t t = 0; t < terms; ++t) p += s.w[t] * q;
     }
-    if (Shape == FlatShape::one_term_post || (Shape == FlatShape::any && s.has_post)) {
-      a.x[i] = s.post.a * sx + s.post.b * sy + s.post.e;
-      a.y[i] = s.post.c * sx + s.post.d * sy + s.post.f;
-    } else {
-      a.x[i] = sx;
-      a.y[i] = sy;
-    }
+    if (Shape == FlatShape::one_term_post || (Shape == FlatShape::any && s.has_post))
+      p = s.post_x * p[0] + s.post_y * p[1] + s.post_o;
+    a.x[i] = p[0];
+    a.y[i] = p[1];
     a.c[i] = s.keep * a.c[i] + s.shift;
   }
 }
@@ -322,14 +318,19 @@ void flatten(Plan& plan) {
       plan.flat.clear();
       return;
     }
-    Flat f{.pre = s.pre,
-           .post = s.post,
+    Flat f{.pre_x = D2{s.pre.a, s.pre.c},
+           .pre_y = D2{s.pre.b, s.pre.d},
+           .pre_o = D2{s.pre.e, s.pre.f},
+           .post_x = D2{s.post.a, s.post.c},
+           .post_y = D2{s.post.b, s.post.d},
+           .post_o = D2{s.post.e, s.post.f},
            .keep = step.keep,
            .shift = step.shift,
            .terms = static_cast<std::uint32_t>(s.sum_terms.size()),
            .has_sum = s.has_sum,
            .has_post = s.has_post};
-    for (std::size_t t = 0; t < s.sum_terms.size(); ++t) f.w[t] = s.sum_terms[t].w;
+    for (std::size_t t = 0; t < s.sum_terms.size(); ++t)
+      f.w[t] = D2{s.sum_terms[t].w, s.sum_terms[t].w};
     plan.flat.push_back(f);
     one_term = one_term && s.has_sum && s.sum_terms.size() == 1;
     post = post && s.has_post;

@@ -176,6 +176,31 @@ TEST(render_flame, an_affine_only_flame_gives_the_bytes_of_the_general_walk) {
   EXPECT_GT(cv::countNonZero(flat.reshape(1)), 100);
   EXPECT_EQ(cv::norm(flat, render_flame(uniform_general, {.seed = 4, .threads = 2}), cv::NORM_INF),
             0);
+  // xaos, an invisible xform (opacity 0: its points are not plotted) and one that throws its
+  // points past the escape bound (its walkers start again), an xform without a post map.
+  Flame mixed = uniform;
+  mixed.xforms[0].chaos = {0.5, 3, 1};
+  mixed.xforms[1].chaos = {2, 0, 1};
+  Xform hidden{.pre = {0.4, 0.2, -0.2, 0.4, 0.1, -0.3}, .colour = 0.5, .colour_speed = 0.5};
+  hidden.variations = {term("linear", 1)};
+  hidden.post = AffineMap{1, 0, 0, 1, 0.2, 0};
+  hidden.opacity = 0;
+  Xform away{.pre = {1e6, 0, 0, 1e6, 1e6, 0}, .weight = 0.02};
+  away.variations = {term("linear", 1)};
+  away.post = AffineMap{1e6, 0, 0, 1e6, 0, 0};
+  mixed.xforms.push_back(hidden);
+  mixed.xforms.push_back(away);
+  Flame mixed_general = mixed;
+  for (Xform& xf : mixed_general.xforms) xf.variations.push_back(term("spherical", 0));
+  FlameRenderStats stats;
+  const cv::Mat walked = render_flame(mixed, {.seed = 6, .threads = 2}, &stats);
+  EXPECT_GT(cv::countNonZero(walked.reshape(1)), 100);
+  EXPECT_GT(stats.reseeded, 100u);
+  EXPECT_EQ(cv::norm(walked, render_flame(mixed_general, {.seed = 6, .threads = 2}), cv::NORM_INF),
+            0);
+  // Without the invisible xform the picture has more points: the opacity was obeyed.
+  mixed.xforms[2].opacity = 1;
+  EXPECT_GT(cv::norm(walked, render_flame(mixed, {.seed = 6, .threads = 2}), cv::NORM_L1), 0);
 }
 
 // Where every xform sets the colour coordinate to its own (colour_speed 1), each xform's hits
