@@ -45,17 +45,12 @@ struct Step {
   bool invisible = false;
 };
 
-// Two doubles as one value (GCC's generic vectors, one SSE2 register): a point's x and y lanes
-// go through a map's products and sums together, each lane the scalar operations in order.
-using D2 = double __attribute__((vector_size(16)));
-
 // An affine_only step flat, for the walk's point-by-point loop: its maps, the sum's weights and
 // the colour update in one small record (a Step with its colours is over 4 KB, and its terms
-// are behind a pointer). The maps by columns, (a, c), (b, d), (e, f): p ↦ col_x·x + col_y·y +
-// col_o is (a·x + b·y + e, c·x + d·y + f), AffineMap's operations in its order on each lane.
+// are behind a pointer). The maps as PairMaps: x and y in one pair of lanes.
 constexpr std::size_t kFlatTerms = 4;
 struct Flat {
-  D2 pre_x{}, pre_y{}, pre_o{}, post_x{}, post_y{}, post_o{};
+  PairMap pre, post;
   std::array<D2, kFlatTerms> w{};  // the sum's linear weights, in order, each in both lanes
   double keep = 1, shift = 0;
   std::uint32_t terms = 0;
@@ -152,7 +147,7 @@ void move_flat(const Plan& plan, Walkers& a, std::size_t m) {
   const Flat* flat = plan.flat.data();
   for (std::size_t i = 0; i < m; ++i) {
     const Flat& s = flat[a.k[i]];
-    D2 p = s.pre_x * a.x[i] + s.pre_y * a.y[i] + s.pre_o;
+    D2 p = s.pre(a.x[i], a.y[i]);
     if (Shape != FlatShape::any || s.has_sum) {
       const D2 q = p;
       const std::uint32_t terms = Shape == FlatShape::any ? s.terms : 1;
@@ -160,7 +155,7 @@ void move_flat(const Plan& plan, Walkers& a, std::size_t m) {
       for (std::uint32_t t = 0; t < terms; ++t) p += s.w[t] * q;
     }
     if (Shape == FlatShape::one_term_post || (Shape == FlatShape::any && s.has_post))
-      p = s.post_x * p[0] + s.post_y * p[1] + s.post_o;
+      p = s.post(p[0], p[1]);
     a.x[i] = p[0];
     a.y[i] = p[1];
     a.c[i] = s.keep * a.c[i] + s.shift;
@@ -324,12 +319,8 @@ void flatten(Plan& plan) {
       plan.flat.clear();
       return;
     }
-    Flat f{.pre_x = D2{s.pre.a, s.pre.c},
-           .pre_y = D2{s.pre.b, s.pre.d},
-           .pre_o = D2{s.pre.e, s.pre.f},
-           .post_x = D2{s.post.a, s.post.c},
-           .post_y = D2{s.post.b, s.post.d},
-           .post_o = D2{s.post.e, s.post.f},
+    Flat f{.pre = PairMap(s.pre),
+           .post = PairMap(s.post),
            .keep = step.keep,
            .shift = step.shift,
            .terms = static_cast<std::uint32_t>(s.sum_terms.size()),
