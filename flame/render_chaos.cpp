@@ -97,6 +97,7 @@ struct Plan {
   std::vector<std::uint32_t> fixed;           // PlotTables::fixed, when it applies
   PlotTables tables;
   PlotFunction plot = nullptr;  // the kernel level's
+  HitsFunction hits = nullptr;  // the kernel level's
   ListFunction list = nullptr;  // the kernel level's, for at most kListXforms steps
   bool any_invisible = false;
 };
@@ -111,17 +112,22 @@ struct Bins {
   explicit Bins(const FlameRaster& r) : lo(4 * static_cast<std::size_t>(r.bins_x) * r.bins_y) {}
 };
 
-// Plots the points whose bin `at` is not kOffBin. (A pass prefetching the step's 256 bins first
-// cost more than it saved, 0-14 % of the CPU on genomes and Sierpinski flames, 27 Nov 17:44: the
-// plot's own loads already overlap their misses.)
+// Plots the points whose bin `at` is not kOffBin, listed first (HitsFunction). (A pass
+// prefetching the step's 256 bins first cost more than it saved, 0-14 % of the CPU on genomes
+// and Sierpinski flames, 27 Nov 17:44: the plot's own loads already overlap their misses.)
 void plot_all(const Plan& plan, const std::array<std::uint32_t, kN>& at,
               const std::array<std::uint32_t, kN>& k, const std::array<double, kN>& c,
               std::size_t m, Bins& bins) {
-  for (std::size_t i = 0; i < m;) {
+  std::array<std::uint32_t, kN> list;
+  const std::size_t n = plan.hits(at.data(), m, list.data());
+  // Every walker plots (a linear flame's usual step): no indirection.
+  const std::uint32_t* hits = n == m ? nullptr : list.data();
+  for (std::size_t j = 0; j < n;) {
     unsigned wrapped = 0;
-    i = plan.plot(plan.tables, bins.lo.data(), i, m, at.data(), k.data(), c.data(), &wrapped);
-    for (std::size_t j = 0; j < 4; ++j)
-      if ((wrapped >> j & 1) != 0) bins.carries.push_back(4 * std::size_t{at[i - 1]} + j);
+    j = plan.plot(plan.tables, bins.lo.data(), j, n, hits, at.data(), k.data(), c.data(), &wrapped);
+    const std::size_t i = hits ? hits[j - 1] : j - 1;
+    for (std::size_t ch = 0; ch < 4; ++ch)
+      if ((wrapped >> ch & 1) != 0) bins.carries.push_back(4 * std::size_t{at[i]} + ch);
   }
 }
 
@@ -357,7 +363,7 @@ void fix_colours(Plan& plan) {
     c[j] = plan.steps[j].shift;
   }
   unsigned wrapped = 0;
-  plan.plot(plan.tables, plan.fixed.data(), 0, n, at.data(), k.data(), c.data(), &wrapped);
+  plan.plot(plan.tables, plan.fixed.data(), 0, n, nullptr, at.data(), k.data(), c.data(), &wrapped);
   plan.tables.fixed = plan.fixed.data();
 }
 
@@ -387,6 +393,7 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   }
   plan.tables = {plan.colours.data(), plan.linear_palette};
   plan.plot = plot_function(cpu_level());
+  plan.hits = hits_function(cpu_level());
   plan.list = list_function(cpu_level());
   fix_colours(plan);
   return plan;
