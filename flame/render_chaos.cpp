@@ -148,7 +148,7 @@ void start(Walkers& a, std::size_t i, Rng& rng) {
 
 // Each walker moved by the Flat record of its xform: XformStep::moved's operations in its order
 // (the sum from 0, w·q added term by term), so the same bits, with the shape's branches resolved.
-template <FlatShape Shape>
+template <FlatShape Shape, bool Colour>
 void move_flat(const Plan& plan, Walkers& a, std::size_t m) {
   const Flat* flat = plan.flat.data();
   for (std::size_t i = 0; i < m; ++i) {
@@ -164,8 +164,16 @@ void move_flat(const Plan& plan, Walkers& a, std::size_t m) {
       p = s.post(p[0], p[1]);
     a.x[i] = p[0];
     a.y[i] = p[1];
-    a.c[i] = s.keep * a.c[i] + s.shift;
+    if (Colour) a.c[i] = s.keep * a.c[i] + s.shift;
   }
+}
+
+// The shape's move, and without the colour update where the plot reads no coordinate (each
+// xform's hits one fixed colour, fix_colours: the walkers' c is then never read).
+template <FlatShape Shape>
+void move_flat(const Plan& plan, Walkers& a, std::size_t m) {
+  if (plan.tables.fixed) return move_flat<Shape, false>(plan, a, m);
+  move_flat<Shape, true>(plan, a, m);
 }
 
 // Each of the m walkers picks its next xform (a.k ← it). A plan of affine_only steps moves each
