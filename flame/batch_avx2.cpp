@@ -105,6 +105,28 @@ void flame_list_by_xform(const std::uint32_t* k, std::size_t m, std::size_t step
   first[steps] = c;
 }
 
+// The scalar level's list of the walkers to plot eight at a time: the lanes with a bin packed
+// to the front as in flame_list_by_xform, so the same list.
+std::size_t flame_hits(const std::uint32_t* at, std::size_t m, std::uint32_t* hits) {
+  const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  const __m256i off = _mm256_set1_epi32(-1);  // kOffBin
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < m; i += 8) {
+    const __m256i bins = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(at + i));
+    auto mask = static_cast<unsigned>(
+                    ~_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(bins, off)))) &
+                0xFFu;
+    if (m - i < 8) mask &= (1u << (m - i)) - 1;
+    const __m256i perm =
+        _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(kPack[mask])));
+    const __m256i walkers = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(i)), iota);
+    _mm256_storeu_si256(reinterpret_cast<__m256i*>(hits + n),
+                        _mm256_permutevar8x32_epi32(walkers, perm));
+    n += static_cast<std::size_t>(__builtin_popcount(mask));
+  }
+  return n;
+}
+
 // The scalar level's flame_bin_numbers four points at a time: the same products and sums in
 // the same order (no FMA), exact comparisons and truncations, so the same numbers.
 std::size_t flame_bin_numbers(const flame::detail::BinGrid& g, std::size_t n, const double* x,

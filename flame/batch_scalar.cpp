@@ -75,6 +75,17 @@ void flame_list_by_xform(const std::uint32_t* k, std::size_t m, std::size_t step
   first[steps] = c;
 }
 
+// The reference list of the walkers to plot: the store is always made, the count moves on
+// where the walker has a bin.
+std::size_t flame_hits(const std::uint32_t* at, std::size_t m, std::uint32_t* hits) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < m; ++i) {
+    hits[n] = static_cast<std::uint32_t>(i);
+    n += at[i] != flame::detail::kOffBin ? 1 : 0;
+  }
+  return n;
+}
+
 // The reference of every level's bin numbering: AffineMap's operations in its order, the
 // comparisons and truncations exact.
 std::size_t flame_bin_numbers(const flame::detail::BinGrid& g, std::size_t n, const double* x,

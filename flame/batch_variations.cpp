@@ -55,4 +55,13 @@ ListFunction list_function(CpuLevel level) {
   return ifsfx::detail::kernel_scalar::flame_list_by_xform;
 }
 
+HitsFunction hits_function(CpuLevel level) {
+#if IFSFX_FLAME_X86_KERNELS
+  if (level != CpuLevel::scalar) return ifsfx::detail::kernel_avx2::flame_hits;
+#else
+  (void)level;
+#endif
+  return ifsfx::detail::kernel_scalar::flame_hits;
+}
+
 }  // namespace ifsfx::flame::detail

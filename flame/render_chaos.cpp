@@ -47,11 +47,11 @@ struct Step {
 
 // An affine_only step flat, for the walk's point-by-point loop: its maps, the sum's weights and
 // the colour update in one small record (a Step with its colours is over 4 KB, and its terms
-// are behind a pointer).
+// are behind a pointer). The maps as PairMaps: x and y in one pair of lanes.
 constexpr std::size_t kFlatTerms = 4;
 struct Flat {
-  AffineMap pre, post;
-  std::array<double, kFlatTerms> w{};  // the sum's linear weights, in order
+  PairMap pre, post;
+  std::array<D2, kFlatTerms> w{};  // the sum's linear weights, in order, each in both lanes
   double keep = 1, shift = 0;
   std::uint32_t terms = 0;
   bool has_sum = false, has_post = false;
@@ -97,6 +97,7 @@ struct Plan {
   std::vector<std::uint32_t> fixed;           // PlotTables::fixed, when it applies
   PlotTables tables;
   PlotFunction plot = nullptr;  // the kernel level's
+  HitsFunction hits = nullptr;  // the kernel level's
   ListFunction list = nullptr;  // the kernel level's, for at most kListXforms steps
   bool any_invisible = false;
 };
@@ -111,17 +112,22 @@ struct Bins {
   explicit Bins(const FlameRaster& r) : lo(4 * static_cast<std::size_t>(r.bins_x) * r.bins_y) {}
 };
 
-// Plots the points whose bin `at` is not kOffBin. (A pass prefetching the step's 256 bins first
-// cost more than it saved, 0-14 % of the CPU on genomes and Sierpinski flames, 27 Nov 17:44: the
-// plot's own loads already overlap their misses.)
+// Plots the points whose bin `at` is not kOffBin, listed first (HitsFunction). (A pass
+// prefetching the step's 256 bins first cost more than it saved, 0-14 % of the CPU on genomes
+// and Sierpinski flames, 27 Nov 17:44: the plot's own loads already overlap their misses.)
 void plot_all(const Plan& plan, const std::array<std::uint32_t, kN>& at,
               const std::array<std::uint32_t, kN>& k, const std::array<double, kN>& c,
               std::size_t m, Bins& bins) {
-  for (std::size_t i = 0; i < m;) {
+  std::array<std::uint32_t, kN> list;
+  const std::size_t n = plan.hits(at.data(), m, list.data());
+  // Every walker plots (a linear flame's usual step): no indirection.
+  const std::uint32_t* hits = n == m ? nullptr : list.data();
+  for (std::size_t j = 0; j < n;) {
     unsigned wrapped = 0;
-    i = plan.plot(plan.tables, bins.lo.data(), i, m, at.data(), k.data(), c.data(), &wrapped);
-    for (std::size_t j = 0; j < 4; ++j)
-      if ((wrapped >> j & 1) != 0) bins.carries.push_back(4 * std::size_t{at[i - 1]} + j);
+    j = plan.plot(plan.tables, bins.lo.data(), j, n, hits, at.data(), k.data(), c.data(), &wrapped);
+    const std::size_t i = hits ? hits[j - 1] : j - 1;
+    for (std::size_t ch = 0; ch < 4; ++ch)
+      if ((wrapped >> ch & 1) != 0) bins.carries.push_back(4 * std::size_t{at[i]} + ch);
   }
 }
 
@@ -142,33 +148,32 @@ void start(Walkers& a, std::size_t i, Rng& rng) {
 
 // Each walker moved by the Flat record of its xform: XformStep::moved's operations in its order
 // (the sum from 0, w·q added term by term), so the same bits, with the shape's branches resolved.
-template <FlatShape Shape>
+template <FlatShape Shape, bool Colour>
 void move_flat(const Plan& plan, Walkers& a, std::size_t m) {
   const Flat* flat = plan.flat.data();
   for (std::size_t i = 0; i < m; ++i) {
     const Flat& s = flat[a.k[i]];
-    const double x = a.x[i], y = a.y[i];
-    double sx = s.pre.a * x + s.pre.b * y + s.pre.e;
-    double sy = s.pre.c * x + s.pre.d * y + s.pre.f;
+    D2 p = s.pre(a.x[i], a.y[i]);
     if (Shape != FlatShape::any || s.has_sum) {
-      const double qx = sx, qy = sy;
+      const D2 q = p;
       const std::uint32_t terms = Shape == FlatShape::any ? s.terms : 1;
-      sx = 0;
-      sy = 0;
-      for (std::uint32_t t = 0; t < terms; ++t) {
-        sx += s.w[t] * qx;
-        sy += s.w[t] * qy;
-      }
+      p = D2{0, 0};
+      for (std::uint32_t t = 0; t < terms; ++t) p += s.w[t] * q;
     }
-    if (Shape == FlatShape::one_term_post || (Shape == FlatShape::any && s.has_post)) {
-      a.x[i] = s.post.a * sx + s.post.b * sy + s.post.e;
-      a.y[i] = s.post.c * sx + s.post.d * sy + s.post.f;
-    } else {
-      a.x[i] = sx;
-      a.y[i] = sy;
-    }
-    a.c[i] = s.keep * a.c[i] + s.shift;
+    if (Shape == FlatShape::one_term_post || (Shape == FlatShape::any && s.has_post))
+      p = s.post(p[0], p[1]);
+    a.x[i] = p[0];
+    a.y[i] = p[1];
+    if (Colour) a.c[i] = s.keep * a.c[i] + s.shift;
   }
+}
+
+// The shape's move, and without the colour update where the plot reads no coordinate (each
+// xform's hits one fixed colour, fix_colours: the walkers' c is then never read).
+template <FlatShape Shape>
+void move_flat(const Plan& plan, Walkers& a, std::size_t m) {
+  if (plan.tables.fixed) return move_flat<Shape, false>(plan, a, m);
+  move_flat<Shape, true>(plan, a, m);
 }
 
 // Each of the m walkers picks its next xform (a.k ← it). A plan of affine_only steps moves each
@@ -230,8 +235,14 @@ bool escaped(double x, double y) {
 void unplotted(const Plan& plan, const Walkers& a, std::size_t m, std::uint64_t s,
                std::array<std::uint32_t, kN>& at) {
   if (s < a.first_limit && !plan.any_invisible) return;
-  for (std::size_t i = 0; i < m; ++i)
-    if (s >= a.limit[i] || plan.invisible[a.k[i]] != 0) at[i] = kOffBin;
+  // Without branches (as bits: GCC made branches of a select): the xform a walker picked is
+  // random, and so was the branch on it (a tenth of a linear flame's walk with invisible
+  // xforms, perf at 27 Nov 19:45).
+  const std::uint8_t* invisible = plan.invisible.data();
+  for (std::size_t i = 0; i < m; ++i) {
+    const auto off = static_cast<std::uint32_t>(s >= a.limit[i]) | invisible[a.k[i]];
+    at[i] |= 0u - off;  // kOffBin: all ones
+  }
 }
 
 // Walkers that escaped re-seeded (in walker order, as the generator's draws must be); how many.
@@ -322,14 +333,15 @@ void flatten(Plan& plan) {
       plan.flat.clear();
       return;
     }
-    Flat f{.pre = s.pre,
-           .post = s.post,
+    Flat f{.pre = PairMap(s.pre),
+           .post = PairMap(s.post),
            .keep = step.keep,
            .shift = step.shift,
            .terms = static_cast<std::uint32_t>(s.sum_terms.size()),
            .has_sum = s.has_sum,
            .has_post = s.has_post};
-    for (std::size_t t = 0; t < s.sum_terms.size(); ++t) f.w[t] = s.sum_terms[t].w;
+    for (std::size_t t = 0; t < s.sum_terms.size(); ++t)
+      f.w[t] = D2{s.sum_terms[t].w, s.sum_terms[t].w};
     plan.flat.push_back(f);
     one_term = one_term && s.has_sum && s.sum_terms.size() == 1;
     post = post && s.has_post;
@@ -359,7 +371,7 @@ void fix_colours(Plan& plan) {
     c[j] = plan.steps[j].shift;
   }
   unsigned wrapped = 0;
-  plan.plot(plan.tables, plan.fixed.data(), 0, n, at.data(), k.data(), c.data(), &wrapped);
+  plan.plot(plan.tables, plan.fixed.data(), 0, n, nullptr, at.data(), k.data(), c.data(), &wrapped);
   plan.tables.fixed = plan.fixed.data();
 }
 
@@ -389,6 +401,7 @@ Plan plan_of(const Flame& flame, const FlameRaster& raster, bool float_lanes) {
   }
   plan.tables = {plan.colours.data(), plan.linear_palette};
   plan.plot = plot_function(cpu_level());
+  plan.hits = hits_function(cpu_level());
   plan.list = list_function(cpu_level());
   fix_colours(plan);
   return plan;

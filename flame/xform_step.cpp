@@ -113,12 +113,14 @@ void XformStep::chain(const std::vector<Term>& terms, std::size_t n, double* x, 
 }
 
 // The gathers apply the pre-affine map as they copy, and the scatters the post map as they
-// write back (AffineMap's operations, one pass fewer each way).
+// write back (AffineMap's operations, as PairMap's lanes, one pass fewer each way; the maps in
+// registers: a store to the arrays might otherwise change them).
 void XformStep::operator()(std::size_t n, double* x, double* y, Scratch& w, Rng& rng) const {
+  const PairMap to_q(pre);
   for (std::size_t i = 0; i < n; ++i) {
-    const Point q = pre({x[i], y[i]});
-    w.qx[i] = q.x;
-    w.qy[i] = q.y;
+    const D2 q = to_q(x[i], y[i]);
+    w.qx[i] = q[0];
+    w.qy[i] = q[1];
   }
   const auto [sx, sy] = move_scratch(n, w, rng);
   if (!has_post) {
@@ -126,19 +128,21 @@ void XformStep::operator()(std::size_t n, double* x, double* y, Scratch& w, Rng&
     std::copy_n(sy, n, y);
     return;
   }
+  const PairMap to_p(post);
   for (std::size_t i = 0; i < n; ++i) {
-    const Point p = post({sx[i], sy[i]});
-    x[i] = p.x;
-    y[i] = p.y;
+    const D2 p = to_p(sx[i], sy[i]);
+    x[i] = p[0];
+    y[i] = p[1];
   }
 }
 
 void XformStep::operator()(std::size_t n, const std::uint32_t* at, double* x, double* y, Scratch& w,
                            Rng& rng) const {
+  const PairMap to_q(pre);
   for (std::size_t i = 0; i < n; ++i) {
-    const Point q = pre({x[at[i]], y[at[i]]});
-    w.qx[i] = q.x;
-    w.qy[i] = q.y;
+    const D2 q = to_q(x[at[i]], y[at[i]]);
+    w.qx[i] = q[0];
+    w.qy[i] = q[1];
   }
   const auto [sx, sy] = move_scratch(n, w, rng);
   if (!has_post) {
@@ -148,10 +152,11 @@ void XformStep::operator()(std::size_t n, const std::uint32_t* at, double* x, do
     }
     return;
   }
+  const PairMap to_p(post);
   for (std::size_t i = 0; i < n; ++i) {
-    const Point p = post({sx[i], sy[i]});
-    x[at[i]] = p.x;
-    y[at[i]] = p.y;
+    const D2 p = to_p(sx[i], sy[i]);
+    x[at[i]] = p[0];
+    y[at[i]] = p[1];
   }
 }
 

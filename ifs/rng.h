@@ -32,8 +32,12 @@ class Rng {
 
   std::uint64_t next() noexcept {
     state_ += 0xa0761d6478bd642fULL;
-    const uint128 t = static_cast<uint128>(state_) * (state_ ^ 0xe7037ed1a0b428dbULL);
-    return static_cast<std::uint64_t>(t >> 64) ^ static_cast<std::uint64_t>(t);
+    const std::uint64_t a = state_, b = state_ ^ 0xe7037ed1a0b428dbULL;
+    // The product's halves as two 64-bit values (the same bits): GCC 12 spilled the 128-bit
+    // product of the one-expression form through the stack in the flame walks' draw loops
+    // (two stores and a load a draw); now a mul and an imul, in registers.
+    const auto hi = static_cast<std::uint64_t>((static_cast<uint128>(a) * b) >> 64);
+    return hi ^ (a * b);
   }
 
   // Uniform in [0, 1) with 53 random bits.

@@ -99,14 +99,16 @@ struct PlotTables {
   const std::uint32_t* fixed = nullptr;
 };
 
-// Plots hits [from, n) whose bin at[i] is not kOffBin: the colour of coordinate c[i] in xform
-// k[i]'s table added to the four 32-bit sums of bin at[i] (bins + 4·at[i]). Stops after a hit
-// that wraps a sum past 2³², returning its index + 1 and the wrapped channels as bits 0-3 of
-// *wrapped (the caller logs their carries and goes on from there); returns n when none wrapped.
-// Integer sums: every level gives the scalar level's, with the 32-bit multiplies of a linear
-// palette's mix in one instruction on AVX2 (baseline SSE2 has none).
+// Plots the walkers hits[j] for j in [from, n), whose bins are not kOffBin (HitsFunction; the
+// walkers j themselves where hits is null, all with bins): for walker i = hits[j], the colour of
+// coordinate c[i] in xform k[i]'s table added to the four 32-bit sums of bin at[i] (bins +
+// 4·at[i]). Stops after a hit that wraps a sum past 2³², returning j + 1 and the wrapped channels
+// as bits 0-3 of *wrapped (the caller logs their carries and goes on from there); returns n when
+// none wrapped. Integer sums: every level gives the scalar level's, with the 32-bit multiplies of a
+// linear palette's mix in one instruction on AVX2 (baseline SSE2 has none).
 using PlotFunction = std::size_t (*)(const PlotTables& t, std::uint32_t* bins, std::size_t from,
-                                     std::size_t n, const std::uint32_t* at, const std::uint32_t* k,
+                                     std::size_t n, const std::uint32_t* hits,
+                                     const std::uint32_t* at, const std::uint32_t* k,
                                      const double* c, unsigned* wrapped);
 
 PlotFunction plot_function(CpuLevel level);
@@ -122,6 +124,15 @@ using ListFunction = void (*)(const std::uint32_t* k, std::size_t m, std::size_t
 
 ListFunction list_function(CpuLevel level);
 
+// The walkers to plot: hits ← the i < m whose at[i] is not kOffBin, in ascending order; returns
+// their count. Reads at up to m rounded up to 8, writes up to m + 8 entries of hits. Branch-free
+// (eight at a time on AVX2, as the listing by xform): the plot's own test of each walker was a
+// branch mispredicted wherever points fall off the raster or on invisible xforms at random (half
+// of a step's walkers in genome 4, perf at 27 Nov 20:00).
+using HitsFunction = std::size_t (*)(const std::uint32_t* at, std::size_t m, std::uint32_t* hits);
+
+HitsFunction hits_function(CpuLevel level);
+
 }  // namespace ifsfx::flame::detail
 
 // Each level's table (flame/batch_scalar.cpp, flame/batch_avx2.cpp), in the kernel namespaces
@@ -134,8 +145,9 @@ std::span<const flame::detail::BatchVariation> flame_batch_table_f32();
 std::size_t flame_bin_numbers(const flame::detail::BinGrid& g, std::size_t n, const double* x,
                               const double* y, std::uint32_t* at);
 std::size_t flame_plot(const flame::detail::PlotTables& t, std::uint32_t* bins, std::size_t from,
-                       std::size_t n, const std::uint32_t* at, const std::uint32_t* k,
-                       const double* c, unsigned* wrapped);
+                       std::size_t n, const std::uint32_t* hits, const std::uint32_t* at,
+                       const std::uint32_t* k, const double* c, unsigned* wrapped);
+std::size_t flame_hits(const std::uint32_t* at, std::size_t m, std::uint32_t* hits);
 }  // namespace ifsfx::detail::kernel_scalar
 namespace ifsfx::detail::kernel_avx2 {
 std::span<const flame::detail::BatchVariation> flame_batch_table();
@@ -145,6 +157,7 @@ std::span<const flame::detail::BatchVariation> flame_batch_table_f32();
 std::size_t flame_bin_numbers(const flame::detail::BinGrid& g, std::size_t n, const double* x,
                               const double* y, std::uint32_t* at);
 std::size_t flame_plot(const flame::detail::PlotTables& t, std::uint32_t* bins, std::size_t from,
-                       std::size_t n, const std::uint32_t* at, const std::uint32_t* k,
-                       const double* c, unsigned* wrapped);
+                       std::size_t n, const std::uint32_t* hits, const std::uint32_t* at,
+                       const std::uint32_t* k, const double* c, unsigned* wrapped);
+std::size_t flame_hits(const std::uint32_t* at, std::size_t m, std::uint32_t* hits);
 }  // namespace ifsfx::detail::kernel_avx2

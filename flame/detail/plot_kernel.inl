@@ -29,11 +29,14 @@ inline U4 hit_colour(const std::uint32_t* table, bool linear, double c) {
 }
 }  // namespace
 
-std::size_t flame_plot(const flame::detail::PlotTables& t, std::uint32_t* bins, std::size_t from,
-                       std::size_t n, const std::uint32_t* at, const std::uint32_t* k,
-                       const double* c, unsigned* wrapped) {
-  for (std::size_t i = from; i < n; ++i) {
-    if (at[i] == flame::detail::kOffBin) continue;
+namespace {
+// flame_plot over the walkers hits[j] (Listed) or j itself.
+template <bool Listed>
+std::size_t plot_hits(const flame::detail::PlotTables& t, std::uint32_t* bins, std::size_t from,
+                      std::size_t n, const std::uint32_t* hits, const std::uint32_t* at,
+                      const std::uint32_t* k, const double* c, unsigned* wrapped) {
+  for (std::size_t j = from; j < n; ++j) {
+    const std::size_t i = Listed ? hits[j] : j;
     U4 v;
     if (t.fixed)
       std::memcpy(&v, t.fixed + 4 * std::size_t{k[i]}, sizeof v);
@@ -48,8 +51,16 @@ std::size_t flame_plot(const flame::detail::PlotTables& t, std::uint32_t* bins, 
     const unsigned lanes = wrapped_lanes(s < v);
     if (lanes != 0) [[unlikely]] {
       *wrapped = lanes;
-      return i + 1;
+      return j + 1;
     }
   }
   return n;
+}
+}  // namespace
+
+std::size_t flame_plot(const flame::detail::PlotTables& t, std::uint32_t* bins, std::size_t from,
+                       std::size_t n, const std::uint32_t* hits, const std::uint32_t* at,
+                       const std::uint32_t* k, const double* c, unsigned* wrapped) {
+  if (hits == nullptr) return plot_hits<false>(t, bins, from, n, hits, at, k, c, wrapped);
+  return plot_hits<true>(t, bins, from, n, hits, at, k, c, wrapped);
 }

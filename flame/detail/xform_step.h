@@ -33,6 +33,20 @@ struct Kernels {
   LaneType type;
 };
 
+// Two doubles as one value (GCC's generic vectors, one SSE2 register): a point's x and y go
+// through an affine map's products and sums together, each lane the scalar operations in order.
+using D2 = double __attribute__((vector_size(16)));
+
+// An affine map by columns, (a, c), (b, d), (e, f): p ↦ x·(a, c) + y·(b, d) + (e, f) is
+// (a·x + b·y + e, c·x + d·y + f), AffineMap's operations in its order on each lane, so the same
+// bits in half the instructions (the walks' gathers and scatters apply it to every point).
+struct PairMap {
+  D2 x{}, y{}, o{};
+  PairMap() = default;
+  explicit PairMap(const AffineMap& m) : x{m.a, m.c}, y{m.b, m.d}, o{m.e, m.f} {}
+  D2 operator()(double px, double py) const { return x * px + y * py + o; }
+};
+
 // One variation term with everything the inner loop needs resolved once.
 struct Term {
   VariationFunction f;

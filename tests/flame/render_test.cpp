@@ -178,6 +178,31 @@ TEST(render_flame, an_affine_only_flame_gives_the_bytes_of_the_general_walk) {
   EXPECT_GT(cv::countNonZero(flat.reshape(1)), 100);
   EXPECT_EQ(cv::norm(flat, render_flame(uniform_general, {.seed = 4, .threads = 2}), cv::NORM_INF),
             0);
+  // xaos, an invisible xform (opacity 0: its points are not plotted) and one that throws its
+  // points past the escape bound (its walkers start again), an xform without a post map.
+  Flame mixed = uniform;
+  mixed.xforms[0].chaos = {0.5, 3, 1};
+  mixed.xforms[1].chaos = {2, 0, 1};
+  Xform hidden{.pre = {0.4, 0.2, -0.2, 0.4, 0.1, -0.3}, .colour = 0.5, .colour_speed = 0.5};
+  hidden.variations = {term("linear", 1)};
+  hidden.post = AffineMap{1, 0, 0, 1, 0.2, 0};
+  hidden.opacity = 0;
+  Xform away{.pre = {1e6, 0, 0, 1e6, 1e6, 0}, .weight = 0.02};
+  away.variations = {term("linear", 1)};
+  away.post = AffineMap{1e6, 0, 0, 1e6, 0, 0};
+  mixed.xforms.push_back(hidden);
+  mixed.xforms.push_back(away);
+  Flame mixed_general = mixed;
+  for (Xform& xf : mixed_general.xforms) xf.variations.push_back(term("spherical", 0));
+  FlameRenderStats stats;
+  const cv::Mat walked = render_flame(mixed, {.seed = 6, .threads = 2}, &stats);
+  EXPECT_GT(cv::countNonZero(walked.reshape(1)), 100);
+  EXPECT_GT(stats.reseeded, 100u);
+  EXPECT_EQ(cv::norm(walked, render_flame(mixed_general, {.seed = 6, .threads = 2}), cv::NORM_INF),
+            0);
+  // Without the invisible xform the picture has more points: the opacity was obeyed.
+  mixed.xforms[2].opacity = 1;
+  EXPECT_GT(cv::norm(walked, render_flame(mixed, {.seed = 6, .threads = 2}), cv::NORM_L1), 0);
 }
 
 // Where every xform sets the colour coordinate to its own (colour_speed 1), each xform's hits
@@ -330,8 +355,9 @@ TEST(render_flame, walkers_are_listed_by_xform_in_order_at_every_kernel_level) {
 }
 
 // The walk's plot kernel: a step palette's entry ⌊256·c⌋ and a linear palette's mix of two
-// entries at known coordinates, a sum wrapped past 2³² reported where it happened, and every
-// kernel level the scalar level's sums and wraps on random hits.
+// entries at known coordinates, a sum wrapped past 2³² reported where it happened, the walkers
+// off the raster left out of the list of hits, and every kernel level the scalar level's list,
+// sums and wraps on random hits.
 TEST(render_flame, the_plot_adds_palette_colours_and_reports_wraps_at_every_kernel_level) {
   // 257 entries: xform 1's 256 start at the second.
   std::vector<std::uint32_t> table(4 * 257);
@@ -341,40 +367,62 @@ TEST(render_flame, the_plot_adds_palette_colours_and_reports_wraps_at_every_kern
   for (CpuLevel level : supported_cpu_levels()) {
     const detail::PlotFunction plot = detail::plot_function(level);
     std::vector<std::uint32_t> bins(4 * 3, 0);
-    const std::uint32_t at[] = {0, detail::kOffBin, 1, 2};
+    const std::uint32_t at[] = {0, detail::kOffBin, 1, 2, 0, 0, 0, 0};  // 4 walkers, padding
     const std::uint32_t k[] = {0, 0, 1, 0};
     // c = 0.5 → entry 128; c = 2 → clamped to entry 255; at bin 1 xform 1's entry 10 is 11.
     const double c[] = {0.5, 0.3, 10.5 / 256, 2};
+    std::vector<std::uint32_t> listed(4 + 8, 99);
+    ASSERT_EQ(detail::hits_function(level)(at, 4, listed.data()), 3u) << to_string(level);
+    listed.resize(3);
+    EXPECT_EQ(listed, (std::vector<std::uint32_t>{0, 2, 3})) << to_string(level);
+    const std::uint32_t* hits = listed.data();
     unsigned wrapped = 0;
-    EXPECT_EQ(plot({tables, false}, bins.data(), 0, 4, at, k, c, &wrapped), 4u);
+    EXPECT_EQ(plot({tables, false}, bins.data(), 0, 3, hits, at, k, c, &wrapped), 3u);
     EXPECT_EQ(bins[0], 128u * 256) << to_string(level);
     EXPECT_EQ(bins[4 + 1], 11u * 256 + 1) << to_string(level);
     EXPECT_EQ(bins[8 + 2], 255u * 256 + 2) << to_string(level);
     // Linear: c = 10.5/256 is halfway between entries 10 and 11; c = 2 the last entry.
     std::fill(bins.begin(), bins.end(), 0);
-    EXPECT_EQ(plot({tables, true}, bins.data(), 0, 4, at, k, c, &wrapped), 4u);
+    EXPECT_EQ(plot({tables, true}, bins.data(), 0, 3, hits, at, k, c, &wrapped), 3u);
     EXPECT_EQ(bins[0], 128u * 256) << to_string(level);
     EXPECT_EQ(bins[4 + 3], 11u * 256 + 128 + 3) << to_string(level);
     EXPECT_EQ(bins[8], 255u * 256) << to_string(level);
     // Fixed colours per xform: the coordinates are not read.
     const std::uint32_t fixed[] = {1, 2, 3, 4, 10, 20, 30, 40};
     std::fill(bins.begin(), bins.end(), 0);
-    EXPECT_EQ(plot({tables, true, fixed}, bins.data(), 0, 4, at, k, c, &wrapped), 4u);
+    EXPECT_EQ(plot({tables, true, fixed}, bins.data(), 0, 3, hits, at, k, c, &wrapped), 3u);
     EXPECT_EQ(bins, (std::vector<std::uint32_t>{1, 2, 3, 4, 10, 20, 30, 40, 1, 2, 3, 4}))
         << to_string(level);
+    // Without a list, the walkers [from, n) themselves: walkers 2 and 3.
+    std::fill(bins.begin(), bins.end(), 0);
+    EXPECT_EQ(plot({tables, false}, bins.data(), 2, 4, nullptr, at, k, c, &wrapped), 4u);
+    EXPECT_EQ(bins[0], 0u) << to_string(level);
+    EXPECT_EQ(bins[4 + 1], 11u * 256 + 1) << to_string(level);
+    EXPECT_EQ(bins[8 + 2], 255u * 256 + 2) << to_string(level);
     // A sum 100 below 2³² wraps at the hit that passes it: index 0, channels r and g.
     bins[0] = bins[1] = UINT32_MAX - 100;
-    EXPECT_EQ(plot({tables, false}, bins.data(), 0, 4, at, k, c, &wrapped), 1u);
+    EXPECT_EQ(plot({tables, false}, bins.data(), 0, 3, hits, at, k, c, &wrapped), 1u);
     EXPECT_EQ(wrapped, 3u) << to_string(level);
   }
   Rng rng(8);
   const std::size_t n = 250;
-  std::vector<std::uint32_t> at(n), k(n);
+  std::vector<std::uint32_t> at(n + 8), k(n);
   std::vector<double> c(n);
   for (std::size_t i = 0; i < n; ++i) {
     at[i] = rng.below(8) == 0 ? detail::kOffBin : rng.below(16);
     k[i] = rng.below(2);
     c[i] = 1.2 * rng.uniform() - 0.1;
+  }
+  std::vector<std::uint32_t> hits(n + 8);
+  const std::size_t listed = detail::hits_function(CpuLevel::scalar)(at.data(), n, hits.data());
+  EXPECT_GT(listed, n / 2);
+  EXPECT_LT(listed, n);
+  for (CpuLevel level : supported_cpu_levels()) {
+    std::vector<std::uint32_t> other(n + 8);
+    EXPECT_EQ(detail::hits_function(level)(at.data(), n, other.data()), listed);
+    EXPECT_TRUE(
+        std::equal(hits.begin(), hits.begin() + static_cast<std::ptrdiff_t>(listed), other.begin()))
+        << to_string(level);
   }
   for (bool linear : {false, true}) {
     std::vector<std::uint32_t> ref;
@@ -382,11 +430,11 @@ TEST(render_flame, the_plot_adds_palette_colours_and_reports_wraps_at_every_kern
     for (CpuLevel level : supported_cpu_levels()) {
       std::vector<std::uint32_t> bins(4 * 16, UINT32_MAX - 150000);  // wraps within a few hits
       std::vector<std::size_t> wraps;
-      for (std::size_t i = 0; i < n;) {
+      for (std::size_t j = 0; j < listed;) {
         unsigned wrapped = 0;
-        i = detail::plot_function(level)({tables, linear}, bins.data(), i, n, at.data(), k.data(),
-                                         c.data(), &wrapped);
-        if (wrapped != 0) wraps.push_back(i * 16 + wrapped);
+        j = detail::plot_function(level)({tables, linear}, bins.data(), j, listed, hits.data(),
+                                         at.data(), k.data(), c.data(), &wrapped);
+        if (wrapped != 0) wraps.push_back(j * 16 + wrapped);
       }
       if (ref.empty()) {
         ref = bins;

@@ -60,6 +60,16 @@ TEST(chaos_game, burn_in_brings_points_onto_the_attractor) {
   EXPECT_EQ(default_burn_in(slow), 197);  // ceil(log 1e-9 / log 0.9)
 }
 
+// wyrand's stream from seed 1: the state advanced by 0xa0761d6478bd642f, each draw the high
+// and low halves of state · (state ^ 0xe7037ed1a0b428db) xor-ed (the values from Python's exact
+// integers). Every picture's bytes depend on these bits.
+TEST(rng, draws_wyrands_stream) {
+  Rng rng(1);
+  EXPECT_EQ(rng.next(), 0xcdef1695e1f8ed2cULL);
+  EXPECT_EQ(rng.next(), 0x61d6d24b1c9aad40ULL);
+  EXPECT_EQ(rng.next(), 0x8cf880c22eebfadfULL);
+}
+
 TEST(map_picker, draws_maps_with_their_probabilities) {
   const MapPicker pick({0.1, 0.2, 0.0, 0.7});
   Rng rng(11);
