@@ -77,52 +77,48 @@ constexpr auto kPack = [] {
   }
   return t;
 }();
+
+// Walkers i … i + 7 whose bits of `mask` are set (those below m), packed to the front by a
+// permutation and stored at out (the other lanes' entries are written over next); how many.
+inline std::size_t append_walkers(unsigned mask, std::size_t i, std::size_t m, std::uint32_t* out) {
+  if (m - i < 8) mask &= (1u << (m - i)) - 1;
+  const __m256i perm = _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(kPack[mask])));
+  const __m256i walkers = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(i)),
+                                           _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7));
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(out), _mm256_permutevar8x32_epi32(walkers, perm));
+  return static_cast<std::size_t>(__builtin_popcount(mask));
+}
 }  // namespace
 
-// The scalar level's listing eight walkers at a time: the lanes that picked xform j packed to
-// the front by a permutation and stored at the list's end (the other lanes' entries are written
-// over next), so the same order.
+// The scalar level's listing eight walkers at a time: the lanes that picked xform j appended
+// in order (append_walkers), so the same order.
 void flame_list_by_xform(const std::uint32_t* k, std::size_t m, std::size_t steps,
                          std::uint32_t* order, std::size_t* first) {
-  const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
   std::size_t c = 0;
   for (std::size_t j = 0; j < steps; ++j) {
     first[j] = c;
     const __m256i want = _mm256_set1_epi32(static_cast<int>(j));
     for (std::size_t i = 0; i < m; i += 8) {
       const __m256i kk = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(k + i));
-      auto mask = static_cast<unsigned>(
+      const auto mask = static_cast<unsigned>(
           _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(kk, want))));
-      if (m - i < 8) mask &= (1u << (m - i)) - 1;
-      const __m256i perm =
-          _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(kPack[mask])));
-      const __m256i at = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(i)), iota);
-      _mm256_storeu_si256(reinterpret_cast<__m256i*>(order + c),
-                          _mm256_permutevar8x32_epi32(at, perm));
-      c += static_cast<std::size_t>(__builtin_popcount(mask));
+      c += append_walkers(mask, i, m, order + c);
     }
   }
   first[steps] = c;
 }
 
-// The scalar level's list of the walkers to plot eight at a time: the lanes with a bin packed
-// to the front as in flame_list_by_xform, so the same list.
+// The scalar level's list of the walkers to plot eight at a time: the lanes with a bin appended
+// in order (append_walkers), so the same list.
 std::size_t flame_hits(const std::uint32_t* at, std::size_t m, std::uint32_t* hits) {
-  const __m256i iota = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
   const __m256i off = _mm256_set1_epi32(-1);  // kOffBin
   std::size_t n = 0;
   for (std::size_t i = 0; i < m; i += 8) {
     const __m256i bins = _mm256_loadu_si256(reinterpret_cast<const __m256i*>(at + i));
-    auto mask = static_cast<unsigned>(
-                    ~_mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(bins, off)))) &
-                0xFFu;
-    if (m - i < 8) mask &= (1u << (m - i)) - 1;
-    const __m256i perm =
-        _mm256_cvtepu8_epi32(_mm_cvtsi64_si128(static_cast<long long>(kPack[mask])));
-    const __m256i walkers = _mm256_add_epi32(_mm256_set1_epi32(static_cast<int>(i)), iota);
-    _mm256_storeu_si256(reinterpret_cast<__m256i*>(hits + n),
-                        _mm256_permutevar8x32_epi32(walkers, perm));
-    n += static_cast<std::size_t>(__builtin_popcount(mask));
+    const auto mask = ~static_cast<unsigned>(
+                          _mm256_movemask_ps(_mm256_castsi256_ps(_mm256_cmpeq_epi32(bins, off)))) &
+                      0xFFu;
+    n += append_walkers(mask, i, m, hits + n);
   }
   return n;
 }

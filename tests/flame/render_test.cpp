@@ -63,6 +63,11 @@ std::vector<cv::Point> lit(const cv::Mat& bgr) {
   return out;
 }
 
+// Whether Debian's flam3-render (flam3-utils), the reference of the tests below, is here.
+bool flam3_render_installed() {
+  return std::system("command -v flam3-render > /dev/null 2>&1") == 0;
+}
+
 // `xml` (a <flame> element) written to TEMP/ifsfx_render_NAME.flame and rendered there by
 // flam3-render with seed 1 (its picture: an empty Mat where it failed); `flame` gets the file.
 cv::Mat flam3_picture(const std::string& name, const std::string& xml, fs::path& flame) {
@@ -683,8 +688,7 @@ TEST(render_tone, the_gaussian_filter_of_half_a_pixel_has_three_taps) {
 }
 
 TEST(render_flame, draws_an_asymmetric_flame_as_flam3_render_does) {
-  if (std::system("command -v flam3-render > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
+  if (!flam3_render_installed()) GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
   // An L of constant maps (colour speed 1: each point has its map's colour exactly, so the
   // pictures agree to the byte) plus a rotation and an off-centre camera: a mirror, a transpose or
   // a turn the wrong way moves the lit pixels.
@@ -708,8 +712,7 @@ TEST(render_flame, draws_an_asymmetric_flame_as_flam3_render_does) {
 }
 
 TEST(render_flame, an_xform_without_variations_is_flam3_renders_constant_map) {
-  if (std::system("command -v flam3-render > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
+  if (!flam3_render_installed()) GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
   // The second xform has no variation at all: flam3 sums none to (0, 0), which its post map
   // moves to (−0.3, 0.4) whatever its pre-affine map (one that would draw elsewhere).
   const std::string xml = R"(<flame name="empty" size="64 48" center="0.1 -0.05" scale="40"
@@ -780,8 +783,7 @@ bool lone_bin_pictures(const std::string& name, int size, const std::string& fla
 }
 
 TEST(render_flame, spreads_a_lone_bin_as_flam3_render_does) {
-  if (std::system("command -v flam3-render > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
+  if (!flam3_render_installed()) GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
   // 22 hits, radius about 1.1 · 16 / 22^0.4 = 5.1 bins. The profile across the bin and along
   // its diagonal is flam3-render's to 2 levels of 255; Epanechnikov's kernel gave 14 13 11 8 3
   // where flam3 gives 26 22 13 5 1.
@@ -799,8 +801,7 @@ TEST(render_flame, spreads_a_lone_bin_as_flam3_render_does) {
 }
 
 TEST(render_flame, spreads_a_lone_supersampled_bin_as_flam3_render_does) {
-  if (std::system("command -v flam3-render > /dev/null 2>&1") != 0)
-    GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
+  if (!flam3_render_installed()) GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
   // As above at supersample 2 and 100 hits, where flam3's spread is narrower than at
   // supersample 1 (the radius's factor 1.05, not 1.1: render_tone.cpp): the profile's width
   // 3σ is flam3's to 2 % (1.1 made it 4 % wider), its brightness to 2 levels.
