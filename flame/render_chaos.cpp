@@ -15,6 +15,7 @@
 #include "flame/variations.h"
 #include "flame/xform_pickers.h"
 #include "ifs/error.h"
+#include "ifs/large_buffer.h"
 #include "ifs/parallel.h"
 #include "ifs/rng.h"
 
@@ -107,7 +108,7 @@ struct Plan {
 // its index in `carries` (each entry worth 2³²): a hit adds at most kUnit = 2¹⁶, so a run of
 // P points logs at most P/2¹⁶ carries, and lo + 2³²·carries is the exact 64-bit sum.
 struct Bins {
-  std::vector<std::uint32_t> lo;
+  std::vector<std::uint32_t, LargeBufferAllocator<std::uint32_t>> lo;
   std::vector<std::size_t> carries;
   explicit Bins(const FlameRaster& r) : lo(4 * static_cast<std::size_t>(r.bins_x) * r.bins_y) {}
 };

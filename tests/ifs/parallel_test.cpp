@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // parallel_rows: fixed bands of rows, the same split for any thread count, and a stop request
-// polled before each band.
+// polled before each band; the per-worker rasters' allocator.
 #include "ifs/parallel.h"
 
+#include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <mutex>
 #include <set>
 #include <utility>
@@ -12,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "ifs/error.h"
+#include "ifs/large_buffer.h"
 
 namespace ifsfx {
 namespace {
@@ -64,6 +67,24 @@ TEST(parallel_rows, refuses_an_empty_band) {
     EXPECT_EQ(e.kind(), ErrorKind::invalid_argument);
     EXPECT_STREQ(e.what(), "row band: must be at least 1 row (got 0)");
   }
+}
+
+// The raster buffers' allocator gives what std::vector promises (value-initialised elements,
+// copies equal) and a huge buffer on a 2 MiB boundary, where the kernel can map huge pages.
+TEST(large_buffer, vectors_are_zeroed_and_huge_ones_start_on_a_2_MiB_boundary) {
+  using Doubles = std::vector<double, LargeBufferAllocator<double>>;
+  const Doubles huge(std::size_t{3} << 18);  // 6 MiB
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(huge.data()) % (std::uintptr_t{2} << 20), 0u);
+  EXPECT_EQ(std::count(huge.begin(), huge.end(), 0.0), static_cast<long>(huge.size()));
+  Doubles copy = huge;
+  copy[12345] = 1.5;
+  EXPECT_NE(copy, huge);
+  copy[12345] = 0;
+  EXPECT_EQ(copy, huge);
+  std::vector<std::uint32_t, LargeBufferAllocator<std::uint32_t>> small(100, 7u), empty;
+  EXPECT_EQ(std::count(small.begin(), small.end(), 7u), 100);
+  empty.push_back(3);
+  EXPECT_EQ(empty.back(), 3u);
 }
 
 }  // namespace
