@@ -62,7 +62,10 @@ AttractorLoss::AttractorLoss(const cv::Mat& target, const AttractorLossOptions& 
       cell[3] = distance_.at<float>(r + 1, c + 1);
     }
   for (int i = 0; i < side_ * side_; ++i)
-    if (canvas.data[i]) inside_.push_back(i);
+    if (canvas.data[i]) {
+      inside_.push_back(i);
+      inside_at_.emplace_back(i % side_, i / side_);
+    }
   bounds_ = cv::boundingRect(canvas);
   // Each lane's run of the draws is the next `steps` numbers of one stream, stored step-major
   // (draws_[8 t + lane]) for the kernels' one load a step.
@@ -145,7 +148,7 @@ AttractorTerms AttractorLoss::terms(std::span<const AffineMap> maps) const {
     }
     cv::distanceTransform(empty, far, cv::DIST_L2, cv::DIST_MASK_3);
     double sum = 0;
-    for (int i : inside_) sum += far.at<float>(i / side_ - box.y, i % side_ - box.x);
+    for (const cv::Point& p : inside_at_) sum += far.ptr<float>(p.y - box.y)[p.x - box.x];
     t.coverage = sum / static_cast<double>(inside) / size_;
   } else {
     t.coverage = 1;

@@ -69,6 +69,7 @@ class AttractorLoss {
   cv::Mat raster(std::span<const AffineMap> maps) const;
 
   int size() const { return size_; }
+  int canvas_side() const { return side_; }  // the hit raster's: R and R/4 on every side
   double points() const { return options_.points; }
   const cv::Mat& target() const { return target_; }  // L at R, CV_8UC1 0/255
 
@@ -84,8 +85,9 @@ class AttractorLoss {
   cv::Mat distance_;          // CV_32FC1 on the canvas: distance to L's nearest pixel centre
   std::vector<float> cells_;  // its cells' four corners (collage/detail/play_kernel.h)
   std::vector<int> inside_;   // canvas indices of L's pixels
-  cv::Rect bounds_;           // their bounding box on the canvas
-  std::vector<float> draws_;  // the common random numbers, uniform in [0, 1), step-major
+  std::vector<cv::Point> inside_at_;  // and their (column, row): no division per pixel
+  cv::Rect bounds_;                   // their bounding box on the canvas
+  std::vector<float> draws_;          // the common random numbers, uniform in [0, 1), step-major
   CpuLevel level_ = CpuLevel::scalar;
   AttractorLossOptions options_;
 };
