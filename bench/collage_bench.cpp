@@ -10,8 +10,10 @@
 // search), each rendered 512² and taken as a shape.
 // Per shape, N and method it prints IoU(L, A) on the working raster and on a raster 4 times
 // finer (512² for the default 128², rendered in the target's own frame), whether the collage
-// bound h(L, A) ≤ h(L, W(L)) / (1 − s) held, the wall seconds and the CPU seconds (all threads:
-// 2 × wall on an idle 2-core machine, less on a shared one); then the medians, and for shapes
+// bound h(L, A) ≤ h(L, W(L)) / (1 − s) held, the wall seconds, the CPU seconds (all threads:
+// 2 × wall on an idle 2-core machine, less on a shared one) and the thousands of evaluations
+// the fit counted (FitOptions::max_evaluations: what a clocked fit's seconds bought); then the
+// medians, and for shapes
 // with holes IoU(L, L with its holes filled), the most a fit without holes can reach.
 //   build/release/bench/collage_bench [--only fish,logo,fern] [--maps 4,6,8]
 //       [--methods collage,attractor,noscan,noreseed] [--max-seconds 30] [--max-evaluations N]
@@ -212,6 +214,7 @@ void print_diagnosis(const char* what, const cv::Mat& raster, const cv::Mat& fin
 
 struct Row {
   double iou = 0, fine_iou = 0, seconds = 0, cpu = 0;
+  long evaluations = 0;  // what the fit counted (thousands printed: what its seconds bought)
   bool holds = true;
 };
 
@@ -239,6 +242,7 @@ Row fit_one(const Args& args, const Shape& shape, int maps, const std::string& m
   row.iou = result.report.iou;
   row.fine_iou = result.report.fine_iou;
   row.holds = result.report.bound_holds();
+  row.evaluations = result.evaluations;
   if (!args.previews.empty())
     write_image(args.previews / fmt::format("{}-{}-{}.png", shape.name, maps, method),
                 collage::fit_preview(raster, result.ifs, {.threads = args.threads}));
@@ -290,7 +294,8 @@ int main(int argc, char** argv) try {
       all.size(), args.size, 4 * args.size, args.max_seconds, args.max_evaluations, args.threads);
   std::printf("%-12s %2s", "shape", "N");
   for (const auto& method : args.methods)
-    std::printf(" | %-9s %6s %6s %5s %5s", method.c_str(), "IoU", "IoU4x", "sec", "cpu");
+    std::printf(" | %-9s %6s %6s %5s %5s %5s", method.c_str(), "IoU", "IoU4x", "sec", "cpu",
+                "kevals");
   std::printf("\n");
   std::map<std::string, std::vector<double>> ious, fine, seconds;
   bool all_hold = true;
@@ -304,16 +309,16 @@ int main(int argc, char** argv) try {
         fine[method].push_back(row.fine_iou);
         seconds[method].push_back(row.seconds);
         all_hold = all_hold && row.holds;
-        std::printf(" | %-9s %6.3f %6.3f %5.1f %5.1f", row.holds ? "" : "FAILS", row.iou,
-                    row.fine_iou, row.seconds, row.cpu);
+        std::printf(" | %-9s %6.3f %6.3f %5.1f %5.1f %5ld", row.holds ? "" : "FAILS", row.iou,
+                    row.fine_iou, row.seconds, row.cpu, row.evaluations / 1000);
         std::fflush(stdout);
       }
       std::printf("\n");
     }
   std::printf("%-15s", "median");
   for (const auto& method : args.methods)
-    std::printf(" | %-9s %6.3f %6.3f %5.1f %5s", "", median(ious[method]), median(fine[method]),
-                median(seconds[method]), "");
+    std::printf(" | %-9s %6.3f %6.3f %5.1f %5s %5s", "", median(ious[method]), median(fine[method]),
+                median(seconds[method]), "", "");
   std::printf("\n");
   std::string bounds;
   for (const auto& shape : all)

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
+#include "collage/detail/play_kernel.h"
 #include "collage/distance.h"
 #include "collage/target.h"
 #include "ifs/error.h"
@@ -21,27 +22,7 @@ namespace {
 // Chaos-game steps before the first point counts: from the square's centre, s^24 of the
 // square's size away from A at worst.
 constexpr std::size_t kBurnIn = 24;
-constexpr std::size_t kLanes = 8;
-
-// The distance at continuous pixel point (x, y) of the canvas, bilinear between pixel centres;
-// outside the centres' square, the nearest centre's distance plus the way to it (an upper bound).
-double lookup(const cv::Mat& distance, double x, double y) {
-  double u = x - 0.5, v = y - 0.5, out = 0;
-  const double hi = distance.cols - 1;
-  if (!(u >= 0 && v >= 0 && u < hi && v < hi)) {  // rare: A's points lie near L
-    const double cu = std::clamp(u, 0.0, hi), cv = std::clamp(v, 0.0, hi);
-    out = std::hypot(u - cu, v - cv);
-    u = std::min(cu, hi - 0.5);
-    v = std::min(cv, hi - 0.5);
-  }
-  const int c0 = static_cast<int>(u), r0 = static_cast<int>(v);
-  const double fu = u - c0, fv = v - r0;
-  const float* row0 = distance.ptr<float>(r0);
-  const float* row1 = row0 + distance.cols;
-  const double top = row0[c0] + fu * (row0[c0 + 1] - row0[c0]);
-  const double bottom = row1[c0] + fu * (row1[c0 + 1] - row1[c0]);
-  return top + fv * (bottom - top) + out;
-}
+constexpr std::size_t kLanes = detail::kPlayLanes;
 
 }  // namespace
 
@@ -71,50 +52,68 @@ AttractorLoss::AttractorLoss(const cv::Mat& target, const AttractorLossOptions& 
   cv::Mat canvas(side_, side_, CV_8UC1, cv::Scalar(0));
   target_.copyTo(canvas(cv::Rect(pad_, pad_, size_, size_)));
   distance_ = distance_to(canvas);
+  cells_.assign(4 * static_cast<std::size_t>(side_ * side_), 0.0f);
+  for (int r = 0; r + 1 < side_; ++r)
+    for (int c = 0; c + 1 < side_; ++c) {
+      float* cell = cells_.data() + 4 * static_cast<std::size_t>(r * side_ + c);
+      cell[0] = distance_.at<float>(r, c);
+      cell[1] = distance_.at<float>(r, c + 1);
+      cell[2] = distance_.at<float>(r + 1, c);
+      cell[3] = distance_.at<float>(r + 1, c + 1);
+    }
   for (int i = 0; i < side_ * side_; ++i)
-    if (canvas.data[i]) inside_.push_back(i);
+    if (canvas.data[i]) {
+      inside_.push_back(i);
+      inside_at_.emplace_back(i % side_, i / side_);
+    }
   bounds_ = cv::boundingRect(canvas);
+  // Each lane's run of the draws is the next `steps` numbers of one stream, stored step-major
+  // (draws_[8 t + lane]) for the kernels' one load a step.
   Rng rng(stream_seed(options.seed, 0x61747472ULL));
-  const auto count =
-      kLanes * (static_cast<std::size_t>(options.points * size_ * size_) / kLanes + kBurnIn);
-  draws_.resize(count);
-  for (float& u : draws_) u = static_cast<float>(rng.uniform());
+  const std::size_t steps =
+      static_cast<std::size_t>(options.points * size_ * size_) / kLanes + kBurnIn;
+  draws_.resize(kLanes * steps);
+  for (std::size_t lane = 0; lane < kLanes; ++lane)
+    for (std::size_t t = 0; t < steps; ++t)
+      draws_[t * kLanes + lane] = static_cast<float>(rng.uniform());
+  level_ = options.level.value_or(cpu_level());
 }
 
 double AttractorLoss::play(std::span<const AffineMap> maps, std::vector<std::uint8_t>* hits) const {
   // Probabilities ∝ |det| (the renderer's default, ifs.h): the points spread evenly over A.
   const std::vector<double> p = default_probabilities({maps.begin(), maps.end()});
-  std::array<float, 33> cumulative{};
+  const int count = static_cast<int>(maps.size());
+  const int stride = std::max(count, static_cast<int>(kLanes));
+  std::vector<float> coefficients(6 * static_cast<std::size_t>(stride), 0.0f);
+  std::vector<float> cumulative(static_cast<std::size_t>(count), 0.0f);
   double sum = 0;
-  for (std::size_t n = 0; n < p.size(); ++n) cumulative[n] = static_cast<float>(sum += p[n]);
-  const std::size_t count = p.size();
-  // kLanes chains side by side, each on its own run of the draws: independent steps that the
-  // processor overlaps, where one chain waits for every step's result before the next.
-  const std::size_t steps = draws_.size() / kLanes;
-  std::array<Point, kLanes> x;
-  x.fill({0.5, 0.5});
-  std::array<double, kLanes> spill{};
-  for (std::size_t t = 0; t < steps; ++t)
-    for (std::size_t lane = 0; lane < kLanes; ++lane) {
-      const float u = draws_[lane * steps + t];
-      // Branch-free: the draws pick maps at random, which no branch predictor follows.
-      std::size_t n = 0;
-      for (std::size_t k = 0; k + 1 < count; ++k) n += u >= cumulative[k];
-      x[lane] = maps[n](x[lane]);
-      if (t < kBurnIn) continue;
-      const double px = x[lane].x * size_ + pad_, py = (1 - x[lane].y) * size_ + pad_;
-      spill[lane] += lookup(distance_, px, py);
-      if (hits && px >= 0 && py >= 0 && px < side_ && py < side_)
-        (*hits)[static_cast<std::size_t>(static_cast<int>(py) * side_ + static_cast<int>(px))] = 1;
-    }
-  double total = 0;
-  for (double s : spill) total += s;
-  return total;
+  for (int n = 0; n < count; ++n) {
+    const AffineMap& m = maps[static_cast<std::size_t>(n)];
+    int k = 0;
+    for (double v : {m.a, m.b, m.c, m.d, m.e, m.f})
+      coefficients[static_cast<std::size_t>(k++ * stride + n)] = static_cast<float>(v);
+    cumulative[static_cast<std::size_t>(n)] =
+        static_cast<float>(sum += p[static_cast<std::size_t>(n)]);
+  }
+  const detail::PlayInput in{.draws = draws_.data(),
+                             .steps = draws_.size() / kLanes,
+                             .burn_in = kBurnIn,
+                             .coefficients = coefficients.data(),
+                             .stride = stride,
+                             .count = count,
+                             .cumulative = cumulative.data(),
+                             .distance = distance_.ptr<float>(),
+                             .cells = cells_.data(),
+                             .side = side_,
+                             .size = static_cast<float>(size_),
+                             .pad = static_cast<float>(pad_),
+                             .hits = hits ? hits->data() : nullptr};
+  return detail::play_function(level_)(in);
 }
 
 AttractorTerms AttractorLoss::terms(std::span<const AffineMap> maps) const {
   if (maps.empty()) throw Error(ErrorKind::invalid_argument, "attractor loss: no maps (got 0)");
-  std::vector<std::uint8_t> hits(static_cast<std::size_t>(side_ * side_), 0);
+  std::vector<std::uint8_t> hits(static_cast<std::size_t>(side_ * side_) + 1, 0);
   const double spill = play(maps, &hits);
   AttractorTerms t;
   const double points = static_cast<double>(draws_.size() - kLanes * kBurnIn);
@@ -149,7 +148,7 @@ AttractorTerms AttractorLoss::terms(std::span<const AffineMap> maps) const {
     }
     cv::distanceTransform(empty, far, cv::DIST_L2, cv::DIST_MASK_3);
     double sum = 0;
-    for (int i : inside_) sum += far.at<float>(i / side_ - box.y, i % side_ - box.x);
+    for (const cv::Point& p : inside_at_) sum += far.ptr<float>(p.y - box.y)[p.x - box.x];
     t.coverage = sum / static_cast<double>(inside) / size_;
   } else {
     t.coverage = 1;
@@ -164,7 +163,7 @@ AttractorTerms AttractorLoss::terms(std::span<const AffineMap> maps) const {
 }
 
 cv::Mat AttractorLoss::raster(std::span<const AffineMap> maps) const {
-  std::vector<std::uint8_t> hits(static_cast<std::size_t>(side_ * side_), 0);
+  std::vector<std::uint8_t> hits(static_cast<std::size_t>(side_ * side_) + 1, 0);
   play(maps, &hits);
   cv::Mat out(size_, size_, CV_8UC1, cv::Scalar(0));
   for (int r = 0; r < size_; ++r)

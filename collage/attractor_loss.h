@@ -17,12 +17,14 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include <opencv2/core.hpp>
 
 #include "ifs/affine_map.h"
+#include "ifs/cpu.h"
 
 namespace ifsfx::collage {
 
@@ -39,6 +41,9 @@ struct AttractorLossOptions {
   // in it — and keeps the thin parts of a finer target that half cover would drop (a fern's
   // fronds are a pixel wide at 512², a quarter of a pixel at 128²).
   double keep = 0.5;
+  // The chaos game's kernels (collage/detail/play_kernel.h): every level gives the same bits;
+  // none = cpu_level(). Tests set it to compare the levels.
+  std::optional<CpuLevel> level;
 };
 
 struct AttractorTerms {
@@ -64,6 +69,7 @@ class AttractorLoss {
   cv::Mat raster(std::span<const AffineMap> maps) const;
 
   int size() const { return size_; }
+  int canvas_side() const { return side_; }  // the hit raster's: R and R/4 on every side
   double points() const { return options_.points; }
   const cv::Mat& target() const { return target_; }  // L at R, CV_8UC1 0/255
 
@@ -77,9 +83,12 @@ class AttractorLoss {
   int side_ = 0;  // size_ + 2 pad_
   cv::Mat target_;
   cv::Mat distance_;          // CV_32FC1 on the canvas: distance to L's nearest pixel centre
+  std::vector<float> cells_;  // its cells' four corners (collage/detail/play_kernel.h)
   std::vector<int> inside_;   // canvas indices of L's pixels
-  cv::Rect bounds_;           // their bounding box on the canvas
-  std::vector<float> draws_;  // the common random numbers, uniform in [0, 1)
+  std::vector<cv::Point> inside_at_;  // and their (column, row): no division per pixel
+  cv::Rect bounds_;                   // their bounding box on the canvas
+  std::vector<float> draws_;          // the common random numbers, uniform in [0, 1), step-major
+  CpuLevel level_ = CpuLevel::scalar;
   AttractorLossOptions options_;
 };
 

@@ -143,8 +143,9 @@ struct FitOptions {
   // kick the best maps so far, for as long as the budget lasts.
   int restarts = 5;
   // Objective evaluations over the whole fit: what ends it reproducibly. A move of one map in
-  // a descent counts 1/N, a move on W^k(L) counts k, an attractor loss one per 5000 chaos-game
-  // points (3.3 on 64², 13 on 128²), about the same time as one collage evaluation.
+  // a descent counts 1/N, a move on W^k(L) counts k, an attractor loss one per 20000 of its
+  // chaos-game points and canvas pixels (1.3 on 64², 4.6 on 128²), about the same time as one
+  // collage evaluation.
   long max_evaluations = 250000;
   // Wall-clock cap over the whole fit, rendering included (seconds); 0 = none (then the same
   // seed gives the same maps on any machine and thread count). The stages have shares of it (and

@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 #include "collage/attractor_loss.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <gtest/gtest.h>
+
+#include "ifs/cpu.h"
 
 #include "ifs/error.h"
 #include "tests/collage/test_shapes.h"
@@ -87,6 +92,47 @@ TEST(attractor_loss, a_thin_part_is_kept_at_any_cover_and_dropped_at_half) {
   EXPECT_EQ(cv::countNonZero(any.target()), 32);
   EXPECT_EQ(cv::countNonZero(any.target().col(16)), 32);
   EXPECT_THROW(AttractorLoss(line, {.size = 32, .keep = 1}), Error);
+}
+
+// N similitudes of ratio 0.3–0.58 about points spread over the plane, turned and some reflected;
+// map 2 is moved far right, so its points and their images leave the canvas (the look-up's
+// outside path, the hits' edge).
+std::vector<AffineMap> spread_maps(int count) {
+  std::vector<AffineMap> maps;
+  for (int k = 0; k < count; ++k) {
+    const double r = 0.3 + 0.04 * (k % 8), turn = 0.7 * k;
+    const double a = r * std::cos(turn), s = r * std::sin(turn), flip = k % 3 == 1 ? -1 : 1;
+    const double x = 0.2 + 0.6 * std::fmod(0.37 * k, 1.0), y = 0.2 + 0.6 * std::fmod(0.61 * k, 1.0);
+    maps.push_back({a, -s * flip, s, a * flip, x, y});
+    if (k == 2) maps.back().e = 1.2;
+  }
+  return maps;
+}
+
+TEST(attractor_loss, every_kernel_level_gives_the_scalar_levels_bits) {
+  // N = 3, 6 and 8 pick the maps by VPERMPS, N = 10 by gathers (collage/detail/play_kernel.h).
+  const std::vector<CpuLevel> levels = supported_cpu_levels();
+  if (levels.size() < 2) GTEST_SKIP() << "this CPU runs the scalar kernels only";
+  for (int size : {32, 64}) {
+    const AttractorLoss scalar(testing::disc_and_square(),
+                               {.size = size, .keep = 0, .level = CpuLevel::scalar});
+    for (CpuLevel level : levels) {
+      const AttractorLoss other(testing::disc_and_square(),
+                                {.size = size, .keep = 0, .level = level});
+      for (int count : {3, 6, 8, 10}) {
+        const std::vector<AffineMap> maps = spread_maps(count);
+        const AttractorTerms want = scalar.terms(maps), got = other.terms(maps);
+        const auto where = ::testing::Message()
+                           << to_string(level) << " R=" << size << " N=" << count;
+        EXPECT_EQ(got.value, want.value) << where;
+        EXPECT_EQ(got.spill, want.spill) << where;
+        EXPECT_EQ(got.iou, want.iou) << where;
+        EXPECT_EQ(got.coverage, want.coverage) << where;
+        EXPECT_EQ(cv::countNonZero(scalar.raster(maps) != other.raster(maps)), 0) << where;
+        EXPECT_GT(want.spill, 0) << where;
+      }
+    }
+  }
 }
 
 TEST(attractor_loss, a_level_outside_eight_to_the_target_side_is_refused) {
