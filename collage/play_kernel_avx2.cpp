@@ -60,27 +60,12 @@ void advance(Chains& c, const float* draws, std::size_t t0, std::size_t t1, floa
 using Advance = void (*)(Chains&, const float*, std::size_t, std::size_t, float*, float*, float,
                          float);
 
+// The steps for N maps: advance<N> up to 8, the gathered form advance<0> above (and at entry 0,
+// which N ≥ 1 never asks for).
 Advance advance_for(int count) {
-  switch (count) {
-    case 1:
-      return advance<1>;
-    case 2:
-      return advance<2>;
-    case 3:
-      return advance<3>;
-    case 4:
-      return advance<4>;
-    case 5:
-      return advance<5>;
-    case 6:
-      return advance<6>;
-    case 7:
-      return advance<7>;
-    case 8:
-      return advance<8>;
-    default:
-      return advance<0>;
-  }
+  static constexpr Advance kByCount[] = {advance<0>, advance<1>, advance<2>, advance<3>, advance<4>,
+                                         advance<5>, advance<6>, advance<7>, advance<8>};
+  return count >= 0 && count <= 8 ? kByCount[count] : advance<0>;
 }
 
 // The distance map's bilinear value at canvas points (px, py), as the scalar lookup.
