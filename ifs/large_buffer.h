@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // An allocator for raster-sized buffers (a flame's histograms: 4–8 MB at 256 px, supersampled)
 // that asks Linux for transparent huge pages. Such a buffer is written once all over right after
-// it is allocated, and each 4 KiB page of it costs a page fault on that first write: at 256 px
-// the faults were a sixth of a whole flame render's CPU time (5100 faults, 11 ms of system time
-// in a 75 ms command). A 2 MiB page is one fault for 512 of them. The memory and its contents are
+// it is allocated, and each 4 KiB page of it costs a page fault on that first write: a flame
+// render at 256 px took 5100 faults and 75 ms of CPU, with huge pages 573 and 67 ms. A 2 MiB page
+// is one fault for 512 of them. The memory and its contents are
 // the same; only the kernel's work to map it changes. Buffers below 2 MiB, and systems without
 // madvise, get ordinary memory.
 #pragma once
