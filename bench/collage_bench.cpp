@@ -2,8 +2,10 @@
 // Collage fitting on real shapes (issues 15 and 32): every shape × every N of --maps is fitted
 // once per method of --methods in one run: `collage` (the fit before issue 32: the collage W(L)
 // and its iterates), `attractor` (issue 32: the attractor itself, from the best few starts),
-// `noscan` (the attractor method without the self-similarity scan's starts, as it was before) and
-// `noreseed` (the attractor method without the re-seed of maps where the error is, as before it).
+// `noscan` (the attractor method without the self-similarity scan's starts, as it was before),
+// `noreseed` (the attractor method without the re-seed of maps where the error is, as before it),
+// `grow` (the attractor method growing from fewer maps on --grow-share of its stages, default
+// 0.1) and `nogrow` (the attractor method without growing).
 // The shapes: the silhouettes of bench/collage-shapes/ (holes, thin parts, letters, a logo with
 // rings and text) and two fractals' own pictures drawn here: the attractor of the shipped
 // barnsley-fern preset and that of the first FractalDB category of seed 1 (ifsfx dataset's
@@ -16,7 +18,8 @@
 // medians, and for shapes
 // with holes IoU(L, L with its holes filled), the most a fit without holes can reach.
 //   build/release/bench/collage_bench [--only fish,logo,fern] [--maps 4,6,8]
-//       [--methods collage,attractor,noscan,noreseed] [--max-seconds 30] [--max-evaluations N]
+//       [--methods collage,attractor,noscan,noreseed,grow,nogrow] [--grow-share 0.1] [--seed 1]
+//       [--max-seconds 30] [--max-evaluations N]
 //       [--previews DIR]
 //       [--truth 1]
 // --truth 1: for the drawn fractals fitted with their own number of maps, a diagnosis line for
@@ -121,7 +124,9 @@ struct Args {
   int threads = 0;
   int size = 128;  // `ifsfx fit`'s default working raster
   std::filesystem::path previews;
-  bool truth = false;  // --truth 1: the drawn fractals' own maps scored beside each fit
+  bool truth = false;       // --truth 1: the drawn fractals' own maps scored beside each fit
+  double grow_share = 0.1;  // FitOptions::grow_share of the `grow` method
+  std::uint64_t seed = 1;   // FitOptions::seed
 };
 
 Args parse(int argc, char** argv) {
@@ -140,9 +145,15 @@ Args parse(int argc, char** argv) {
     } else if (flag == "--methods") {
       a.methods = split(value);
       for (const auto& m : a.methods)
-        if (m != "collage" && m != "attractor" && m != "noscan" && m != "noreseed")
-          throw Error(ErrorKind::parse,
-                      "--methods: collage, attractor, noscan, noreseed (got " + m + ")");
+        if (m != "collage" && m != "attractor" && m != "noscan" && m != "noreseed" && m != "grow" &&
+            m != "nogrow")
+          throw Error(
+              ErrorKind::parse,
+              "--methods: collage, attractor, noscan, noreseed, grow, nogrow (got " + m + ")");
+    } else if (flag == "--seed") {
+      a.seed = std::stoull(value);
+    } else if (flag == "--grow-share") {
+      a.grow_share = std::stod(value);
     } else if (flag == "--max-seconds") {
       a.max_seconds = std::stod(value);
     } else if (flag == "--max-evaluations") {
@@ -158,7 +169,7 @@ Args parse(int argc, char** argv) {
     } else {
       throw Error(ErrorKind::parse,
                   "unknown option " + flag +
-                      " (--shapes, --only, --maps, --methods, --max-seconds, "
+                      " (--shapes, --only, --maps, --methods, --grow-share, --seed, --max-seconds, "
                       "--max-evaluations, --threads, --size, --previews, --truth)");
     }
   }
@@ -231,6 +242,10 @@ Row fit_one(const Args& args, const Shape& shape, int maps, const std::string& m
   if (method == "noscan") options.similarity_starts = 0;
   // noreseed: the attractor method without the re-seed of maps where the error is (before it).
   if (method == "noreseed") options.reseed_share = 0;
+  // grow / nogrow: the attractor method with and without growing from fewer maps.
+  if (method == "grow") options.grow_share = args.grow_share;
+  if (method == "nogrow") options.grow_share = 0;
+  options.seed = args.seed;
   options.max_seconds = args.max_seconds;
   options.max_evaluations = args.max_evaluations;
   options.threads = args.threads;

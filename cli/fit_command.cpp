@@ -290,6 +290,17 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--max-evaluations", args->max_evaluations, "Objective evaluations over all runs")
       ->capture_default_str()
       ->check(CLI::Range(2L, kMaxFitEvaluations));
+  cmd->add_option("--reseed-share", args->reseed_share,
+                  "Attractor method: the share of its stages spent re-seeding the maps that pay "
+                  "least onto the parts of the shape the attractor misses (0: none)")
+      ->capture_default_str()
+      ->check(number_in(0, kMaxFitShare));
+  cmd->add_option("--grow-share", args->grow_share,
+                  "Attractor method: the share of its stages spent growing from fewer maps: the "
+                  "two that pay least dropped, then maps added one at a time where the attractor "
+                  "misses most, each followed by a re-optimisation (0: none)")
+      ->capture_default_str()
+      ->check(number_in(0, kMaxFitShare));
   cmd->add_option("--preview", args->preview,
                   "Write target, collage and attractor side by side to this image, each of the "
                   "N pieces in its own colour (missed pixels dark grey, spill dimmed)");

@@ -80,7 +80,8 @@ enum class FitMethod {
   // ICP last (on the working raster and on fine_target); then the maps that pay least are
   // re-seeded on the regions of L that A misses (reseed.h, reseed_share); with fine_target, every
   // candidate is judged on it too, and its best is moved by CMA-ES on the loss cut at its size
-  // last.
+  // last. Optionally (grow_share, off by default: no gain measured) the escapes' best is grown
+  // again from N − 2 maps onto the regions A misses (grow.h) before the working raster's stage.
   attractor,
   // Issues 14–15: the collage objective W(L) against L, then a polish on W^k(L); the attractor
   // is only rendered to choose between candidates.
@@ -138,6 +139,14 @@ struct FitOptions {
   // error is (reseed.h, issue 32 item 3), at the start of the fine raster's stage (what it leaves
   // goes to that stage; without fine_target, the end of the working raster's); 0..0.15, 0 = none.
   double reseed_share = 0.15;
+  // FitMethod::attractor: the share of the attractor's stages given to growing from fewer maps
+  // (grow.h, issue 32 item 3), taken from the end of the escapes' share (0..0.15): the escapes'
+  // best less its two maps that pay least is re-optimised, then maps are added one at a time
+  // onto the largest regions of L that A misses and the whole set re-optimised after each, until
+  // N again; the grown set competes with the escapes' best for the working raster's stage.
+  // 0 = none, the default: at a fixed evaluation count it did not gain (−0.001 on average at 512²
+  // over seven shapes and two seeds, a tenth of the stages; bench/README.md).
+  double grow_share = 0;
   // moments: CMA-ES runs after the first, each from a seeded k-means++ split. search: runs
   // after the first that start from the next-best choice of maps from the pool; later runs
   // kick the best maps so far, for as long as the budget lasts.

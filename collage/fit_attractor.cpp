@@ -5,6 +5,7 @@
 
 #include "collage/attractor_fit.h"
 #include "collage/attractor_loss.h"
+#include "collage/grow.h"
 #include "collage/reseed.h"
 #include "ifs/rng.h"
 
@@ -15,6 +16,7 @@ namespace {
 // Where each stage ends, as a share of what the collage stages left (evaluations and time alike).
 // The re-seed (FitOptions::reseed_share) runs first in the fine raster's share, and what it leaves
 // goes to the fine raster's first round: a re-seed that finds nothing to do changes nothing.
+// Growing (FitOptions::grow_share) takes the end of the escapes' share.
 constexpr double kCoarseEnd = 0.2, kMiddleEnd = 0.35, kEscapeEnd = 0.5, kFineStart = 0.7;
 // The fine raster's stage (FitOptions::fine_target, finish_on_fine): chaos-game points per pixel
 // of its square, CMA-ES's first step, and the rounds of CMA-ES and ICP. Measured on the fern's
@@ -38,6 +40,10 @@ constexpr long kSearchCost = 200;
 // when its IoU on the working raster is at most this far below the candidate's.
 constexpr int kScreenRegions = 4, kScreenMaps = 2;
 constexpr double kReseedSlack = 0.005;
+// Growing (FitOptions::grow_share): how many of the maps that pay least are dropped before the
+// maps are grown back (at most N - 1), and CMA-ES's first step for each re-optimisation on 64².
+constexpr int kGrowDrop = 2;
+constexpr double kGrowSigma = 0.03;
 
 // Evaluations are counted as collage evaluations of about the same time: one of the attractor
 // loss costs a unit per 20000 of its chaos-game points and canvas pixels (the chaos game's AVX2
@@ -64,7 +70,8 @@ class Stages {
         total_evaluations_(std::max(0L, budget_.evaluations_left())),
         run_(run),
         centre_(fitting.objective.centroid()),
-        reseed_(std::clamp(options_.reseed_share, 0.0, (1 - kFineStart) / kFineRounds)) {
+        reseed_(std::clamp(options_.reseed_share, 0.0, (1 - kFineStart) / kFineRounds)),
+        grow_(std::clamp(options_.grow_share, 0.0, kEscapeEnd - kMiddleEnd)) {
     // The levels are cut from the finest picture of L there is, kept where L covers any part
     // of a pixel, as A's raster is (attractor_loss.h): a half-covered coarse target drops a
     // fern's fronds, and its loss is lower for a wrong fern than for the true one (0.21
@@ -140,6 +147,10 @@ class Stages {
   double reseed_share() const { return reseed_; }
   double reseed_begin() const { return has_fine() ? kFineStart : 1.0 - reseed_; }
 
+  // Growing's share ends where the escapes' did; the escapes keep what is before it.
+  double grow_share() const { return grow_; }
+  double escape_end() const { return kEscapeEnd - grow_; }
+
   bool has_fine() const { return levels_.size() > 3; }
   const AttractorLoss& level(int k) const { return levels_[static_cast<std::size_t>(k)]; }
   Fitting& fitting() { return fitting_; }
@@ -171,6 +182,7 @@ class Stages {
   int run_;
   Point centre_;
   double reseed_;
+  double grow_;
   std::vector<AttractorLoss> levels_;
 };
 
@@ -183,7 +195,7 @@ std::vector<AffineMap> escape(Stages& stages, std::vector<AffineMap> current, do
   double best_value = value, current_value = value;
   Rng rng(stream_seed(options.seed ^ 0x65736361706500ULL, 0));
   for (int k = 0; k < kEscapes; ++k) {
-    const double end = kMiddleEnd + (kEscapeEnd - kMiddleEnd) * (k + 1) / kEscapes;
+    const double end = kMiddleEnd + (stages.escape_end() - kMiddleEnd) * (k + 1) / kEscapes;
     if (!stages.open(end)) break;
     const auto start =
         perturbed(current, stages.centre(), options.objective.max_factor, kEscapeScale, rng);
@@ -233,6 +245,15 @@ const std::vector<AffineMap>& best_maps(Stages& stages) {
 double best_iou(Stages& stages) {
   const Chooser& chooser = stages.fitting().chooser;
   return stages.has_fine() ? chooser.fine_best.report.fine_iou : chooser.best_iou;
+}
+
+// The search's options for one region's maps: the fit's, held below its contraction wall.
+SearchOptions region_search(const FitOptions& options) {
+  SearchOptions search = options.search;
+  search.max_factor = std::min(search.max_factor, options.objective.max_factor);
+  search.threads = options.threads;
+  search.cancel = options.cancel;
+  return search;
 }
 
 // One re-seed's start: the set, the region its new map covers and its IoU on the working raster.
@@ -288,10 +309,7 @@ void reseed(Stages& stages, double begin, double end) {
                                      .seed = stream_seed(options.seed ^ 0x7265736565644ULL, 0),
                                      .keep = 0});
   const int min_area = std::max(4, static_cast<int>(kMinRegion * cv::countNonZero(judge.target())));
-  SearchOptions search = options.search;
-  search.max_factor = std::min(search.max_factor, options.objective.max_factor);
-  search.threads = options.threads;
-  search.cancel = options.cancel;
+  const SearchOptions search = region_search(options);
   const RefineOptions icp{options.refine_iterations, options.objective.max_factor,
                           fitting.budget.at(1.0, fitting.chooser.reserve()), options.cancel};
   cv::Mat tried(judge.target().size(), CV_8UC1, cv::Scalar(0));  // regions tried in vain
@@ -313,6 +331,34 @@ void reseed(Stages& stages, double begin, double end) {
     if (options.refine_iterations > 0) fitting.chooser.consider(refine_icp(finest, moved, icp));
     if (!(best_iou(stages) > before)) tried |= found.region->mask;
   }
+}
+
+// Growing from fewer maps (issue 32 item 3, grow.h) on [begin, end) of the stages' share, from
+// `from`: the regions A misses are found on the working raster (4 points per pixel), each
+// re-optimisation is CMA-ES on 64² with an equal part of the share. A step with no evaluations or
+// time left still adds its map (only its re-optimisation is skipped): the result has N maps.
+std::vector<AffineMap> grow(Stages& stages, const std::vector<AffineMap>& from, double begin,
+                            double end) {
+  Fitting& fitting = stages.fitting();
+  const AttractorLoss& working = stages.level(2);
+  GrowOptions o;
+  o.drop = kGrowDrop;
+  o.regions = kScreenRegions;
+  o.min_region = kMinRegion;
+  o.search = region_search(fitting.options);
+  const int steps = std::min(static_cast<int>(from.size()) - 1, kGrowDrop) + 1;
+  o.reoptimise = [&](std::vector<AffineMap> maps, int step) {
+    const double step_end = begin + (end - begin) * (step + 1) / steps;
+    if (!stages.open(step_end)) return maps;
+    fitting.report(FitPhase::attractor, stages.run(), fitting.best_objective);
+    return stages.refine(1, maps, kGrowSigma, step_end, 1).maps;
+  };
+  o.charge = [&](int renderings, int searches) {
+    fitting.options.cancel.check("fit");
+    stages.charge(working, renderings);
+    stages.charge(static_cast<long>(searches) * kSearchCost);
+  };
+  return grow_maps(working, fitting.target, from, o);
 }
 
 }  // namespace
@@ -348,6 +394,15 @@ void optimise_attractor(Fitting& fitting, std::vector<std::vector<AffineMap>> st
   // The coarse levels' optimum need not be the working raster's: the last stage starts from the
   // best on it of the escapes' best and the best attractor before these stages.
   std::vector<AffineMap> final_maps = stages.better_at_last_level(best, starts.front());
+  // Growing from fewer maps, from the escapes' best: the grown set competes for the last stage.
+  if (stages.grow_share() > 0) {
+    const std::vector<AffineMap> grown =
+        grow(stages, best, stages.escape_end(), stages.escape_end() + stages.grow_share());
+    if (grown != best) {
+      fitting.chooser.consider(grown);
+      final_maps = stages.better_at_last_level(final_maps, grown);
+    }
+  }
   const double last_end = stages.has_fine() ? kFineStart : stages.reseed_begin();
   if (stages.open(last_end)) {
     final_maps = stages.refine(2, final_maps, 0.01, last_end, 1).maps;

@@ -54,8 +54,8 @@ cv::Mat array_shape(const py::object& target, const collage::TargetOptions& opti
 
 IfsPreset fit(const py::object& target, int maps, std::uint64_t seed, const std::string& init,
               std::optional<double> threshold, bool invert, const py::object& size,
-              double max_seconds, long max_evaluations, int threads,
-              const std::optional<std::string>& name, bool rgb) {
+              double max_seconds, long max_evaluations, double reseed_share, double grow_share,
+              int threads, const std::optional<std::string>& name, bool rgb) {
   app::FitArgs args;
   const bool is_path = py::isinstance<py::str>(target) || py::hasattr(target, "__fspath__");
   args.maps = maps;
@@ -66,10 +66,13 @@ IfsPreset fit(const py::object& target, int maps, std::uint64_t seed, const std:
   args.size = working_size_arg(size);
   args.max_seconds = max_seconds;
   args.max_evaluations = max_evaluations;
+  args.reseed_share = reseed_share;
+  args.grow_share = grow_share;
   args.threads = threads;
   app::check_fit_maps(args.maps, "n");
   app::check_fit_budgets(max_seconds, max_evaluations,
                          {.seconds = "max_seconds", .evaluations = "max_evaluations"});
+  app::check_fit_shares(reseed_share, grow_share, {.reseed = "reseed_share", .grow = "grow_share"});
   cv::Mat shape;
   if (is_path) {
     args.target = py::isinstance<py::str>(target)
@@ -110,6 +113,7 @@ void bind_fit(py::module_& m) {
         py::arg("seed") = d.seed, py::arg("init") = "search", py::arg("threshold") = py::none(),
         py::arg("invert") = d.invert, py::arg("size") = std::stoi(d.size),
         py::arg("max_seconds") = d.max_seconds, py::arg("max_evaluations") = d.max_evaluations,
+        py::arg("reseed_share") = d.reseed_share, py::arg("grow_share") = d.grow_share,
         py::arg("threads") = d.threads, py::arg("name") = py::none(), py::arg("rgb") = false,
         R"doc(An IFS of `n` maps whose attractor looks like the target's shape, found by the collage
 theorem, as `ifsfx fit TARGET -n N -o OUT.toml` finds it: for a path, `.to_toml()` is the file
@@ -129,6 +133,11 @@ invert: swap shape and background (a light shape, a clear alpha), default False.
 size: the working raster's side S (or "SxS"), default 128.
 max_seconds: wall-clock cap of the search, default 30; 0: none.
 max_evaluations: objective evaluations over all runs, default 250000.
+reseed_share: the share of the attractor's stages spent re-seeding the maps that pay least onto
+    the parts the attractor misses, in [0, 0.15], default 0.15; 0: none.
+grow_share: the share of the attractor's stages spent growing from fewer maps (the two that pay
+    least dropped, then maps added one at a time where the attractor misses most), in [0, 0.15],
+    default 0; 0: none.
 threads: default 0 = all cores.
 name: the IFS's name, default None: the path's stem, or "fitted" for an array.
 rgb: an array target in RGB(A) order, default False (BGR(A), like cv2).

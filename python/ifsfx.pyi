@@ -144,6 +144,8 @@ def fit(
     size: int | str = 128,
     max_seconds: float = 30.0,
     max_evaluations: int = 250000,
+    reseed_share: float = 0.15,
+    grow_share: float = 0.0,
     threads: int = 0,
     name: str | None = None,
     rgb: bool = False,

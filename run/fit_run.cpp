@@ -52,6 +52,14 @@ void check_fit_budgets(double max_seconds, long max_evaluations, const FitBudget
                             max_evaluations));
 }
 
+void check_fit_shares(double reseed_share, double grow_share, const FitShareNames& names) {
+  for (const auto& [value, name] :
+       {std::pair{reseed_share, &names.reseed}, {grow_share, &names.grow}})
+    if (!(value >= 0 && value <= kMaxFitShare))
+      throw Error(ErrorKind::invalid_argument,
+                  fmt::format("{}: must be in [0, {}] (got {})", *name, kMaxFitShare, value));
+}
+
 cv::Mat fit_raster(const FitArgs& args) {
   collage::TargetOptions target_options;
   target_options.threshold = args.threshold;
@@ -76,6 +84,8 @@ collage::FitOptions fit_options(const FitArgs& args, const CancelToken& cancel) 
   options.method = args.method;
   options.max_seconds = args.max_seconds;
   options.max_evaluations = args.max_evaluations;
+  options.reseed_share = args.reseed_share;
+  options.grow_share = args.grow_share;
   options.threads = args.threads;
   options.cancel = cancel;
   options.name = valid_utf8(std::filesystem::path(args.target).stem().string());

@@ -27,6 +27,10 @@ struct FitArgs {
   bool progress = false;
   double max_seconds = 30;
   long max_evaluations = 250000;
+  // FitOptions::reseed_share and ::grow_share: the attractor stages' shares given to re-seeding
+  // and to growing maps where the error is (issue 32 item 3); 0 switches either off.
+  double reseed_share = collage::FitOptions{}.reseed_share;
+  double grow_share = collage::FitOptions{}.grow_share;
   std::string preview;
   std::string size = "128";
   int threads = 0;
@@ -52,6 +56,16 @@ struct FitBudgetNames {
 // range.
 void check_fit_budgets(double max_seconds, long max_evaluations, const FitBudgetNames& names = {});
 
+// The largest share of the attractor's stages re-seeding or growing may take.
+inline constexpr double kMaxFitShare = 0.15;
+// How a door names the shares (Python: reseed_share, grow_share).
+struct FitShareNames {
+  std::string reseed = "--reseed-share", grow = "--grow-share";
+};
+// Throws Error{invalid_argument} "NAME: must be in [0, 0.15] (got X)" for a share out of its
+// range.
+void check_fit_shares(double reseed_share, double grow_share, const FitShareNames& names = {});
+
 // The target's shape (args.target: its alpha, else its dark pixels; args.threshold, args.invert)
 // on the working raster of args.size. Throws what load_target and working_raster throw.
 cv::Mat fit_raster(const FitArgs& args);
@@ -60,8 +74,8 @@ cv::Mat fit_raster(const FitArgs& args);
 // the report's fine IoU is measured (a fit that only looks good at the working raster says so).
 cv::Mat fit_fine_raster(const FitArgs& args);
 
-// The fit's options from the arguments (maps, seed, init, method, budgets, threads, the target's
-// stem as the IFS's name), polling `cancel`. The caller adds options.fine_target
+// The fit's options from the arguments (maps, seed, init, method, budgets, shares, threads, the
+// target's stem as the IFS's name), polling `cancel`. The caller adds options.fine_target
 // (fit_fine_raster) to have the report's fine IoU.
 collage::FitOptions fit_options(const FitArgs& args, const CancelToken& cancel);
 

@@ -61,6 +61,8 @@ void read_settings(const json& body, FitRequest& r) {
   if (body.contains("threshold") && !body["threshold"].is_null())
     r.args.threshold = number_field(body, "threshold", 0.5, 0, 1);
   r.args.invert = bool_field(body, "invert", false);
+  r.args.reseed_share = number_field(body, "reseed_share", r.args.reseed_share, 0, kMaxFitShare);
+  r.args.grow_share = number_field(body, "grow_share", r.args.grow_share, 0, kMaxFitShare);
   r.args.threads = 0;
 }
 

@@ -79,7 +79,7 @@ def test_fit_keywords_default_as_the_fit_command(cli):
     py = keyword_defaults(ifsfx.fit)
     names = {"maps": "n", "seed": "seed", "init": "init", "size": "size",
              "max-seconds": "max_seconds", "max-evaluations": "max_evaluations",
-             "threads": "threads"}
+             "reseed-share": "reseed_share", "grow-share": "grow_share", "threads": "threads"}
     for flag, key in names.items():
         assert same(py[key], cli_fit[flag]), (flag, py[key], cli_fit[flag])
     assert "threshold" not in cli_fit and py["threshold"] == "None"  # Otsu

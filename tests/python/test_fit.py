@@ -84,6 +84,8 @@ def test_the_threshold_keyword_is_the_command_flag(cli, tmp_path, shape):
     (dict(max_seconds=-1), "max_seconds: must be in [0, 1000000] (got -1)"),
     (dict(max_evaluations=1), "max_evaluations: must be in 2..100000000 (got 1)"),
     (dict(threshold=1.5), "threshold: must be in [0, 1] (got 1.5)"),
+    (dict(reseed_share=-0.1), "reseed_share: must be in [0, 0.15] (got -0.1)"),
+    (dict(grow_share=0.2), "grow_share: must be in [0, 0.15] (got 0.2)"),
 ])
 def test_bad_keywords_are_value_errors_with_the_command_messages(shape, kwargs, message):
     with pytest.raises(ValueError) as e:
