@@ -316,7 +316,9 @@ TEST(fit, a_stop_request_keeps_the_best_so_far) {
 // of CMA-ES and ICP on the fine raster). The scan finds the large copy (0.84 of the
 // whole) and both leaflets (0.34, 0.38 in the preset); the fourth map sits at the foot of the stem.
 // A fixed evaluation count (no clock) makes it the same on any machine; about 30 CPU seconds in
-// Release.
+// Release. It is 100000 evaluations, not the default 250000: there seeds 1–4 end at 0.838, 0.911,
+// 0.847, 0.884 (seed 4: 0.880 at 100000 too) — the coarse levels' losses rank a wrong fern above
+// the true one (docs/design.md §6), so this test holds one seed's answer, not the issue's.
 TEST(fit, fern_comes_back_from_its_own_picture_with_its_large_copy) {
 #if defined(__SANITIZE_ADDRESS__)
   GTEST_SKIP() << "about 30 CPU seconds in Release, many times that under the sanitizers; the "
