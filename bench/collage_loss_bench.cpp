@@ -10,13 +10,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <ctime>
 #include <utility>
 #include <vector>
 
 #include <fmt/format.h>
 #include <opencv2/imgproc.hpp>
 
+#include "bench/thread_clock.h"
 #include "collage/attractor_loss.h"
 #include "ifs/cpu.h"
 
@@ -24,29 +24,7 @@ namespace {
 
 using namespace ifsfx;
 
-double thread_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-// Seconds per call of f, best of 3 rounds of at least `round` seconds.
-template <typename F>
-double seconds_per_call(F&& f, double round = 0.2) {
-  double best = 1e30;
-  for (int k = 0; k < 3; ++k) {
-    long calls = 0;
-    const double start = thread_seconds();
-    double now = start;
-    do {
-      f();
-      ++calls;
-      now = thread_seconds();
-    } while (now - start < round);
-    best = std::min(best, (now - start) / static_cast<double>(calls));
-  }
-  return best;
-}
+using bench::seconds_per_call;
 
 std::vector<AffineMap> grid_maps(int count) {
   std::vector<AffineMap> maps;

@@ -12,12 +12,11 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <cstring>
-#include <ctime>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "bench/thread_clock.h"
 #include "flame/detail/batch_variations.h"
 #include "ifs/cpu.h"
 #include "ifs/rng.h"
@@ -27,29 +26,7 @@ namespace {
 using namespace ifsfx;
 using U4 = std::uint32_t __attribute__((vector_size(16)));
 
-double thread_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
-
-// Seconds per call of f, best of 3 rounds of at least 0.2 s.
-template <typename F>
-double seconds_per_call(F&& f) {
-  double best = 1e30;
-  for (int k = 0; k < 3; ++k) {
-    long calls = 0;
-    const double start = thread_seconds();
-    double now = start;
-    do {
-      f();
-      ++calls;
-      now = thread_seconds();
-    } while (now - start < 0.2);
-    best = std::min(best, (now - start) / static_cast<double>(calls));
-  }
-  return best;
-}
+using bench::seconds_per_call;
 
 // The hits of a gasket's orbit on a side×side raster: bin, map and colour coordinate of each.
 struct Hits {

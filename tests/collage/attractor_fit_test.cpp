@@ -61,16 +61,7 @@ TEST(attractor_fit, reseed_puts_the_map_that_pays_least_on_the_part_a_misses) {
   // L is a disc and a square apart; A is the five-petalled flower shrunk into the disc, one of
   // its maps twice: A misses the square, and either copy of the twice-given map is worth nothing.
   const cv::Mat shape = testing::disc_and_square(96);
-  const Point c{24.5 / 96, 1 - 48.5 / 96};  // the disc's centre; its radius is 19/96
-  const double rho = 0.38;
-  std::vector<AffineMap> maps;
-  for (AffineMap f : testing::five_petals().maps) {
-    // f conjugated by x -> c + rho (x - (1/2, 1/2)): the same linear part, moved.
-    const Point t = f({0.5, 0.5});
-    f.e = c.x - (f.a * c.x + f.b * c.y) + rho * (t.x - 0.5);
-    f.f = c.y - (f.c * c.x + f.d * c.y) + rho * (t.y - 0.5);
-    maps.push_back(f);
-  }
+  std::vector<AffineMap> maps = testing::flower_in_disc();
   maps.push_back(maps[1]);
   const AttractorLoss judge(shape, {.size = 96, .keep = 0});
   const ErrorMaps errors = error_maps(judge.target(), judge.raster(maps), 4);

@@ -12,22 +12,6 @@ namespace {
 
 constexpr int kSize = 96;
 
-// The five-petalled flower's maps conjugated into the disc of testing::disc_and_square (centre
-// (24.5, 48.5) px, radius 19 px): the same linear parts, moved, so that A is the flower inside
-// the disc and misses the square.
-std::vector<AffineMap> flower_in_disc() {
-  const Point c{24.5 / kSize, 1 - 48.5 / kSize};
-  const double rho = 0.38;
-  std::vector<AffineMap> maps;
-  for (AffineMap f : testing::five_petals().maps) {
-    const Point t = f({0.5, 0.5});
-    f.e = c.x - (f.a * c.x + f.b * c.y) + rho * (t.x - 0.5);
-    f.f = c.y - (f.c * c.x + f.d * c.y) + rho * (t.y - 0.5);
-    maps.push_back(f);
-  }
-  return maps;
-}
-
 // L's centroid (plane units), where every searched map of L onto a piece sends it to the piece's.
 Point centroid(const cv::Mat& shape) {
   const cv::Moments m = cv::moments(shape, true);
@@ -48,7 +32,7 @@ bool some_map_on_the_square(const std::vector<AffineMap>& maps, const cv::Mat& s
 TEST(grow, the_added_map_goes_onto_the_piece_a_misses) {
   const cv::Mat shape = testing::disc_and_square(kSize);
   const AttractorLoss judge(shape, {.size = kSize, .keep = 0});
-  const std::vector<AffineMap> flower = flower_in_disc();
+  const std::vector<AffineMap> flower = testing::flower_in_disc();
   ASSERT_FALSE(some_map_on_the_square(flower, shape));
   const auto grown = with_map_where_missed(judge, shape, flower, flower.front());
   ASSERT_EQ(grown.size(), flower.size() + 1);
@@ -63,7 +47,7 @@ TEST(grow, a_set_that_misses_a_piece_grows_a_map_onto_it_and_keeps_its_size) {
   // two that pay least leaves a flower that misses the square; growing puts a map on it.
   const cv::Mat shape = testing::disc_and_square(kSize);
   const AttractorLoss judge(shape, {.size = kSize, .keep = 0});
-  std::vector<AffineMap> from = flower_in_disc();
+  std::vector<AffineMap> from = testing::flower_in_disc();
   from.push_back(from[1]);
   std::vector<std::size_t> sizes;
   std::vector<int> steps;

@@ -56,4 +56,20 @@ inline cv::Mat disc_and_square(int size = 96) {
   return m;
 }
 
+// five_petals() shrunk into the disc of disc_and_square(96) (centre (24.5, 48.5) px, radius 19):
+// each map conjugated by x -> c + 0.38 (x - (1/2, 1/2)), the same linear parts, moved. A is the
+// flower inside the disc and misses the square.
+inline std::vector<AffineMap> flower_in_disc() {
+  const Point c{24.5 / 96, 1 - 48.5 / 96};
+  const double rho = 0.38;
+  std::vector<AffineMap> maps;
+  for (AffineMap f : five_petals().maps) {
+    const Point t = f({0.5, 0.5});
+    f.e = c.x - (f.a * c.x + f.b * c.y) + rho * (t.x - 0.5);
+    f.f = c.y - (f.c * c.x + f.d * c.y) + rho * (t.y - 0.5);
+    maps.push_back(f);
+  }
+  return maps;
+}
+
 }  // namespace ifsfx::testing
