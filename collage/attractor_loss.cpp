@@ -51,15 +51,15 @@ AttractorLoss::AttractorLoss(const cv::Mat& target, const AttractorLossOptions& 
                 fmt::format("attractor loss: the target vanishes on a {}² raster", size_));
   cv::Mat canvas(side_, side_, CV_8UC1, cv::Scalar(0));
   target_.copyTo(canvas(cv::Rect(pad_, pad_, size_, size_)));
-  distance_ = distance_to(canvas);
+  const cv::Mat distance = distance_to(canvas);
   cells_.assign(4 * static_cast<std::size_t>(side_ * side_), 0.0f);
   for (int r = 0; r + 1 < side_; ++r)
     for (int c = 0; c + 1 < side_; ++c) {
       float* cell = cells_.data() + 4 * static_cast<std::size_t>(r * side_ + c);
-      cell[0] = distance_.at<float>(r, c);
-      cell[1] = distance_.at<float>(r, c + 1);
-      cell[2] = distance_.at<float>(r + 1, c);
-      cell[3] = distance_.at<float>(r + 1, c + 1);
+      cell[0] = distance.at<float>(r, c);
+      cell[1] = distance.at<float>(r, c + 1);
+      cell[2] = distance.at<float>(r + 1, c);
+      cell[3] = distance.at<float>(r + 1, c + 1);
     }
   for (int i = 0; i < side_ * side_; ++i)
     if (canvas.data[i]) {
@@ -102,7 +102,6 @@ double AttractorLoss::play(std::span<const AffineMap> maps, std::vector<std::uin
                              .stride = stride,
                              .count = count,
                              .cumulative = cumulative.data(),
-                             .distance = distance_.ptr<float>(),
                              .cells = cells_.data(),
                              .side = side_,
                              .size = static_cast<float>(size_),

@@ -82,9 +82,10 @@ class AttractorLoss {
   int pad_ = 0;   // the canvas reaches pad_ pixels beyond the square on every side
   int side_ = 0;  // size_ + 2 pad_
   cv::Mat target_;
-  cv::Mat distance_;          // CV_32FC1 on the canvas: distance to L's nearest pixel centre
-  std::vector<float> cells_;  // its cells' four corners (collage/detail/play_kernel.h)
-  std::vector<int> inside_;   // canvas indices of L's pixels
+  // The canvas's distance to L's nearest pixel centre, by cells of four corners
+  // (collage/detail/play_kernel.h).
+  std::vector<float> cells_;
+  std::vector<int> inside_;           // canvas indices of L's pixels
   std::vector<cv::Point> inside_at_;  // and their (column, row): no division per pixel
   cv::Rect bounds_;                   // their bounding box on the canvas
   std::vector<float> draws_;          // the common random numbers, uniform in [0, 1), step-major

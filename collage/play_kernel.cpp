@@ -42,9 +42,9 @@ float lookup(const collage::detail::PlayInput& in, float px, float py) {
   const int c0 = std::min(static_cast<int>(cu), in.side - 2);
   const int r0 = std::min(static_cast<int>(cv), in.side - 2);
   const float fu = cu - static_cast<float>(c0), fv = cv - static_cast<float>(r0);
-  const float* p = in.distance + static_cast<std::ptrdiff_t>(r0) * in.side + c0;
+  const float* p = in.cells + 4 * (static_cast<std::ptrdiff_t>(r0) * in.side + c0);
   const float top = p[0] + fu * (p[1] - p[0]);
-  const float bottom = p[in.side] + fu * (p[in.side + 1] - p[in.side]);
+  const float bottom = p[2] + fu * (p[3] - p[2]);
   return (top + fv * (bottom - top)) + out;
 }
 

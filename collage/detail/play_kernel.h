@@ -41,10 +41,9 @@ struct PlayInput {
   int stride;
   int count;                // N ≥ 1
   const float* cumulative;  // N − 1 thresholds: the first k + 1 maps' summed probabilities
-  const float* distance;    // side × side, row-major: distance to L's nearest pixel centre
-  // The distance map by cells: cell (r, c) at 4 (r side + c) holds its corners d₀₀ = d(r, c),
-  // d₀₁ = d(r, c + 1), d₁₀ = d(r + 1, c), d₁₁ = d(r + 1, c + 1), for r, c ≤ side − 2: the
-  // look-up's one load (the scalar kernel reads the same values from `distance`).
+  // The distance d to L's nearest pixel centre on the side × side canvas, by cells: cell (r, c)
+  // at 4 (r side + c) holds its corners d₀₀ = d(r, c), d₀₁ = d(r, c + 1), d₁₀ = d(r + 1, c),
+  // d₁₁ = d(r + 1, c + 1), for r, c ≤ side − 2: the look-up's one load.
   const float* cells;
   int side;         // the canvas, ≥ 2
   float size, pad;  // the plane's unit square is pixels [pad, pad + size)²

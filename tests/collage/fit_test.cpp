@@ -23,16 +23,7 @@ namespace {
 
 constexpr int kSize = 96;
 
-// A small, fast fit: the evaluation budget (not the clock) ends it, so it is reproducible.
-FitOptions quick(int maps) {
-  FitOptions o;
-  o.maps = maps;
-  o.restarts = 2;
-  o.max_evaluations = 12000;
-  o.max_seconds = 0;
-  o.quality = 128;
-  return o;
-}
+using testing::quick;
 
 // The Sierpinski triangle rendered from its known IFS: the target that N = 3 maps can match
 // exactly. The grid is set so that the triangle's lines (at multiples of 1/32) run through pixel

@@ -92,12 +92,7 @@ TEST(grow, where_a_misses_nothing_the_dropped_maps_come_back) {
 // A small fit that its evaluations end (the same on any machine), growing on a twentieth of the
 // attractor's stages.
 FitOptions quick_growing(int maps) {
-  FitOptions o;
-  o.maps = maps;
-  o.restarts = 2;
-  o.max_evaluations = 12000;
-  o.max_seconds = 0;
-  o.quality = 128;
+  FitOptions o = testing::quick(maps);
   o.grow_share = 0.05;
   return o;
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Working rasters and maps with known answers, shared by the collage tests.
+// Working rasters and maps with known answers, and a quick fit's options, shared by the collage
+// tests.
 #pragma once
 
 #include <cmath>
@@ -9,10 +10,22 @@
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "collage/fit.h"
 #include "ifs/affine_map.h"
 #include "ifs/ifs.h"
 
 namespace ifsfx::testing {
+
+// A small, fast fit: the evaluation budget (not the clock) ends it, so it is reproducible.
+inline collage::FitOptions quick(int maps) {
+  collage::FitOptions o;
+  o.maps = maps;
+  o.restarts = 2;
+  o.max_evaluations = 12000;
+  o.max_seconds = 0;
+  o.quality = 128;
+  return o;
+}
 
 // The square [1/8, 7/8]² as a 64×64 working raster.
 inline cv::Mat framed_square() {
