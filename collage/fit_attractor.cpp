@@ -273,7 +273,10 @@ std::vector<AffineMap> screened_start(Stages& stages,
       stages.fitting().chooser.consider(
           stages.refine(2, distinct[k], kLastSigma, screen_end, ways).maps);
     }
-  return best_maps(stages);
+  // The chooser has judged a contractive set before these stages, so this is never empty; were
+  // it, the first candidate would do.
+  const std::vector<AffineMap>& chosen = best_maps(stages);
+  return chosen.empty() && !distinct.empty() ? distinct.front() : chosen;
 }
 
 // The search's options for one region's maps: the fit's, held below its contraction wall.
@@ -375,8 +378,7 @@ std::vector<AffineMap> grow(Stages& stages, const std::vector<AffineMap>& from, 
   o.regions = kScreenRegions;
   o.min_region = kMinRegion;
   o.search = region_search(fitting.options);
-  const int steps = std::min(static_cast<int>(from.size()) - 1, kGrowDrop) + 1;
-  o.reoptimise = [&](std::vector<AffineMap> maps, int step) {
+  o.reoptimise = [&](std::vector<AffineMap> maps, int step, int steps) {
     const double step_end = begin + (end - begin) * (step + 1) / steps;
     if (!stages.open(step_end)) return maps;
     fitting.report(FitPhase::attractor, stages.run(), fitting.best_objective);

@@ -13,7 +13,9 @@ namespace ifsfx::collage::detail {
 // Refines the distinct `starts` (best first) on the attractor loss with what is left of the
 // budget: each start by CMA-ES on a 32² raster; the best two on 64²; perturb-and-accept escapes
 // from the best on 64²; optionally the escapes' best grown again from fewer maps (grow.h,
-// FitOptions::grow_share); the best of all on the working raster; maps re-seeded where the error
+// FitOptions::grow_share); on the working raster, with a fine raster the distinct best candidates
+// each a while and then the best on the fine raster, without one the best of all on the working
+// raster's loss; maps re-seeded where the error
 // is (reseed.h, FitOptions::reseed_share); last the fine raster's rounds. Every stage's best is
 // judged by the chooser (its rendered attractor against L), so the fit is never worse than its
 // starts. Runs are counted on from `run`.

@@ -62,7 +62,7 @@ std::vector<AffineMap> grow_maps(const AttractorLoss& judge, const cv::Mat& targ
     if (step > 0)
       maps = with_map_where_missed(judge, target, maps, spares[static_cast<std::size_t>(step - 1)],
                                    options);
-    if (options.reoptimise) maps = options.reoptimise(std::move(maps), step);
+    if (options.reoptimise) maps = options.reoptimise(std::move(maps), step, drop + 1);
   }
   return maps;
 }

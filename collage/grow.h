@@ -24,9 +24,9 @@ struct GrowOptions {
   int regions = 4;        // the largest missed regions screened for each added map
   double min_region = 0;  // the smallest region worth a map, as a share of L's pixels
   SearchOptions search;   // the range/domain search for one region
-  // The whole set re-optimised: after the drop (step 0) and after each added map (steps 1..drop).
-  // None: the sets are kept as they are.
-  std::function<std::vector<AffineMap>(std::vector<AffineMap>, int step)> reoptimise;
+  // The whole set re-optimised: after the drop (step 0) and after each added map (steps 1 ..
+  // steps − 1; steps = 1 + the maps dropped). None: the sets are kept as they are.
+  std::function<std::vector<AffineMap>(std::vector<AffineMap>, int step, int steps)> reoptimise;
   // Told of the work done outside `reoptimise`, as it is done: renderings of the judge's raster
   // and range/domain searches (the fit counts them as evaluations).
   std::function<void(int renderings, int searches)> charge;

@@ -50,12 +50,13 @@ TEST(grow, a_set_that_misses_a_piece_grows_a_map_onto_it_and_keeps_its_size) {
   std::vector<AffineMap> from = testing::flower_in_disc();
   from.push_back(from[1]);
   std::vector<std::size_t> sizes;
-  std::vector<int> steps;
+  std::vector<int> steps, counts;
   int renderings = 0, searches = 0;
   GrowOptions o;
-  o.reoptimise = [&](std::vector<AffineMap> maps, int step) {
+  o.reoptimise = [&](std::vector<AffineMap> maps, int step, int count) {
     sizes.push_back(maps.size());
     steps.push_back(step);
+    counts.push_back(count);
     return maps;
   };
   o.charge = [&](int r, int s) {
@@ -66,6 +67,7 @@ TEST(grow, a_set_that_misses_a_piece_grows_a_map_onto_it_and_keeps_its_size) {
   ASSERT_EQ(grown.size(), from.size());
   EXPECT_EQ(sizes, (std::vector<std::size_t>{4, 5, 6}));
   EXPECT_EQ(steps, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(counts, (std::vector<int>{3, 3, 3}));
   EXPECT_TRUE(some_map_on_the_square(grown, shape));
   EXPECT_GE(judge.terms(grown).iou, 0.5) << "from " << judge.terms(from).iou;
   EXPECT_GT(renderings, 6);  // the least-paying order and the screened sets
