@@ -15,10 +15,9 @@ namespace ifsfx::collage::detail {
 // from the best on 64²; optionally the escapes' best grown again from fewer maps (grow.h,
 // FitOptions::grow_share); on the working raster, with a fine raster the distinct best candidates
 // each a while and then the best on the fine raster, without one the best of all on the working
-// raster's loss; maps re-seeded where the error
-// is (reseed.h, FitOptions::reseed_share); last the fine raster's rounds. Every stage's best is
-// judged by the chooser (its rendered attractor against L), so the fit is never worse than its
-// starts. Runs are counted on from `run`.
+// raster's loss; maps re-seeded where the error is (reseed.h, FitOptions::reseed_share); last the
+// fine raster's rounds. Every stage's best is judged by the chooser (its rendered attractor
+// against L), so the fit is never worse than its starts. Runs are counted on from `run`.
 void optimise_attractor(Fitting& fitting, std::vector<std::vector<AffineMap>> starts, int run);
 
 }  // namespace ifsfx::collage::detail
